@@ -1,0 +1,115 @@
+#include "CommandLine.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace matevo::cli {
+
+CommandLine::CommandLine(std::string command, std::vector<std::string> args)
+    : command_(std::move(command)), args_(std::move(args)), used_(args_.size(), false) {}
+
+bool CommandLine::wantsHelp() const {
+    for (const auto& arg : args_)
+        if (arg == "--help" || arg == "-h") return true;
+    return false;
+}
+
+bool CommandLine::flag(const std::string& name) {
+    bool found = false;
+    for (std::size_t i = 0; i < args_.size(); ++i) {
+        if (!used_[i] && args_[i] == name) {
+            used_[i] = true;
+            found = true;
+        }
+    }
+    return found;
+}
+
+std::optional<std::string> CommandLine::option(const std::string& name) {
+    std::optional<std::string> value;
+    for (std::size_t i = 0; i < args_.size(); ++i) {
+        if (used_[i]) continue;
+        if (args_[i] == name) {
+            if (i + 1 >= args_.size())
+                throw UsageError(command_ + ": " + name + " needs a value");
+            used_[i] = used_[i + 1] = true;
+            value = args_[i + 1];
+            ++i;
+        } else if (args_[i].rfind(name + "=", 0) == 0) {
+            used_[i] = true;
+            value = args_[i].substr(name.size() + 1);
+        }
+    }
+    return value;
+}
+
+std::optional<long long> CommandLine::integerOption(const std::string& name, long long min,
+                                                    long long max) {
+    auto text = option(name);
+    if (!text) return std::nullopt;
+    return parseInteger(*text, command_ + ": " + name, min, max);
+}
+
+std::optional<std::uint64_t> CommandLine::unsignedOption(const std::string& name) {
+    auto text = option(name);
+    if (!text) return std::nullopt;
+    std::uint64_t value = 0;
+    auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), value);
+    if (ec != std::errc() || end != text->data() + text->size())
+        throw UsageError(command_ + ": " + name + ": expected a non-negative integer, got '" +
+                         *text + "'");
+    return value;
+}
+
+std::vector<std::string> CommandLine::positionals() {
+    std::vector<std::string> result;
+    for (std::size_t i = 0; i < args_.size(); ++i) {
+        if (used_[i] || (args_[i].size() > 1 && args_[i][0] == '-')) continue;
+        used_[i] = true;
+        result.push_back(args_[i]);
+    }
+    return result;
+}
+
+void CommandLine::finish() const {
+    for (std::size_t i = 0; i < args_.size(); ++i)
+        if (!used_[i])
+            throw UsageError(command_ + ": unexpected argument '" + args_[i] +
+                             "' (see matevo " + command_ + " --help)");
+}
+
+long long parseInteger(const std::string& text, const std::string& what, long long min,
+                       long long max) {
+    long long value = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size())
+        throw UsageError(what + ": expected an integer, got '" + text + "'");
+    if (value < min || value > max)
+        throw UsageError(what + ": must be in [" + std::to_string(min) + ", " +
+                         std::to_string(max) + "], got " + text);
+    return value;
+}
+
+double parseNumber(const std::string& text, const std::string& what) {
+    std::size_t consumed = 0;
+    double value = 0.0;
+    try {
+        value = std::stod(text, &consumed);
+    } catch (const std::exception&) {
+        consumed = 0;
+    }
+    if (consumed == 0 || consumed != text.size() || !std::isfinite(value))
+        throw UsageError(what + ": expected a finite number, got '" + text + "'");
+    return value;
+}
+
+std::vector<double> parseNumberList(const std::string& text, const std::string& what) {
+    std::vector<double> values;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ',')) values.push_back(parseNumber(item, what));
+    return values;
+}
+
+}  // namespace matevo::cli

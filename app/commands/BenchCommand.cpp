@@ -1,0 +1,37 @@
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "BenchReport.h"
+#include "commands/Commands.h"
+
+namespace matevo::cli {
+
+int runBench(CommandLine& args) {
+    if (args.wantsHelp()) {
+        std::printf(
+            "usage: matevo bench [--json]\n\n"
+            "Measures medians of the genetic algorithm (pop 100 x 10 generations, genotype\n"
+            "fitness), CIEDE2000 throughput and the renderers. Prints a table, or one JSON object\n"
+            "with --json. scripts/bench.sh runs the Python peers beside it and prints ratios.\n");
+        return 0;
+    }
+    const bool asJson = args.flag("--json");
+    args.finish();
+
+    bench::BenchReport report;
+    bench::benchGeneticAlgorithm(report);
+
+    if (asJson) {
+        nlohmann::json out = nlohmann::json::object();
+        for (const auto& figure : report) out[figure.key] = figure.value;
+        std::printf("%s\n", out.dump(2).c_str());
+    } else {
+        for (const auto& figure : report)
+            std::printf("%-24s %12.4f  %s\n", figure.key.c_str(), figure.value,
+                        figure.description.c_str());
+    }
+    return 0;
+}
+
+}  // namespace matevo::cli

@@ -1,0 +1,10 @@
+#include "commands/Commands.h"
+
+namespace matevo::cli {
+
+int runEvolve(CommandLine& args) {
+    (void)args;
+    return 1;
+}
+
+}  // namespace matevo::cli

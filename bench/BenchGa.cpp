@@ -1,0 +1,7 @@
+#include "BenchReport.h"
+
+namespace matevo::bench {
+
+void benchGeneticAlgorithm(BenchReport& report) { (void)report; }
+
+}  // namespace matevo::bench

@@ -1,0 +1,18 @@
+#pragma once
+// Figures reported by `matevo bench`. Each module adds its own in its own file.
+#include <string>
+#include <vector>
+
+namespace matevo::bench {
+
+struct BenchFigure {
+    std::string key;   // JSON key, e.g. "ga_pop100_gen10_ms"
+    double value = 0;  // a median
+    std::string description;
+};
+
+using BenchReport = std::vector<BenchFigure>;
+
+void benchGeneticAlgorithm(BenchReport& report);
+
+}  // namespace matevo::bench

@@ -1,0 +1,14 @@
+# Every third-party package, found once. Names and pitfalls: docs/platform-notes (Debian 12).
+find_package(Threads REQUIRED)
+find_package(glm REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(Vulkan REQUIRED COMPONENTS glslangValidator)
+find_package(glfw3 3.3 REQUIRED)
+find_package(GTest REQUIRED)
+find_package(benchmark REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+
+# OpenImageIO through pkg-config: Debian 12's CMake config names files that its -dev package
+# does not install (/usr/include/opencv4, the tools, PyImath) and fails at generate time.
+pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)

@@ -1,0 +1,36 @@
+#pragma once
+// What a user tunes in the genetic algorithm. Defaults are the paper's (§4.3, §5).
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "genome/Genome.h"
+
+namespace matevo {
+
+enum class DistanceMetric { Chebyshev, Euclidean, Manhattan };
+
+std::string_view toString(DistanceMetric metric);
+std::optional<DistanceMetric> parseDistanceMetric(std::string_view text);
+
+struct GaSettings {
+    int population = 50;
+    int generations = 5;
+    DistanceMetric metric = DistanceMetric::Euclidean;
+    std::array<double, kChromosomeCount> weights = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+    // Divide each chromosome's difference by its family range before weighting, so that
+    // h in [0.05, 40] does not swamp the rest. Off by default: the paper uses raw distances.
+    bool normalizeByRange = false;
+    // Individuals copied unchanged into the next generation. The paper has none.
+    int elitism = 0;
+    std::uint64_t seed = 1;
+
+    bool operator==(const GaSettings&) const = default;
+};
+
+// Limits that protect the machine from absurd requests (population 2e9 and the like).
+inline constexpr int kMaxPopulation = 100000;
+inline constexpr int kMaxGenerations = 100000;
+
+}  // namespace matevo
