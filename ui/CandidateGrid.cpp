@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "HeatmapControls.h"
 #include "ImageView.h"
 #include "Widgets.h"
 
@@ -60,6 +61,7 @@ bool drawTile(const CandidateView& candidate, const HeatmapView& heatmap, float 
 
 void drawCandidateGrid(EditorState& state) {
     const EvolutionView& evolution = state.evolution;
+    drawHeatmapControls(state.heatmap);
     drawStatusLine(evolution);
     ImGui::BeginChild("tiles");
     const float spacing = ImGui::GetStyle().ItemSpacing.x;

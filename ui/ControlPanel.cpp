@@ -1,7 +1,6 @@
 #include "ControlPanel.h"
 
 #include "GaControls.h"
-#include "HeatmapControls.h"
 #include "MaterialControls.h"
 #include "Widgets.h"
 
@@ -43,7 +42,6 @@ ControlPanelActions drawControlPanel(EditorState& state, bool canUndo, bool canR
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.58f);
     drawMaterialControls(state.preset.family, state.preset.target);
     drawGaControls(state.preset.ga);
-    drawHeatmapControls(state.heatmap);
     ImGui::PopItemWidth();
     return actions;
 }

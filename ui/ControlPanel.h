@@ -1,6 +1,6 @@
 #pragma once
 // The left-hand control panel: file actions, the material family and target, the GA settings
-// and weights, and the heatmap options. Edits go straight into the state; file and history
+// and weights. Edits go straight into the state; file and history
 // actions are returned for the caller, which also reaches them through keyboard shortcuts.
 #include "EditorState.h"
 

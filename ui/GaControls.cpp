@@ -26,13 +26,20 @@ void drawMetric(DistanceMetric& metric) {
     }
 }
 
+// Two columns with the name inside each slider: all twelve fit beside the other controls.
 void drawWeights(std::array<double, kChromosomeCount>& weights) {
+    if (!ImGui::BeginTable("weights", 2)) return;
     for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+        ImGui::TableNextColumn();
+        ImGui::SetNextItemWidth(-1.0f);
         float weight = float(weights[i]);
-        const std::string label = std::string(chromosomeName(i)) + "##weight";
-        if (ImGui::SliderFloat(label.c_str(), &weight, 0.0f, kMaxWeight, "%.2f"))
+        const std::string name(chromosomeName(i));
+        const std::string format = name + " %.2f";
+        if (ImGui::SliderFloat((name + "##weight").c_str(), &weight, 0.0f, kMaxWeight,
+                               format.c_str()))
             weights[i] = std::max(0.0f, weight);
     }
+    ImGui::EndTable();
     if (ImGui::Button("Reset weights")) weights.fill(1.0);
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// The control panel's heatmap section: overlay toggle, ΔE00 range, opacity and a legend of the
-// paper's perceptual bands.
+// The heatmap toolbar above the candidate grid: overlay toggle, ΔE00 range and opacity, and a
+// legend: the colour ramp over the range with the paper's perceptual bands marked on it.
 #include "EditorState.h"
 
 namespace matevo::ui {

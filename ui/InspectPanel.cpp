@@ -14,12 +14,12 @@ namespace {
 
 void drawChromosomeTable(const Genome& target, const Genome& candidate) {
     constexpr ImGuiTableFlags kFlags =
-        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
     if (!ImGui::BeginTable("chromosomes", 4, kFlags)) return;
-    ImGui::TableSetupColumn("chromosome");
+    ImGui::TableSetupColumn("gene");
     ImGui::TableSetupColumn("target");
-    ImGui::TableSetupColumn("candidate");
-    ImGui::TableSetupColumn("difference");
+    ImGui::TableSetupColumn("this");
+    ImGui::TableSetupColumn("Δ");
     ImGui::TableHeadersRow();
     for (std::size_t i = 0; i < kChromosomeCount; ++i) {
         const double difference = candidate[i] - target[i];
@@ -39,12 +39,14 @@ void drawChromosomeTable(const Genome& target, const Genome& candidate) {
     ImGui::EndTable();
 }
 
-void drawActions(EditorState& state, const CandidateView& candidate) {
+// True when the candidate was promoted to target.
+bool drawActions(EditorState& state, const CandidateView& candidate) {
     if (ImGui::Button(state.inspectShowsTarget ? "Showing target (B)" : "Showing candidate (A)"))
         state.inspectShowsTarget = !state.inspectShowsTarget;
     hoverHint("A/B flip: swap the large view between this candidate and the target.");
     ImGui::SameLine();
-    if (ImGui::Button("Promote to target")) {
+    const bool promoted = ImGui::Button("Promote to target");
+    if (promoted) {
         state.preset.target = candidate.genome;
         state.selectedCandidate = -1;
     }
@@ -53,23 +55,33 @@ void drawActions(EditorState& state, const CandidateView& candidate) {
         ImGui::SetClipboardText(genomeToJson(candidate.genome).dump(2).c_str());
         state.statusMessage = "Copied candidate #" + std::to_string(candidate.rank) + " as JSON";
     }
+    return promoted;
 }
 
 }  // namespace
 
 void drawInspectPanel(EditorState& state) {
     const auto& candidates = state.evolution.candidates;
-    if (state.selectedCandidate < 0 || state.selectedCandidate >= int(candidates.size())) {
-        ImGui::TextColored(kMutedTextColor, "Click a candidate to inspect it.");
+    if (candidates.empty()) {
+        ImGui::TextColored(kMutedTextColor, "No candidates yet.");
         return;
     }
-    const CandidateView candidate = candidates[std::size_t(state.selectedCandidate)];
+    // Until a tile is clicked, the best candidate is the one worth a closer look.
+    const bool chosen = state.selectedCandidate >= 0 && state.selectedCandidate < int(candidates.size());
+    const CandidateView candidate = candidates[chosen ? std::size_t(state.selectedCandidate) : 0];
     ImGui::Text("Candidate #%d   fitness %.4f   mean ΔE00 %.2f", candidate.rank, candidate.fitness,
                 candidate.meanDeltaE00);
-    drawActions(state, candidate);
-    if (state.selectedCandidate < 0) return;  // promoted: the grid is about to change
+    if (!chosen) {
+        ImGui::SameLine();
+        ImGui::TextColored(kMutedTextColor, "(the best; click a tile for another)");
+    }
+    if (drawActions(state, candidate)) return;  // promoted: the grid is about to change
 
-    const float imageSize = std::max(64.0f, ImGui::GetContentRegionAvail().y - 4.0f);
+    // Two square images (A/B view, heatmap) and the chromosome table beside them.
+    constexpr float kTableWidth = 250.0f;
+    const ImVec2 available = ImGui::GetContentRegionAvail();
+    const float imageSize = std::max(
+        64.0f, std::min(available.y - 4.0f, (available.x - kTableWidth - 16.0f) * 0.5f));
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImTextureID shown =

@@ -57,9 +57,14 @@ bool drawFamily(MaterialFamily& family) {
 
 void drawChromosomeSliders(const MaterialFamily& family, Genome& target) {
     const FamilyRules rules = familyRules(family);
+    int pinned = 0;
     for (std::size_t i = 0; i < kChromosomeCount; ++i) {
         const ChromosomeRange range = rangeForTarget(rules, target, i);
-        ImGui::BeginDisabled(!range.active);
+        // The family has no slot for it (the medium of a family without one): nothing to edit.
+        if (!range.active) {
+            ++pinned;
+            continue;
+        }
         float value = float(target[i]);
         // Roughness and depth span decades: a logarithmic slider gives each decade equal room.
         const bool logarithmic = range.min > 0.0 && range.max > 20.0 * range.min;
@@ -70,8 +75,9 @@ void drawChromosomeSliders(const MaterialFamily& family, Genome& target) {
             if (i == kEta1) target[kEta2] = clampInto(rules.eta2Given(target[kEta1]), target[kEta2]);
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Table 2: %s", describe(range).c_str());
-        ImGui::EndDisabled();
     }
+    if (pinned > 0)
+        ImGui::TextColored(kMutedTextColor, "%d medium chromosomes unused by this family", pinned);
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ TEST_F(EditorUiTest, NewSeedButtonPicksAnotherSeedReproducibly) {
 }
 
 TEST_F(EditorUiTest, HeatmapToggleIsAViewSettingNotAnEdit) {
-    imgui.click(locate("Controls", "Overlay on grid"), draw);
+    imgui.click(locate("Candidates (best first)", "Heatmap"), draw);
     EXPECT_FALSE(ui.state().heatmap.enabled);
     EXPECT_FALSE(ui.state().hasUnsavedChanges());
 }
@@ -120,10 +120,13 @@ TEST_F(EditorUiTest, ClickingATileSelectsItAndPromoteMakesItTheTarget) {
     ui.state().evolution.candidates = {{1, 0.1, 2.0, candidate, nullptr, nullptr},
                                        {2, 0.2, 3.0, ui.state().preset.target, nullptr, nullptr}};
     imgui.frame(draw);
-    ImGuiWindow* grid = ImGui::FindWindowByName("Candidates (best first)");
-    ASSERT_NE(grid, nullptr);
-    // The first tile sits at the top left of the grid's content, under the status line.
-    imgui.click(ImVec2(grid->Pos.x + 40, grid->Pos.y + 90), draw);
+    ImGuiWindow* tiles = HeadlessImGui::findWindow("Candidates (best first)/tiles");
+    ASSERT_NE(tiles, nullptr);
+    const int rank = 1;  // tiles push their rank as ID
+    const ImGuiID tile = ImHashStr("tile", 0, ImHashData(&rank, sizeof rank, tiles->IDStack[0]));
+    const auto tileAt = imgui.locate(*tiles, tile, draw);
+    ASSERT_TRUE(tileAt.has_value());
+    imgui.click(*tileAt, draw);
     EXPECT_EQ(ui.state().selectedCandidate, 0);
     imgui.frame(draw);
     ImGuiWindow* inspect = ImGui::FindWindowByName("Inspect");

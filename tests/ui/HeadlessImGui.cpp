@@ -1,6 +1,6 @@
 #include "HeadlessImGui.h"
 
-#include <imgui_internal.h>
+#include <string_view>
 
 namespace matevo::testing {
 
@@ -31,9 +31,13 @@ std::optional<ImVec2> HeadlessImGui::locate(const char* window, const char* labe
                                             const std::function<void()>& draw) {
     ImGuiWindow* found = ImGui::FindWindowByName(window);
     if (!found) return std::nullopt;
-    const ImGuiID id = found->GetID(label);
-    const ImVec2 origin = found->Pos;
-    const ImVec2 size = found->Size;
+    return locate(*found, found->GetID(label), draw);
+}
+
+std::optional<ImVec2> HeadlessImGui::locate(const ImGuiWindow& window, ImGuiID id,
+                                            const std::function<void()>& draw) {
+    const ImVec2 origin = window.Pos;
+    const ImVec2 size = window.Size;
     for (float y = origin.y + 2.0f; y < origin.y + size.y; y += 4.0f) {
         for (float x = origin.x + 4.0f; x < origin.x + size.x; x += 24.0f) {
             ImGui::GetIO().MousePos = ImVec2(x, y);
@@ -42,6 +46,12 @@ std::optional<ImVec2> HeadlessImGui::locate(const char* window, const char* labe
         }
     }
     return std::nullopt;
+}
+
+ImGuiWindow* HeadlessImGui::findWindow(const char* prefix) {
+    for (ImGuiWindow* window : GImGui->Windows)
+        if (std::string_view(window->Name).starts_with(prefix)) return window;
+    return nullptr;
 }
 
 void HeadlessImGui::drag(ImVec2 from, ImVec2 to, const std::function<void()>& draw) {

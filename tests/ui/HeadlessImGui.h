@@ -6,6 +6,7 @@
 #include <optional>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 namespace matevo::testing {
 
@@ -22,6 +23,10 @@ public:
     // nullopt when no point of the window hovers it.
     std::optional<ImVec2> locate(const char* window, const char* label,
                                  const std::function<void()>& draw);
+    std::optional<ImVec2> locate(const ImGuiWindow& window, ImGuiID id,
+                                 const std::function<void()>& draw);
+    // The first window whose name starts with `prefix` (child windows are "Parent/child_ID").
+    static ImGuiWindow* findWindow(const char* prefix);
     // Press at `from`, drag to `to`, release: three frames.
     void drag(ImVec2 from, ImVec2 to, const std::function<void()>& draw);
     void click(ImVec2 at, const std::function<void()>& draw) { drag(at, at, draw); }
