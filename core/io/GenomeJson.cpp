@@ -1,0 +1,65 @@
+#include "io/GenomeJson.h"
+
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "io/JsonReader.h"
+
+namespace matevo {
+
+namespace {
+
+// Generous physical bounds; the family's Table 2 rules are checked separately.
+constexpr double kMaxChromosomeValue = 1000.0;
+
+}  // namespace
+
+nlohmann::json genomeToJson(const Genome& genome) {
+    return {{"eta1", genome.eta1()},       {"eta2", genome.eta2()},
+            {"alpha1", genome.alpha1()},   {"alpha2", genome.alpha2()},
+            {"depth", genome.depth()},     {"sigma_s", genome.sigmaS()},
+            {"sigma_a", genome.sigmaA()},  {"g", genome.g()}};
+}
+
+Genome readGenome(JsonReader& reader) {
+    Genome genome;
+    genome[kEta1] = reader.number("eta1", 0.0, kMaxChromosomeValue);
+    genome[kEta2] = reader.number("eta2", 0.0, kMaxChromosomeValue);
+    genome[kAlpha1] = reader.number("alpha1", 0.0, kMaxChromosomeValue);
+    genome[kAlpha2] = reader.number("alpha2", 0.0, kMaxChromosomeValue);
+    if (reader.has("depth")) genome[kDepth] = reader.number("depth", 0.0, kMaxChromosomeValue);
+    if (reader.has("sigma_s")) {
+        auto sigmaS = reader.numbers<3>("sigma_s", 0.0, kMaxChromosomeValue);
+        for (std::size_t c = 0; c < 3; ++c) genome[kSigmaSR + c] = sigmaS[c];
+    }
+    if (reader.has("sigma_a")) {
+        auto sigmaA = reader.numbers<3>("sigma_a", 0.0, kMaxChromosomeValue);
+        for (std::size_t c = 0; c < 3; ++c) genome[kSigmaAR + c] = sigmaA[c];
+    }
+    if (reader.has("g")) genome[kG] = reader.number("g", -1.0, 1.0);
+    return genome;
+}
+
+Result<Genome> loadGenome(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return Error{file.string() + ": cannot open for reading"};
+    std::stringstream text;
+    text << in.rdbuf();
+    std::vector<std::string> warnings;
+    try {
+        auto json = nlohmann::json::parse(text.str());
+        // A result.json or a population entry holds the genome under "genome"; accept both.
+        const auto& object = json.is_object() && json.contains("genome") ? json["genome"] : json;
+        JsonReader reader(object, "", warnings);
+        Genome genome = readGenome(reader);
+        return genome;
+    } catch (const nlohmann::json::exception& error) {
+        return Error{file.string() + ": not valid JSON (" + error.what() + ")"};
+    } catch (const JsonFieldError& error) {
+        return Error{file.string() + ": " + error.what()};
+    }
+}
+
+}  // namespace matevo

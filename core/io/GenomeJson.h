@@ -1,0 +1,21 @@
+#pragma once
+// The genome's JSON form, shared by presets, `evolve --json` and `render --genome`:
+// {"eta1":…, "eta2":…, "alpha1":…, "alpha2":…, "depth":…, "sigma_s":[r,g,b],
+//  "sigma_a":[r,g,b], "g":…}. The medium fields may be left out (they default to 0).
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "common/Result.h"
+#include "genome/Genome.h"
+
+namespace matevo {
+
+class JsonReader;
+
+nlohmann::json genomeToJson(const Genome& genome);
+Genome readGenome(JsonReader& reader);  // throws JsonFieldError naming the field
+Result<Genome> loadGenome(const std::filesystem::path& file);
+
+}  // namespace matevo

@@ -1,0 +1,28 @@
+#pragma once
+// Images on disk through OpenImageIO. PNG files hold sRGB-encoded 8-bit RGBA; EXR files hold
+// linear float RGBA. In memory an Image is always linear with straight (unassociated) alpha, so
+// colour values are stored as they are and alpha is never multiplied in.
+#include <filesystem>
+
+#include "common/Image.h"
+#include "common/Result.h"
+
+namespace matevo {
+
+struct ImageFileContents {
+    Image image;
+    // False when the file had no alpha channel; the image then has alpha = 1 everywhere and a
+    // comparison should use every pixel.
+    bool hasAlpha = false;
+};
+
+// Errors are one line naming the file: unsupported extension, unreadable, not an image, or an
+// unsupported channel layout. Grey files are expanded to RGB.
+Result<ImageFileContents> readImageFile(const std::filesystem::path& file);
+Result<Image> readImage(const std::filesystem::path& file);
+
+// Writes RGBA to .png (sRGB-encoded 8 bit, values clamped to [0, 1]) or .exr (32-bit float).
+// Atomic: written to a temporary file beside the target, then renamed over it.
+Status writeImage(const Image& image, const std::filesystem::path& file);
+
+}  // namespace matevo

@@ -1,0 +1,105 @@
+#include "io/JsonReader.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace matevo {
+
+namespace {
+
+std::string formatNumber(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+}  // namespace
+
+JsonReader::JsonReader(const nlohmann::json& object, std::string path,
+                       std::vector<std::string>& warnings)
+    : object_(object), path_(std::move(path)), warnings_(warnings) {
+    if (!object_.is_object())
+        throw JsonFieldError((path_.empty() ? std::string("document") : path_) +
+                             ": must be a JSON object");
+}
+
+bool JsonReader::has(const std::string& key) const { return object_.contains(key); }
+
+const nlohmann::json& JsonReader::field(const std::string& key) {
+    auto it = object_.find(key);
+    if (it == object_.end()) fail(key, "missing");
+    read_.insert(key);
+    return *it;
+}
+
+std::string JsonReader::fieldPath(const std::string& key) const {
+    return path_.empty() ? key : path_ + "." + key;
+}
+
+void JsonReader::fail(const std::string& key, const std::string& problem) const {
+    throw JsonFieldError(fieldPath(key) + ": " + problem);
+}
+
+double JsonReader::checkedNumber(const nlohmann::json& value, const std::string& where,
+                                 double min, double max) {
+    if (!value.is_number()) throw JsonFieldError(where + ": must be a number");
+    double number = value.get<double>();
+    if (!std::isfinite(number) || number < min || number > max)
+        throw JsonFieldError(where + ": must be in [" + formatNumber(min) + ", " +
+                             formatNumber(max) + "], got " + formatNumber(number));
+    return number;
+}
+
+double JsonReader::number(const std::string& key, double min, double max) {
+    return checkedNumber(field(key), fieldPath(key), min, max);
+}
+
+long long JsonReader::integer(const std::string& key, long long min, long long max) {
+    const auto& value = field(key);
+    if (!value.is_number_integer()) {
+        if (value.is_number_float() && std::isfinite(value.get<double>()))
+            fail(key, "must be an integer, got " + formatNumber(value.get<double>()));
+        fail(key, "must be an integer");
+    }
+    // Unsigned values beyond the signed range are out of every range we accept.
+    if (value.is_number_unsigned() &&
+        value.get<unsigned long long>() > static_cast<unsigned long long>(max))
+        fail(key, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
+                      value.dump());
+    long long number = value.get<long long>();
+    if (number < min || number > max)
+        fail(key, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
+                      std::to_string(number));
+    return number;
+}
+
+std::uint64_t JsonReader::unsignedInteger(const std::string& key) {
+    const auto& value = field(key);
+    if (!value.is_number_unsigned()) fail(key, "must be a non-negative integer");
+    return value.get<std::uint64_t>();
+}
+
+bool JsonReader::boolean(const std::string& key) {
+    const auto& value = field(key);
+    if (!value.is_boolean()) fail(key, "must be true or false");
+    return value.get<bool>();
+}
+
+std::string JsonReader::string(const std::string& key) {
+    const auto& value = field(key);
+    if (!value.is_string()) fail(key, "must be a string");
+    return value.get<std::string>();
+}
+
+JsonReader JsonReader::object(const std::string& key) {
+    const auto& value = field(key);
+    if (!value.is_object()) fail(key, "must be a JSON object");
+    return JsonReader(value, fieldPath(key), warnings_);
+}
+
+void JsonReader::warnAboutUnknownFields() {
+    for (const auto& [key, value] : object_.items())
+        if (!read_.count(key)) warnings_.push_back(fieldPath(key) + ": unknown field, ignored");
+}
+
+}  // namespace matevo

@@ -1,0 +1,65 @@
+#pragma once
+// Reads fields of a JSON object with the path of each field kept, so every error names where
+// it happened ("ga.population: must be an integer in [2, 100000], got 0"). Fields that are
+// present but never read are reported as warnings. Errors throw JsonFieldError; the public
+// loaders turn it into a Result.
+#include <array>
+#include <cstdint>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace matevo {
+
+struct JsonFieldError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+class JsonReader {
+public:
+    // `path` is the dotted location of `object` ("" for the root).
+    JsonReader(const nlohmann::json& object, std::string path, std::vector<std::string>& warnings);
+
+    bool has(const std::string& key) const;
+    double number(const std::string& key, double min, double max);
+    long long integer(const std::string& key, long long min, long long max);
+    std::uint64_t unsignedInteger(const std::string& key);  // the full 64-bit range
+    bool boolean(const std::string& key);
+    std::string string(const std::string& key);
+    template <std::size_t N>
+    std::array<double, N> numbers(const std::string& key, double min, double max);
+    JsonReader object(const std::string& key);
+
+    // Call once every known field was read: warns about the others.
+    void warnAboutUnknownFields();
+
+    [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
+
+private:
+    const nlohmann::json& field(const std::string& key);
+    std::string fieldPath(const std::string& key) const;
+    static double checkedNumber(const nlohmann::json& value, const std::string& where, double min,
+                                double max);
+
+    const nlohmann::json& object_;
+    std::string path_;
+    std::vector<std::string>& warnings_;
+    std::set<std::string> read_;
+};
+
+template <std::size_t N>
+std::array<double, N> JsonReader::numbers(const std::string& key, double min, double max) {
+    const auto& value = field(key);
+    if (!value.is_array() || value.size() != N)
+        fail(key, "must be an array of " + std::to_string(N) + " numbers");
+    std::array<double, N> result{};
+    for (std::size_t i = 0; i < N; ++i)
+        result[i] = checkedNumber(value[i], fieldPath(key) + "[" + std::to_string(i) + "]", min,
+                                  max);
+    return result;
+}
+
+}  // namespace matevo

@@ -1,0 +1,162 @@
+#include "io/ImageFile.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <string>
+
+#include "color/Srgb.h"
+
+namespace matevo {
+namespace {
+
+// A fresh folder per test so parallel ctest runs never share files.
+class ImageFileTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        folder_ = std::filesystem::temp_directory_path() /
+                  ("matevo_imagefile_" + std::string(info->name()) + "_" +
+                   std::to_string(::getpid()));
+        std::filesystem::remove_all(folder_);
+        std::filesystem::create_directories(folder_);
+    }
+    void TearDown() override { std::filesystem::remove_all(folder_); }
+
+    std::size_t filesInFolder() const {
+        std::size_t count = 0;
+        for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder_))
+            ++count;
+        return count;
+    }
+
+    std::filesystem::path folder_;
+};
+
+// Deterministic values in [0, 1] without <random> distributions.
+float pseudoRandom(std::uint32_t& state) {
+    state = state * 1664525u + 1013904223u;
+    return float(state >> 8) / float(1u << 24);
+}
+
+Image randomImage(int width, int height, std::uint32_t seed) {
+    Image image(width, height);
+    for (float& value : image.rgba) value = pseudoRandom(seed);
+    return image;
+}
+
+TEST_F(ImageFileTest, ExrRoundTripIsExact) {
+    Image original = randomImage(17, 9, 1);
+    original.rgba[0] = 3.5f;  // EXR keeps values beyond 1 (linear light)
+    const auto file = folder_ / "a.exr";
+    ASSERT_TRUE(writeImage(original, file).ok());
+    auto read = readImageFile(file);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    EXPECT_TRUE(read->hasAlpha);
+    EXPECT_EQ(read->image.width, 17);
+    EXPECT_EQ(read->image.height, 9);
+    EXPECT_EQ(read->image.rgba, original.rgba);
+}
+
+TEST_F(ImageFileTest, PngStoresSrgbEncodedEightBitsAndDecodesToLinear) {
+    Image original = randomImage(31, 7, 2);
+    const auto file = folder_ / "a.png";
+    ASSERT_TRUE(writeImage(original, file).ok());
+    auto read = readImageFile(file);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    EXPECT_TRUE(read->hasAlpha);
+    ASSERT_EQ(read->image.rgba.size(), original.rgba.size());
+    for (std::size_t i = 0; i < original.rgba.size(); ++i) {
+        const bool alpha = i % 4 == 3;
+        const double expected = alpha ? original.rgba[i] : linearToSrgb(original.rgba[i]);
+        const double got = alpha ? read->image.rgba[i] : linearToSrgb(read->image.rgba[i]);
+        // Quantised to 8 bits in the encoded domain, independently of alpha (straight alpha).
+        ASSERT_NEAR(got, expected, 0.5 / 255.0 + 1e-6) << "value " << i;
+    }
+    // The raw bytes are the sRGB encoding of straight colour, not linear or premultiplied.
+    OIIO::ImageSpec keepStraightAlpha;
+    keepStraightAlpha.attribute("oiio:UnassociatedAlpha", 1);
+    auto input = OIIO::ImageInput::open(file.string(), &keepStraightAlpha);
+    ASSERT_TRUE(input);
+    std::vector<unsigned char> bytes(original.rgba.size());
+    ASSERT_TRUE(input->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, bytes.data()));
+    EXPECT_EQ(bytes[0], std::lround(linearToSrgb(original.rgba[0]) * 255.0));
+}
+
+TEST_F(ImageFileTest, PngWithoutAlphaReadsAsFullyCovered) {
+    const auto file = folder_ / "rgb.png";
+    const unsigned char bytes[] = {255, 128, 0, 10, 20, 30};
+    auto output = OIIO::ImageOutput::create(file.string());
+    ASSERT_TRUE(output);
+    ASSERT_TRUE(output->open(file.string(), OIIO::ImageSpec(2, 1, 3, OIIO::TypeDesc::UINT8)));
+    ASSERT_TRUE(output->write_image(OIIO::TypeDesc::UINT8, bytes));
+    ASSERT_TRUE(output->close());
+
+    auto read = readImageFile(file);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    EXPECT_FALSE(read->hasAlpha);
+    EXPECT_FLOAT_EQ(read->image.pixel(0, 0)[3], 1.0f);
+    EXPECT_FLOAT_EQ(read->image.pixel(1, 0)[3], 1.0f);
+    EXPECT_FLOAT_EQ(read->image.pixel(0, 0)[0], 1.0f);
+    EXPECT_NEAR(read->image.pixel(0, 0)[1], srgbToLinear(128.0 / 255.0), 1e-6);
+    EXPECT_NEAR(read->image.pixel(1, 0)[2], srgbToLinear(30.0 / 255.0), 1e-6);
+}
+
+void expectOneLineErrorNaming(const Error& error, const std::filesystem::path& file) {
+    EXPECT_NE(error.message.find(file.string()), std::string::npos) << error.message;
+    EXPECT_EQ(error.message.find('\n'), std::string::npos) << error.message;
+}
+
+TEST_F(ImageFileTest, UnsupportedExtensionsAreRejected) {
+    const auto file = folder_ / "a.jpg";
+    auto written = writeImage(randomImage(2, 2, 3), file);
+    ASSERT_FALSE(written.ok());
+    expectOneLineErrorNaming(written.error(), file);
+    auto read = readImage(file);
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), file);
+}
+
+TEST_F(ImageFileTest, MissingAndNonImageFilesGiveOneLineErrors) {
+    const auto missing = folder_ / "missing.png";
+    auto read = readImage(missing);
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), missing);
+
+    const auto text = folder_ / "text.png";
+    std::ofstream(text) << "this is not an image\n";
+    read = readImage(text);
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), text);
+
+    const auto exrNamedPng = folder_ / "really_exr.png";
+    ASSERT_TRUE(writeImage(randomImage(2, 2, 4), folder_ / "b.exr").ok());
+    std::filesystem::copy_file(folder_ / "b.exr", exrNamedPng);
+    read = readImage(exrNamedPng);
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), exrNamedPng);
+}
+
+TEST_F(ImageFileTest, WritesAreAtomicAndLeaveNoTemporaryFiles) {
+    const auto file = folder_ / "a.png";
+    ASSERT_TRUE(writeImage(randomImage(4, 4, 5), file).ok());
+    const Image replacement = randomImage(8, 2, 6);
+    ASSERT_TRUE(writeImage(replacement, file).ok());
+    EXPECT_EQ(filesInFolder(), 1u);
+    auto read = readImage(file);
+    ASSERT_TRUE(read.ok());
+    EXPECT_EQ(read->width, 8);
+
+    const auto unwritable = folder_ / "no_such_folder" / "a.exr";
+    auto failed = writeImage(replacement, unwritable);
+    ASSERT_FALSE(failed.ok());
+    expectOneLineErrorNaming(failed.error(), unwritable);
+    EXPECT_EQ(filesInFolder(), 1u);
+}
+
+}  // namespace
+}  // namespace matevo

@@ -1,0 +1,206 @@
+#include "io/Preset.h"
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "io/GenomeJson.h"
+
+namespace matevo {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kValidPreset = R"({
+  "name": "test",
+  "family": {"coat": "clearcoat", "base": "conductor", "medium": false},
+  "target": {"eta1": 1.2, "eta2": 0.8, "alpha1": 0.03, "alpha2": 0.1},
+  "base_kappa": [3.1, 2.9, 2.8],
+  "ga": {"population": 50, "generations": 5, "metric": "manhattan", "seed": 7}
+})";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+}
+
+std::string errorOf(const std::string& json) {
+    auto result = parsePreset(json, "p.json");
+    EXPECT_FALSE(result.ok()) << json;
+    return result.ok() ? "" : result.error().message;
+}
+
+fs::path freshDirectory(const std::string& name) {
+    auto dir = fs::temp_directory_path() / ("matevo_test_" + name + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+TEST(Preset, ParsesAValidPreset) {
+    auto result = parsePreset(kValidPreset, "p.json");
+    ASSERT_TRUE(result.ok()) << result.error().message;
+    const Preset& preset = result->preset;
+    EXPECT_EQ(preset.name, "test");
+    EXPECT_EQ(preset.family.coat, Coat::Clearcoat);
+    EXPECT_EQ(preset.family.base, Base::Conductor);
+    EXPECT_DOUBLE_EQ(preset.target.eta2(), 0.8);
+    EXPECT_EQ(preset.ga.metric, DistanceMetric::Manhattan);
+    EXPECT_EQ(preset.ga.seed, 7u);
+    EXPECT_TRUE(result->warnings.empty());
+}
+
+TEST(Preset, RoundTripsThroughText) {
+    Preset preset = parsePreset(kValidPreset, "p.json")->preset;
+    preset.family.hasMedium = true;
+    preset.target[kDepth] = 1.5;
+    preset.target[kSigmaSG] = 0.25;
+    preset.target[kG] = 0.8;
+    preset.ga.weights[kDepth] = 0.01;
+    preset.ga.normalizeByRange = true;
+    preset.ga.elitism = 2;
+    preset.ga.seed = 18446744073709551615ull;  // the whole 64-bit range survives
+    preset.scene.imageSize = 128;
+    preset.scene.environmentRadiance = {0.1, 0.2, 0.3};
+    auto reparsed = parsePreset(serializePreset(preset), "again.json");
+    ASSERT_TRUE(reparsed.ok()) << reparsed.error().message;
+    EXPECT_EQ(reparsed->preset, preset);
+    EXPECT_TRUE(reparsed->warnings.empty());
+}
+
+TEST(Preset, SavesAtomicallyAndLoadsBack) {
+    auto dir = freshDirectory("save");
+    Preset preset = parsePreset(kValidPreset, "p.json")->preset;
+    auto file = dir / "saved.json";
+    ASSERT_TRUE(savePreset(preset, file).ok());
+    preset.name = "second version";
+    ASSERT_TRUE(savePreset(preset, file).ok());  // replaces the first
+    auto loaded = loadPreset(file);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    EXPECT_EQ(loaded->preset, preset);
+    // No temporary file is left behind.
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
+    fs::remove_all(dir);
+}
+
+TEST(Preset, SavingIntoAMissingFolderFailsAndSaysWhere) {
+    Preset preset;
+    auto status = savePreset(preset, "/nonexistent-folder/x.json");
+    ASSERT_FALSE(status.ok());
+    EXPECT_NE(status.error().message.find("/nonexistent-folder/x.json"), std::string::npos);
+}
+
+TEST(Preset, MalformedDocumentsNameTheFileAndTheProblem) {
+    EXPECT_NE(errorOf("").find("p.json: not valid JSON"), std::string::npos);
+    EXPECT_NE(errorOf(kValidPreset.substr(0, kValidPreset.size() / 2)).find("not valid JSON"),
+              std::string::npos);
+    EXPECT_NE(errorOf("[1, 2]").find("must be a JSON object"), std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("name": "test",)", "")).find("name: missing"),
+              std::string::npos);
+}
+
+TEST(Preset, WrongTypesNameTheField) {
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("population": 50)", R"("population": "50")"))
+                  .find("p.json: ga.population: must be an integer"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("eta1": 1.2)", R"("eta1": [1.2])"))
+                  .find("target.eta1: must be a number"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("medium": false)", R"("medium": 0)"))
+                  .find("family.medium: must be true or false"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"([3.1, 2.9, 2.8])", R"([3.1, 2.9])"))
+                  .find("base_kappa: must be an array of 3 numbers"),
+              std::string::npos);
+}
+
+TEST(Preset, AbsurdValuesAreRejectedNotAttempted) {
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("population": 50)", R"("population": 0)"))
+                  .find("ga.population: must be in [2, 100000], got 0"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("population": 50)", R"("population": 2000000000)"))
+                  .find("ga.population"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("generations": 5)", R"("generations": -1)"))
+                  .find("ga.generations"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("population": 50)", R"("population": 50.5)"))
+                  .find("must be an integer, got 50.5"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("eta1": 1.2)", R"("eta1": 1e999)")).find("1e999"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("eta1": 1.2)", R"("eta1": NaN)"))
+                  .find("not valid JSON"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("seed": 7)", R"("seed": -7)"))
+                  .find("ga.seed: must be a non-negative integer"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"([3.1, 2.9, 2.8])", R"([0, 0, 0])"))
+                  .find("base_kappa: a conductor base needs"),
+              std::string::npos);
+}
+
+TEST(Preset, UnknownFamilyIsRejected) {
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("clearcoat")", R"("glittercoat")"))
+                  .find("family.coat: unknown value 'glittercoat'"),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("conductor")", R"("plasma")"))
+                  .find("family.base: unknown value 'plasma'"),
+              std::string::npos);
+}
+
+TEST(Preset, UnknownFieldsWarnButLoad) {
+    auto result = parsePreset(replaced(kValidPreset, R"("name": "test",)",
+                                       R"("name": "test", "colour": 3,)"),
+                              "p.json");
+    ASSERT_TRUE(result.ok());
+    ASSERT_EQ(result->warnings.size(), 1u);
+    EXPECT_EQ(result->warnings[0], "p.json: colour: unknown field, ignored");
+}
+
+TEST(Preset, MissingTextureFileIsAnError) {
+    auto dir = freshDirectory("texture");
+    auto file = dir / "textured.json";
+    std::ofstream(file) << replaced(kValidPreset, R"("ga")",
+                                    R"("textures": {"base_color": "missing.png"}, "ga")");
+    auto loaded = loadPreset(file);
+    ASSERT_FALSE(loaded.ok());
+    EXPECT_NE(loaded.error().message.find("textures.base_color: no such file"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(Preset, UnreadableFileNamesTheFile) {
+    auto loaded = loadPreset("/nonexistent/preset.json");
+    ASSERT_FALSE(loaded.ok());
+    EXPECT_EQ(loaded.error().message, "/nonexistent/preset.json: cannot open for reading");
+}
+
+TEST(GenomeJson, ReadsAResultFileOrABareGenome) {
+    auto dir = freshDirectory("genome");
+    std::ofstream(dir / "bare.json") << R"({"eta1": 1.3, "eta2": 0.9, "alpha1": 0.05,
+        "alpha2": 0.2, "depth": 2, "sigma_s": [0.1, 0.2, 0.3], "sigma_a": [0, 0, 1], "g": 0.9})";
+    std::ofstream(dir / "wrapped.json") << R"({"genome": {"eta1": 1.3, "eta2": 0.9,
+        "alpha1": 0.05, "alpha2": 0.2}, "fitness": 0.1})";
+    auto bare = loadGenome(dir / "bare.json");
+    ASSERT_TRUE(bare.ok()) << bare.error().message;
+    EXPECT_DOUBLE_EQ((*bare)[kSigmaSB], 0.3);
+    EXPECT_DOUBLE_EQ(bare->g(), 0.9);
+    auto wrapped = loadGenome(dir / "wrapped.json");
+    ASSERT_TRUE(wrapped.ok()) << wrapped.error().message;
+    EXPECT_DOUBLE_EQ(wrapped->eta1(), 1.3);
+    EXPECT_DOUBLE_EQ(wrapped->depth(), 0.0);
+    fs::remove_all(dir);
+}
+
+TEST(ShippedPresets, ValidationMetalLoadsWithoutWarnings) {
+    auto loaded = loadPreset(fs::path(MATEVO_SOURCE_DIR) / "presets" / "validation_metal.json");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    EXPECT_TRUE(loaded->warnings.empty());
+    EXPECT_DOUBLE_EQ(loaded->preset.target.alpha1(), 0.03);
+}
+
+}  // namespace
+}  // namespace matevo

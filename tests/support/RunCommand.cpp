@@ -1,0 +1,46 @@
+#include "support/RunCommand.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace matevo::testing {
+
+namespace {
+
+std::string readAndRemove(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    in.close();
+    std::filesystem::remove(file);
+    return text.str();
+}
+
+}  // namespace
+
+CommandOutput runCommand(const std::string& commandLine) {
+    static int counter = 0;
+    const auto base = std::filesystem::temp_directory_path() /
+                      ("matevo_cmd_" + std::to_string(::getpid()) + "_" +
+                       std::to_string(counter++));
+    const auto outFile = base.string() + ".out";
+    const auto errFile = base.string() + ".err";
+    const std::string full = commandLine + " >'" + outFile + "' 2>'" + errFile + "' </dev/null";
+    const int status = std::system(full.c_str());
+    CommandOutput output;
+    output.exitCode = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+    output.out = readAndRemove(outFile);
+    output.err = readAndRemove(errFile);
+    return output;
+}
+
+CommandOutput runMatevo(const std::string& arguments) {
+    return runCommand(std::string("'") + MATEVO_BINARY_DIR + "/matevo' " + arguments);
+}
+
+}  // namespace matevo::testing
