@@ -13,8 +13,8 @@ namespace {
 constexpr Srgb8 kBackground = {255, 255, 255};
 constexpr Srgb8 kInk = {20, 20, 20};
 constexpr Srgb8 kBandEdge = {120, 120, 120};
-constexpr Srgb8 kBar = {38, 70, 120};
-constexpr float kBandTint = 0.28f;
+constexpr Srgb8 kBar = {45, 45, 45};
+constexpr float kBandTint = 0.4f;
 
 constexpr int kTextScale = 2;
 constexpr int kLeft = histogramPlotArea().left;

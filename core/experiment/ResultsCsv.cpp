@@ -2,6 +2,7 @@
 
 #include <array>
 #include <charconv>
+#include <string_view>
 
 namespace matevo {
 
@@ -28,24 +29,36 @@ std::string csvField(const std::string& text) {
 
 std::string resultsCsvHeader() {
     std::string header = "preset,metric,population,generations,seed,run,fitness,mean_de00";
-    for (std::size_t i = 0; i < kChromosomeCount; ++i)
-        header += "," + std::string(chromosomeName(i));
+    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+        header += ',';
+        header += chromosomeName(i);
+    }
     return header;
 }
 
 std::string resultsCsvRow(const RunRecord& record) {
-    std::string row = csvField(record.preset) + "," + std::string(toString(record.metric)) + "," +
-                      std::to_string(record.size.population) + "," +
-                      std::to_string(record.size.generations) + "," +
-                      std::to_string(record.seed) + "," + std::to_string(record.run) + "," +
-                      exactNumber(record.fitness) + "," + exactNumber(record.meanDeltaE00);
-    for (double value : record.genome.values) row += "," + exactNumber(value);
+    std::string row = csvField(record.preset);
+    auto addField = [&row](std::string_view field) {
+        row += ',';
+        row += field;
+    };
+    addField(toString(record.metric));
+    addField(std::to_string(record.size.population));
+    addField(std::to_string(record.size.generations));
+    addField(std::to_string(record.seed));
+    addField(std::to_string(record.run));
+    addField(exactNumber(record.fitness));
+    addField(exactNumber(record.meanDeltaE00));
+    for (double value : record.genome.values) addField(exactNumber(value));
     return row;
 }
 
 std::string resultsCsv(std::span<const RunRecord> records) {
     std::string csv = resultsCsvHeader() + "\n";
-    for (const auto& record : records) csv += resultsCsvRow(record) + "\n";
+    for (const auto& record : records) {
+        csv += resultsCsvRow(record);
+        csv += '\n';
+    }
     return csv;
 }
 

@@ -1,5 +1,6 @@
 #include "experiment/Experiment.h"
 
+#include <algorithm>
 #include <set>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "experiment/ResultsCsv.h"
 #include "experiment/RunSeeds.h"
 #include "genome/FamilyRules.h"
+#include "scene/SphereRenderer.h"
 
 namespace matevo {
 namespace {
@@ -74,29 +76,22 @@ TEST(Experiment, SameSeedGivesIdenticalResultsAndAnotherSeedDifferent) {
     EXPECT_NE(first, resultsCsv(evolveRuns(target, smallSettings(4))));
 }
 
-// The renderer is the caller's: here one that paints each genome as a flat colour from its
-// first chromosomes, enough to check that each run gets the ΔE00 of its own image.
+bool byDeltaE(const RunRecord& a, const RunRecord& b) { return a.meanDeltaE00 < b.meanDeltaE00; }
+
+// The real CPU reference renderer at a small size, injected as the CLI injects it.
+Image renderSmall(const ExperimentTarget& target, const Genome& genome) {
+    return renderSphereCpu(MaterialInstance{genome, target.family, {3.1, 2.9, 2.8}}, {}, {}, 16);
+}
+
 TEST(Experiment, ScoresEachRunByTheMeanDeltaE00OfItsOwnRender) {
-    auto flatColour = [](const Genome& genome) {
-        Image image(8, 8);
-        for (int y = 0; y < 8; ++y)
-            for (int x = 0; x < 8; ++x) {
-                float* pixel = image.pixel(x, y);
-                pixel[0] = float(genome[kEta1] - 1.0);
-                pixel[1] = float(genome[kEta2]);
-                pixel[2] = float(genome[kAlpha2]);
-                pixel[3] = 1.0f;
-            }
-        return image;
-    };
+    const ExperimentTarget target = validationMetal();
     std::size_t batches = 0;
     const RenderGenomes render = [&](std::span<const Genome> genomes) {
         ++batches;
         std::vector<Image> images;
-        for (const auto& genome : genomes) images.push_back(flatColour(genome));
+        for (const auto& genome : genomes) images.push_back(renderSmall(target, genome));
         return Result<std::vector<Image>>(std::move(images));
     };
-    const ExperimentTarget target = validationMetal();
     int lastDone = 0;
     auto records = runExperiment(target, smallSettings(5), render, [&](int done, int total) {
         EXPECT_GT(done, lastDone);
@@ -105,15 +100,17 @@ TEST(Experiment, ScoresEachRunByTheMeanDeltaE00OfItsOwnRender) {
     });
     ASSERT_TRUE(records.ok()) << records.error().message;
     EXPECT_EQ(lastDone, 36);
-    const Image targetImage = flatColour(target.genome);
+    const Image targetImage = renderSmall(target, target.genome);
     for (const auto& record : *records) {
-        auto expected = compareImages(targetImage, flatColour(record.genome));
+        auto expected = compareImages(targetImage, renderSmall(target, record.genome));
         ASSERT_TRUE(expected.ok());
         EXPECT_EQ(record.meanDeltaE00, expected->stats.mean);
     }
     EXPECT_EQ(batches, 2u);  // the target, then the 18 runs in one batch
+    // Different best individuals look different: not every score is the same.
+    EXPECT_NE(std::min_element(records->begin(), records->end(), byDeltaE)->meanDeltaE00,
+              std::max_element(records->begin(), records->end(), byDeltaE)->meanDeltaE00);
 }
-
 
 }  // namespace
 }  // namespace matevo
