@@ -120,7 +120,11 @@ int totalWork(const Request& request) {
 }
 
 std::string sizeLabel(const GaSize& size) {
-    return "p" + std::to_string(size.population) + "_g" + std::to_string(size.generations);
+    std::string label = "p";
+    label += std::to_string(size.population);
+    label += "_g";
+    label += std::to_string(size.generations);
+    return label;
 }
 
 void writeOrThrow(const Status& status) {
