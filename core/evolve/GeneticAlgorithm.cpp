@@ -1,0 +1,150 @@
+#include "evolve/GeneticAlgorithm.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "evolve/Crossover.h"
+#include "evolve/Fitness.h"
+#include "evolve/GenomeSampling.h"
+#include "evolve/Mutation.h"
+#include "evolve/TournamentSelection.h"
+
+namespace matevo {
+namespace {
+
+// Presets and the command line reject absurd values before they get here; clamping keeps the
+// algorithm defined for any input anyway.
+GaSettings usableSettings(GaSettings settings) {
+    settings.population = std::clamp(settings.population, 1, kMaxPopulation);
+    settings.generations = std::clamp(settings.generations, 0, kMaxGenerations);
+    settings.elitism = std::clamp(settings.elitism, 0, settings.population);
+    return settings;
+}
+
+FitnessEvaluator genotypeEvaluator(const Genome& target, const FamilyRules& rules,
+                                   const GaSettings& settings) {
+    return [distance = GenotypeDistance(target, rules, settings)](std::span<const Genome> genomes,
+                                                                  std::span<double> fitness) {
+        for (std::size_t i = 0; i < genomes.size(); ++i) fitness[i] = distance(genomes[i]);
+    };
+}
+
+bool fitterFirst(const Individual& a, const Individual& b) { return a.fitness < b.fitness; }
+
+double diversity(const std::vector<Individual>& population, const FamilyRules& rules) {
+    const std::size_t count = population.size();
+    if (count < 2) return 0;
+    // Sum over pairs of |x_i - x_j|^2 = N * sum_i |x_i - mean|^2, so no O(N^2) loop is needed.
+    double spread = 0;
+    for (std::size_t c = 0; c < kChromosomeCount; ++c) {
+        const ChromosomeRange& range = rules.ranges[c];
+        if (!range.active || range.width() <= 0) continue;
+        double mean = 0;
+        for (const auto& individual : population) mean += individual.genome[c];
+        mean /= static_cast<double>(count);
+        double squares = 0;
+        for (const auto& individual : population) {
+            const double deviation = (individual.genome[c] - mean) / range.width();
+            squares += deviation * deviation;
+        }
+        spread += squares;
+    }
+    return std::sqrt(2.0 * spread / static_cast<double>(count - 1));
+}
+
+}  // namespace
+
+GeneticAlgorithm::GeneticAlgorithm(const MaterialFamily& family, const Genome& target,
+                                   const GaSettings& settings)
+    : GeneticAlgorithm(family, target, settings,
+                       genotypeEvaluator(target, familyRules(family), settings)) {}
+
+GeneticAlgorithm::GeneticAlgorithm(const MaterialFamily& family, const Genome& /*target*/,
+                                   const GaSettings& settings, FitnessEvaluator evaluate)
+    : rules_(familyRules(family)),
+      settings_(usableSettings(settings)),
+      evaluate_(std::move(evaluate)),
+      random_(settings.seed) {}
+
+void GeneticAlgorithm::initialize() {
+    random_ = Random(settings_.seed);
+    const auto count = static_cast<std::size_t>(settings_.population);
+    offspring_.resize(count);
+    for (auto& genome : offspring_) genome = randomGenome(rules_, random_);
+    evaluateOffspring();
+    population_.resize(count);
+    for (std::size_t i = 0; i < count; ++i) population_[i] = {offspring_[i], offspringFitness_[i]};
+    generation_ = 0;
+    history_.clear();
+    recordStats();
+}
+
+void GeneticAlgorithm::step() {
+    if (generation_ < 0) initialize();
+    if (finished()) return;
+    const std::size_t count = population_.size();
+
+    parentFitness_.resize(count);
+    for (std::size_t i = 0; i < count; ++i) parentFitness_[i] = population_[i].fitness;
+    for (auto& child : offspring_)
+        child =
+            population_[tournamentSelect(parentFitness_, rates_.tournamentSize, random_)].genome;
+    for (const Couple& couple : pairForCrossover(offspring_, rules_))
+        crossoverCouple(offspring_[couple.first], offspring_[couple.second], rules_,
+                        couple.swapEtas, rates_, random_);
+    for (auto& child : offspring_) mutate(child, rules_, rates_, random_);
+    evaluateOffspring();
+
+    // Elitism: the best parents replace the worst offspring (the population is then kept
+    // ranked, best first).
+    const auto elite = static_cast<std::size_t>(settings_.elitism);
+    std::vector<Individual> elites;
+    if (elite > 0) {
+        elites = rankedPopulation();
+        elites.resize(elite);
+    }
+    for (std::size_t i = 0; i < count; ++i) population_[i] = {offspring_[i], offspringFitness_[i]};
+    if (elite > 0) {
+        std::stable_sort(population_.begin(), population_.end(), fitterFirst);
+        std::copy(elites.begin(), elites.end(),
+                  population_.end() - static_cast<std::ptrdiff_t>(elite));
+    }
+
+    ++generation_;
+    recordStats();
+}
+
+bool GeneticAlgorithm::finished() const { return generation_ >= settings_.generations; }
+
+std::vector<Individual> GeneticAlgorithm::rankedPopulation() const {
+    std::vector<Individual> ranked = population_;
+    std::stable_sort(ranked.begin(), ranked.end(), fitterFirst);
+    return ranked;
+}
+
+void GeneticAlgorithm::run() {
+    initialize();
+    while (!finished()) step();
+}
+
+void GeneticAlgorithm::evaluateOffspring() {
+    offspringFitness_.resize(offspring_.size());
+    evaluate_(offspring_, offspringFitness_);
+}
+
+void GeneticAlgorithm::recordStats() {
+    GenerationStats stats;
+    stats.generation = generation_;
+    const auto [best, worst] =
+        std::minmax_element(population_.begin(), population_.end(), fitterFirst);
+    stats.best = best->fitness;
+    stats.worst = worst->fitness;
+    double sum = 0;
+    for (const auto& individual : population_) sum += individual.fitness;
+    stats.mean = sum / static_cast<double>(population_.size());
+    stats.diversity = diversity(population_, rules_);
+    history_.push_back(stats);
+}
+
+}  // namespace matevo

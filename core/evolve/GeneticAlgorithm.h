@@ -1,0 +1,86 @@
+#pragma once
+// The genetic algorithm of Bernardi et al. (2020) §4.3, one generation per step() so that the
+// editor can run it on a worker thread and show every generation:
+//   N random valid individuals → [tournament (4, p = 1) → two-step pairing and uniform
+//   crossover (0.9 per couple, 0.25 per chromosome) → mutation (0.4 per offspring, 0.1 per
+//   chromosome) → fitness] × G.
+// Every individual it produces satisfies Table 2 for its family.
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "evolve/GaSettings.h"
+#include "evolve/OperatorRates.h"
+#include "evolve/Random.h"
+#include "genome/FamilyRules.h"
+#include "genome/Genome.h"
+#include "genome/MaterialFamily.h"
+
+namespace matevo {
+
+struct Individual {
+    Genome genome;
+    double fitness = 0;  // lower is fitter
+};
+
+struct GenerationStats {
+    int generation = 0;  // 0 = the initial population
+    double best = 0;
+    double mean = 0;
+    double worst = 0;
+    // Root-mean-square distance over all pairs of individuals, each active chromosome divided
+    // by its family range width (so every chromosome spans [0, 1]). 0 for one individual.
+    double diversity = 0;
+};
+
+// Scores a batch of genomes (lower is fitter): fitness[i] for genomes[i]. Called once for the
+// initial population and once per generation, so a renderer can draw the batch at once.
+using FitnessEvaluator =
+    std::function<void(std::span<const Genome> genomes, std::span<double> fitness)>;
+
+class GeneticAlgorithm {
+public:
+    // Fitness: the genotype distance to the target (Eq. 4-6) with the settings' metric,
+    // weights and normalisation.
+    GeneticAlgorithm(const MaterialFamily& family, const Genome& target,
+                     const GaSettings& settings);
+    GeneticAlgorithm(const MaterialFamily& family, const Genome& target, const GaSettings& settings,
+                     FitnessEvaluator evaluate);
+
+    // A fresh random population from settings.seed (calling it again restarts the run).
+    void initialize();
+    // One generation; initialises first if needed; does nothing once finished().
+    void step();
+    bool finished() const;
+    // 0 after initialize(), then the number of steps taken; -1 before initialize().
+    int generation() const { return generation_; }
+
+    const std::vector<Individual>& population() const { return population_; }
+    std::vector<Individual> rankedPopulation() const;  // best first; ties keep their order
+    const std::vector<GenerationStats>& history() const { return history_; }
+    // initialize() and every generation.
+    void run();
+
+    const FamilyRules& rules() const { return rules_; }
+    // The settings in use: population >= 1, generations >= 0, elitism in [0, population].
+    const GaSettings& settings() const { return settings_; }
+
+private:
+    void evaluateOffspring();
+    void recordStats();
+
+    FamilyRules rules_;
+    GaSettings settings_;
+    OperatorRates rates_;
+    FitnessEvaluator evaluate_;
+    Random random_;
+    int generation_ = -1;
+    std::vector<Individual> population_;
+    std::vector<GenerationStats> history_;
+    // Reused every generation so the loop does not allocate per individual.
+    std::vector<Genome> offspring_;
+    std::vector<double> offspringFitness_;
+    std::vector<double> parentFitness_;
+};
+
+}  // namespace matevo

@@ -1,0 +1,36 @@
+#pragma once
+// The FGD/TIR tables on disk: generated on first use, then read back. A file is accepted only
+// if its format version, generation settings and checksum match; otherwise it is rebuilt.
+//
+// File layout (little-endian): 8-byte magic "MVFGDTIR", uint32 format version, then per axis
+// (mu, alpha, eta, kappa) int32 count and float64 min, max; int32 samplesPerAxis, int32
+// histogramIntervals, the FGD floats, the TIR floats, and a uint64 FNV-1a checksum of all the
+// bytes before it.
+#include <filesystem>
+
+#include "common/Result.h"
+#include "material/FgdTableGenerator.h"
+
+namespace matevo {
+
+// Bump when the generator's mathematics change, so old caches are rebuilt.
+constexpr unsigned kTableFormatVersion = 1;
+
+Result<FgdTables> readFgdTables(const std::filesystem::path& file,
+                                const TableGenerationSettings& expected);
+// Atomic: written beside the target, then renamed over it.
+Status writeFgdTables(const std::filesystem::path& file, const FgdTables& tables,
+                      const TableGenerationSettings& settings);
+
+// $XDG_CACHE_HOME/matevo, else $HOME/.cache/matevo, else <temp>/matevo-cache.
+std::filesystem::path defaultTableCacheDirectory();
+
+// Reads the cached tables, or builds them (progress on stderr) and caches them. If the cache
+// cannot be written the tables stay in memory and a warning goes to stderr.
+FgdTables loadOrBuildFgdTables(const std::filesystem::path& cacheDirectory,
+                               const TableGenerationSettings& settings = {});
+
+// The process-wide tables (default settings, default cache), built once on first use.
+const FgdTables& defaultFgdTables();
+
+}  // namespace matevo
