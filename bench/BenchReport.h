@@ -14,5 +14,6 @@ struct BenchFigure {
 using BenchReport = std::vector<BenchFigure>;
 
 void benchGeneticAlgorithm(BenchReport& report);
+void benchCpuRender(BenchReport& report);
 
 }  // namespace matevo::bench

@@ -1,0 +1,38 @@
+#pragma once
+// A buffer with its own memory, persistently mapped when the memory is host-visible. Our
+// buffers are few and large (one per batch), so one allocation each is fine.
+#include <cstddef>
+#include <span>
+
+#include "common/Result.h"
+#include "gpu/Device.h"
+#include "gpu/VulkanHandle.h"
+
+namespace matevo::gpu {
+
+class Buffer {
+public:
+    static Result<Buffer> create(const Device& device, VkDeviceSize size,
+                                 VkBufferUsageFlags usage, MemoryUse use);
+
+    VkBuffer handle() const { return buffer_.get(); }
+    VkDeviceSize size() const { return size_; }
+    // Host view of the contents (host memory is always coherent); empty for device memory.
+    std::span<std::byte> bytes() const {
+        return {static_cast<std::byte*>(mapped_), mapped_ ? std::size_t(size_) : 0};
+    }
+
+    template <typename T>
+    std::span<T> as() const {
+        auto raw = bytes();
+        return {reinterpret_cast<T*>(raw.data()), raw.size() / sizeof(T)};
+    }
+
+private:
+    UniqueMemory memory_;  // declared first so that the buffer is destroyed before it
+    UniqueBuffer buffer_;
+    VkDeviceSize size_ = 0;
+    void* mapped_ = nullptr;  // unmapped implicitly when memory_ is freed
+};
+
+}  // namespace matevo::gpu

@@ -1,0 +1,85 @@
+#include "gpu/CommandRunner.h"
+
+#include <cstdint>
+
+#include "gpu/VulkanError.h"
+
+namespace matevo::gpu {
+namespace {
+
+void memoryBarrier(VkCommandBuffer commands, VkPipelineStageFlags destinationStage,
+                   VkAccessFlags destinationAccess) {
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.dstAccessMask = destinationAccess;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, destinationStage, 0, 1,
+                         &barrier, 0, nullptr, 0, nullptr);
+}
+
+}  // namespace
+
+Result<CommandRunner> CommandRunner::create(const Device& device) {
+    CommandRunner runner;
+    runner.device_ = device.handle();
+    runner.queue_ = device.queue();
+
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = device.queueFamily();
+    VkCommandPool pool = VK_NULL_HANDLE;
+    if (VkResult result = vkCreateCommandPool(runner.device_, &poolInfo, nullptr, &pool);
+        result != VK_SUCCESS)
+        return vulkanError("creating a command pool", result);
+    runner.pool_ = UniqueCommandPool(runner.device_, pool);
+
+    VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocateInfo.commandPool = pool;
+    allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocateInfo.commandBufferCount = 1;
+    if (VkResult result =
+            vkAllocateCommandBuffers(runner.device_, &allocateInfo, &runner.commands_);
+        result != VK_SUCCESS)
+        return vulkanError("allocating a command buffer", result);
+
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence = VK_NULL_HANDLE;
+    if (VkResult result = vkCreateFence(runner.device_, &fenceInfo, nullptr, &fence);
+        result != VK_SUCCESS)
+        return vulkanError("creating a fence", result);
+    runner.fence_ = UniqueFence(runner.device_, fence);
+    return runner;
+}
+
+Result<VkCommandBuffer> CommandRunner::begin() {
+    vkResetCommandBuffer(commands_, 0);
+    VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    if (VkResult result = vkBeginCommandBuffer(commands_, &beginInfo); result != VK_SUCCESS)
+        return vulkanError("beginning a command buffer", result);
+    return commands_;
+}
+
+Status CommandRunner::submitAndWait() {
+    if (VkResult result = vkEndCommandBuffer(commands_); result != VK_SUCCESS)
+        return vulkanError("recording commands", result);
+    VkSubmitInfo submitInfo{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submitInfo.commandBufferCount = 1;
+    submitInfo.pCommandBuffers = &commands_;
+    VkFence fence = fence_.get();
+    if (VkResult result = vkQueueSubmit(queue_, 1, &submitInfo, fence); result != VK_SUCCESS)
+        return vulkanError("submitting commands", result);
+    VkResult waited = vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX);
+    vkResetFences(device_, 1, &fence);
+    if (waited != VK_SUCCESS) return vulkanError("waiting for the GPU", waited);
+    return Ok{};
+}
+
+void computeWriteToComputeReadBarrier(VkCommandBuffer commands) {
+    memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+}
+
+void computeWriteToHostReadBarrier(VkCommandBuffer commands) {
+    memoryBarrier(commands, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+}
+
+}  // namespace matevo::gpu

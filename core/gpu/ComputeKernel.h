@@ -1,0 +1,44 @@
+#pragma once
+// One compute shader with its pipeline and a single descriptor set. Bindings are numbered in
+// the order given at creation. Callers submit and wait before rebinding (our passes do).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "common/Result.h"
+#include "gpu/Buffer.h"
+#include "gpu/Device.h"
+#include "gpu/VulkanHandle.h"
+
+namespace matevo::gpu {
+
+class ComputeKernel {
+public:
+    static Result<ComputeKernel> create(const Device& device, std::span<const uint32_t> spirv,
+                                        std::vector<VkDescriptorType> bindings,
+                                        uint32_t pushConstantBytes);
+
+    void bindBuffer(uint32_t binding, const Buffer& buffer) const;
+    void bindSampledImage(uint32_t binding, VkImageView view, VkSampler sampler) const;
+    void bindStorageImage(uint32_t binding, VkImageView view) const;
+
+    // Records the dispatch; pushConstants must hold pushConstantBytes bytes.
+    void record(VkCommandBuffer commands, const void* pushConstants, uint32_t groupsX,
+                uint32_t groupsY, uint32_t groupsZ) const;
+
+private:
+    void write(uint32_t binding, const VkDescriptorBufferInfo* bufferInfo,
+               const VkDescriptorImageInfo* imageInfo) const;
+
+    VkDevice device_ = VK_NULL_HANDLE;
+    std::vector<VkDescriptorType> bindings_;
+    uint32_t pushConstantBytes_ = 0;
+    UniqueShaderModule module_;
+    UniqueDescriptorSetLayout setLayout_;
+    UniquePipelineLayout pipelineLayout_;
+    UniquePipeline pipeline_;
+    UniqueDescriptorPool pool_;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;  // freed with the pool
+};
+
+}  // namespace matevo::gpu

@@ -1,0 +1,48 @@
+#include "gpu/DeltaE00Pass.h"
+
+#include <cstring>
+
+#include <shaders/kDeltaE00HeatmapSpirv.h>
+
+namespace matevo::gpu {
+namespace {
+
+constexpr uint32_t kWorkgroupSize = 64;  // local_size_x in the shader
+
+struct PushConstants {
+    uint32_t pixelCount;
+    float minDeltaE;
+    float maxDeltaE;
+};
+
+}  // namespace
+
+Result<DeltaE00Pass> DeltaE00Pass::create(const Device& device, const Colormap& colormap) {
+    auto colormapBuffer = Buffer::create(device, sizeof(Colormap),
+                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+    if (!colormapBuffer) return colormapBuffer.error();
+    std::memcpy(colormapBuffer->bytes().data(), colormap.data(), sizeof(Colormap));
+
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    auto kernel = ComputeKernel::create(device, kDeltaE00HeatmapSpirv,
+                                        {storage, storage, storage, storage, storage},
+                                        sizeof(PushConstants));
+    if (!kernel) return kernel.error();
+    DeltaE00Pass pass;
+    pass.colormap_ = std::move(colormapBuffer).value();
+    pass.kernel_ = std::move(kernel).value();
+    pass.kernel_.bindBuffer(4, pass.colormap_);
+    return pass;
+}
+
+void DeltaE00Pass::record(VkCommandBuffer commands, const DeltaE00Batch& batch) const {
+    kernel_.bindBuffer(0, *batch.reference);
+    kernel_.bindBuffer(1, *batch.candidates);
+    kernel_.bindBuffer(2, *batch.deltaE);
+    kernel_.bindBuffer(3, *batch.heatmaps);
+    const PushConstants constants{batch.pixelCount, batch.minDeltaE, batch.maxDeltaE};
+    kernel_.record(commands, &constants, (batch.pixelCount + kWorkgroupSize - 1) / kWorkgroupSize,
+                   batch.candidateCount, 1);
+}
+
+}  // namespace matevo::gpu

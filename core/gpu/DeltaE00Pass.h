@@ -1,0 +1,41 @@
+#pragma once
+// The ΔE00 + heatmap compute pass (shaders/DeltaE00Heatmap.comp): one reference image against
+// a batch of candidates, all linear RGBA float buffers laid out like Image::rgba, one image
+// after another. Writes per-pixel ΔE00 (-1 where either alpha <= 0.5) and heatmap RGBA.
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "common/Result.h"
+#include "gpu/Buffer.h"
+#include "gpu/ComputeKernel.h"
+
+namespace matevo::gpu {
+
+struct DeltaE00Batch {
+    const Buffer* reference = nullptr;   // pixelCount RGBA
+    const Buffer* candidates = nullptr;  // candidateCount * pixelCount RGBA
+    const Buffer* deltaE = nullptr;      // candidateCount * pixelCount floats, written
+    const Buffer* heatmaps = nullptr;    // candidateCount * pixelCount RGBA, written
+    uint32_t pixelCount = 0;
+    uint32_t candidateCount = 0;
+    float minDeltaE = 0.0f;  // maps to the first colormap entry
+    float maxDeltaE = 10.0f;  // maps to the last
+};
+
+class DeltaE00Pass {
+public:
+    static constexpr std::size_t kColormapSize = 256;
+    using Colormap = std::array<std::array<float, 4>, kColormapSize>;  // linear RGBA
+
+    static Result<DeltaE00Pass> create(const Device& device, const Colormap& colormap);
+
+    // Records the pass into commands; the caller adds barriers around it.
+    void record(VkCommandBuffer commands, const DeltaE00Batch& batch) const;
+
+private:
+    Buffer colormap_;
+    ComputeKernel kernel_;
+};
+
+}  // namespace matevo::gpu

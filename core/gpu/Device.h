@@ -1,0 +1,63 @@
+#pragma once
+// A logical device with one queue that does graphics, compute and transfer. The builder picks
+// the most capable physical device that supports Vulkan 1.2 (discrete > integrated > virtual >
+// CPU, so lavapipe is chosen only when nothing else exists; VK_DRIVER_FILES pins a driver).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "common/Result.h"
+#include "gpu/Instance.h"
+#include "gpu/VulkanHandle.h"
+
+namespace matevo::gpu {
+
+// Where a buffer's memory should live.
+enum class MemoryUse {
+    DeviceLocal,  // used by shaders only
+    Upload,       // written by the host, read by shaders
+    Readback,     // written by shaders, read by the host (cached when the device offers it)
+};
+
+class Device {
+public:
+    VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
+    VkDevice handle() const { return device_.get(); }
+    VkQueue queue() const { return queue_; }
+    uint32_t queueFamily() const { return queueFamily_; }
+    const std::string& name() const { return name_; }
+    bool isCpu() const { return isCpu_; }
+
+    // Index of a memory type allowed by typeBits that suits the use, or an Error.
+    Result<uint32_t> memoryTypeFor(uint32_t typeBits, MemoryUse use) const;
+
+private:
+    friend class DeviceBuilder;
+    VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
+    VkPhysicalDeviceMemoryProperties memory_{};
+    UniqueDevice device_;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    uint32_t queueFamily_ = 0;
+    std::string name_;
+    bool isCpu_ = false;
+};
+
+class DeviceBuilder {
+public:
+    explicit DeviceBuilder(const Instance& instance) : instance_(instance.handle()) {}
+    // Device extensions a caller needs, e.g. VK_KHR_swapchain for the editor.
+    DeviceBuilder& requireExtensions(const std::vector<std::string>& extensions);
+    // Only queue families that can present to this surface qualify (the editor's window).
+    DeviceBuilder& requirePresentTo(VkSurfaceKHR surface);
+
+    Result<Device> build() const;
+
+private:
+    VkInstance instance_;
+    std::vector<std::string> extensions_;
+    VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+};
+
+}  // namespace matevo::gpu

@@ -1,0 +1,110 @@
+#include "gpu/GpuImage.h"
+
+#include <cstring>
+
+#include "gpu/Buffer.h"
+#include "gpu/VulkanError.h"
+
+namespace matevo::gpu {
+
+Result<GpuImage> GpuImage::create(const Device& device, const GpuImageSpec& spec) {
+    const VkDevice vkDevice = device.handle();
+    GpuImage image;
+    image.spec_ = spec;
+
+    VkImageCreateInfo imageInfo{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    imageInfo.imageType = spec.type;
+    imageInfo.format = spec.format;
+    imageInfo.extent = spec.extent;
+    imageInfo.mipLevels = 1;
+    imageInfo.arrayLayers = 1;
+    imageInfo.samples = VK_SAMPLE_COUNT_1_BIT;
+    imageInfo.tiling = VK_IMAGE_TILING_OPTIMAL;
+    imageInfo.usage = spec.usage;
+    imageInfo.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    imageInfo.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkImage handle = VK_NULL_HANDLE;
+    if (VkResult result = vkCreateImage(vkDevice, &imageInfo, nullptr, &handle);
+        result != VK_SUCCESS)
+        return vulkanError("creating an image", result);
+
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(vkDevice, handle, &requirements);
+    auto memoryType = device.memoryTypeFor(requirements.memoryTypeBits, MemoryUse::DeviceLocal);
+    if (!memoryType) {
+        vkDestroyImage(vkDevice, handle, nullptr);
+        return memoryType.error();
+    }
+    VkMemoryAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    allocateInfo.allocationSize = requirements.size;
+    allocateInfo.memoryTypeIndex = *memoryType;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    if (VkResult result = vkAllocateMemory(vkDevice, &allocateInfo, nullptr, &memory);
+        result != VK_SUCCESS) {
+        vkDestroyImage(vkDevice, handle, nullptr);
+        return vulkanError("allocating image memory", result);
+    }
+    image.memory_ = UniqueMemory(vkDevice, memory);
+    image.image_ = UniqueImage(vkDevice, handle);
+    vkBindImageMemory(vkDevice, handle, memory, 0);
+
+    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    viewInfo.image = handle;
+    viewInfo.viewType = spec.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D
+                                                      : VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.format = spec.format;
+    viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    if (VkResult result = vkCreateImageView(vkDevice, &viewInfo, nullptr, &view);
+        result != VK_SUCCESS)
+        return vulkanError("creating an image view", result);
+    image.view_ = UniqueImageView(vkDevice, view);
+    return image;
+}
+
+Result<GpuImage> GpuImage::createFilled(const Device& device, CommandRunner& runner,
+                                        const GpuImageSpec& spec,
+                                        std::span<const std::byte> texels) {
+    auto image = create(device, spec);
+    if (!image) return image;
+    auto staging = Buffer::create(device, texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                  MemoryUse::Upload);
+    if (!staging) return staging.error();
+    std::memcpy(staging->bytes().data(), texels.data(), texels.size());
+
+    auto commands = runner.begin();
+    if (!commands) return commands.error();
+    transitionImage(*commands, image->handle(), VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = spec.extent;
+    vkCmdCopyBufferToImage(*commands, staging->handle(), image->handle(),
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    transitionImage(*commands, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_SHADER_READ_BIT);
+    if (auto submitted = runner.submitAndWait(); !submitted) return submitted.error();
+    return image;
+}
+
+void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from,
+                     VkImageLayout to, VkPipelineStageFlags sourceStage,
+                     VkAccessFlags sourceAccess, VkPipelineStageFlags destinationStage,
+                     VkAccessFlags destinationAccess) {
+    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    barrier.srcAccessMask = sourceAccess;
+    barrier.dstAccessMask = destinationAccess;
+    barrier.oldLayout = from;
+    barrier.newLayout = to;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = image;
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(commands, sourceStage, destinationStage, 0, 0, nullptr, 0, nullptr, 1,
+                         &barrier);
+}
+
+}  // namespace matevo::gpu

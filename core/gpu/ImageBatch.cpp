@@ -1,0 +1,72 @@
+#include "gpu/ImageBatch.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace matevo::gpu {
+namespace {
+
+// Mean, max and nearest-rank 95th percentile over the covered pixels, as compareImages pools.
+DeltaEStats pool(const DeltaEMap& map) {
+    DeltaEStats stats;
+    std::vector<float> covered;
+    covered.reserve(map.deltaE.size());
+    double sum = 0.0;
+    for (std::size_t i = 0; i < map.deltaE.size(); ++i) {
+        if (!map.covered[i]) continue;
+        covered.push_back(map.deltaE[i]);
+        sum += map.deltaE[i];
+        stats.max = std::max(stats.max, double(map.deltaE[i]));
+    }
+    stats.pixels = covered.size();
+    if (covered.empty()) return stats;
+    stats.mean = sum / double(covered.size());
+    const std::size_t rank = (95 * covered.size() + 99) / 100;  // ceil(0.95 N), 1-based
+    auto percentile = covered.begin() + std::ptrdiff_t(rank - 1);
+    std::nth_element(covered.begin(), percentile, covered.end());
+    stats.p95 = *percentile;
+    return stats;
+}
+
+}  // namespace
+
+Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& shape,
+                                 int channels, MemoryUse use) {
+    const VkDeviceSize size =
+        VkDeviceSize(shape.pixelCount()) * shape.count * VkDeviceSize(channels) * sizeof(float);
+    return Buffer::create(device, std::max<VkDeviceSize>(size, 4),
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, use);
+}
+
+void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index,
+                 const Image& image) {
+    const std::size_t floats = std::size_t(shape.pixelCount()) * 4;
+    std::memcpy(batch.as<float>().data() + floats * index, image.rgba.data(),
+                floats * sizeof(float));
+}
+
+Image downloadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index) {
+    Image image(shape.width, shape.height);
+    const std::size_t floats = image.rgba.size();
+    std::memcpy(image.rgba.data(), batch.as<float>().data() + floats * index,
+                floats * sizeof(float));
+    return image;
+}
+
+DeltaEMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index) {
+    DeltaEMap map;
+    map.width = shape.width;
+    map.height = shape.height;
+    const std::size_t pixels = shape.pixelCount();
+    const float* values = batch.as<float>().data() + pixels * index;
+    map.deltaE.resize(pixels);
+    map.covered.resize(pixels);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        map.covered[i] = values[i] >= 0.0f;
+        map.deltaE[i] = std::max(values[i], 0.0f);
+    }
+    map.stats = pool(map);
+    return map;
+}
+
+}  // namespace matevo::gpu

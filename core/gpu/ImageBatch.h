@@ -1,0 +1,34 @@
+#pragma once
+// Host-visible buffers holding a batch of same-sized images or ΔE00 maps, one after another in
+// the layout of Image::rgba, and their conversion to and from the core types.
+#include <cstdint>
+#include <span>
+
+#include "color/ImageDifference.h"
+#include "common/Image.h"
+#include "common/Result.h"
+#include "gpu/Buffer.h"
+
+namespace matevo::gpu {
+
+struct ImageBatchShape {
+    int width = 0;
+    int height = 0;
+    uint32_t count = 0;
+
+    uint32_t pixelCount() const { return uint32_t(width) * uint32_t(height); }
+};
+
+// A buffer for `shape.count` RGBA float images (channels = 4) or float maps (channels = 1).
+Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& shape,
+                                 int channels, MemoryUse use);
+
+// Copies image into slot `index` (sizes must match the shape).
+void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index,
+                 const Image& image);
+Image downloadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
+
+// A ΔE00 map from the pass's output (negative = not covered) with its pooled statistics.
+DeltaEMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
+
+}  // namespace matevo::gpu

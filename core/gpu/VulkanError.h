@@ -1,0 +1,17 @@
+#pragma once
+// Turns a failed VkResult into an Error that says what was being attempted.
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+#include "common/Result.h"
+
+namespace matevo::gpu {
+
+std::string describe(VkResult result);
+
+inline Error vulkanError(const std::string& what, VkResult result) {
+    return Error{"Vulkan: " + what + " failed (" + describe(result) + ")"};
+}
+
+}  // namespace matevo::gpu

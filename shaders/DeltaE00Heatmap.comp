@@ -1,0 +1,108 @@
+#version 450
+// Per-pixel CIEDE2000 between one reference image and a batch of candidates, plus a heatmap
+// coloured through a 256-entry lookup table. Mirrors core/color: linear sRGB clamped to [0,1]
+// -> XYZ (D65) -> L*a*b* (white Y = 1) -> CIEDE2000 (kL = kC = kH = 1). Only pixels covered in
+// both images (alpha > 0.5) are compared; the others get deltaE = -1 and a transparent heatmap.
+layout(local_size_x = 64) in;
+
+layout(std430, binding = 0) readonly buffer Reference { vec4 referencePixels[]; };
+layout(std430, binding = 1) readonly buffer Candidates { vec4 candidatePixels[]; };
+layout(std430, binding = 2) writeonly buffer DeltaE { float deltaE[]; };
+layout(std430, binding = 3) writeonly buffer Heatmap { vec4 heatmapPixels[]; };
+layout(std430, binding = 4) readonly buffer Colormap { vec4 colormap[256]; };
+
+layout(push_constant) uniform Settings {
+    uint pixelCount;  // per image
+    float minDeltaE;  // maps to colormap[0]
+    float maxDeltaE;  // maps to colormap[255]
+} settings;
+
+const float kPi = 3.14159265358979;
+
+// CIE 15:2004 companding with the exact rationals (6/29)^3, (29/6)^2 / 3 and 4/29.
+float labF(float t) {
+    return t > 216.0 / 24389.0 ? pow(t, 1.0 / 3.0) : (841.0 / 108.0) * t + 4.0 / 29.0;
+}
+
+vec3 linearSrgbToLab(vec3 rgb) {
+    rgb = clamp(rgb, 0.0, 1.0);
+    // sRGB primaries and the D65 white (0.3127, 0.3290), scaled so that RGB (1,1,1) has Y = 1;
+    // the constructor takes columns, so each line here is one column of the matrix.
+    const mat3 toXyz = mat3(0.41239079926595951, 0.21263900587151036, 0.019330818715591849,
+                            0.35758433938387796, 0.71516867876775592, 0.11919477979462599,
+                            0.18048078840183429, 0.072192315360733714, 0.95053215224966059);
+    const vec3 white = vec3(0.9504559270516717, 1.0, 1.0890577507598784);
+    vec3 ratio = (toXyz * rgb) / white;
+    vec3 f = vec3(labF(ratio.x), labF(ratio.y), labF(ratio.z));
+    return vec3(116.0 * f.y - 16.0, 500.0 * (f.x - f.y), 200.0 * (f.y - f.z));
+}
+
+// Hue angle in degrees in [0, 360); 0 for a neutral colour, as in Sharma et al. (2005).
+float hueDegrees(float b, float aPrime) {
+    if (b == 0.0 && aPrime == 0.0) return 0.0;
+    float h = degrees(atan(b, aPrime));
+    return h < 0.0 ? h + 360.0 : h;
+}
+
+float ciede2000(vec3 lab1, vec3 lab2) {
+    float c1 = length(lab1.yz);
+    float c2 = length(lab2.yz);
+    float cMean7 = pow(0.5 * (c1 + c2), 7.0);
+    float g = 0.5 * (1.0 - sqrt(cMean7 / (cMean7 + 6103515625.0)));  // 25^7
+    float a1 = (1.0 + g) * lab1.y;
+    float a2 = (1.0 + g) * lab2.y;
+    float cp1 = length(vec2(a1, lab1.z));
+    float cp2 = length(vec2(a2, lab2.z));
+    float hp1 = hueDegrees(lab1.z, a1);
+    float hp2 = hueDegrees(lab2.z, a2);
+
+    float dL = lab2.x - lab1.x;
+    float dC = cp2 - cp1;
+    float dh = 0.0;
+    if (cp1 * cp2 != 0.0) {
+        dh = hp2 - hp1;
+        if (dh > 180.0) dh -= 360.0;
+        else if (dh < -180.0) dh += 360.0;
+    }
+    float dH = 2.0 * sqrt(cp1 * cp2) * sin(radians(dh) * 0.5);
+
+    float lMean = 0.5 * (lab1.x + lab2.x);
+    float cMean = 0.5 * (cp1 + cp2);
+    float hMean = hp1 + hp2;
+    if (cp1 * cp2 != 0.0) {
+        if (abs(hp1 - hp2) <= 180.0) hMean *= 0.5;
+        else hMean = hMean < 360.0 ? 0.5 * (hMean + 360.0) : 0.5 * (hMean - 360.0);
+    }
+    float t = 1.0 - 0.17 * cos(radians(hMean - 30.0)) + 0.24 * cos(radians(2.0 * hMean))
+            + 0.32 * cos(radians(3.0 * hMean + 6.0)) - 0.20 * cos(radians(4.0 * hMean - 63.0));
+    float dTheta = 30.0 * exp(-pow((hMean - 275.0) / 25.0, 2.0));
+    float cMeanP7 = pow(cMean, 7.0);
+    float rC = 2.0 * sqrt(cMeanP7 / (cMeanP7 + 6103515625.0));
+    float lShift = (lMean - 50.0) * (lMean - 50.0);
+    float sL = 1.0 + 0.015 * lShift / sqrt(20.0 + lShift);
+    float sC = 1.0 + 0.045 * cMean;
+    float sH = 1.0 + 0.015 * cMean * t;
+    float rT = -sin(radians(2.0 * dTheta)) * rC;
+    float termL = dL / sL;
+    float termC = dC / sC;
+    float termH = dH / sH;
+    return sqrt(max(termL * termL + termC * termC + termH * termH + rT * termC * termH, 0.0));
+}
+
+void main() {
+    uint pixel = gl_GlobalInvocationID.x;
+    if (pixel >= settings.pixelCount) return;
+    uint index = gl_GlobalInvocationID.y * settings.pixelCount + pixel;
+    vec4 reference = referencePixels[pixel];
+    vec4 candidate = candidatePixels[index];
+    if (reference.a <= 0.5 || candidate.a <= 0.5) {
+        deltaE[index] = -1.0;
+        heatmapPixels[index] = vec4(0.0);
+        return;
+    }
+    float difference = ciede2000(linearSrgbToLab(reference.rgb), linearSrgbToLab(candidate.rgb));
+    deltaE[index] = difference;
+    float span = max(settings.maxDeltaE - settings.minDeltaE, 1e-6);
+    float position = clamp((difference - settings.minDeltaE) / span, 0.0, 1.0);
+    heatmapPixels[index] = colormap[uint(round(position * 255.0))];
+}

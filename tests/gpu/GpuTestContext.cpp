@@ -1,0 +1,24 @@
+#include "GpuTestContext.h"
+
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace matevo::test {
+
+gpu::GpuContext* validatedContext() {
+    static auto context = gpu::GpuContext::createHeadless({.validation = true});
+    EXPECT_TRUE(context.ok()) << "no usable Vulkan device: " << context.error().message;
+    return context.ok() ? &context.value() : nullptr;
+}
+
+void expectNoValidationMessages(const gpu::GpuContext& context) {
+    const auto& log = context.instance.validationLog();
+    std::string messages;
+    for (const auto& message : log.messages()) messages += "\n  " + message;
+    EXPECT_EQ(log.errorCount(), 0) << messages;
+    EXPECT_EQ(log.warningCount(), 0) << messages;
+}
+
+}  // namespace matevo::test
