@@ -15,5 +15,6 @@ using BenchReport = std::vector<BenchFigure>;
 
 void benchGeneticAlgorithm(BenchReport& report);
 void benchCpuRender(BenchReport& report);
+void benchDeltaE00(BenchReport& report);
 
 }  // namespace matevo::bench

@@ -22,6 +22,7 @@ int runBench(CommandLine& args) {
     bench::BenchReport report;
     bench::benchGeneticAlgorithm(report);
     bench::benchCpuRender(report);
+    bench::benchDeltaE00(report);
 
     if (asJson) {
         nlohmann::json out = nlohmann::json::object();
