@@ -133,6 +133,7 @@ private:
     ScriptPlayer script_;
     EditorTimings timings_;
     std::optional<Preset> submittedPreset_;
+    std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
@@ -215,7 +216,10 @@ int EditorApp::run() {
         if (shouldQuit()) break;
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_.get(), &width, &height);
-        if (width == 0 || height == 0) continue;  // minimised: nothing to draw into
+        if (width == 0 || height == 0) {  // minimised: nothing to draw into until restored
+            glfwWaitEventsTimeout(0.1);
+            continue;
+        }
 
         const bool evolving = worker_->busy();
         const auto started = Clock::now();
@@ -254,7 +258,10 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     if (requests.quit) quitRequested_ = true;
     if (requests.snapshot) screenshotPath = nextSnapshotPath();
     submitChangesToWorker();
-    glfwSetWindowTitle(window_.get(), ui::windowTitle(ui_.state()).c_str());
+    if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
+        glfwSetWindowTitle(window_.get(), title.c_str());
+        title_ = std::move(title);
+    }
 
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);

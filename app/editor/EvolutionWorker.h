@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "CandidateRenderCache.h"
 #include "EditorState.h"
 #include "color/ImageDifference.h"
 #include "common/Image.h"
@@ -49,6 +50,7 @@ public:
     static constexpr int kGridTiles = 24;
     static constexpr int kTileSize = 128;
     static constexpr int kTargetSize = 320;
+    static constexpr std::size_t kRenderCacheSize = 128;  // tiles (~50 MB)
 
     explicit EvolutionWorker(std::function<void()> onUpdate);
     ~EvolutionWorker();
@@ -69,6 +71,7 @@ private:
     void publish(EvolutionUpdate update);
 
     std::function<void()> onUpdate_;
+    CandidateRenderCache renderCache_{kTileSize, kTargetSize, kRenderCacheSize};  // worker only
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<EvolutionJob> pending_;
