@@ -7,24 +7,20 @@ namespace matevo {
 
 double scaledDistance(const Genome& a, const Genome& b, DistanceMetric metric,
                       const ChromosomeScales& scales) {
-    double maximum = 0;
-    double sum = 0;
-    double sumOfSquares = 0;
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
-        const double term = scales[i] * std::abs(a[i] - b[i]);
-        maximum = std::max(maximum, term);
-        sum += term;
-        sumOfSquares += term * term;
-    }
+    const auto term = [&](std::size_t i) { return scales[i] * std::abs(a[i] - b[i]); };
+    double result = 0;
     switch (metric) {
         case DistanceMetric::Chebyshev:
-            return maximum;
+            for (std::size_t i = 0; i < kChromosomeCount; ++i) result = std::max(result, term(i));
+            return result;
         case DistanceMetric::Manhattan:
-            return sum;
+            for (std::size_t i = 0; i < kChromosomeCount; ++i) result += term(i);
+            return result;
         case DistanceMetric::Euclidean:
             break;
     }
-    return std::sqrt(sumOfSquares);
+    for (std::size_t i = 0; i < kChromosomeCount; ++i) result += term(i) * term(i);
+    return std::sqrt(result);
 }
 
 ChromosomeScales distanceScales(const FamilyRules& rules, const GaSettings& settings) {

@@ -35,22 +35,27 @@ bool fitterFirst(const Individual& a, const Individual& b) { return a.fitness < 
 double diversity(const std::vector<Individual>& population, const FamilyRules& rules) {
     const std::size_t count = population.size();
     if (count < 2) return 0;
-    // Sum over pairs of |x_i - x_j|^2 = N * sum_i |x_i - mean|^2, so no O(N^2) loop is needed.
-    double spread = 0;
+    // Sum over pairs of |x_i - x_j|^2 = N * sum_i |x_i - mean|^2 = sum_i |x_i|^2 * N - |sum_i
+    // x_i|^2, so one pass suffices; coordinates are range-normalised, so no cancellation worry.
+    Genome inverseWidth;
     for (std::size_t c = 0; c < kChromosomeCount; ++c) {
         const ChromosomeRange& range = rules.ranges[c];
-        if (!range.active || range.width() <= 0) continue;
-        double mean = 0;
-        for (const auto& individual : population) mean += individual.genome[c];
-        mean /= static_cast<double>(count);
-        double squares = 0;
-        for (const auto& individual : population) {
-            const double deviation = (individual.genome[c] - mean) / range.width();
-            squares += deviation * deviation;
-        }
-        spread += squares;
+        inverseWidth[c] = range.active && range.width() > 0 ? 1 / range.width() : 0;
     }
-    return std::sqrt(2.0 * spread / static_cast<double>(count - 1));
+    Genome sum;
+    Genome sumOfSquares;
+    for (const auto& individual : population) {
+        for (std::size_t c = 0; c < kChromosomeCount; ++c) {
+            const double x = individual.genome[c] * inverseWidth[c];
+            sum[c] += x;
+            sumOfSquares[c] += x * x;
+        }
+    }
+    const auto n = static_cast<double>(count);
+    double pairSquares = 0;  // sum over unordered pairs
+    for (std::size_t c = 0; c < kChromosomeCount; ++c)
+        pairSquares += n * sumOfSquares[c] - sum[c] * sum[c];
+    return std::sqrt(std::max(0.0, pairSquares) / (n * (n - 1) / 2));
 }
 
 }  // namespace
@@ -77,6 +82,7 @@ void GeneticAlgorithm::initialize() {
     for (std::size_t i = 0; i < count; ++i) population_[i] = {offspring_[i], offspringFitness_[i]};
     generation_ = 0;
     history_.clear();
+    history_.reserve(static_cast<std::size_t>(settings_.generations) + 1);
     recordStats();
 }
 

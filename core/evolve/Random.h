@@ -46,11 +46,27 @@ public:
     }
 
     // Uniform in [0, 1) on the grid of multiples of 2^-53: the top 53 bits, exactly representable.
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+    // (Converting through int64 is exact here and compiles to one instruction.)
+    double uniform() {
+        return static_cast<double>(static_cast<std::int64_t>(next() >> 11)) * 0x1.0p-53;
+    }
 
     // Uniform integer in [0, bound) without modulo bias (Lemire 2019, multiply and reject the
     // few low products that would over-represent some values). bound must be > 0.
-    std::uint64_t below(std::uint64_t bound);
+    std::uint64_t below(std::uint64_t bound) {
+        __extension__ using Uint128 = unsigned __int128;
+        Uint128 product = static_cast<Uint128>(next()) * bound;
+        auto low = static_cast<std::uint64_t>(product);
+        if (low < bound) {
+            // 2^64 mod bound: products whose low word falls below it are the surplus ones.
+            const std::uint64_t threshold = (0 - bound) % bound;
+            while (low < threshold) {
+                product = static_cast<Uint128>(next()) * bound;
+                low = static_cast<std::uint64_t>(product);
+            }
+        }
+        return static_cast<std::uint64_t>(product >> 64);
+    }
 
     // True with probability p (p <= 0 never, p >= 1 always).
     bool bernoulli(double p) { return uniform() < p; }

@@ -114,11 +114,6 @@ ChromosomeRange intersect(const ChromosomeRange& a, const ChromosomeRange& b) {
     return result;
 }
 
-bool EtaRelation::holds(double eta1, double eta2) const {
-    const double difference = direction == EtaDirection::Eta2Below ? eta1 - eta2 : eta2 - eta1;
-    return difference > 0 && difference <= maxDifference;
-}
-
 ChromosomeRange FamilyRules::eta2Given(double eta1) const {
     const double reach = etaRelation.maxDifference;
     const ChromosomeRange byRelation = etaRelation.direction == EtaDirection::Eta2Below
@@ -133,11 +128,6 @@ ChromosomeRange FamilyRules::eta1Given(double eta2) const {
                                            ? openClosed(eta2, eta2 + reach)
                                            : closedOpen(eta2 - reach, eta2);
     return intersect(ranges[kEta1], byRelation);
-}
-
-bool FamilyRules::etasCompatible(double eta1, double eta2) const {
-    return ranges[kEta1].contains(eta1) && ranges[kEta2].contains(eta2) &&
-           etaRelation.holds(eta1, eta2);
 }
 
 std::optional<std::string> validateFamily(const MaterialFamily& family) {

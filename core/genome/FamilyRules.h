@@ -42,7 +42,10 @@ struct EtaRelation {
     EtaDirection direction = EtaDirection::Eta2Below;
     double maxDifference = 0;
 
-    bool holds(double eta1, double eta2) const;
+    bool holds(double eta1, double eta2) const {
+        const double difference = direction == EtaDirection::Eta2Below ? eta1 - eta2 : eta2 - eta1;
+        return difference > 0 && difference <= maxDifference;
+    }
 };
 
 // The value every inactive chromosome is pinned to (no medium: depth 0 drops the medium slot).
@@ -59,7 +62,10 @@ struct FamilyRules {
     // The eta1 values allowed beside this eta2; never empty for an eta2 of a valid genome.
     ChromosomeRange eta1Given(double eta2) const;
     // Whether this (eta1, eta2) pair is allowed: both in range and the relation holds.
-    bool etasCompatible(double eta1, double eta2) const;
+    bool etasCompatible(double eta1, double eta2) const {
+        return ranges[kEta1].contains(eta1) && ranges[kEta2].contains(eta2) &&
+               etaRelation.holds(eta1, eta2);
+    }
 };
 
 // Table 2 pairs texturing with the coat: a roughcoat textures its rough top layer, a clearcoat
