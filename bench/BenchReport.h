@@ -14,5 +14,6 @@ struct BenchFigure {
 using BenchReport = std::vector<BenchFigure>;
 
 void benchGeneticAlgorithm(BenchReport& report);
+void benchGpuGrid(BenchReport& report);  // gpu_grid64_ms and cpu_grid64_ms
 
 }  // namespace matevo::bench
