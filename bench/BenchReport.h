@@ -14,6 +14,7 @@ struct BenchFigure {
 using BenchReport = std::vector<BenchFigure>;
 
 void benchGeneticAlgorithm(BenchReport& report);
+void benchCpuRender(BenchReport& report);
 void benchGpuGrid(BenchReport& report);  // gpu_grid64_ms and cpu_grid64_ms
 
 }  // namespace matevo::bench

@@ -21,6 +21,7 @@ int runBench(CommandLine& args) {
 
     bench::BenchReport report;
     bench::benchGeneticAlgorithm(report);
+    bench::benchCpuRender(report);
     bench::benchGpuGrid(report);
 
     if (asJson) {

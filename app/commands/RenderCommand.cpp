@@ -1,14 +1,69 @@
 #include <cstdio>
+#include <filesystem>
+#include <string>
 
+#include "PresetOption.h"
 #include "commands/Commands.h"
+#include "io/GenomeJson.h"
+#include "io/ImageFile.h"
+#include "scene/SphereRenderer.h"
 
 namespace matevo::cli {
 
-// Placeholder until the issue that owns 'matevo render' lands.
+namespace {
+
+std::filesystem::path outputPath(CommandLine& args) {
+    const auto out = args.option("--out");
+    if (!out) throw UsageError("render: --out FILE.png|FILE.exr is required");
+    const std::string extension = std::filesystem::path(*out).extension().string();
+    if (extension != ".png" && extension != ".exr")
+        throw UsageError("render: --out: " + *out + ": the extension must be .png or .exr");
+    return *out;
+}
+
+}  // namespace
+
 int runRender(CommandLine& args) {
-    (void)args;
-    std::fprintf(stderr, "matevo render: not available in this build yet\n");
-    return 1;
+    if (args.wantsHelp()) {
+        std::printf(
+            "usage: matevo render [--preset P] [--genome FILE.json] [--size N]\n"
+            "                     [--backend cpu|gpu] --out FILE.png|FILE.exr\n\n"
+            "Renders one material on the paper's test sphere (one light, transparent\n"
+            "background, alpha = coverage): the preset's target, or the genome in FILE.json\n"
+            "with the preset's family, base kappa, textures and scene. PNG is sRGB 8-bit,\n"
+            "EXR linear float. --size is the image side in pixels (default: the preset's).\n"
+            "--backend cpu (default) is the reference renderer; gpu is not available yet.\n"
+            "The default preset is presets/validation_metal.json beside the executable.\n");
+        return 0;
+    }
+    const PresetChoice choice = loadPresetOption(args);
+    const auto genomeFile = args.option("--genome");
+    const long long size =
+        args.integerOption("--size", 1, 8192).value_or(choice.preset.scene.imageSize);
+    const std::string backend = args.option("--backend").value_or("cpu");
+    const std::filesystem::path out = outputPath(args);
+    args.finish();
+    if (backend == "gpu") {
+        std::fprintf(stderr, "matevo render: --backend gpu is not available yet; use cpu\n");
+        return 2;
+    }
+    if (backend != "cpu") throw UsageError("render: --backend: expected cpu or gpu, got " + backend);
+
+    MaterialInstance material{choice.preset.target, choice.preset.family, choice.preset.baseKappa};
+    if (genomeFile) {
+        auto genome = loadGenome(*genomeFile);
+        if (!genome) throw UsageError(genome.error().message);
+        material.genome = *genome;
+    }
+    auto textures = loadSceneTextures(choice.preset, choice.file);
+    if (!textures) throw UsageError(textures.error().message);
+
+    const Image image = renderSphereCpu(material, *textures, choice.preset.scene, int(size));
+    if (auto written = writeImage(image, out); !written) {
+        std::fprintf(stderr, "matevo render: %s\n", written.error().message.c_str());
+        return 1;
+    }
+    return 0;
 }
 
 }  // namespace matevo::cli

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
+#include <span>
 
 #include <glm/common.hpp>
 
@@ -111,12 +111,15 @@ struct Slot {
 LobeSet computeLobes(const LayerStack& stack, double cosView, const InterfaceAlbedo& albedo,
                      const AddingOptions& options) {
     LobeSet lobes;
-    std::vector<Slot> slots;
-    slots.push_back({&stack.coat, nullptr, Rgb(1.0), 0.0, &lobes.coat});
-    if (stack.medium) slots.push_back({nullptr, &*stack.medium, stack.coat.eta, 0.0, nullptr});
+    std::array<Slot, 3> slotStorage;  // no allocation: this runs per pixel
+    std::size_t slotCount = 0;
+    slotStorage[slotCount++] = {&stack.coat, nullptr, Rgb(1.0), 0.0, &lobes.coat};
+    if (stack.medium)
+        slotStorage[slotCount++] = {nullptr, &*stack.medium, stack.coat.eta, 0.0, nullptr};
     // TIR at the base uses the coat seen from below even across a medium (§4.1 [REC]).
-    slots.push_back({&stack.base, nullptr, stack.coat.eta, average(1.0 / stack.coat.eta),
-                     &lobes.base});
+    slotStorage[slotCount++] = {&stack.base, nullptr, stack.coat.eta, average(1.0 / stack.coat.eta),
+                                &lobes.base};
+    const std::span<const Slot> slots(slotStorage.data(), slotCount);
 
     // The "empty slab" of §4, then one adding step per slot.
     // R0i itself is not needed: it is the sum of the lobes emitted so far.

@@ -11,8 +11,8 @@ struct SceneSettings {
     std::array<double, 3> cameraPosition = {0.0, 0.0, 4.0};  // looking at the origin, +y up
     double fieldOfViewDegrees = 32.0;           // vertical
     std::array<double, 3> lightDirection = {-0.5, 0.6, 0.62};  // towards the light, normalised on use
-    std::array<double, 3> lightRadiance = {3.0, 3.0, 3.0};     // irradiance at normal incidence
-    std::array<double, 3> environmentRadiance = {0.2, 0.2, 0.2};  // uniform, from every direction
+    std::array<double, 3> lightRadiance = {1.5, 1.5, 1.5};     // irradiance at normal incidence
+    std::array<double, 3> environmentRadiance = {0.25, 0.25, 0.25};  // uniform, from every direction
 
     bool operator==(const SceneSettings&) const = default;
 };

@@ -1,0 +1,61 @@
+#include "scene/SceneTextures.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/ImageFile.h"
+
+namespace matevo {
+
+namespace {
+
+Result<Image> loadTexture(const std::filesystem::path& presetFile, const std::string& field,
+                          const std::string& name) {
+    if (name.empty()) return Image();
+    auto image = readImage(presetFile.parent_path() / name);
+    if (!image) return Error{presetFile.string() + ": " + field + ": " + image.error().message};
+    return image;
+}
+
+}  // namespace
+
+Result<SceneTextures> loadSceneTextures(const Preset& preset,
+                                        const std::filesystem::path& presetFile) {
+    auto roughness = loadTexture(presetFile, "textures.roughness", preset.roughnessTexture);
+    if (!roughness) return roughness.error();
+    auto baseColor = loadTexture(presetFile, "textures.base_color", preset.baseColorTexture);
+    if (!baseColor) return baseColor.error();
+    return SceneTextures{std::move(roughness).value(), std::move(baseColor).value()};
+}
+
+std::array<double, 3> sampleTexture(const Image& texture, double u, double v) {
+    const double x = u * texture.width - 0.5;
+    const double y = std::clamp(v * texture.height - 0.5, 0.0, double(texture.height - 1));
+    const double x0 = std::floor(x);
+    const double y0 = std::min(std::floor(y), double(std::max(texture.height - 2, 0)));
+    const double wx = x - x0, wy = std::min(y - y0, 1.0);
+    auto column = [&](double cx) {
+        const int wrapped = int(cx) % texture.width;
+        return wrapped < 0 ? wrapped + texture.width : wrapped;
+    };
+    const int columns[2] = {column(x0), column(x0 + 1.0)};
+    const int rows[2] = {int(y0), std::min(int(y0) + 1, texture.height - 1)};
+    std::array<double, 3> value = {0.0, 0.0, 0.0};
+    for (int j = 0; j < 2; ++j) {
+        for (int i = 0; i < 2; ++i) {
+            const double weight = (i ? wx : 1.0 - wx) * (j ? wy : 1.0 - wy);
+            const float* texel = texture.pixel(columns[i], rows[j]);
+            for (int c = 0; c < 3; ++c) value[c] += weight * texel[c];
+        }
+    }
+    return value;
+}
+
+SurfaceTexels texelsAt(const SceneTextures& textures, double u, double v) {
+    SurfaceTexels texels;
+    if (textures.roughness.width > 0) texels.roughness = sampleTexture(textures.roughness, u, v)[0];
+    if (textures.baseColor.width > 0) texels.baseColor = sampleTexture(textures.baseColor, u, v);
+    return texels;
+}
+
+}  // namespace matevo

@@ -1,0 +1,30 @@
+#pragma once
+// The textures of the test scene: a roughness texture for the family's textured layer and a
+// base-colour texture tinting the base. An empty image means "no texture" (neutral 1).
+#include <array>
+#include <filesystem>
+
+#include "common/Image.h"
+#include "common/Result.h"
+#include "io/Preset.h"
+#include "material/LayerStack.h"
+
+namespace matevo {
+
+struct SceneTextures {
+    Image roughness;  // red channel, linear value = texel (as readImage returns it)
+    Image baseColor;  // linear RGB
+};
+
+// Loads the preset's textures; their names are relative to the preset file's folder. Errors
+// name the preset file, the field and the image file.
+Result<SceneTextures> loadSceneTextures(const Preset& preset,
+                                        const std::filesystem::path& presetFile);
+
+// Bilinear RGB at (u, v) with the wrap/clamp rule of SphereMapping.h.
+std::array<double, 3> sampleTexture(const Image& texture, double u, double v);
+
+// What the textures say at (u, v); neutral where a texture is absent.
+SurfaceTexels texelsAt(const SceneTextures& textures, double u, double v);
+
+}  // namespace matevo

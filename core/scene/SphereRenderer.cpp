@@ -1,0 +1,125 @@
+#include "scene/SphereRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "material/Bsdf.h"
+#include "material/FgdTableCache.h"
+#include "material/LayeredLobes.h"
+#include "material/ParallelFor.h"
+#include "scene/SphereMapping.h"
+
+namespace matevo {
+
+namespace {
+
+constexpr int kRowsPerChunk = 8;
+
+glm::dvec3 toVector(const std::array<double, 3>& values) {
+    return {values[0], values[1], values[2]};
+}
+
+struct Camera {
+    glm::dvec3 position;
+    glm::dvec3 forward;
+    glm::dvec3 right;
+    glm::dvec3 up;
+    double tanHalfFov;
+
+    explicit Camera(const SceneSettings& scene)
+        : position(toVector(scene.cameraPosition)),
+          forward(glm::normalize(-position)),
+          right(glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)))),
+          up(glm::cross(right, forward)),
+          tanHalfFov(std::tan(scene.fieldOfViewDegrees * std::numbers::pi / 360.0)) {}
+
+    // Ray direction through image position (x, y) in pixels, y down.
+    glm::dvec3 direction(double x, double y, int size) const {
+        const double ndcX = 2.0 * x / size - 1.0;
+        const double ndcY = 1.0 - 2.0 * y / size;
+        return glm::normalize(forward + ndcX * tanHalfFov * right + ndcY * tanHalfFov * up);
+    }
+};
+
+// Distance along the ray to the unit sphere at the origin, or a negative value for a miss.
+double hitUnitSphere(const glm::dvec3& origin, const glm::dvec3& direction) {
+    const double b = glm::dot(origin, direction);
+    const double discriminant = b * b - (glm::dot(origin, origin) - 1.0);
+    if (discriminant < 0.0) return -1.0;
+    return -b - std::sqrt(discriminant);
+}
+
+struct Shader {
+    const MaterialInstance& material;
+    const SceneTextures& textures;
+    const FgdTables& tables;
+    glm::dvec3 toLight;
+    glm::dvec3 lightRadiance;
+    glm::dvec3 environmentRadiance;
+
+    glm::dvec3 radiance(const glm::dvec3& normal, const glm::dvec3& toViewer) const {
+        const auto [u, v] = sphereUv(normal);
+        const LayerStack stack = makeLayerStack(material, texelsAt(textures, u, v));
+        const double cosView = std::max(glm::dot(normal, toViewer), 0.0);
+        const LobeSet lobes = computeLobes(stack, cosView, tables);
+        const double cosLight = glm::dot(normal, toLight);
+        const double cosHalf = glm::dot(normal, glm::normalize(toViewer + toLight));
+        const glm::dvec3 reflected = toVector(evaluateBsdf(lobes, cosView, cosLight, cosHalf)) *
+                                     lightRadiance * std::max(cosLight, 0.0);
+        return reflected + toVector(environmentReflectance(lobes)) * environmentRadiance;
+    }
+};
+
+}  // namespace
+
+Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,
+                      const SceneSettings& scene, int size, const FgdTables& tables) {
+    Image image(size, size);
+    const Camera camera(scene);
+    const Shader shader{material,
+                        textures,
+                        tables,
+                        glm::normalize(toVector(scene.lightDirection)),
+                        toVector(scene.lightRadiance),
+                        toVector(scene.environmentRadiance)};
+    const int subsamples = kSubsamplesPerAxis * kSubsamplesPerAxis;
+
+    auto renderRows = [&](int chunk) {
+        const int lastRow = std::min(size, (chunk + 1) * kRowsPerChunk);
+        for (int y = chunk * kRowsPerChunk; y < lastRow; ++y) {
+            for (int x = 0; x < size; ++x) {
+                glm::dvec3 sum(0.0);
+                int hits = 0;
+                for (int sy = 0; sy < kSubsamplesPerAxis; ++sy) {
+                    for (int sx = 0; sx < kSubsamplesPerAxis; ++sx) {
+                        const glm::dvec3 direction =
+                            camera.direction(x + (sx + 0.5) / kSubsamplesPerAxis,
+                                             y + (sy + 0.5) / kSubsamplesPerAxis, size);
+                        const double distance = hitUnitSphere(camera.position, direction);
+                        if (distance <= 0.0) continue;
+                        const glm::dvec3 normal =
+                            glm::normalize(camera.position + distance * direction);
+                        sum += shader.radiance(normal, -direction);
+                        ++hits;
+                    }
+                }
+                float* pixel = image.pixel(x, y);
+                if (hits == 0) continue;
+                for (int c = 0; c < 3; ++c) pixel[c] = float(sum[c] / hits);
+                pixel[3] = float(hits) / float(subsamples);
+            }
+        }
+    };
+    parallelForChunks((size + kRowsPerChunk - 1) / kRowsPerChunk, renderRows);
+    return image;
+}
+
+Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,
+                      const SceneSettings& scene, int size) {
+    return renderSphereCpu(material, textures, scene, size, defaultFgdTables());
+}
+
+}  // namespace matevo

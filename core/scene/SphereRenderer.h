@@ -1,0 +1,32 @@
+#pragma once
+// The CPU reference renderer of the paper's test scene (§5); the Vulkan renderer must match it.
+//
+// Scene (docs/scene.md): a unit sphere at the origin; a pinhole camera at
+// SceneSettings::cameraPosition looking at the origin, +y up, vertical field of view
+// fieldOfViewDegrees, square image. Each pixel takes 2 x 2 subsamples at offsets (0.25, 0.75);
+// a subsample's ray hits the sphere or not, alpha = the fraction that hit (coverage), RGB = the
+// mean radiance of the hits, not premultiplied; the background is (0, 0, 0, 0).
+// Shading at a hit with normal n, view v, light direction l (normalised lightDirection):
+//   L = f_r(v, l) * lightRadiance * max(0, n.l) + (e_coat + e_base) * environmentRadiance
+// with the lobes of computeLobes at cos_view = n.v (Forward model), textures sampled at
+// sphereUv(n). Output is linear RGB: no tone mapping, no exposure.
+#include "common/Image.h"
+#include "material/FgdTables.h"
+#include "material/MaterialInstance.h"
+#include "scene/SceneSettings.h"
+#include "scene/SceneTextures.h"
+
+namespace matevo {
+
+// Subsamples per pixel side (2 x 2 per pixel).
+constexpr int kSubsamplesPerAxis = 2;
+
+// Multi-threaded over fixed row chunks; the result does not depend on the thread count.
+Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,
+                      const SceneSettings& scene, int size, const FgdTables& tables);
+
+// The same with the process-wide tables (built or read from the cache on first use).
+Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,
+                      const SceneSettings& scene, int size);
+
+}  // namespace matevo

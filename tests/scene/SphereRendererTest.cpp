@@ -1,0 +1,125 @@
+// The CPU reference renderer: coverage mask, highlight spread, and no dead chromosomes.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "genome/FamilyRules.h"
+#include "scene/ProceduralTextures.h"
+#include "scene/SphereRenderer.h"
+
+namespace matevo {
+namespace {
+
+MaterialInstance validationMetal() {
+    MaterialInstance material;
+    material.family = {Coat::Clearcoat, Base::Conductor, false, TexturedLayer::None};
+    material.genome[kEta1] = 1.2;
+    material.genome[kEta2] = 0.8;
+    material.genome[kAlpha1] = 0.03;
+    material.genome[kAlpha2] = 0.1;
+    material.baseKappa = {3.1, 2.9, 2.8};
+    return material;
+}
+
+double luminance(const float* pixel) {
+    return 0.2126 * pixel[0] + 0.7152 * pixel[1] + 0.0722 * pixel[2];
+}
+
+TEST(SphereRenderer, AlphaIsTheSphereDiscAndTheBackgroundIsTransparent) {
+    const SceneSettings scene;
+    const int size = 64;
+    const Image image = renderSphereCpu(validationMetal(), {}, scene, size);
+    ASSERT_EQ(image.width, size);
+    ASSERT_EQ(image.height, size);
+    // Silhouette radius in pixels: the tangent ray's angle is asin(1 / distance).
+    const double distance = std::sqrt(scene.cameraPosition[0] * scene.cameraPosition[0] +
+                                      scene.cameraPosition[1] * scene.cameraPosition[1] +
+                                      scene.cameraPosition[2] * scene.cameraPosition[2]);
+    const double radius = std::tan(std::asin(1.0 / distance)) /
+                          std::tan(scene.fieldOfViewDegrees * std::numbers::pi / 360.0) * size / 2;
+    double coverage = 0.0;
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const float* pixel = image.pixel(x, y);
+            const double r = std::hypot(x + 0.5 - size / 2.0, y + 0.5 - size / 2.0);
+            coverage += pixel[3];
+            if (r < radius - 1.0) {
+                EXPECT_EQ(pixel[3], 1.0f) << x << "," << y;
+                EXPECT_GT(luminance(pixel), 0.0);
+            } else if (r > radius + 1.0) {
+                EXPECT_EQ(pixel[3], 0.0f) << x << "," << y;
+                EXPECT_EQ(pixel[0] + pixel[1] + pixel[2], 0.0f);
+            }
+        }
+    }
+    EXPECT_NEAR(coverage, std::numbers::pi * radius * radius, 0.01 * coverage);
+}
+
+// Pixels brighter than half the brightest: the area of the highlight.
+int highlightArea(const Image& image) {
+    double peak = 0.0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) peak = std::max(peak, luminance(image.pixel(x, y)));
+    int area = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) area += luminance(image.pixel(x, y)) > 0.5 * peak;
+    return area;
+}
+
+TEST(SphereRenderer, RougherBaseSpreadsTheHighlight) {
+    MaterialInstance material = validationMetal();
+    material.genome[kEta1] = 1.0 + 1e-4;  // an index-matched coat: only the base lobe is lit
+    material.genome[kAlpha2] = 0.1;
+    const int smoothArea = highlightArea(renderSphereCpu(material, {}, SceneSettings{}, 96));
+    material.genome[kAlpha2] = 0.3;
+    const int roughArea = highlightArea(renderSphereCpu(material, {}, SceneSettings{}, 96));
+    EXPECT_GT(roughArea, 2 * smoothArea) << smoothArea << " vs " << roughArea;
+}
+
+double valueAt(const ChromosomeRange& range, double fraction) {
+    return range.min + fraction * range.width();
+}
+
+// A genome inside Table 2 with a thin medium, so that every layer stays visible.
+Genome interiorGenome(const FamilyRules& rules) {
+    Genome genome;
+    for (std::size_t i = 0; i < kChromosomeCount; ++i)
+        genome[i] = rules.ranges[i].active ? valueAt(rules.ranges[i], 0.35) : kInactiveChromosomeValue;
+    if (rules.ranges[kDepth].active) genome[kDepth] = valueAt(rules.ranges[kDepth], 0.01);
+    genome[kEta2] = valueAt(rules.eta2Given(genome[kEta1]), 0.35);
+    return genome;
+}
+
+TEST(SphereRenderer, EveryChromosomeTable2LetsVaryChangesTheImage) {
+    SceneTextures textures;
+    textures.roughness = makePaintRoughnessTexture(64, 32);
+    for (const MaterialFamily& family : supportedFamilies()) {
+        const FamilyRules rules = familyRules(family);
+        MaterialInstance material;
+        material.family = family;
+        material.baseKappa = {3.1, 2.9, 2.8};
+        material.genome = interiorGenome(rules);
+        const Image reference = renderSphereCpu(material, textures, SceneSettings{}, 24);
+        for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+            if (!rules.ranges[i].active) continue;
+            MaterialInstance changed = material;
+            const ChromosomeRange range = i == kEta1   ? rules.eta1Given(material.genome[kEta2])
+                                          : i == kEta2 ? rules.eta2Given(material.genome[kEta1])
+                                                       : rules.ranges[i];
+            changed.genome[i] = i == kDepth ? valueAt(range, 0.02) : valueAt(range, 0.6);
+            ASSERT_NE(changed.genome[i], material.genome[i]);
+            const Image image = renderSphereCpu(changed, textures, SceneSettings{}, 24);
+            double largestChange = 0.0;
+            for (std::size_t k = 0; k < image.rgba.size(); ++k)
+                largestChange =
+                    std::max(largestChange, double(std::abs(image.rgba[k] - reference.rgba[k])));
+            EXPECT_GT(largestChange, 1e-5)
+                << describe(family) << ": " << chromosomeName(i) << " is dead";
+        }
+    }
+}
+
+}  // namespace
+}  // namespace matevo
