@@ -9,11 +9,7 @@ namespace matevo::bench {
 // (bench/peers/deap_ga.py). Each repetition is a whole run with its own seed.
 void benchGeneticAlgorithm(BenchReport& report) {
     const MaterialFamily family{Coat::Clearcoat, Base::Conductor, false, TexturedLayer::None};
-    Genome target;
-    target[kEta1] = 1.2;
-    target[kEta2] = 0.8;
-    target[kAlpha1] = 0.03;
-    target[kAlpha2] = 0.1;
+    const Genome target{{1.2, 0.8, 0.03, 0.1}};  // eta1, eta2, alpha1, alpha2; no medium
     GaSettings settings;
     settings.population = 100;
     settings.generations = 10;

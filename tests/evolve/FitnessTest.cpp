@@ -4,24 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include "../genome/TestGenomes.h"
+
 namespace matevo {
 namespace {
 
-constexpr MaterialFamily kClearcoatConductor{Coat::Clearcoat, Base::Conductor, false,
-                                             TexturedLayer::None};
-constexpr MaterialFamily kMetalDepth{Coat::Clearcoat, Base::Conductor, true, TexturedLayer::None};
-
-Genome genomeOf(double eta1, double eta2, double alpha1, double alpha2) {
-    Genome genome;
-    genome[kEta1] = eta1;
-    genome[kEta2] = eta2;
-    genome[kAlpha1] = alpha1;
-    genome[kAlpha2] = alpha2;
-    return genome;
-}
-
 // Validation metal and a neighbour: differences 0.3, 0.2, 0.02, 0.2.
-const Genome kTarget = genomeOf(1.2, 0.8, 0.03, 0.1);
+const Genome kTarget = validationMetal();
 const Genome kCandidate = genomeOf(1.5, 0.6, 0.05, 0.3);
 
 double fitnessOf(const GaSettings& settings, const MaterialFamily& family, const Genome& target,
