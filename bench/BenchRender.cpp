@@ -1,26 +1,29 @@
+#include <stdexcept>
+
 #include "BenchReport.h"
 #include "Timing.h"
+#include "io/ResourcePaths.h"
 #include "material/FgdTableCache.h"
 #include "scene/SphereRenderer.h"
 
 namespace matevo::bench {
 
 void benchCpuRender(BenchReport& report) {
-    // Validation metal at the default 256^2 (2 x 2 subsamples per pixel), tables already loaded.
-    MaterialInstance material;
-    material.family = {Coat::Clearcoat, Base::Conductor, false, TexturedLayer::None};
-    material.genome[kEta1] = 1.2;
-    material.genome[kEta2] = 0.8;
-    material.genome[kAlpha1] = 0.03;
-    material.genome[kAlpha2] = 0.1;
-    material.baseKappa = {3.1, 2.9, 2.8};
-    const SceneSettings scene;
+    // The default preset (validation metal) at its image size, tables already loaded.
+    const auto presetFile = defaultPresetPath();
+    if (!presetFile) throw std::runtime_error(presetFile.error().message);
+    const auto loaded = loadPreset(*presetFile);
+    if (!loaded) throw std::runtime_error(loaded.error().message);
+    const Preset& preset = loaded->preset;
+    const auto textures = loadSceneTextures(preset, *presetFile);
+    if (!textures) throw std::runtime_error(textures.error().message);
+    const MaterialInstance material{preset.target, preset.family, preset.baseKappa};
     const FgdTables& tables = defaultFgdTables();
+    const int size = preset.scene.imageSize;
     const double milliseconds = medianMilliseconds(
-        7, [&] { renderSphereCpu(material, {}, scene, scene.imageSize, tables); });
-    const double megapixels = double(scene.imageSize) * scene.imageSize / 1e6;
-    report.push_back({"cpu_render_mpix_s", megapixels / (milliseconds / 1000.0),
-                      "CPU reference renderer, validation metal 256^2, all cores (Mpixel/s)"});
+        7, [&] { renderSphereCpu(material, *textures, preset.scene, size, tables); });
+    report.push_back({"cpu_render_mpix_s", double(size) * size / 1e6 / (milliseconds / 1000.0),
+                      "CPU reference renderer, default preset, all cores (Mpixel/s)"});
 }
 
 }  // namespace matevo::bench

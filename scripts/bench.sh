@@ -11,10 +11,14 @@ python=/usr/bin/python3
 
 peers=(
     bench/peers/deap_ga.py
+    bench/peers/skimage_de00.py
 )
 # "matevo_key peer_key kind": kind "time" (lower is better) or "rate" (higher is better).
 comparisons=(
     "ga_pop100_gen10_ms deap_ga_pop100_gen10_ms time"
+    "de00_mpix_s_256 skimage_de00_mpix_s_256 rate"
+    "de00_mpix_s_2048 skimage_de00_mpix_s_2048 rate"
+    "de00_mpix_s skimage_de00_mpix_s rate"
 )
 
 results=("$(./build/matevo bench --json)")

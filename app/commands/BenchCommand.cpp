@@ -22,6 +22,7 @@ int runBench(CommandLine& args) {
     bench::BenchReport report;
     bench::benchGeneticAlgorithm(report);
     bench::benchCpuRender(report);
+    bench::benchDeltaE00(report);
     bench::benchGpuGrid(report);
 
     if (asJson) {

@@ -154,6 +154,10 @@ Status writeImage(const Image& image, const std::filesystem::path& file) {
         return fileError(file, "unsupported image type (expected .png or .exr)");
     if (image.width <= 0 || image.height <= 0 || image.rgba.size() != image.pixelCount() * 4)
         return fileError(file, "cannot write an empty or malformed image");
+    std::error_code ec;
+    const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : ".";
+    if (!std::filesystem::is_directory(folder, ec))
+        return fileError(file, "cannot write: folder " + folder.string() + " does not exist");
     return writeWith(image, file, kind);
 }
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "TestImages.h"
+#include "support/TestImages.h"
 #include "color/Ciede2000.h"
 
 namespace matevo {

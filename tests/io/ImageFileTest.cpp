@@ -2,7 +2,6 @@
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdint>
@@ -10,43 +9,28 @@
 #include <string>
 
 #include "color/Srgb.h"
+#include "support/ScratchFolder.h"
+#include "support/TestImages.h"
 
 namespace matevo {
 namespace {
 
-// A fresh folder per test so parallel ctest runs never share files.
 class ImageFileTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = std::filesystem::temp_directory_path() /
-                  ("matevo_imagefile_" + std::string(info->name()) + "_" +
-                   std::to_string(::getpid()));
-        std::filesystem::remove_all(folder_);
-        std::filesystem::create_directories(folder_);
-    }
-    void TearDown() override { std::filesystem::remove_all(folder_); }
-
     std::size_t filesInFolder() const {
         std::size_t count = 0;
-        for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder_))
+        for ([[maybe_unused]] const auto& entry :
+             std::filesystem::directory_iterator(scratch_.path()))
             ++count;
         return count;
     }
 
-    std::filesystem::path folder_;
+    testing::ScratchFolder scratch_{"matevo_imagefile"};
+    const std::filesystem::path& folder_ = scratch_.path();
 };
 
-// Deterministic values in [0, 1] without <random> distributions.
-float pseudoRandom(std::uint32_t& state) {
-    state = state * 1664525u + 1013904223u;
-    return float(state >> 8) / float(1u << 24);
-}
-
 Image randomImage(int width, int height, std::uint32_t seed) {
-    Image image(width, height);
-    for (float& value : image.rgba) value = pseudoRandom(seed);
-    return image;
+    return testdata::randomImage(width, height, seed, true);
 }
 
 TEST_F(ImageFileTest, ExrRoundTripIsExact) {

@@ -1,6 +1,7 @@
 // The CPU reference renderer: coverage mask, highlight spread, and no dead chromosomes.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -13,14 +14,11 @@ namespace matevo {
 namespace {
 
 MaterialInstance validationMetal() {
-    MaterialInstance material;
-    material.family = {Coat::Clearcoat, Base::Conductor, false, TexturedLayer::None};
-    material.genome[kEta1] = 1.2;
-    material.genome[kEta2] = 0.8;
-    material.genome[kAlpha1] = 0.03;
-    material.genome[kAlpha2] = 0.1;
-    material.baseKappa = {3.1, 2.9, 2.8};
-    return material;
+    auto loaded = loadPreset(std::filesystem::path(MATEVO_SOURCE_DIR) / "presets" /
+                             "validation_metal.json");
+    EXPECT_TRUE(loaded.ok());
+    const Preset& preset = loaded->preset;
+    return {preset.target, preset.family, preset.baseKappa};
 }
 
 double luminance(const float* pixel) {

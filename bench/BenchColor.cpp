@@ -1,0 +1,64 @@
+#include "BenchReport.h"
+#include "Timing.h"
+#include "color/ImageDifference.h"
+#include "color/Srgb.h"
+
+#include <cstdint>
+#include <string>
+
+namespace matevo::bench {
+namespace {
+
+// The benchmark images, generated identically by bench/peers/skimage_de00.py: sRGB-encoded
+// channel k of image `which` (0 or 1) is the top 24 bits of murmur3's fmix32 of 2 k + which,
+// over 2^24; here decoded to linear, as compareImages takes renders. Alpha is 1 everywhere, so
+// both sides score every pixel.
+float encodedChannel(std::uint32_t channelIndex, std::uint32_t which) {
+    std::uint32_t x = 2u * channelIndex + which;
+    x ^= x >> 16;
+    x *= 0x85ebca6bu;
+    x ^= x >> 13;
+    x *= 0xc2b2ae35u;
+    x ^= x >> 16;
+    return float(x >> 8) / float(1u << 24);
+}
+
+Image benchImage(int size, std::uint32_t which) {
+    Image image(size, size);
+    for (std::size_t pixel = 0; pixel < image.pixelCount(); ++pixel) {
+        for (std::size_t c = 0; c < 3; ++c)
+            image.rgba[4 * pixel + c] =
+                float(srgbToLinear(encodedChannel(std::uint32_t(3 * pixel + c), which)));
+        image.rgba[4 * pixel + 3] = 1.0f;
+    }
+    return image;
+}
+
+// Median Mpixel/s of compareImages on all cores, map and statistics included; also reports the
+// mean ΔE00 so it can be checked against the peer's.
+double measure(BenchReport& report, int size, int repetitions) {
+    const Image a = benchImage(size, 0);
+    const Image b = benchImage(size, 1);
+    double meanDeltaE = 0;
+    const double milliseconds = medianMilliseconds(repetitions, [&] {
+        auto map = compareImages(a, b);
+        meanDeltaE = map ? map->stats.mean : -1;
+    });
+    const std::string side = std::to_string(size);
+    report.push_back({"de00_mean_" + side, meanDeltaE,
+                      "mean dE00 of the " + side + "^2 benchmark pair (check against peer)"});
+    const double rate = double(a.pixelCount()) / 1e6 / (milliseconds / 1000.0);
+    report.push_back({"de00_mpix_s_" + side, rate,
+                      "CPU dE00 image comparison " + side + "^2, all cores (Mpixel/s)"});
+    return rate;
+}
+
+}  // namespace
+
+void benchDeltaE00(BenchReport& report) {
+    measure(report, 256, 201);
+    const double large = measure(report, 2048, 15);
+    report.push_back({"de00_mpix_s", large, "CPU dE00 image comparison, 2048^2 (Mpixel/s)"});
+}
+
+}  // namespace matevo::bench

@@ -1,0 +1,36 @@
+#pragma once
+// ΔE00 maps as pictures: a fixed, user-settable ΔE00 range through the 256-entry viridis colour
+// map (ViridisTable.h), alone or blended over the candidate render. Images are linear RGBA like
+// every Image; write them with writeImage to get the published sRGB colours in a PNG.
+#include <array>
+
+#include "color/ImageDifference.h"
+#include "color/PerceptualBand.h"
+#include "common/Image.h"
+
+namespace matevo {
+
+struct HeatmapSettings {
+    // Default 0-10: the paper's "perceptible at a glance" band ends at 10.
+    double minDeltaE = 0;
+    double maxDeltaE = 10;
+    double opacity = 0.6;  // of the heatmap over the candidate, in [0, 1]
+};
+
+// The nearest of the 256 entries for position in [0, 1] (clamped; NaN gives the first entry).
+std::array<float, 3> colormapSrgb(double position);
+std::array<float, 3> colormapLinear(double position);
+
+// ΔE00 at or below minDeltaE maps to the first entry, at or above maxDeltaE to the last.
+std::array<float, 3> heatmapColorLinear(double deltaE, const HeatmapSettings& settings);
+
+// The heatmap alone: opaque where the map covers a pixel, fully transparent elsewhere.
+Image heatmapImage(const DeltaEMap& map, const HeatmapSettings& settings);
+
+// The candidate with the heatmap blended over it at settings.opacity where the map covers a
+// pixel; elsewhere the candidate unchanged, so it stays transparent outside its sphere. The
+// candidate must have the map's size; otherwise the result is an empty image.
+Image overlayHeatmap(const Image& candidate, const DeltaEMap& map,
+                     const HeatmapSettings& settings);
+
+}  // namespace matevo
