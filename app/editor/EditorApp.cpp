@@ -188,7 +188,8 @@ EditorApp::EditorApp(const EditorOptions& options)
     imgui_ = std::make_unique<ImGuiSession>(window_.get(), *vulkan_, *renderer_, iniPath_);
     bridge_ = std::make_unique<ImageBridge>(*vulkan_, renderer_->renderPass());
     display_ = std::make_unique<EvolutionDisplay>(*bridge_);
-    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); });
+    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); }, options.gpuTiles,
+                                                options.validation);
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
@@ -235,9 +236,9 @@ int EditorApp::run() {
         std::fprintf(stderr, "matevo edit: %s\n", failure_.c_str());
         return 1;
     }
-    if (vulkan_->validationMessages() > 0) {
-        std::fprintf(stderr, "matevo edit: %d Vulkan validation message(s)\n",
-                     vulkan_->validationMessages());
+    const int validationMessages = vulkan_->validationMessages() + worker_->validationMessages();
+    if (validationMessages > 0) {
+        std::fprintf(stderr, "matevo edit: %d Vulkan validation message(s)\n", validationMessages);
         return 1;
     }
     return 0;

@@ -17,8 +17,10 @@ double meanOf(const std::vector<CandidateResult>& candidates) {
 
 }  // namespace
 
-EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate)
-    : onUpdate_(std::move(onUpdate)), thread_([this] { run(); }) {}
+EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate, bool useGpu, bool validation)
+    : onUpdate_(std::move(onUpdate)),
+      renderCache_(kTileSize, kTargetSize, kRenderCacheSize, useGpu, validation),
+      thread_([this] { run(); }) {}
 
 EvolutionWorker::~EvolutionWorker() {
     {
@@ -99,20 +101,22 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId) {
         return;
     }
     update.target = renderCache_.target();
+    update.backend = renderCache_.backendName();
 
     GeneticAlgorithm ga(preset.family, preset.target, preset.ga);
     ga.initialize();
     for (;;) {
         if (cancelled(jobId)) return;
         const std::vector<Individual> ranked = ga.rankedPopulation();
-        const std::size_t shown = std::min<std::size_t>(ranked.size(), kGridTiles);
+        std::vector<Genome> shown;
+        for (std::size_t i = 0; i < ranked.size() && i < kGridTiles; ++i)
+            shown.push_back(ranked[i].genome);
+        auto tiles = renderCache_.tiles(shown, [&] { return cancelled(jobId); });
+        if (!tiles || cancelled(jobId)) return;
         update.candidates.clear();
-        for (std::size_t i = 0; i < shown; ++i) {
-            if (cancelled(jobId)) return;
-            CandidateTile tile = renderCache_.tile(ranked[i].genome);
-            update.candidates.push_back(
-                {int(i) + 1, ranked[i], std::move(tile.image), std::move(tile.deltaE)});
-        }
+        for (std::size_t i = 0; i < shown.size(); ++i)
+            update.candidates.push_back({int(i) + 1, ranked[i], std::move((*tiles)[i].image),
+                                         std::move((*tiles)[i].deltaE)});
         const GenerationStats& stats = ga.history().back();
         update.history.push_back(
             {stats.generation, stats.best, stats.mean, meanOf(update.candidates)});
