@@ -16,5 +16,6 @@ using BenchReport = std::vector<BenchFigure>;
 void benchGeneticAlgorithm(BenchReport& report);
 void benchCpuRender(BenchReport& report);
 void benchDeltaE00(BenchReport& report);
+void benchGpuGrid(BenchReport& report);  // gpu_grid64_ms and cpu_grid64_ms
 
 }  // namespace matevo::bench

@@ -5,6 +5,8 @@
 // both images (alpha > 0.5) are compared; the others get deltaE = -1 and a transparent heatmap.
 layout(local_size_x = 64) in;
 
+// The reference and the candidates may share one buffer (the renderer's): they are addressed
+// by image index within their bindings.
 layout(std430, binding = 0) readonly buffer Reference { vec4 referencePixels[]; };
 layout(std430, binding = 1) readonly buffer Candidates { vec4 candidatePixels[]; };
 layout(std430, binding = 2) writeonly buffer DeltaE { float deltaE[]; };
@@ -12,7 +14,9 @@ layout(std430, binding = 3) writeonly buffer Heatmap { vec4 heatmapPixels[]; };
 layout(std430, binding = 4) readonly buffer Colormap { vec4 colormap[256]; };
 
 layout(push_constant) uniform Settings {
-    uint pixelCount;  // per image
+    uint pixelCount;      // per image
+    uint referenceImage;  // index of the reference in binding 0
+    uint firstCandidate;  // index of the first candidate in binding 1
     float minDeltaE;  // maps to colormap[0]
     float maxDeltaE;  // maps to colormap[255]
 } settings;
@@ -93,8 +97,9 @@ void main() {
     uint pixel = gl_GlobalInvocationID.x;
     if (pixel >= settings.pixelCount) return;
     uint index = gl_GlobalInvocationID.y * settings.pixelCount + pixel;
-    vec4 reference = referencePixels[pixel];
-    vec4 candidate = candidatePixels[index];
+    vec4 reference = referencePixels[settings.referenceImage * settings.pixelCount + pixel];
+    uint candidateImage = settings.firstCandidate + gl_GlobalInvocationID.y;
+    vec4 candidate = candidatePixels[candidateImage * settings.pixelCount + pixel];
     if (reference.a <= 0.5 || candidate.a <= 0.5) {
         deltaE[index] = -1.0;
         heatmapPixels[index] = vec4(0.0);

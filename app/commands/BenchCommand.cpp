@@ -23,6 +23,7 @@ int runBench(CommandLine& args) {
     bench::benchGeneticAlgorithm(report);
     bench::benchCpuRender(report);
     bench::benchDeltaE00(report);
+    bench::benchGpuGrid(report);
 
     if (asJson) {
         nlohmann::json out = nlohmann::json::object();

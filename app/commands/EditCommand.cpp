@@ -1,14 +1,84 @@
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
+#include "PresetOption.h"
 #include "commands/Commands.h"
+#include "editor/EditorApp.h"
+#include "io/ResourcePaths.h"
 
 namespace matevo::cli {
+namespace {
 
-// Placeholder until the issue that owns 'matevo edit' lands.
+constexpr const char* kHelp =
+    "usage: matevo [edit] [PRESET] [--script FILE] [--frames N] [--size WxH] [--validate]\n"
+    "                     [--report-timings]\n\n"
+    "Opens the editor on PRESET (default: presets/validation_metal.json beside the\n"
+    "executable): the target sphere, a live grid of GA candidates with a CIEDE2000 heatmap,\n"
+    "the GA controls and per-generation fitness. Needs a display; without one it says so and\n"
+    "exits 2 (use evolve, render, compare or experiment instead).\n\n"
+    "keys: Ctrl+O open, Ctrl+S save, Ctrl+Shift+S save as, Ctrl+Z undo, Ctrl+Y redo,\n"
+    "      F12 PNG snapshot of the window (matevo-snapshot-NNN.png), Ctrl+Q quit\n\n"
+    "options:\n"
+    "  --script FILE      play scripted actions, one per line: wait N, wait-evolution,\n"
+    "                     population N, generations N, seed N, metric NAME,\n"
+    "                     heatmap on|off|toggle, select I, undo, redo, resize W H,\n"
+    "                     screenshot PATH, save PATH, quit\n"
+    "  --frames N         quit after N frames\n"
+    "  --size WxH         initial window size (default 1280x800)\n"
+    "  --validate         enable VK_LAYER_KHRONOS_validation; any message makes the exit\n"
+    "                     status 1\n"
+    "  --report-timings   print median frame times (idle, while evolving) and the time from\n"
+    "                     a change to the updated grid, as one JSON line on exit\n\n"
+    "imgui.ini is kept in $XDG_CONFIG_HOME/matevo (default ~/.config/matevo).\n";
+
+std::string readScript(const std::string& file) {
+    std::ifstream in(file);
+    if (!in) throw UsageError("edit: --script: cannot read '" + file + "'");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+void parseSize(const std::string& text, editor::EditorOptions& options) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) throw UsageError("edit: --size: expected WxH, got '" + text + "'");
+    options.width = int(parseInteger(text.substr(0, x), "edit: --size width", 320, 16384));
+    options.height = int(parseInteger(text.substr(x + 1), "edit: --size height", 240, 16384));
+}
+
+}  // namespace
+
 int runEdit(CommandLine& args) {
-    (void)args;
-    std::fprintf(stderr, "matevo edit: not available in this build yet\n");
-    return 1;
+    if (args.wantsHelp()) {
+        std::printf("%s", kHelp);
+        return 0;
+    }
+    editor::EditorOptions options;
+    if (auto file = args.option("--script")) {
+        auto script = editor::parseEditorScript(readScript(*file), *file);
+        if (!script) throw UsageError("edit: --script: " + script.error().message);
+        options.script = std::move(*script);
+    }
+    if (auto frames = args.integerOption("--frames", 1, 100000000)) options.maxFrames = int(*frames);
+    if (auto size = args.option("--size")) parseSize(*size, options);
+    options.validation = args.flag("--validate");
+    options.reportTimings = args.flag("--report-timings");
+    const auto positionals = args.positionals();
+    if (positionals.size() > 1) throw UsageError("edit: expected at most one PRESET");
+    args.finish();
+
+    PresetChoice choice;
+    if (positionals.empty()) {
+        auto defaultFile = defaultPresetPath();
+        if (!defaultFile) throw std::runtime_error(defaultFile.error().message);
+        choice = loadPresetFile(*defaultFile);
+    } else {
+        choice = loadPresetFile(positionals.front());
+    }
+    options.preset = std::move(choice.preset);
+    options.presetFile = std::move(choice.file);
+    return editor::runEditor(options);
 }
 
 }  // namespace matevo::cli

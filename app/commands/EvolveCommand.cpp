@@ -1,10 +1,109 @@
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "EvolveReport.h"
+#include "PresetOption.h"
 #include "commands/Commands.h"
+#include "evolve/GeneticAlgorithm.h"
+#include "io/AtomicFile.h"
 
 namespace matevo::cli {
 
+namespace {
+
+constexpr const char* kHelp =
+    "usage: matevo evolve [--preset P] [--population N] [--generations N]\n"
+    "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
+    "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n\n"
+    "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
+    "(default: presets/validation_metal.json). Options override the preset's GA settings.\n"
+    "  --weights      12 per-chromosome weights, in the order eta1 eta2 alpha1 alpha2 depth\n"
+    "                 sigma_s(r,g,b) sigma_a(r,g,b) g\n"
+    "  --normalize    divide each chromosome's difference by its family range\n"
+    "  --elitism N    copy the N best unchanged into the next generation (paper: 0)\n"
+    "  --json         print one JSON object: target, config, generations, population, best\n"
+    "  --out DIR      also write DIR/result.json (the same object)\n"
+    "Progress goes to stderr.\n";
+
+GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
+    if (auto population = args.integerOption("--population", 2, kMaxPopulation))
+        ga.population = int(*population);
+    if (auto generations = args.integerOption("--generations", 0, kMaxGenerations))
+        ga.generations = int(*generations);
+    if (auto metric = args.option("--metric")) {
+        auto parsed = parseDistanceMetric(*metric);
+        if (!parsed)
+            throw UsageError("evolve: --metric: unknown metric '" + *metric +
+                             "' (expected chebyshev, euclidean or manhattan)");
+        ga.metric = *parsed;
+    }
+    if (auto weights = args.option("--weights")) {
+        auto values = parseNumberList(*weights, "evolve: --weights");
+        if (values.size() != kChromosomeCount)
+            throw UsageError("evolve: --weights: expected 12 comma-separated numbers, got " +
+                             std::to_string(values.size()));
+        for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+            if (values[i] < 0)
+                throw UsageError("evolve: --weights: weight of " +
+                                 std::string(chromosomeName(i)) + " must not be negative");
+            ga.weights[i] = values[i];
+        }
+    }
+    if (args.flag("--normalize")) ga.normalizeByRange = true;
+    if (auto elitism = args.integerOption("--elitism", 0, kMaxPopulation))
+        ga.elitism = int(*elitism);
+    if (ga.elitism >= ga.population)
+        throw UsageError("evolve: --elitism must be smaller than the population (" +
+                         std::to_string(ga.population) + ")");
+    if (auto seed = args.unsignedOption("--seed")) ga.seed = *seed;
+    return ga;
+}
+
+}  // namespace
+
 int runEvolve(CommandLine& args) {
-    (void)args;
-    return 1;
+    if (args.wantsHelp()) {
+        std::fputs(kHelp, stdout);
+        return 0;
+    }
+    PresetChoice choice = loadPresetOption(args);
+    choice.preset.ga = applyOverrides(args, choice.preset.ga);
+    const bool asJson = args.flag("--json");
+    const auto outDir = args.option("--out");
+    args.finish();
+
+    const Preset& preset = choice.preset;
+    GeneticAlgorithm ga(preset.family, preset.target, preset.ga);
+    const bool showProgress = ::isatty(STDERR_FILENO) != 0;
+    ga.initialize();
+    while (!ga.finished()) {
+        ga.step();
+        if (showProgress)
+            std::fprintf(stderr, "\rmatevo evolve: generation %d/%d", ga.generation(),
+                         preset.ga.generations);
+    }
+    if (showProgress) std::fputc('\n', stderr);
+
+    nlohmann::json report = evolveReport(preset, ga);
+    if (outDir) {
+        std::error_code error;
+        std::filesystem::create_directories(*outDir, error);
+        if (error)
+            throw UsageError("evolve: --out: cannot create folder '" + *outDir + "' (" +
+                             error.message() + ")");
+        auto file = std::filesystem::path(*outDir) / "result.json";
+        auto status = writeFileAtomically(file, report.dump(2) + "\n");
+        if (!status) throw UsageError("evolve: " + status.error().message);
+    }
+    if (asJson)
+        std::printf("%s\n", report.dump(2).c_str());
+    else
+        printEvolveSummary(preset, ga, stdout);
+    return 0;
 }
 
 }  // namespace matevo::cli

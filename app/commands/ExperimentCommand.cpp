@@ -1,14 +1,221 @@
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
 
+#include "ExperimentRenderer.h"
+#include "PresetOption.h"
+#include "ProgressBar.h"
 #include "commands/Commands.h"
+#include "experiment/Experiment.h"
+#include "experiment/ExperimentCharts.h"
+#include "experiment/ResultsCsv.h"
+#include "experiment/RunSummary.h"
+#include "io/AtomicFile.h"
+#include "io/ImageFile.h"
+#include "io/ResourcePaths.h"
 
 namespace matevo::cli {
 
-// Placeholder until the issue that owns 'matevo experiment' lands.
+namespace {
+
+constexpr const char* kHelp =
+    "usage: matevo experiment [--preset P | --all] [--runs N] [--population N]\n"
+    "                         [--generations N] [--sweep] [--metric M|all] [--seed S]\n"
+    "                         [--runs-per-seed N] [--size N] [--backend cpu] [--out DIR]\n\n"
+    "The experiment of Bernardi et al. (2020) section 5: for the target material and each\n"
+    "distance metric, N GA runs (default 36) at a population and generation count (default 50\n"
+    "and 5); the best individual of each run is rendered and scored by its mean CIEDE2000\n"
+    "against the target's render.\n"
+    "  --preset P         target preset (default presets/validation_metal.json)\n"
+    "  --all              the three validation presets (metal, painted metal, metal depth)\n"
+    "  --sweep            the paper's sizes instead of --population/--generations: (50,5),\n"
+    "                     (100,10), (300,20), and (500,50) for a material with a medium\n"
+    "  --metric M         chebyshev, euclidean, manhattan or all (default all)\n"
+    "  --seed S           first seed (default 1). The seed changes every --runs-per-seed runs\n"
+    "                     (default 9): block b has seed S+b, and run k of a block takes the\n"
+    "                     (k+1)-th SplitMix64 draw of its block seed as its GA seed (the CSV's\n"
+    "                     seed column; replay one run with matevo evolve --seed)\n"
+    "  --size N           render size in pixels (default: the preset's scene, 256)\n"
+    "  --backend cpu      the renderer: cpu, the CPU reference (default)\n"
+    "  --out DIR          output folder (default experiment-results), written to:\n"
+    "                       results.csv  one row per run: preset, metric, population,\n"
+    "                                    generations, seed, run, fitness, mean_de00, 12 genes\n"
+    "                       PRESET_pP_gG_METRIC.png  histogram of mean DE00 with the\n"
+    "                                    paper's perceptual bands\n"
+    "Prints a summary per metric (median, band counts); a progress bar goes to stderr.\n";
+
+const char* const kValidationPresets[] = {"validation_metal.json",
+                                          "validation_painted_metal.json",
+                                          "validation_metal_depth.json"};
+
+std::vector<DistanceMetric> parseMetrics(const std::optional<std::string>& text) {
+    if (!text || *text == "all")
+        return {DistanceMetric::Chebyshev, DistanceMetric::Euclidean, DistanceMetric::Manhattan};
+    auto metric = parseDistanceMetric(*text);
+    if (!metric)
+        throw UsageError("experiment: --metric: unknown metric '" + *text +
+                         "' (expected chebyshev, euclidean, manhattan or all)");
+    return {*metric};
+}
+
+std::vector<PresetChoice> choosePresets(CommandLine& args) {
+    if (!args.flag("--all")) return {loadPresetOption(args)};
+    if (args.option("--preset"))
+        throw UsageError("experiment: --preset and --all exclude each other");
+    auto folder = findResourceDirectory("presets");
+    if (!folder) throw std::runtime_error(folder.error().message);
+    std::vector<PresetChoice> presets;
+    for (const char* file : kValidationPresets) presets.push_back(loadPresetFile(*folder / file));
+    return presets;
+}
+
+struct Request {
+    std::vector<PresetChoice> presets;
+    ExperimentSettings settings;
+    bool sweep = false;
+    std::optional<int> imageSize;
+    RenderBackend backend = RenderBackend::Cpu;
+    std::filesystem::path outDir = "experiment-results";
+};
+
+Request parseRequest(CommandLine& args) {
+    Request request;
+    request.presets = choosePresets(args);
+    ExperimentSettings& settings = request.settings;
+    request.sweep = args.flag("--sweep");
+    const auto population = args.integerOption("--population", 2, kMaxPopulation);
+    const auto generations = args.integerOption("--generations", 0, kMaxGenerations);
+    if (request.sweep && (population || generations))
+        throw UsageError("experiment: --sweep sets the population and generations itself; "
+                         "leave out --population and --generations");
+    if (population) settings.size.population = int(*population);
+    if (generations) settings.size.generations = int(*generations);
+    if (auto runs = args.integerOption("--runs", 1, kMaxExperimentRuns)) settings.runs = int(*runs);
+    if (auto perSeed = args.integerOption("--runs-per-seed", 1, kMaxExperimentRuns))
+        settings.runsPerSeed = int(*perSeed);
+    settings.metrics = parseMetrics(args.option("--metric"));
+    if (auto seed = args.unsignedOption("--seed")) settings.seed = *seed;
+    if (auto size = args.integerOption("--size", 8, 4096)) request.imageSize = int(*size);
+    if (auto backend = args.option("--backend")) {
+        auto parsed = parseRenderBackend(*backend);
+        if (!parsed)
+            throw UsageError("experiment: --backend: expected cpu, got '" + *backend + "'");
+        request.backend = *parsed;
+    }
+    if (auto out = args.option("--out")) request.outDir = *out;
+    args.finish();
+    return request;
+}
+
+int totalWork(const Request& request) {
+    int total = 0;
+    for (const auto& choice : request.presets) {
+        const std::size_t sizes = request.sweep ? paperSweep(choice.preset.family).size() : 1;
+        total += int(sizes) * 2 * request.settings.runs * int(request.settings.metrics.size());
+    }
+    return total;
+}
+
+std::string sizeLabel(const GaSize& size) {
+    std::string label = "p";
+    label += std::to_string(size.population);
+    label += "_g";
+    label += std::to_string(size.generations);
+    return label;
+}
+
+void writeOrThrow(const Status& status) {
+    if (!status) throw std::runtime_error(status.error().message);
+}
+
+// One chart per metric for one preset and size, sharing their axes.
+void writeHistograms(std::span<const RunRecord> records, const std::string& stem,
+                     const std::filesystem::path& outDir) {
+    for (const auto& chart : metricHistogramCharts(records)) {
+        const auto file = outDir / (stem + "_" + sizeLabel(records.front().size) + "_" +
+                                    std::string(toString(chart.metric)) + ".png");
+        writeOrThrow(writeImage(chart.image, file));
+    }
+}
+
+void printSummaries(std::span<const RunRecord> records, std::FILE* out) {
+    const auto summaries = summarizeRuns(records);
+    for (std::size_t i = 0; i < summaries.size(); ++i) {
+        const RunSummary& summary = summaries[i];
+        const bool newGroup = i == 0 || summaries[i - 1].preset != summary.preset ||
+                              summaries[i - 1].size != summary.size;
+        if (newGroup) {
+            std::fprintf(out, "\n%s, population %d, generations %d, %d runs per metric\n",
+                         summary.preset.c_str(), summary.size.population,
+                         summary.size.generations, summary.runs);
+            std::fprintf(out, "  %-10s %7s %7s", "metric", "median", "mean");
+            for (PerceptualBand band : kPerceptualBands) {
+                const std::string_view label = bandRangeLabel(band);
+                std::fprintf(out, " %6.*s", int(label.size()), label.data());
+            }
+            std::fputc('\n', out);
+        }
+        std::fprintf(out, "  %-10s %7.2f %7.2f", std::string(toString(summary.metric)).c_str(),
+                     summary.median, summary.mean);
+        for (int count : summary.bandCounts) std::fprintf(out, " %6d", count);
+        std::fputc('\n', out);
+    }
+}
+
+}  // namespace
+
 int runExperiment(CommandLine& args) {
-    (void)args;
-    std::fprintf(stderr, "matevo experiment: not available in this build yet\n");
-    return 1;
+    if (args.wantsHelp()) {
+        std::fputs(kHelp, stdout);
+        return 0;
+    }
+    const Request request = parseRequest(args);
+    std::error_code error;
+    std::filesystem::create_directories(request.outDir, error);
+    if (error)
+        throw UsageError("experiment: --out: cannot create folder '" + request.outDir.string() +
+                         "' (" + error.message() + ")");
+
+    const auto started = std::chrono::steady_clock::now();
+    std::vector<RunRecord> allRecords;
+    {
+        ProgressBar progress(totalWork(request));
+        int finishedWork = 0;
+        for (const auto& choice : request.presets) {
+            const Preset& preset = choice.preset;
+            const RenderGenomes render =
+                makeExperimentRenderer(choice, request.imageSize, request.backend);
+            const ExperimentTarget target{preset.name, preset.family, preset.target, preset.ga};
+            const std::vector<GaSize> sizes = request.sweep ? paperSweep(preset.family)
+                                                            : std::vector{request.settings.size};
+            for (const GaSize& size : sizes) {
+                ExperimentSettings settings = request.settings;
+                settings.size = size;
+                const std::string label = preset.name + " " + sizeLabel(size);
+                auto records = runExperiment(target, settings, render, [&](int done, int) {
+                    progress.update(finishedWork + done, label);
+                });
+                if (!records) throw std::runtime_error(records.error().message);
+                finishedWork += int(records->size()) * 2;
+                allRecords.insert(allRecords.end(), records->begin(), records->end());
+                // Rewritten after every block of runs, atomically: an interrupted sweep keeps
+                // what it finished.
+                writeOrThrow(writeFileAtomically(request.outDir / "results.csv",
+                                                 resultsCsv(allRecords)));
+                writeHistograms(*records, choice.file.stem().string(), request.outDir);
+            }
+        }
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+    printSummaries(allRecords, stdout);
+    std::fprintf(stderr, "matevo experiment: %zu runs in %.1f s; results in %s\n",
+                 allRecords.size(), seconds, request.outDir.string().c_str());
+    return 0;
 }
 
 }  // namespace matevo::cli

@@ -44,6 +44,8 @@ public:
     // weights and normalisation.
     GeneticAlgorithm(const MaterialFamily& family, const Genome& target,
                      const GaSettings& settings);
+    // Any other fitness, e.g. rendered ΔE00 against the target's image; the evaluator holds what
+    // it compares against, so `target` is not used here.
     GeneticAlgorithm(const MaterialFamily& family, const Genome& target, const GaSettings& settings,
                      FitnessEvaluator evaluate);
 

@@ -11,6 +11,8 @@ constexpr uint32_t kWorkgroupSize = 64;  // local_size_x in the shader
 
 struct PushConstants {
     uint32_t pixelCount;
+    uint32_t referenceImage;
+    uint32_t firstCandidate;
     float minDeltaE;
     float maxDeltaE;
 };
@@ -40,7 +42,8 @@ void DeltaE00Pass::record(VkCommandBuffer commands, const DeltaE00Batch& batch) 
     kernel_.bindBuffer(1, *batch.candidates);
     kernel_.bindBuffer(2, *batch.deltaE);
     kernel_.bindBuffer(3, *batch.heatmaps);
-    const PushConstants constants{batch.pixelCount, batch.minDeltaE, batch.maxDeltaE};
+    const PushConstants constants{batch.pixelCount, batch.referenceImage, batch.firstCandidate,
+                                  batch.minDeltaE, batch.maxDeltaE};
     kernel_.record(commands, &constants, (batch.pixelCount + kWorkgroupSize - 1) / kWorkgroupSize,
                    batch.candidateCount, 1);
 }

@@ -13,12 +13,14 @@
 namespace matevo::gpu {
 
 struct DeltaE00Batch {
-    const Buffer* reference = nullptr;   // pixelCount RGBA
-    const Buffer* candidates = nullptr;  // candidateCount * pixelCount RGBA
+    const Buffer* reference = nullptr;   // holds the reference image at referenceImage
+    const Buffer* candidates = nullptr;  // holds the candidates from firstCandidate on
     const Buffer* deltaE = nullptr;      // candidateCount * pixelCount floats, written
     const Buffer* heatmaps = nullptr;    // candidateCount * pixelCount RGBA, written
     uint32_t pixelCount = 0;
     uint32_t candidateCount = 0;
+    uint32_t referenceImage = 0;
+    uint32_t firstCandidate = 0;
     float minDeltaE = 0.0f;  // maps to the first colormap entry
     float maxDeltaE = 10.0f;  // maps to the last
 };

@@ -39,8 +39,8 @@ Result<GpuComparison> GpuImageComparer::compare(const Image& reference,
     auto commands = runner_.begin();
     if (!commands) return commands.error();
     pass_.record(*commands, {&*referenceBuffer, &*candidateBuffer, &*deltaEBuffer,
-                             &*heatmapBuffer, shape.pixelCount(), shape.count, range.minDeltaE,
-                             range.maxDeltaE});
+                             &*heatmapBuffer, shape.pixelCount(), shape.count, 0, 0,
+                             range.minDeltaE, range.maxDeltaE});
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
 

@@ -39,14 +39,16 @@ struct MessengerCallback {
         auto& sink = *static_cast<Instance::MessageSink*>(userData);
         const std::string message = data && data->pMessage ? data->pMessage : "(no message)";
         const bool isError = severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-        // The loader warns that VK_INSTANCE_LAYERS added a layer: that is how tests ask for
-        // validation, not a problem with our use of Vulkan.
-        const bool isLoaderNotice = !isError && data && data->pMessageIdName &&
-                                    std::strcmp(data->pMessageIdName, "Loader Message") == 0;
-        if (isLoaderNotice) return VK_FALSE;
+        // The loader's own messages are about finding drivers and layers: its warnings (e.g.
+        // "VK_INSTANCE_LAYERS added a layer", how tests ask for validation) are not problems
+        // with our use of Vulkan, and a missing driver already comes back as an Error that
+        // callers report in one line, so neither is echoed.
+        const bool fromLoader = data && data->pMessageIdName &&
+                                std::strcmp(data->pMessageIdName, "Loader Message") == 0;
+        if (fromLoader && !isError) return VK_FALSE;
         if (isError) sink.log.addError(message);
         else sink.log.addWarning(message);
-        if (sink.echoToStderr)
+        if (sink.echoToStderr && !fromLoader)
             std::fprintf(stderr, "vulkan %s: %s\n", isError ? "error" : "warning",
                          message.c_str());
         return VK_FALSE;

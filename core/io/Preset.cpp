@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "genome/FamilyRules.h"
 #include "io/AtomicFile.h"
 #include "io/GenomeJson.h"
 #include "io/JsonReader.h"
@@ -86,11 +87,14 @@ Preset readPreset(JsonReader& root) {
     preset.name = root.string("name");
     if (root.has("description")) preset.description = root.string("description");
     preset.family = readFamily(root.object("family"));
+    if (auto problem = validateFamily(preset.family)) root.fail("family", *problem);
     {
         JsonReader target = root.object("target");
         preset.target = readGenome(target);
         target.warnAboutUnknownFields();
     }
+    // The target must be a member of its own family, or the GA could never approach it.
+    if (auto problem = validateGenome(preset.target, preset.family)) root.fail("target", *problem);
     if (preset.family.base == Base::Conductor) {
         preset.baseKappa = root.numbers<3>("base_kappa", 0.0, 100.0);
         const auto& k = preset.baseKappa;

@@ -40,17 +40,10 @@ Image syntheticImage(int size, uint32_t seed, float perturbation, const Image* b
     return image;
 }
 
-gpu::DeltaE00Pass::Colormap rampColormap() {
-    gpu::DeltaE00Pass::Colormap colormap{};
-    for (std::size_t i = 0; i < colormap.size(); ++i)
-        colormap[i] = {float(i) / 255.0f, 0.5f, 1.0f - float(i) / 255.0f, 1.0f};
-    return colormap;
-}
-
 TEST(GpuDeltaE00, MatchesCoreColorOnImagePairs) {
     gpu::GpuContext* context = test::validatedContext();
     ASSERT_NE(context, nullptr);
-    auto comparer = gpu::GpuImageComparer::create(context->device, rampColormap());
+    auto comparer = gpu::GpuImageComparer::create(context->device, test::rampColormap());
     ASSERT_TRUE(comparer.ok()) << comparer.error().message;
 
     const Image reference = syntheticImage(48, 1, 0.0f, nullptr);
@@ -101,7 +94,7 @@ TEST(GpuDeltaE00, MatchesCoreColorOnImagePairs) {
 TEST(GpuDeltaE00, RejectsCandidatesOfAnotherSize) {
     gpu::GpuContext* context = test::validatedContext();
     ASSERT_NE(context, nullptr);
-    auto comparer = gpu::GpuImageComparer::create(context->device, rampColormap());
+    auto comparer = gpu::GpuImageComparer::create(context->device, test::rampColormap());
     ASSERT_TRUE(comparer.ok()) << comparer.error().message;
     const std::vector<Image> candidates{Image(8, 8)};
     auto result = comparer->compare(Image(16, 16), candidates);

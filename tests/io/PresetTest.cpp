@@ -152,6 +152,16 @@ TEST(Preset, UnknownFamilyIsRejected) {
               std::string::npos);
 }
 
+TEST(Preset, TargetOutsideItsFamilyIsRejected) {
+    // A clearcoat needs alpha1 < 0.1 (Table 2).
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("alpha1": 0.03)", R"("alpha1": 0.5)"))
+                  .find("p.json: target: "),
+              std::string::npos);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("eta2": 0.8)", R"("eta2": 1.9)"))
+                  .find("p.json: target: "),
+              std::string::npos);
+}
+
 TEST(Preset, UnknownFieldsWarnButLoad) {
     auto result = parsePreset(replaced(kValidPreset, R"("name": "test",)",
                                        R"("name": "test", "colour": 3,)"),
@@ -200,6 +210,18 @@ TEST(ShippedPresets, ValidationMetalLoadsWithoutWarnings) {
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
     EXPECT_TRUE(loaded->warnings.empty());
     EXPECT_DOUBLE_EQ(loaded->preset.target.alpha1(), 0.03);
+}
+
+TEST(ShippedPresets, EveryPresetLoadsWithoutWarnings) {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(MATEVO_SOURCE_DIR) / "presets")) {
+        if (entry.path().extension() != ".json") continue;
+        ++count;
+        auto loaded = loadPreset(entry.path());
+        ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+        EXPECT_TRUE(loaded->warnings.empty()) << entry.path();
+    }
+    EXPECT_GE(count, 3);
 }
 
 }  // namespace

@@ -1,0 +1,64 @@
+#include "EvolveReport.h"
+
+#include "genome/Genome.h"
+#include "io/GenomeJson.h"
+
+namespace matevo::cli {
+
+namespace {
+
+nlohmann::json configJson(const Preset& preset) {
+    const GaSettings& ga = preset.ga;
+    return {{"preset", preset.name},
+            {"family", describe(preset.family)},
+            {"population", ga.population},
+            {"generations", ga.generations},
+            {"metric", toString(ga.metric)},
+            {"weights", ga.weights},
+            {"normalize_by_range", ga.normalizeByRange},
+            {"elitism", ga.elitism},
+            {"seed", ga.seed}};
+}
+
+}  // namespace
+
+nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga) {
+    nlohmann::json generations = nlohmann::json::array();
+    for (const auto& stats : ga.history())
+        generations.push_back({{"generation", stats.generation},
+                               {"best", stats.best},
+                               {"mean", stats.mean},
+                               {"worst", stats.worst},
+                               {"diversity", stats.diversity}});
+    nlohmann::json population = nlohmann::json::array();
+    const auto ranked = ga.rankedPopulation();
+    for (const auto& individual : ranked)
+        population.push_back(
+            {{"genome", genomeToJson(individual.genome)}, {"fitness", individual.fitness}});
+    return {{"target", genomeToJson(preset.target)},
+            {"config", configJson(preset)},
+            {"generations", std::move(generations)},
+            {"population", population},
+            {"best", population.empty() ? nlohmann::json() : population.front()}};
+}
+
+void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga, std::FILE* out) {
+    std::fprintf(out, "%s (%s): population %d, %d generations, %s distance, seed %llu\n",
+                 preset.name.c_str(), describe(preset.family).c_str(), preset.ga.population,
+                 preset.ga.generations, std::string(toString(preset.ga.metric)).c_str(),
+                 static_cast<unsigned long long>(preset.ga.seed));
+    std::fprintf(out, "%10s %12s %12s %12s %12s\n", "generation", "best", "mean", "worst",
+                 "diversity");
+    for (const auto& stats : ga.history())
+        std::fprintf(out, "%10d %12.6f %12.6f %12.6f %12.6f\n", stats.generation, stats.best,
+                     stats.mean, stats.worst, stats.diversity);
+    const auto ranked = ga.rankedPopulation();
+    if (ranked.empty()) return;
+    std::fprintf(out, "best (fitness %.6f):", ranked.front().fitness);
+    for (std::size_t i = 0; i < kChromosomeCount; ++i)
+        std::fprintf(out, " %s=%.4g", std::string(chromosomeName(i)).c_str(),
+                     ranked.front().genome[i]);
+    std::fputc('\n', out);
+}
+
+}  // namespace matevo::cli

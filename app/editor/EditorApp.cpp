@@ -1,0 +1,342 @@
+#include "EditorApp.h"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
+
+#include "EditorTimings.h"
+#include "EditorUi.h"
+#include "EvolutionDisplay.h"
+#include "EvolutionWorker.h"
+#include "ImageBridge.h"
+#include "ScriptPlayer.h"
+#include "VulkanContext.h"
+#include "WindowRenderer.h"
+#include "io/ImageFile.h"
+
+namespace matevo::editor {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Signal handlers can only set a flag; the frame loop reads it.
+std::atomic<bool> terminationRequested{false};
+
+void onTerminationSignal(int) { terminationRequested.store(true); }
+
+class GlfwSession {
+public:
+    GlfwSession() {
+        glfwSetErrorCallback([](int, const char*) {});  // failures are reported by return value
+        ok_ = glfwInit() == GLFW_TRUE;
+    }
+    ~GlfwSession() {
+        if (ok_) glfwTerminate();
+    }
+    GlfwSession(const GlfwSession&) = delete;
+    GlfwSession& operator=(const GlfwSession&) = delete;
+    bool ok() const { return ok_; }
+
+private:
+    bool ok_ = false;
+};
+
+// $XDG_CONFIG_HOME/matevo/imgui.ini, else ~/.config/matevo/imgui.ini; empty if neither exists.
+std::string imguiIniPath() {
+    std::filesystem::path base;
+    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config)
+        base = config;
+    else if (const char* home = std::getenv("HOME"); home && *home)
+        base = std::filesystem::path(home) / ".config";
+    else
+        return {};
+    std::error_code error;
+    std::filesystem::create_directories(base / "matevo", error);
+    return error ? std::string() : (base / "matevo" / "imgui.ini").string();
+}
+
+void applyStyle() {
+    ImGui::StyleColorsDark();
+    ImGuiStyle& style = ImGui::GetStyle();
+    style.WindowRounding = 0.0f;
+    style.FrameRounding = 3.0f;
+    style.GrabRounding = 3.0f;
+    style.WindowBorderSize = 1.0f;
+    style.FramePadding = ImVec2(6, 3);
+    style.ItemSpacing = ImVec2(7, 4);
+    style.Colors[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.11f, 0.12f, 1.0f);
+    style.Colors[ImGuiCol_TitleBgActive] = ImVec4(0.16f, 0.20f, 0.27f, 1.0f);
+    style.Colors[ImGuiCol_TitleBg] = ImVec4(0.13f, 0.15f, 0.19f, 1.0f);
+}
+
+// DejaVu Sans (a Debian default font) has the Greek ΔE; ImGui's built-in font is the fallback.
+void loadFont() {
+    static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x206F, 0};
+    const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    ImGuiIO& io = ImGui::GetIO();
+    if (std::filesystem::exists(path) && io.Fonts->AddFontFromFileTTF(path, 14.0f, nullptr, kRanges))
+        return;
+    io.Fonts->AddFontDefault();
+}
+
+class EditorApp {
+public:
+    explicit EditorApp(const EditorOptions& options);
+    ~EditorApp();
+    EditorApp(const EditorApp&) = delete;
+    EditorApp& operator=(const EditorApp&) = delete;
+
+    int run();
+
+private:
+    struct WindowDeleter {
+        void operator()(GLFWwindow* window) const { glfwDestroyWindow(window); }
+    };
+    // ImGui's context and its GLFW and Vulkan backends, shut down in reverse.
+    class ImGuiSession {
+    public:
+        ImGuiSession(GLFWwindow* window, const VulkanContext& vulkan,
+                     const WindowRenderer& renderer, const std::string& iniPath);
+        ~ImGuiSession();
+        ImGuiSession(const ImGuiSession&) = delete;
+        ImGuiSession& operator=(const ImGuiSession&) = delete;
+    };
+
+    bool frame(std::optional<std::filesystem::path>& screenshotPath);
+    void playScript(std::optional<std::filesystem::path>& screenshotPath);
+    void applyEvolutionResults();
+    void submitChangesToWorker();
+    void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
+    std::filesystem::path nextSnapshotPath() const;
+    bool shouldQuit() const;
+
+    EditorOptions options_;
+    std::string iniPath_;
+    std::unique_ptr<GLFWwindow, WindowDeleter> window_;
+    std::unique_ptr<VulkanContext> vulkan_;
+    std::unique_ptr<WindowRenderer> renderer_;
+    std::unique_ptr<ImGuiSession> imgui_;
+    std::unique_ptr<ImageBridge> bridge_;
+    std::unique_ptr<EvolutionDisplay> display_;
+    ui::EditorUi ui_;
+    ScriptPlayer script_;
+    EditorTimings timings_;
+    std::optional<Preset> submittedPreset_;
+    std::string failure_;
+    bool quitRequested_ = false;
+    std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
+};
+
+EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, const VulkanContext& vulkan,
+                                      const WindowRenderer& renderer, const std::string& iniPath) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = iniPath.empty() ? nullptr : iniPath.c_str();
+    applyStyle();
+    loadFont();
+    ImGui_ImplGlfw_InitForVulkan(window, true);
+    ImGui_ImplVulkan_InitInfo info{};
+    info.Instance = vulkan.instance();
+    info.PhysicalDevice = vulkan.physicalDevice();
+    info.Device = vulkan.device();
+    info.QueueFamily = vulkan.queueFamily();
+    info.Queue = vulkan.queue();
+    info.DescriptorPool = vulkan.descriptorPool();
+    info.MinImageCount = renderer.minImageCount();
+    info.ImageCount = renderer.imageCount();
+    info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    ImGui_ImplVulkan_Init(&info, renderer.renderPass());
+    vulkan.runNow([](VkCommandBuffer commands) { ImGui_ImplVulkan_CreateFontsTexture(commands); });
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+EditorApp::ImGuiSession::~ImGuiSession() {
+    ImGui_ImplVulkan_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+EditorApp::EditorApp(const EditorOptions& options)
+    : options_(options),
+      iniPath_(imguiIniPath()),
+      ui_(options.preset, options.presetFile,
+          ui::ShortcutKeys{GLFW_KEY_O, GLFW_KEY_S, GLFW_KEY_Q, GLFW_KEY_F12}),
+      script_(options.script) {
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+    window_.reset(glfwCreateWindow(options.width, options.height, "matevo", nullptr, nullptr));
+    if (!window_) throw std::runtime_error("cannot open a window on this display");
+    auto vulkan = VulkanContext::create(window_.get(), options.validation);
+    if (!vulkan) throw std::runtime_error(vulkan.error().message);
+    vulkan_ = std::move(*vulkan);
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_.get(), &width, &height);
+    renderer_ = std::make_unique<WindowRenderer>(
+        *vulkan_, VkExtent2D{std::uint32_t(width), std::uint32_t(height)});
+    imgui_ = std::make_unique<ImGuiSession>(window_.get(), *vulkan_, *renderer_, iniPath_);
+    bridge_ = std::make_unique<ImageBridge>(*vulkan_, renderer_->renderPass());
+    display_ = std::make_unique<EvolutionDisplay>(*bridge_);
+    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); });
+    std::signal(SIGTERM, onTerminationSignal);
+    std::signal(SIGINT, onTerminationSignal);
+}
+
+EditorApp::~EditorApp() {
+    worker_.reset();
+    renderer_->waitIdle();
+}
+
+bool EditorApp::shouldQuit() const {
+    return quitRequested_ || terminationRequested.load() ||
+           glfwWindowShouldClose(window_.get()) || !failure_.empty();
+}
+
+int EditorApp::run() {
+    int frames = 0;
+    std::optional<std::filesystem::path> screenshotPath;
+    while (!shouldQuit()) {
+        // Sleep while nothing changes; keep drawing while results or script steps are due.
+        const bool active = worker_->busy() || !script_.finished() || screenshotPath;
+        if (active)
+            glfwPollEvents();
+        else
+            glfwWaitEventsTimeout(0.25);
+        if (shouldQuit()) break;
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(window_.get(), &width, &height);
+        if (width == 0 || height == 0) continue;  // minimised: nothing to draw into
+
+        const bool evolving = worker_->busy();
+        const auto started = Clock::now();
+        if (!frame(screenshotPath)) continue;
+        const auto finished = Clock::now();
+        timings_.addFrame(std::chrono::duration<double, std::milli>(finished - started).count(),
+                          evolving);
+        timings_.resultsShown(display_->shownJob(), display_->shownFinished(), finished);
+        if (options_.maxFrames > 0 && ++frames >= options_.maxFrames) break;
+    }
+    if (options_.reportTimings) std::printf("editor timings: %s\n", timings_.report().c_str());
+    if (!failure_.empty()) {
+        std::fprintf(stderr, "matevo edit: %s\n", failure_.c_str());
+        return 1;
+    }
+    if (vulkan_->validationMessages() > 0) {
+        std::fprintf(stderr, "matevo edit: %d Vulkan validation message(s)\n",
+                     vulkan_->validationMessages());
+        return 1;
+    }
+    return 0;
+}
+
+bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
+    // A screenshot shows the frame after the one that asked, so the request has settled; the
+    // script waits for it.
+    const std::optional<std::filesystem::path> captureNow = std::exchange(screenshotPath, {});
+    if (!captureNow) playScript(screenshotPath);
+
+    applyEvolutionResults();
+    ImGui_ImplVulkan_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    const ui::FrameRequests requests = ui_.draw();
+    ImGui::Render();
+    if (requests.quit) quitRequested_ = true;
+    if (requests.snapshot) screenshotPath = nextSnapshotPath();
+    submitChangesToWorker();
+    glfwSetWindowTitle(window_.get(), ui::windowTitle(ui_.state()).c_str());
+
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_.get(), &width, &height);
+    ImDrawData* drawData = ImGui::GetDrawData();
+    FrameRecording recording;
+    recording.beforePass = [this](VkCommandBuffer commands) { bridge_->recordUploads(commands); };
+    recording.inPass = [this, drawData](VkCommandBuffer commands) {
+        bridge_->prepare(*drawData, commands);
+        ImGui_ImplVulkan_RenderDrawData(drawData, commands);
+    };
+    Rgba8Image captured;
+    const bool drawn = renderer_->drawFrame(
+        VkExtent2D{std::uint32_t(width), std::uint32_t(height)}, recording,
+        captureNow ? &captured : nullptr);
+    if (drawn && captureNow) saveScreenshot(captured, *captureNow);
+    if (!drawn && captureNow) screenshotPath = captureNow;  // try again next frame
+    return drawn;
+}
+
+void EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
+    const bool settled = !worker_->busy() && display_->shownFinished();
+    const ScriptEffects effects = script_.step(ui_, settled);
+    if (!effects.error.empty()) failure_ = effects.error;
+    if (effects.quit) quitRequested_ = true;
+    if (effects.resize)
+        glfwSetWindowSize(window_.get(), effects.resize->first, effects.resize->second);
+    screenshotPath = effects.screenshot;
+}
+
+void EditorApp::applyEvolutionResults() {
+    ui::EditorState& state = ui_.state();
+    std::optional<EvolutionUpdate> update = worker_->takeLatest();
+    const bool recolour = display_->needsRecolour(state.heatmap);
+    if (!update && !recolour) return;
+    renderer_->waitIdle();  // textures are about to change
+    if (update) {
+        if (!update->error.empty()) state.statusMessage = update->error;
+        display_->show(std::move(*update), state.heatmap, state.evolution);
+    } else {
+        display_->recolour(state.heatmap, state.evolution);
+    }
+}
+
+void EditorApp::submitChangesToWorker() {
+    const Preset& preset = ui_.state().preset;
+    // Wait for the end of a drag: every intermediate value would cancel the one before.
+    if (ImGui::IsAnyItemActive() && submittedPreset_) return;
+    if (submittedPreset_ == preset) return;
+    submittedPreset_ = preset;
+    const std::uint64_t jobId = worker_->submit({preset, ui_.state().presetPath});
+    ui_.state().evolution.running = true;
+    timings_.changeSubmitted(jobId, Clock::now());
+}
+
+std::filesystem::path EditorApp::nextSnapshotPath() const {
+    for (int i = 1;; ++i) {
+        char name[64];
+        std::snprintf(name, sizeof name, "matevo-snapshot-%03d.png", i);
+        if (!std::filesystem::exists(name)) return name;
+    }
+}
+
+void EditorApp::saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path) {
+    const Status written = writeImage(toLinearImage(frame), path);
+    ui_.state().statusMessage =
+        written ? "Snapshot " + path.string() : "Snapshot failed: " + written.error().message;
+    if (!written && !options_.script.empty()) failure_ = written.error().message;
+}
+
+}  // namespace
+
+int runEditor(const EditorOptions& options) {
+    GlfwSession glfw;
+    if (!glfw.ok()) {
+        std::fprintf(stderr,
+                     "matevo edit: no display to open a window on (is DISPLAY set?); the "
+                     "headless commands work without one: matevo evolve, render, compare, "
+                     "experiment\n");
+        return 2;
+    }
+    EditorApp app(options);
+    return app.run();
+}
+
+}  // namespace matevo::editor

@@ -1,0 +1,28 @@
+#pragma once
+// The editor window: GLFW + Vulkan swapchain + Dear ImGui, the GA worker and the image bridge,
+// owned by one object and torn down in reverse order. Frame order follows ImGui's GLFW/Vulkan
+// example: poll events → apply results → NewFrame → panels → Render → draw → present.
+#include <filesystem>
+#include <vector>
+
+#include "EditorScript.h"
+#include "io/Preset.h"
+
+namespace matevo::editor {
+
+struct EditorOptions {
+    Preset preset;
+    std::filesystem::path presetFile;
+    std::vector<ScriptAction> script;
+    int maxFrames = 0;  // 0: until the window closes
+    bool validation = false;
+    bool reportTimings = false;
+    int width = 1280;
+    int height = 800;
+};
+
+// Exit status: 0 normal close, 2 no display (the message names the headless commands),
+// 1 Vulkan failure, validation messages (with validation on) or a failed script action.
+int runEditor(const EditorOptions& options);
+
+}  // namespace matevo::editor

@@ -1,0 +1,39 @@
+#pragma once
+// Scripted editor sessions for tests and demos (`matevo edit --script FILE`): one action per
+// line, '#' starts a comment.
+//
+//   wait N                  draw N frames
+//   wait-evolution          draw until the GA run is finished and shown (gives up after 120 s)
+//   population N | generations N | seed N
+//   metric chebyshev|euclidean|manhattan
+//   heatmap on|off|toggle
+//   select I                inspect candidate I (0 = best)
+//   undo | redo
+//   resize W H              resize the window (pixels)
+//   screenshot PATH         PNG of the window, as F12
+//   save PATH               save the preset
+//   quit
+#include <string>
+#include <vector>
+
+#include "common/Result.h"
+
+namespace matevo::editor {
+
+struct ScriptAction {
+    enum class Kind {
+        Wait, WaitEvolution, Population, Generations, Seed, Metric, Heatmap, Select, Undo,
+        Redo, Resize, Screenshot, Save, Quit
+    };
+    Kind kind = Kind::Wait;
+    long long first = 0;   // the first number argument
+    long long second = 0;  // resize height
+    std::string text;      // path, metric name or heatmap mode
+    int line = 0;
+};
+
+// Errors name the source and line: "demo.txt:3: population: expected an integer, got 'x'".
+Result<std::vector<ScriptAction>> parseEditorScript(const std::string& text,
+                                                    const std::string& sourceName);
+
+}  // namespace matevo::editor

@@ -1,0 +1,82 @@
+#pragma once
+// Runs the GA on a worker thread, one generation at a time, and renders the best candidates
+// and their ΔE00 maps against the target after each. A newer job cancels the running one at
+// the next generation or candidate boundary; the UI thread polls for the latest update and is
+// woken through `onUpdate` (which must be thread-safe, e.g. glfwPostEmptyEvent).
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "EditorState.h"
+#include "color/ImageDifference.h"
+#include "common/Image.h"
+#include "evolve/GeneticAlgorithm.h"
+#include "io/Preset.h"
+
+namespace matevo::editor {
+
+struct EvolutionJob {
+    Preset preset;
+    std::filesystem::path presetFile;  // its textures are relative to its folder
+};
+
+struct CandidateResult {
+    int rank = 0;  // 1 = best
+    Individual individual;
+    Image image;
+    DeltaEMap deltaE;  // against the target at the tile size
+};
+
+struct EvolutionUpdate {
+    std::uint64_t jobId = 0;
+    int totalGenerations = 0;
+    bool finished = false;
+    Image target;  // large, for the target panel
+    std::vector<CandidateResult> candidates;  // best first
+    std::vector<ui::GenerationPoint> history;
+    std::string error;  // the job could not run (e.g. a missing texture)
+};
+
+class EvolutionWorker {
+public:
+    static constexpr int kGridTiles = 24;
+    static constexpr int kTileSize = 128;
+    static constexpr int kTargetSize = 320;
+
+    explicit EvolutionWorker(std::function<void()> onUpdate);
+    ~EvolutionWorker();
+    EvolutionWorker(const EvolutionWorker&) = delete;
+    EvolutionWorker& operator=(const EvolutionWorker&) = delete;
+
+    // Replaces any queued or running job; returns the new job's id.
+    std::uint64_t submit(EvolutionJob job);
+    // The newest update not yet taken, if any.
+    std::optional<EvolutionUpdate> takeLatest();
+    // A job is queued or running.
+    bool busy() const;
+
+private:
+    void run();
+    void evolve(const EvolutionJob& job, std::uint64_t jobId);
+    bool cancelled(std::uint64_t jobId) const;
+    void publish(EvolutionUpdate update);
+
+    std::function<void()> onUpdate_;
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::optional<EvolutionJob> pending_;
+    std::optional<EvolutionUpdate> latest_;
+    bool working_ = false;
+    bool stopping_ = false;
+    std::atomic<std::uint64_t> latestJobId_{0};
+    std::thread thread_;  // last: starts after everything it uses exists
+};
+
+}  // namespace matevo::editor

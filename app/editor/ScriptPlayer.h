@@ -1,0 +1,41 @@
+#pragma once
+// Plays an editor script one frame at a time. Parameter actions edit the UI state exactly as a
+// slider would (so undo and the live re-run see them); window actions come back as effects.
+#include <chrono>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "EditorScript.h"
+#include "EditorUi.h"
+
+namespace matevo::editor {
+
+struct ScriptEffects {
+    bool quit = false;
+    std::optional<std::filesystem::path> screenshot;
+    std::optional<std::pair<int, int>> resize;
+    std::string error;  // a failed action (e.g. wait-evolution timed out); the app exits 1
+};
+
+class ScriptPlayer {
+public:
+    explicit ScriptPlayer(std::vector<ScriptAction> actions);
+
+    bool finished() const { return next_ >= actions_.size(); }
+    // Runs the actions due this frame; `evolutionSettled` says the GA run is done and shown.
+    ScriptEffects step(ui::EditorUi& ui, bool evolutionSettled);
+
+private:
+    // Applies one action; false when it must wait for a later frame.
+    bool apply(const ScriptAction& action, ui::EditorUi& ui, bool evolutionSettled,
+               ScriptEffects& effects);
+
+    std::vector<ScriptAction> actions_;
+    std::size_t next_ = 0;
+    long long framesWaited_ = 0;
+    std::optional<std::chrono::steady_clock::time_point> waitingSince_;
+};
+
+}  // namespace matevo::editor

@@ -1,0 +1,93 @@
+#include "experiment/Experiment.h"
+
+#include <algorithm>
+
+#include "color/ImageDifference.h"
+#include "evolve/GeneticAlgorithm.h"
+#include "experiment/RunSeeds.h"
+#include "material/ParallelFor.h"
+
+namespace matevo {
+
+GaSettings runGaSettings(const ExperimentTarget& target, const ExperimentSettings& settings,
+                         DistanceMetric metric, int run) {
+    GaSettings ga = target.ga;
+    ga.population = settings.size.population;
+    ga.generations = settings.size.generations;
+    ga.metric = metric;
+    ga.seed = runSeed(settings.seed, run, settings.runsPerSeed);
+    return ga;
+}
+
+std::vector<RunRecord> evolveRuns(const ExperimentTarget& target,
+                                  const ExperimentSettings& settings,
+                                  const ExperimentProgress& progress) {
+    const int runCount = settings.runs * int(settings.metrics.size());
+    std::vector<RunRecord> records(std::size_t(std::max(runCount, 0)));
+    // One chunk per run: a run is a whole GA, far heavier than the scheduling.
+    parallelForChunks(
+        runCount,
+        [&](int chunk) {
+            const DistanceMetric metric = settings.metrics[std::size_t(chunk / settings.runs)];
+            const int run = chunk % settings.runs;
+            const GaSettings ga = runGaSettings(target, settings, metric, run);
+            GeneticAlgorithm algorithm(target.family, target.genome, ga);
+            algorithm.run();
+            const Individual best = algorithm.rankedPopulation().front();
+            records[std::size_t(chunk)] = {target.name, metric,         settings.size, ga.seed,
+                                           run,         best.fitness,   0.0,           best.genome};
+        },
+        [&](int done) {
+            if (progress) progress(done, runCount);
+        });
+    return records;
+}
+
+Status scoreRuns(std::span<RunRecord> records, const Image& targetImage,
+                 const RenderGenomes& render, std::size_t batchSize,
+                 const ExperimentProgress& progress, const RenderedRun& onRendered) {
+    batchSize = std::max<std::size_t>(batchSize, 1);
+    std::vector<Genome> genomes;
+    for (std::size_t first = 0; first < records.size(); first += batchSize) {
+        const std::size_t count = std::min(batchSize, records.size() - first);
+        genomes.clear();
+        for (std::size_t i = first; i < first + count; ++i) genomes.push_back(records[i].genome);
+        auto images = render(genomes);
+        if (!images) return images.error();
+        if (images->size() != count)
+            return Error{"experiment: the renderer returned " + std::to_string(images->size()) +
+                         " images for " + std::to_string(count) + " genomes"};
+        for (std::size_t i = 0; i < count; ++i) {
+            const Image& image = (*images)[i];
+            auto difference = compareImages(targetImage, image);
+            if (!difference) return difference.error();
+            records[first + i].meanDeltaE00 = difference->stats.mean;
+            if (onRendered) onRendered(first + i, image);
+        }
+        if (progress) progress(int(first + count), int(records.size()));
+    }
+    return Ok{};
+}
+
+Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
+                                             const ExperimentSettings& settings,
+                                             const RenderGenomes& render,
+                                             const ExperimentProgress& progress) {
+    auto targetImages = render(std::span<const Genome>(&target.genome, 1));
+    if (!targetImages) return targetImages.error();
+    if (targetImages->size() != 1)
+        return Error{"experiment: the renderer returned no image for the target"};
+
+    const int total = 2 * settings.runs * int(settings.metrics.size());
+    std::vector<RunRecord> records = evolveRuns(target, settings, [&](int done, int) {
+        if (progress) progress(done, total);
+    });
+    const int evolved = int(records.size());
+    Status scored = scoreRuns(records, targetImages->front(), render, 64, [&](int done, int) {
+        if (progress) progress(evolved + done, total);
+    });
+    if (!scored) return scored.error();
+    return records;
+}
+
+}  // namespace matevo

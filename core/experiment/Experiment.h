@@ -1,0 +1,66 @@
+#pragma once
+// The §5 protocol of Bernardi et al. (2020) for one target material: for each metric, R GA runs
+// (seeds in RunSeeds.h); the best individual of each run is rendered and scored by its mean
+// CIEDE2000 against the target's render. Two stages, so that a caller can show progress or keep
+// the images (the editor's "Compare metrics" view): evolveRuns, then scoreRuns.
+// Deterministic given the settings: runs are independent, each writes only its own record, and
+// the image comparison does not depend on the thread count.
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "common/Image.h"
+#include "common/Result.h"
+#include "evolve/GaSettings.h"
+#include "experiment/ExperimentSettings.h"
+#include "experiment/RunRecord.h"
+#include "genome/Genome.h"
+#include "genome/MaterialFamily.h"
+
+namespace matevo {
+
+// Renders genomes of the target's material on the test sphere, one image per genome, in order.
+// The caller binds everything else (family, kappa, textures, scene, image size) and chooses the
+// back end (GPU batch renderer or CPU reference).
+using RenderGenomes = std::function<Result<std::vector<Image>>(std::span<const Genome> genomes)>;
+
+// done of total work items (one per GA run, one per scored run); called on the calling thread.
+using ExperimentProgress = std::function<void(int done, int total)>;
+
+// Receives each scored run's render, e.g. to show it in a grid.
+using RenderedRun = std::function<void(std::size_t recordIndex, const Image& image)>;
+
+struct ExperimentTarget {
+    std::string name;
+    MaterialFamily family;
+    Genome genome;
+    // Weights, normalisation and elitism are kept; population, generations, metric and seed
+    // are set per run by the experiment.
+    GaSettings ga;
+};
+
+// The GA settings of one run.
+GaSettings runGaSettings(const ExperimentTarget& target, const ExperimentSettings& settings,
+                         DistanceMetric metric, int run);
+
+// Every metric's runs, metric by metric in settings order, each run's best individual and
+// fitness; meanDeltaE00 is left 0. Runs in parallel on up to hardware_concurrency() threads.
+std::vector<RunRecord> evolveRuns(const ExperimentTarget& target,
+                                  const ExperimentSettings& settings,
+                                  const ExperimentProgress& progress = {});
+
+// Renders the records' genomes in batches of at most batchSize and stores each one's mean
+// ΔE00 against targetImage. progress counts scored records.
+Status scoreRuns(std::span<RunRecord> records, const Image& targetImage,
+                 const RenderGenomes& render, std::size_t batchSize = 64,
+                 const ExperimentProgress& progress = {}, const RenderedRun& onRendered = {});
+
+// Renders the target, evolves and scores every run. progress counts GA runs, then scored runs.
+Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
+                                             const ExperimentSettings& settings,
+                                             const RenderGenomes& render,
+                                             const ExperimentProgress& progress = {});
+
+}  // namespace matevo

@@ -1,0 +1,26 @@
+#pragma once
+// The histogram charts of an experiment: for the runs of one preset and size, one chart per
+// metric, all on the same ΔE00 and count axes so they can be compared side by side, with the
+// paper's perceptual bands in the colours the heatmaps use.
+#include <span>
+#include <vector>
+
+#include "common/Image.h"
+#include "evolve/GaSettings.h"
+#include "experiment/HistogramChart.h"
+#include "experiment/RunRecord.h"
+
+namespace matevo {
+
+// The paper's five ΔE00 bands (§5) as chart bands.
+std::vector<ChartBand> perceptualChartBands();
+
+struct MetricChart {
+    DistanceMetric metric = DistanceMetric::Euclidean;
+    Image image;
+};
+
+// records: runs of one preset and size; charts in the order the metrics first appear.
+std::vector<MetricChart> metricHistogramCharts(std::span<const RunRecord> records);
+
+}  // namespace matevo

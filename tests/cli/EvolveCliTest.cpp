@@ -1,0 +1,107 @@
+// `matevo evolve` end to end: the real executable, its exit statuses and its JSON contract.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/RunCommand.h"
+
+namespace matevo {
+namespace {
+
+using testing::runMatevo;
+namespace fs = std::filesystem;
+
+nlohmann::json evolveJson(const std::string& arguments) {
+    auto result = runMatevo("evolve --json " + arguments);
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    return nlohmann::json::parse(result.out);
+}
+
+TEST(EvolveCli, JsonFollowsTheContract) {
+    auto json = evolveJson("--population 20 --generations 3 --seed 5 --metric manhattan");
+    for (const char* key : {"target", "config", "generations", "population", "best"})
+        EXPECT_TRUE(json.contains(key)) << key;
+    EXPECT_EQ(json["config"]["seed"], 5);
+    EXPECT_EQ(json["config"]["metric"], "manhattan");
+    EXPECT_EQ(json["config"]["population"], 20);
+    ASSERT_EQ(json["generations"].size(), 4u);  // the initial population, then 3 generations
+    for (const auto& generation : json["generations"]) {
+        EXPECT_LE(generation["best"].get<double>(), generation["mean"].get<double>());
+        EXPECT_LE(generation["mean"].get<double>(), generation["worst"].get<double>());
+        EXPECT_GE(generation["diversity"].get<double>(), 0.0);
+    }
+    const auto& population = json["population"];
+    ASSERT_EQ(population.size(), 20u);
+    for (std::size_t i = 1; i < population.size(); ++i)  // sorted best first
+        EXPECT_LE(population[i - 1]["fitness"].get<double>(),
+                  population[i]["fitness"].get<double>());
+    EXPECT_EQ(json["best"], population[0]);
+    for (const char* key : {"eta1", "eta2", "alpha1", "alpha2", "depth", "sigma_s", "sigma_a", "g"})
+        EXPECT_TRUE(json["best"]["genome"].contains(key)) << key;
+    EXPECT_DOUBLE_EQ(json["target"]["eta1"].get<double>(), 1.2);
+}
+
+TEST(EvolveCli, SameSeedSameResultOtherSeedOtherResult) {
+    auto first = evolveJson("--population 30 --generations 4 --seed 11");
+    auto again = evolveJson("--population 30 --generations 4 --seed 11");
+    auto other = evolveJson("--population 30 --generations 4 --seed 12");
+    EXPECT_EQ(first, again);
+    EXPECT_NE(first["population"], other["population"]);
+}
+
+TEST(EvolveCli, WeightsChangeTheFitness) {
+    auto plain = evolveJson("--population 10 --generations 0 --seed 3");
+    auto weighted = evolveJson("--population 10 --generations 0 --seed 3 --weights 2,2,2,2,2,2,2,2,2,2,2,2");
+    // Same individuals (same seed, no selection yet); every distance doubles.
+    ASSERT_EQ(plain["population"].size(), weighted["population"].size());
+    EXPECT_NEAR(weighted["best"]["fitness"].get<double>(),
+                2.0 * plain["best"]["fitness"].get<double>(), 1e-12);
+}
+
+TEST(EvolveCli, OutWritesResultJson) {
+    auto dir = fs::temp_directory_path() / ("matevo_evolve_out_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    auto result = runMatevo("evolve --population 10 --generations 2 --out '" + dir.string() + "'");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    std::ifstream in(dir / "result.json");
+    ASSERT_TRUE(in.good());
+    auto json = nlohmann::json::parse(in);
+    EXPECT_EQ(json["population"].size(), 10u);
+    fs::remove_all(dir);
+}
+
+TEST(EvolveCli, BadInputExitsTwoWithOneLine) {
+    for (const char* arguments :
+         {"--population 0", "--population 2000000000", "--generations -1", "--metric cosine",
+          "--weights 1,2,3", "--weights 1,1,1,1,1,1,1,1,1,1,1,x", "--seed -4", "--frobnicate",
+          "--preset /nonexistent.json", "--population"}) {
+        auto result = runMatevo(std::string("evolve ") + arguments);
+        EXPECT_EQ(result.exitCode, 2) << arguments;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_TRUE(result.out.empty()) << arguments;
+    }
+}
+
+TEST(EvolveCli, MalformedPresetNamesFileAndField) {
+    auto file = fs::temp_directory_path() / ("matevo_bad_" + std::to_string(::getpid()) + ".json");
+    std::ofstream(file) << R"({"name": "x", "family": {"coat": "clearcoat", "base": "conductor",
+        "medium": false}, "target": {"eta1": 1.2, "eta2": 0.8, "alpha1": 0.03, "alpha2": 0.1},
+        "base_kappa": [3, 3, 3], "ga": {"population": 0, "generations": 5}})";
+    auto result = runMatevo("evolve --preset '" + file.string() + "'");
+    EXPECT_EQ(result.exitCode, 2);
+    EXPECT_NE(result.err.find(file.string() + ": ga.population"), std::string::npos) << result.err;
+    fs::remove(file);
+}
+
+TEST(EvolveCli, HelpTellsTheOptions) {
+    auto result = runMatevo("evolve --help");
+    EXPECT_EQ(result.exitCode, 0);
+    for (const char* option : {"--preset", "--population", "--generations", "--metric",
+                               "--weights", "--seed", "--out", "--json"})
+        EXPECT_NE(result.out.find(option), std::string::npos) << option;
+}
+
+}  // namespace
+}  // namespace matevo

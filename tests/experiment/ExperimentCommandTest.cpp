@@ -1,0 +1,126 @@
+// The real `matevo experiment` end to end: a small experiment (few runs, small population and
+// image) written to real files, read back and checked; bad input gives exit 2 and one line.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "experiment/ResultsCsv.h"
+#include "io/ImageFile.h"
+#include "support/RunCommand.h"
+
+namespace matevo {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::runMatevo;
+
+std::string presetFile(const std::string& name) {
+    return std::string("'") + MATEVO_SOURCE_DIR + "/presets/" + name + "'";
+}
+
+class ExperimentCommand : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        out_ = fs::temp_directory_path() /
+               ("matevo_experiment_" + std::to_string(::getpid()) + "_" + info->name());
+        fs::remove_all(out_);
+    }
+    void TearDown() override { fs::remove_all(out_); }
+
+    // A small experiment on validation metal: 3 metrics x 3 runs, population 6, 2 generations.
+    testing::CommandOutput runSmall(const fs::path& out, const std::string& extra = "") {
+        return runMatevo("experiment --preset " + presetFile("validation_metal.json") +
+                         " --runs 3 --runs-per-seed 2 --population 6 --generations 2 --size 24"
+                         " --backend cpu --out '" + out.string() + "' " + extra);
+    }
+
+    static std::string readFile(const fs::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        std::stringstream text;
+        text << in.rdbuf();
+        return text.str();
+    }
+
+    fs::path out_;
+};
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> result;
+    std::stringstream stream(text);
+    std::string line;
+    while (std::getline(stream, line)) result.push_back(line);
+    return result;
+}
+
+TEST_F(ExperimentCommand, WritesOneCsvRowPerRunAndOneHistogramPerMetric) {
+    const auto result = runSmall(out_);
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+
+    const auto rows = lines(readFile(out_ / "results.csv"));
+    ASSERT_EQ(rows.size(), 1u + 3u * 3u);
+    EXPECT_EQ(rows[0], resultsCsvHeader());
+    const auto columns = std::count(rows[0].begin(), rows[0].end(), ',');
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        EXPECT_EQ(std::count(rows[i].begin(), rows[i].end(), ','), columns) << rows[i];
+        EXPECT_EQ(rows[i].rfind("validation metal,", 0), 0u) << rows[i];
+    }
+
+    for (const char* metric : {"chebyshev", "euclidean", "manhattan"}) {
+        const fs::path chart = out_ / (std::string("validation_metal_p6_g2_") + metric + ".png");
+        auto image = readImage(chart);
+        ASSERT_TRUE(image.ok()) << chart;
+        EXPECT_GT(image->width, 0);
+        EXPECT_GT(image->height, 0);
+    }
+    // The summary names every metric on stdout.
+    for (const char* metric : {"chebyshev", "euclidean", "manhattan"})
+        EXPECT_NE(result.out.find(metric), std::string::npos) << result.out;
+}
+
+TEST_F(ExperimentCommand, SameSeedGivesTheSameCsvAndAnotherSeedADifferentOne) {
+    ASSERT_EQ(runSmall(out_ / "a", "--seed 11").exitCode, 0);
+    ASSERT_EQ(runSmall(out_ / "b", "--seed 11").exitCode, 0);
+    ASSERT_EQ(runSmall(out_ / "c", "--seed 12").exitCode, 0);
+    const std::string first = readFile(out_ / "a" / "results.csv");
+    EXPECT_FALSE(first.empty());
+    EXPECT_EQ(first, readFile(out_ / "b" / "results.csv"));
+    EXPECT_NE(first, readFile(out_ / "c" / "results.csv"));
+}
+
+TEST_F(ExperimentCommand, BadInputExitsWithStatusTwoAndOneLineNamingTheProblem) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"--runs 0", "--runs"},
+        {"--metric cosine", "--metric"},
+        {"--backend abacus", "--backend"},
+        {"--sweep", "--sweep"},  // with --population from runSmall
+        {"--bogus", "--bogus"},
+    };
+    for (const auto& [arguments, named] : cases) {
+        const auto result = runSmall(out_, arguments);
+        EXPECT_EQ(result.exitCode, 2) << arguments;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_NE(result.err.find(named), std::string::npos) << result.err;
+    }
+    const auto missing = runMatevo("experiment --preset /nonexistent/preset.json --out '" +
+                                   out_.string() + "'");
+    EXPECT_EQ(missing.exitCode, 2);
+    EXPECT_NE(missing.err.find("/nonexistent/preset.json"), std::string::npos) << missing.err;
+}
+
+TEST_F(ExperimentCommand, HelpDescribesTheProtocolOptions) {
+    const auto result = runMatevo("experiment --help");
+    EXPECT_EQ(result.exitCode, 0);
+    for (const char* option : {"--preset", "--all", "--runs", "--population", "--generations",
+                               "--metric", "--sweep", "--seed", "--out"})
+        EXPECT_NE(result.out.find(option), std::string::npos) << option;
+}
+
+}  // namespace
+}  // namespace matevo

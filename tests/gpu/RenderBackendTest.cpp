@@ -1,0 +1,68 @@
+// The real executable: `matevo render` uses the GPU by default and falls back to the CPU, saying
+// so in one line, when no Vulkan device is usable.
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "color/ImageDifference.h"
+#include "io/ImageFile.h"
+#include "support/RunCommand.h"
+
+namespace matevo {
+namespace {
+
+std::filesystem::path scratchFile(const std::string& name) {
+    return std::filesystem::temp_directory_path() /
+           ("matevo_gpu_" + std::to_string(::getpid()) + "_" + name);
+}
+
+Image readBack(const std::filesystem::path& file) {
+    auto image = readImage(file);
+    EXPECT_TRUE(image.ok()) << file << ": " << image.error().message;
+    std::filesystem::remove(file);
+    return image.ok() ? std::move(image).value() : Image{};
+}
+
+TEST(RenderBackend, FallsBackToCpuWithoutVulkanDevice) {
+    const auto fallback = scratchFile("fallback.exr");
+    const auto reference = scratchFile("cpu.exr");
+    const auto result = testing::runCommand(
+        "VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR
+        "/matevo' render --size 40 --out '" + fallback.string() + "'");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_NE(result.err.find("no usable Vulkan device"), std::string::npos) << result.err;
+    EXPECT_NE(result.err.find("rendering on the CPU"), std::string::npos) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+
+    const auto cpu =
+        testing::runMatevo("render --backend cpu --size 40 --out '" + reference.string() + "'");
+    ASSERT_EQ(cpu.exitCode, 0) << cpu.err;
+    const Image fallbackImage = readBack(fallback);
+    const Image cpuImage = readBack(reference);
+    EXPECT_EQ(fallbackImage.rgba, cpuImage.rgba) << "the fallback is the CPU reference renderer";
+}
+
+TEST(RenderBackend, GpuIsTheDefaultAndMatchesCpu) {
+    const auto gpuFile = scratchFile("gpu.exr");
+    const auto cpuFile = scratchFile("cpu_default.exr");
+    const auto gpu = testing::runMatevo("render --size 40 --out '" + gpuFile.string() + "'");
+    ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
+    EXPECT_EQ(gpu.err, "") << "no fallback notice and no validation message expected";
+    const auto cpu =
+        testing::runMatevo("render --backend cpu --size 40 --out '" + cpuFile.string() + "'");
+    ASSERT_EQ(cpu.exitCode, 0) << cpu.err;
+    auto difference = compareImages(readBack(gpuFile), readBack(cpuFile));
+    ASSERT_TRUE(difference.ok()) << difference.error().message;
+    EXPECT_GT(difference->stats.pixels, 0u);
+    EXPECT_LT(difference->stats.mean, 0.5);
+}
+
+TEST(RenderBackend, RejectsUnknownBackend) {
+    const auto result = testing::runMatevo("render --backend opengl --out x.png");
+    EXPECT_EQ(result.exitCode, 2);
+    EXPECT_NE(result.err.find("--backend"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace matevo

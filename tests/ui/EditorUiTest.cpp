@@ -1,0 +1,217 @@
+// The editor's panels driven headless: real ImGui frames, mouse and keyboard input, no window.
+#include "EditorUi.h"
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "GaControls.h"
+#include "HeadlessImGui.h"
+#include "MaterialControls.h"
+#include "genome/FamilyRules.h"
+#include "io/Preset.h"
+
+namespace matevo::ui {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::HeadlessImGui;
+
+Preset validationMetal() {
+    auto loaded = loadPreset(fs::path(MATEVO_SOURCE_DIR) / "presets/validation_metal.json");
+    EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error().message);
+    return loaded->preset;
+}
+
+fs::path freshDirectory(const std::string& name) {
+    auto dir = fs::temp_directory_path() / ("matevo_ui_" + name + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+class EditorUiTest : public ::testing::Test {
+protected:
+    EditorUiTest() : ui(validationMetal(), "validation_metal.json") { imgui.frame(draw); }
+
+    HeadlessImGui imgui;
+    EditorUi ui;
+    FrameRequests lastRequests;
+    std::function<void()> draw = [this] { lastRequests = ui.draw(); };
+
+    ImVec2 locate(const char* window, const char* label) {
+        auto point = imgui.locate(window, label, draw);
+        EXPECT_TRUE(point.has_value()) << label << " not found in " << window;
+        return point.value_or(ImVec2(-1, -1));
+    }
+};
+
+TEST_F(EditorUiTest, DraggingThePopulationSliderChangesItAndUndoRestoresIt) {
+    const Preset original = ui.state().preset;
+    const ImVec2 slider = locate("Controls", "Population");
+    imgui.drag(slider, ImVec2(slider.x + 120, slider.y), draw);
+    const int dragged = ui.state().preset.ga.population;
+    EXPECT_NE(dragged, original.ga.population);
+    EXPECT_GE(dragged, 2);
+    EXPECT_TRUE(ui.state().hasUnsavedChanges());
+    EXPECT_NE(windowTitle(ui.state()).find('*'), std::string::npos);
+
+    imgui.pressKey('Z', /*ctrl=*/true, /*shift=*/false, draw);
+    EXPECT_EQ(ui.state().preset, original);
+    imgui.pressKey('Y', true, false, draw);
+    EXPECT_EQ(ui.state().preset.ga.population, dragged);
+}
+
+TEST_F(EditorUiTest, OneDragIsOneUndoStep) {
+    const Preset original = ui.state().preset;
+    const ImVec2 slider = locate("Controls", "Generations");
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = slider;
+    imgui.frame(draw);
+    io.MouseDown[0] = true;
+    for (int step = 1; step <= 5; ++step) {
+        io.MousePos = ImVec2(slider.x + 20.0f * float(step), slider.y);
+        imgui.frame(draw);
+    }
+    io.MouseDown[0] = false;
+    imgui.frame(draw);
+    EXPECT_NE(ui.state().preset.ga.generations, original.ga.generations);
+    ui.undo();
+    EXPECT_EQ(ui.state().preset, original);
+}
+
+TEST_F(EditorUiTest, ClickingAMetricSwitchesIt) {
+    ASSERT_NE(ui.state().preset.ga.metric, DistanceMetric::Manhattan);
+    imgui.click(locate("Controls", "Manhattan"), draw);
+    EXPECT_EQ(ui.state().preset.ga.metric, DistanceMetric::Manhattan);
+    imgui.click(locate("Controls", "Chebyshev"), draw);
+    EXPECT_EQ(ui.state().preset.ga.metric, DistanceMetric::Chebyshev);
+    ui.undo();
+    EXPECT_EQ(ui.state().preset.ga.metric, DistanceMetric::Manhattan);
+}
+
+TEST_F(EditorUiTest, TargetSlidersStayInsideTable2) {
+    const ImVec2 alpha1 = locate("Controls", "alpha1##target");
+    imgui.drag(alpha1, ImVec2(alpha1.x + 2000, alpha1.y), draw);  // far past the right end
+    const Preset& preset = ui.state().preset;
+    EXPECT_NE(preset.target.alpha1(), 0.03);
+    EXPECT_FALSE(validateGenome(preset.target, preset.family).has_value())
+        << *validateGenome(preset.target, preset.family);
+}
+
+TEST_F(EditorUiTest, NewSeedButtonPicksAnotherSeedReproducibly) {
+    const std::uint64_t before = ui.state().preset.ga.seed;
+    imgui.click(locate("Controls", "New seed"), draw);
+    EXPECT_EQ(ui.state().preset.ga.seed, nextSeed(before));
+    EXPECT_NE(ui.state().preset.ga.seed, before);
+}
+
+TEST_F(EditorUiTest, HeatmapToggleIsAViewSettingNotAnEdit) {
+    imgui.click(locate("Candidates (best first)", "Heatmap"), draw);
+    EXPECT_FALSE(ui.state().heatmap.enabled);
+    EXPECT_FALSE(ui.state().hasUnsavedChanges());
+}
+
+TEST_F(EditorUiTest, ClickingATileSelectsItAndPromoteMakesItTheTarget) {
+    Genome candidate = ui.state().preset.target;
+    candidate[kAlpha1] = 0.05;
+    ui.state().evolution.candidates = {{1, 0.1, 2.0, candidate, nullptr, nullptr},
+                                       {2, 0.2, 3.0, ui.state().preset.target, nullptr, nullptr}};
+    imgui.frame(draw);
+    ImGuiWindow* tiles = HeadlessImGui::findWindow("Candidates (best first)/tiles");
+    ASSERT_NE(tiles, nullptr);
+    const int rank = 1;  // tiles push their rank as ID
+    const ImGuiID tile = ImHashStr("tile", 0, ImHashData(&rank, sizeof rank, tiles->IDStack[0]));
+    const auto tileAt = imgui.locate(*tiles, tile, draw);
+    ASSERT_TRUE(tileAt.has_value());
+    imgui.click(*tileAt, draw);
+    EXPECT_EQ(ui.state().selectedCandidate, 0);
+    imgui.frame(draw);
+    ImGuiWindow* inspect = ImGui::FindWindowByName("Inspect");
+    ASSERT_NE(inspect, nullptr);
+    imgui.click(locate("Inspect", "Promote to target"), draw);
+    EXPECT_EQ(ui.state().preset.target, candidate);
+    ui.undo();
+    EXPECT_NE(ui.state().preset.target, candidate);
+}
+
+TEST_F(EditorUiTest, PresetsSaveAndLoad) {
+    const fs::path dir = freshDirectory("presets");
+    const fs::path file = dir / "tuned.json";
+    imgui.click(locate("Controls", "Manhattan"), draw);
+    ui.state().preset.ga.population = 77;
+    ASSERT_TRUE(ui.savePreset(file));
+    EXPECT_FALSE(ui.state().hasUnsavedChanges());
+    EXPECT_EQ(windowTitle(ui.state()).find('*'), std::string::npos);
+    EXPECT_NE(windowTitle(ui.state()).find("tuned.json"), std::string::npos);
+    const Preset saved = ui.state().preset;
+
+    ui.state().preset.ga.population = 12;
+    imgui.pressKey('S', /*ctrl=*/true, /*shift=*/false, draw);  // Ctrl+S saves to the same file
+    auto reloaded = loadPreset(file);
+    ASSERT_TRUE(reloaded.ok());
+    EXPECT_EQ(reloaded->preset.ga.population, 12);
+
+    EditorUi other(validationMetal(), {});
+    ASSERT_TRUE(other.openPreset(file));
+    EXPECT_EQ(other.state().preset.ga.population, 12);
+    EXPECT_EQ(other.state().preset.ga.metric, saved.ga.metric);
+    EXPECT_FALSE(other.state().hasUnsavedChanges());
+    fs::remove_all(dir);
+}
+
+TEST_F(EditorUiTest, OpenDialogTakesATypedPath) {
+    const fs::path dir = freshDirectory("open");
+    Preset preset = validationMetal();
+    preset.ga.population = 33;
+    ASSERT_TRUE(savePreset(preset, dir / "typed.json").ok());
+
+    imgui.pressKey('O', true, false, draw);
+    ImGuiIO& io = ImGui::GetIO();
+    // The path field starts with the current path selected; replace it.
+    io.KeyCtrl = true;
+    io.KeysDown[io.KeyMap[ImGuiKey_A]] = true;
+    imgui.frame(draw);
+    io.KeysDown[io.KeyMap[ImGuiKey_A]] = false;
+    io.KeyCtrl = false;
+    io.AddInputCharactersUTF8((dir / "typed.json").c_str());
+    imgui.frame(draw);
+    imgui.pressKey(io.KeyMap[ImGuiKey_Enter], false, false, draw);
+    EXPECT_EQ(ui.state().preset.ga.population, 33) << ui.state().statusMessage;
+    EXPECT_EQ(ui.state().presetPath, dir / "typed.json");
+    fs::remove_all(dir);
+}
+
+TEST_F(EditorUiTest, OpeningABadFileKeepsTheStateAndSaysWhy) {
+    const Preset before = ui.state().preset;
+    EXPECT_FALSE(ui.openPreset("/nonexistent/nothing.json"));
+    EXPECT_EQ(ui.state().preset, before);
+    EXPECT_NE(ui.state().statusMessage.find("nothing.json"), std::string::npos);
+}
+
+TEST_F(EditorUiTest, CtrlQAsksToQuit) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = true;
+    io.KeysDown['Q'] = true;
+    imgui.frame(draw);
+    EXPECT_TRUE(lastRequests.quit);
+    io.KeysDown['Q'] = false;
+    io.KeyCtrl = false;
+}
+
+TEST(MaterialControls, ChangingFamilyFitsTheTargetIntoTheNewRanges) {
+    Preset preset = validationMetal();
+    for (Coat coat : {Coat::Roughcoat, Coat::Clearcoat})
+        for (Base base : {Base::Conductor, Base::Dielectric})
+            for (bool medium : {false, true}) {
+                const MaterialFamily family{coat, base, medium, TexturedLayer::None};
+                const Genome fitted = fitGenomeToFamily(preset.target, family);
+                EXPECT_FALSE(validateGenome(fitted, family).has_value())
+                    << describe(family) << ": " << *validateGenome(fitted, family);
+            }
+}
+
+}  // namespace
+}  // namespace matevo::ui

@@ -1,0 +1,108 @@
+#include "HeatmapControls.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "Widgets.h"
+#include "color/Colormap.h"
+#include "color/PerceptualBand.h"
+
+namespace matevo::ui {
+namespace {
+
+constexpr float kMaxRange = 100.0f;  // beyond the paper's top band edge (49)
+
+ImU32 toColor(const std::array<float, 3>& srgb) {
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(srgb[0], srgb[1], srgb[2], 1.0f));
+}
+
+void drawLegend(const HeatmapView& heatmap) {
+    ImDrawList& drawList = *ImGui::GetWindowDrawList();
+    const ImVec2 topLeft = ImGui::GetCursorScreenPos();
+    const float width = ImGui::GetContentRegionAvail().x;
+    const float barHeight = 10.0f;
+    const float lineHeight = ImGui::GetTextLineHeight();
+    ImGui::Dummy(ImVec2(width, barHeight + lineHeight + 2.0f));
+
+    constexpr int kSteps = 64;
+    for (int i = 0; i < kSteps; ++i) {
+        const float x0 = topLeft.x + width * float(i) / kSteps;
+        const float x1 = topLeft.x + width * float(i + 1) / kSteps;
+        drawList.AddRectFilled(ImVec2(x0, topLeft.y), ImVec2(x1 + 0.5f, topLeft.y + barHeight),
+                               toColor(colormapSrgb((i + 0.5) / kSteps)));
+    }
+    const float range = heatmap.maxDeltaE - heatmap.minDeltaE;
+    const auto xOf = [&](double deltaE) {
+        return topLeft.x + width * float((deltaE - heatmap.minDeltaE) / range);
+    };
+    char label[32];
+    std::snprintf(label, sizeof label, "%.3g", heatmap.minDeltaE);
+    drawList.AddText(ImVec2(topLeft.x, topLeft.y + barHeight + 1.0f),
+                     ImGui::GetColorU32(kMutedTextColor), label);
+    std::snprintf(label, sizeof label, "%.3g", heatmap.maxDeltaE);
+    drawList.AddText(ImVec2(topLeft.x + width - ImGui::CalcTextSize(label).x,
+                            topLeft.y + barHeight + 1.0f),
+                     ImGui::GetColorU32(kMutedTextColor), label);
+    // Band edges inside the range: a tick and the edge value, like the paper's thresholds.
+    for (PerceptualBand band : kPerceptualBands) {
+        const double edge = bandUpperEdge(band);
+        if (!(edge > heatmap.minDeltaE && edge < heatmap.maxDeltaE)) continue;
+        const float x = xOf(edge);
+        drawList.AddLine(ImVec2(x, topLeft.y - 2.0f), ImVec2(x, topLeft.y + barHeight + 2.0f),
+                         IM_COL32(255, 255, 255, 220), 1.5f);
+        std::snprintf(label, sizeof label, "%g", edge);
+        drawList.AddText(ImVec2(x - ImGui::CalcTextSize(label).x * 0.5f,
+                                topLeft.y + barHeight + 1.0f),
+                         ImGui::GetColorU32(ImGuiCol_Text), label);
+    }
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::TextUnformatted("CIEDE2000 bands (Bernardi et al. 2020, §5)");
+        for (PerceptualBand band : kPerceptualBands) {
+            ImGui::ColorButton(std::string(bandRangeLabel(band)).c_str(),
+                               ImVec4(bandColorSrgb(band)[0], bandColorSrgb(band)[1],
+                                      bandColorSrgb(band)[2], 1.0f),
+                               ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
+            ImGui::SameLine();
+            ImGui::Text("%-6s %s", std::string(bandRangeLabel(band)).c_str(),
+                        std::string(bandDescription(band)).c_str());
+        }
+        ImGui::EndTooltip();
+    }
+}
+
+void drawBandNames(const HeatmapView& heatmap) {
+    std::string names;
+    for (PerceptualBand band : kPerceptualBands) {
+        const double lower = band == kPerceptualBands.front()
+                                 ? -1.0
+                                 : bandUpperEdge(kPerceptualBands[std::size_t(band) - 1]);
+        if (lower >= heatmap.maxDeltaE || bandUpperEdge(band) <= heatmap.minDeltaE) continue;
+        if (!names.empty()) names += "   ";
+        names += std::string(bandRangeLabel(band)) + " " + std::string(bandDescription(band));
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, kMutedTextColor);
+    ImGui::TextWrapped("%s", names.c_str());
+    ImGui::PopStyleColor();
+}
+
+}  // namespace
+
+void drawHeatmapControls(HeatmapView& heatmap) {
+    ImGui::Checkbox("Heatmap", &heatmap.enabled);
+    hoverHint("Overlay each candidate's per-pixel CIEDE2000 against the target.");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(150.0f);
+    ImGui::DragFloatRange2("ΔE00 range", &heatmap.minDeltaE, &heatmap.maxDeltaE, 0.1f, 0.0f,
+                           kMaxRange, "%.1f", "%.1f", ImGuiSliderFlags_AlwaysClamp);
+    heatmap.maxDeltaE = std::max(heatmap.maxDeltaE, heatmap.minDeltaE + 0.1f);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90.0f);
+    ImGui::SliderFloat("Opacity", &heatmap.opacity, 0.0f, 1.0f, "%.2f");
+    drawLegend(heatmap);
+    drawBandNames(heatmap);
+}
+
+}  // namespace matevo::ui

@@ -1,0 +1,41 @@
+#include "PathDialog.h"
+
+#include <utility>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace matevo::ui {
+
+void PathDialog::open(std::string title, const std::filesystem::path& suggestion) {
+    title_ = std::move(title);
+    path_ = suggestion.string();
+    wantsOpen_ = true;
+}
+
+std::optional<std::filesystem::path> PathDialog::draw() {
+    if (wantsOpen_) {
+        ImGui::OpenPopup(title_.c_str());
+        wantsOpen_ = false;
+    }
+    std::optional<std::filesystem::path> chosen;
+    ImGui::SetNextWindowSize(ImVec2(560, 0), ImGuiCond_Appearing);
+    visible_ = ImGui::BeginPopupModal(title_.c_str(), nullptr, ImGuiWindowFlags_NoSavedSettings);
+    if (!visible_) return chosen;
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(-1.0f);
+    const bool entered =
+        ImGui::InputText("##path", &path_, ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool confirmed = ImGui::Button("OK", ImVec2(100, 0)) || entered;
+    ImGui::SameLine();
+    const bool cancelled = ImGui::Button("Cancel", ImVec2(100, 0)) ||
+                           ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+    if ((confirmed && !path_.empty()) || cancelled) {
+        if (!cancelled) chosen = std::filesystem::path(path_);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+    return chosen;
+}
+
+}  // namespace matevo::ui
