@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "color/Srgb.h"
 
 namespace matevo {
@@ -38,6 +40,8 @@ TEST(ColorSpaces, InputsAreClampedToTheUnitCube) {
     const Lab negative = linearSrgbToLab({-0.5, 0.2, 0.2});
     const Lab zeroRed = linearSrgbToLab({0.0, 0.2, 0.2});
     EXPECT_DOUBLE_EQ(negative.a, zeroRed.a);
+    const Lab notANumber = linearSrgbToLab({std::nan(""), 0.2, 0.2});
+    EXPECT_DOUBLE_EQ(notANumber.a, zeroRed.a);
 }
 
 // sRGB-encoded → linear → XYZ → Lab and all the way back, over a grid of the cube that includes

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "support/TestImages.h"
 #include "color/Ciede2000.h"
@@ -139,6 +140,21 @@ TEST(ImageDifference, ResultDoesNotDependOnTheThreadCount) {
         EXPECT_EQ(parallel->stats.p95, single->stats.p95) << workers;
         EXPECT_EQ(parallel->stats.pixels, single->stats.pixels) << workers;
     }
+}
+
+// Broken EXR values must not turn the statistics into NaN: NaN counts as 0, infinity as 1.
+TEST(ImageDifference, NonFiniteValuesAreClampedLikeAnyOther) {
+    Image a(2, 1), b(2, 1);
+    for (float& value : a.rgba) value = 1.0f;
+    for (float& value : b.rgba) value = 1.0f;
+    a.pixel(0, 0)[0] = std::nanf("");
+    b.pixel(0, 0)[0] = 0.0f;
+    a.pixel(1, 0)[1] = std::numeric_limits<float>::infinity();
+    auto map = compareImages(a, b);
+    ASSERT_TRUE(map.ok());
+    EXPECT_EQ(map->deltaE[0], 0.0f);
+    EXPECT_EQ(map->deltaE[1], 0.0f);
+    EXPECT_EQ(map->stats.mean, 0.0);
 }
 
 TEST(ImageDifference, SizeMismatchIsAnError) {

@@ -26,12 +26,18 @@ inline constexpr double kLabEpsilon = kLabKnee * kLabKnee * kLabKnee;
 inline constexpr double kLabSlope = 1.0 / (3.0 * kLabKnee * kLabKnee);  // 841/108
 inline constexpr double kLabOffset = 4.0 / 29.0;                        // 16/116
 
+// To [0, 1]; NaN (a broken EXR, say) counts as 0 so that no NaN reaches the formulas.
+template <typename Real>
+Real clampToUnit(Real value) {
+    return value > Real(0) ? (value < Real(1) ? value : Real(1)) : Real(0);
+}
+
 // Clamped linear sRGB → XYZ.
 template <typename Real>
 void linearSrgbToXyz(Real r, Real g, Real b, Real (&xyz)[3]) {
-    r = std::clamp(r, Real(0), Real(1));
-    g = std::clamp(g, Real(0), Real(1));
-    b = std::clamp(b, Real(0), Real(1));
+    r = clampToUnit(r);
+    g = clampToUnit(g);
+    b = clampToUnit(b);
     for (int row = 0; row < 3; ++row)
         xyz[row] = Real(kRgbToXyz[row][0]) * r + Real(kRgbToXyz[row][1]) * g +
                    Real(kRgbToXyz[row][2]) * b;
