@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <thread>
 
@@ -67,8 +67,8 @@ ChunkSummary compareChunk(const Image& a, const Image& b, bool useAlpha, std::si
         const std::size_t blockEnd = std::min(block + kBlockPixels, end);
         deltaERange(rgbaA + 4 * block, rgbaB + 4 * block, deltaE + block, blockEnd - block);
         for (std::size_t i = block; i < blockEnd; ++i) {
-            const bool bothCover = (rgbaA[4 * i + 3] > kCoverageThreshold) &
-                                   (rgbaB[4 * i + 3] > kCoverageThreshold);
+            const bool bothCover =
+                (rgbaA[4 * i + 3] > kCoverageThreshold) & (rgbaB[4 * i + 3] > kCoverageThreshold);
             const bool inBoth = !useAlpha || bothCover;
             // Branch-free: coverage along a sphere's rim is hard to predict. Adding 0 for an
             // uncovered pixel leaves every sum as it was.
