@@ -21,13 +21,13 @@ RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<i
     auto sharedTextures = std::make_shared<const SceneTextures>(std::move(*textures));
     const Preset& preset = choice.preset;
     const int size = imageSize.value_or(preset.scene.imageSize);
-    return [sharedTextures, family = preset.family, kappa = preset.baseKappa,
-            scene = preset.scene, size](std::span<const Genome> genomes) {
+    return [sharedTextures, family = preset.family, kappa = preset.baseKappa, scene = preset.scene,
+            size](std::span<const Genome> genomes) {
         std::vector<Image> images;
         images.reserve(genomes.size());
         for (const Genome& genome : genomes)
-            images.push_back(
-                renderSphereCpu(MaterialInstance{genome, family, kappa}, *sharedTextures, scene, size));
+            images.push_back(renderSphereCpu(MaterialInstance{genome, family, kappa},
+                                             *sharedTextures, scene, size));
         return Result<std::vector<Image>>(std::move(images));
     };
 }

@@ -47,8 +47,7 @@ constexpr const char* kHelp =
     "                                    paper's perceptual bands\n"
     "Prints a summary per metric (median, band counts); a progress bar goes to stderr.\n";
 
-const char* const kValidationPresets[] = {"validation_metal.json",
-                                          "validation_painted_metal.json",
+const char* const kValidationPresets[] = {"validation_metal.json", "validation_painted_metal.json",
                                           "validation_metal_depth.json"};
 
 std::vector<DistanceMetric> parseMetrics(const std::optional<std::string>& text) {
@@ -89,8 +88,9 @@ Request parseRequest(CommandLine& args) {
     const auto population = args.integerOption("--population", 2, kMaxPopulation);
     const auto generations = args.integerOption("--generations", 0, kMaxGenerations);
     if (request.sweep && (population || generations))
-        throw UsageError("experiment: --sweep sets the population and generations itself; "
-                         "leave out --population and --generations");
+        throw UsageError(
+            "experiment: --sweep sets the population and generations itself; "
+            "leave out --population and --generations");
     if (population) settings.size.population = int(*population);
     if (generations) settings.size.generations = int(*generations);
     if (auto runs = args.integerOption("--runs", 1, kMaxExperimentRuns)) settings.runs = int(*runs);
@@ -149,8 +149,8 @@ void printSummaries(std::span<const RunRecord> records, std::FILE* out) {
                               summaries[i - 1].size != summary.size;
         if (newGroup) {
             std::fprintf(out, "\n%s, population %d, generations %d, %d runs per metric\n",
-                         summary.preset.c_str(), summary.size.population,
-                         summary.size.generations, summary.runs);
+                         summary.preset.c_str(), summary.size.population, summary.size.generations,
+                         summary.runs);
             std::fprintf(out, "  %-10s %7s %7s", "metric", "median", "mean");
             for (PerceptualBand band : kPerceptualBands) {
                 const std::string_view label = bandRangeLabel(band);
@@ -189,8 +189,8 @@ int runExperiment(CommandLine& args) {
             const RenderGenomes render =
                 makeExperimentRenderer(choice, request.imageSize, request.backend);
             const ExperimentTarget target{preset.name, preset.family, preset.target, preset.ga};
-            const std::vector<GaSize> sizes = request.sweep ? paperSweep(preset.family)
-                                                            : std::vector{request.settings.size};
+            const std::vector<GaSize> sizes =
+                request.sweep ? paperSweep(preset.family) : std::vector{request.settings.size};
             for (const GaSize& size : sizes) {
                 ExperimentSettings settings = request.settings;
                 settings.size = size;
@@ -203,8 +203,8 @@ int runExperiment(CommandLine& args) {
                 allRecords.insert(allRecords.end(), records->begin(), records->end());
                 // Rewritten after every block of runs, atomically: an interrupted sweep keeps
                 // what it finished.
-                writeOrThrow(writeFileAtomically(request.outDir / "results.csv",
-                                                 resultsCsv(allRecords)));
+                writeOrThrow(
+                    writeFileAtomically(request.outDir / "results.csv", resultsCsv(allRecords)));
                 writeHistograms(*records, choice.file.stem().string(), request.outDir);
             }
         }

@@ -38,7 +38,8 @@ protected:
     testing::CommandOutput runSmall(const fs::path& out, const std::string& extra = "") {
         return runMatevo("experiment --preset " + presetFile("validation_metal.json") +
                          " --runs 3 --runs-per-seed 2 --population 6 --generations 2 --size 24"
-                         " --backend cpu --out '" + out.string() + "' " + extra);
+                         " --backend cpu --out '" +
+                         out.string() + "' " + extra);
     }
 
     static std::string readFile(const fs::path& file) {
@@ -96,9 +97,7 @@ TEST_F(ExperimentCommand, SameSeedGivesTheSameCsvAndAnotherSeedADifferentOne) {
 
 TEST_F(ExperimentCommand, BadInputExitsWithStatusTwoAndOneLineNamingTheProblem) {
     const std::vector<std::pair<std::string, std::string>> cases = {
-        {"--runs 0", "--runs"},
-        {"--metric cosine", "--metric"},
-        {"--backend abacus", "--backend"},
+        {"--runs 0", "--runs"}, {"--metric cosine", "--metric"}, {"--backend abacus", "--backend"},
         {"--sweep", "--sweep"},  // with --population from runSmall
         {"--bogus", "--bogus"},
     };
@@ -108,8 +107,8 @@ TEST_F(ExperimentCommand, BadInputExitsWithStatusTwoAndOneLineNamingTheProblem) 
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
         EXPECT_NE(result.err.find(named), std::string::npos) << result.err;
     }
-    const auto missing = runMatevo("experiment --preset /nonexistent/preset.json --out '" +
-                                   out_.string() + "'");
+    const auto missing =
+        runMatevo("experiment --preset /nonexistent/preset.json --out '" + out_.string() + "'");
     EXPECT_EQ(missing.exitCode, 2);
     EXPECT_NE(missing.err.find("/nonexistent/preset.json"), std::string::npos) << missing.err;
 }
