@@ -83,8 +83,8 @@ int runCompare(CommandLine& args) {
         out["pixels"] = stats.pixels;
         std::printf("%s\n", out.dump().c_str());
     } else {
-        std::printf("mean dE00 %.4f, max %.4f, p95 %.4f over %zu pixels\n", stats.mean,
-                    stats.max, stats.p95, stats.pixels);
+        std::printf("mean dE00 %.4f, max %.4f, p95 %.4f over %zu pixels\n", stats.mean, stats.max,
+                    stats.p95, stats.pixels);
     }
     return 0;
 }

@@ -32,8 +32,7 @@ Lab xyzToLab(const Xyz& xyz) {
 namespace {
 
 double labCompandingInverse(double f) {
-    return f > formulas::kLabKnee ? f * f * f
-                                  : (f - formulas::kLabOffset) / formulas::kLabSlope;
+    return f > formulas::kLabKnee ? f * f * f : (f - formulas::kLabOffset) / formulas::kLabSlope;
 }
 
 }  // namespace

@@ -30,7 +30,6 @@ Image heatmapImage(const DeltaEMap& map, const HeatmapSettings& settings);
 // The candidate with the heatmap blended over it at settings.opacity where the map covers a
 // pixel; elsewhere the candidate unchanged, so it stays transparent outside its sphere. The
 // candidate must have the map's size; otherwise the result is an empty image.
-Image overlayHeatmap(const Image& candidate, const DeltaEMap& map,
-                     const HeatmapSettings& settings);
+Image overlayHeatmap(const Image& candidate, const DeltaEMap& map, const HeatmapSettings& settings);
 
 }  // namespace matevo

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <thread>
 
@@ -14,17 +16,31 @@ namespace {
 
 // Fixed chunk size: the partial sums, and so the mean, never depend on the thread count.
 constexpr std::size_t kChunkPixels = 16384;
+constexpr std::size_t kBlockPixels = 1024;
 constexpr float kCoverageThreshold = 0.5f;
+
+// Non-negative floats order like their bit patterns, so the top bits (exponent and three
+// mantissa bits: an eighth of an octave) sort ΔE00 values into ordered buckets. The p95 then
+// needs ordering only within one bucket rather than over the whole image.
+constexpr int kBucketShift = 20;
+constexpr std::size_t kBucketCount = std::size_t(1) << (31 - kBucketShift);  // sign bit is 0
+
+std::size_t bucketOf(float deltaE) {
+    return std::min(std::size_t(std::bit_cast<std::uint32_t>(deltaE) >> kBucketShift),
+                    kBucketCount - 1);
+}
 
 struct ChunkSummary {
     double sum = 0;
     float max = 0;
     std::size_t pixels = 0;
+    std::vector<std::uint32_t> histogram = std::vector<std::uint32_t>(kBucketCount, 0);
 };
 
 // Float math through the shared formulas: flattened, this loop has no calls and no branches, so
 // the compiler vectorises it.
-[[gnu::flatten, gnu::target_clones("avx512f", "avx2", "default")]] void deltaERange(const float* rgbaA, const float* rgbaB, float* deltaE, std::size_t count) {
+[[gnu::flatten, gnu::target_clones("avx512f", "avx2", "default")]] void deltaERange(
+    const float* rgbaA, const float* rgbaB, float* deltaE, std::size_t count) {
     using formulas::FastFloatMath;
     for (std::size_t i = 0; i < count; ++i) {
         const float* pa = rgbaA + 4 * i;
@@ -41,20 +57,29 @@ struct ChunkSummary {
 
 ChunkSummary compareChunk(const Image& a, const Image& b, bool useAlpha, std::size_t begin,
                           std::size_t end, DeltaEMap& map) {
-    float* deltaE = map.deltaE.data() + begin;
-    deltaERange(a.rgba.data() + 4 * begin, b.rgba.data() + 4 * begin, deltaE, end - begin);
+    const float* rgbaA = a.rgba.data();
+    const float* rgbaB = b.rgba.data();
+    float* deltaE = map.deltaE.data();
+    std::uint8_t* covered = map.covered.data();
     ChunkSummary summary;
-    for (std::size_t i = begin; i < end; ++i) {
-        const bool covered = !useAlpha || (a.rgba[4 * i + 3] > kCoverageThreshold &&
-                                           b.rgba[4 * i + 3] > kCoverageThreshold);
-        map.covered[i] = covered ? 1 : 0;
-        if (!covered) {
-            map.deltaE[i] = 0.0f;
-            continue;
+    // In blocks small enough that the coverage pass finds the block's alpha still in cache.
+    for (std::size_t block = begin; block < end; block += kBlockPixels) {
+        const std::size_t blockEnd = std::min(block + kBlockPixels, end);
+        deltaERange(rgbaA + 4 * block, rgbaB + 4 * block, deltaE + block, blockEnd - block);
+        for (std::size_t i = block; i < blockEnd; ++i) {
+            const bool bothCover =
+                (rgbaA[4 * i + 3] > kCoverageThreshold) & (rgbaB[4 * i + 3] > kCoverageThreshold);
+            const bool inBoth = !useAlpha || bothCover;
+            // Branch-free: coverage along a sphere's rim is hard to predict. Adding 0 for an
+            // uncovered pixel leaves every sum as it was.
+            const float value = inBoth ? deltaE[i] : 0.0f;
+            deltaE[i] = value;
+            covered[i] = inBoth ? 1 : 0;
+            summary.sum += value;
+            summary.max = std::max(summary.max, value);
+            summary.histogram[bucketOf(value)] += inBoth ? 1 : 0;
+            summary.pixels += inBoth ? 1 : 0;
         }
-        summary.sum += map.deltaE[i];
-        summary.max = std::max(summary.max, map.deltaE[i]);
-        ++summary.pixels;
     }
     return summary;
 }
@@ -74,15 +99,27 @@ void forEachChunk(std::size_t chunkCount, unsigned workerCount, const Work& work
     drain();
 }
 
-double nearestRankPercentile95(const DeltaEMap& map, std::size_t coveredPixels) {
-    std::vector<float> values;
-    values.reserve(coveredPixels);
-    for (std::size_t i = 0; i < map.deltaE.size(); ++i)
-        if (map.covered[i]) values.push_back(map.deltaE[i]);
-    // ceil(0.95 N) computed in integers: 1-based rank, 0-based index one less.
-    const std::size_t rank = (95 * values.size() + 99) / 100;
-    auto nth = values.begin() + std::ptrdiff_t(rank - 1);
-    std::nth_element(values.begin(), nth, values.end());
+double nearestRankPercentile95(const DeltaEMap& map, const std::vector<ChunkSummary>& summaries,
+                               std::size_t coveredPixels) {
+    // ceil(0.95 N) computed in integers: the 1-based rank.
+    const std::size_t rank = (95 * coveredPixels + 99) / 100;
+    std::vector<std::size_t> histogram(kBucketCount, 0);
+    for (const ChunkSummary& summary : summaries)
+        for (std::size_t bucket = 0; bucket < kBucketCount; ++bucket)
+            histogram[bucket] += summary.histogram[bucket];
+    std::size_t bucket = 0, below = 0;
+    for (; below + histogram[bucket] < rank; ++bucket) below += histogram[bucket];
+    // Compacted without branches (one spare slot for the writes that do not count): which
+    // pixels fall in the bucket is as unpredictable as the image.
+    std::vector<float> candidates(histogram[bucket] + 1);
+    std::size_t found = 0;
+    for (std::size_t i = 0; i < map.deltaE.size(); ++i) {
+        candidates[found] = map.deltaE[i];
+        found += (map.covered[i] != 0) & (bucketOf(map.deltaE[i]) == bucket);
+    }
+    candidates.pop_back();
+    auto nth = candidates.begin() + std::ptrdiff_t(rank - below - 1);
+    std::nth_element(candidates.begin(), nth, candidates.end());
     return *nth;
 }
 
@@ -120,7 +157,7 @@ Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
     }
     if (map.stats.pixels > 0) {
         map.stats.mean = sum / double(map.stats.pixels);
-        map.stats.p95 = nearestRankPercentile95(map, map.stats.pixels);
+        map.stats.p95 = nearestRankPercentile95(map, summaries, map.stats.pixels);
     }
     return map;
 }

@@ -18,9 +18,8 @@ enum class PerceptualBand {
 
 inline constexpr int kPerceptualBandCount = 5;
 inline constexpr std::array<PerceptualBand, kPerceptualBandCount> kPerceptualBands = {
-    PerceptualBand::kNotPerceptible, PerceptualBand::kCloseObservation,
-    PerceptualBand::kAtAGlance, PerceptualBand::kMoreSimilarThanOpposite,
-    PerceptualBand::kOpposite};
+    PerceptualBand::kNotPerceptible, PerceptualBand::kCloseObservation, PerceptualBand::kAtAGlance,
+    PerceptualBand::kMoreSimilarThanOpposite, PerceptualBand::kOpposite};
 
 PerceptualBand classifyDeltaE(double deltaE);
 

@@ -45,8 +45,8 @@ void expectUsageError(const testing::CommandOutput& run, const std::string& ment
 TEST_F(CompareCommandTest, JsonReportsTheLibraryStatistics) {
     const Image a = testdata::randomImage(50, 40, 11, true);
     const Image b = testdata::randomImage(50, 40, 12, true);
-    const auto run = runMatevo("compare " + write(a, "a.exr") + " " + write(b, "b.exr") +
-                               " --json");
+    const auto run =
+        runMatevo("compare " + write(a, "a.exr") + " " + write(b, "b.exr") + " --json");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto json = nlohmann::json::parse(run.out);
     auto map = compareImages(a, b);
@@ -101,8 +101,7 @@ TEST_F(CompareCommandTest, BadInputExitsTwoWithOneLine) {
     expectUsageError(runMatevo("compare " + a + " " + quoted(scratch_ / "missing.png")),
                      "missing.png");
     std::ofstream(scratch_ / "text.png") << "not an image\n";
-    expectUsageError(runMatevo("compare " + a + " " + quoted(scratch_ / "text.png")),
-                     "text.png");
+    expectUsageError(runMatevo("compare " + a + " " + quoted(scratch_ / "text.png")), "text.png");
     expectUsageError(runMatevo("compare " + a + " " + quoted(scratch_ / "a.jpg")), "a.jpg");
     expectUsageError(runMatevo("compare " + a), "two images");
     expectUsageError(runMatevo("compare " + a + " " + a + " --range 3"), "--range");

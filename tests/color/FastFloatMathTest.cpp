@@ -91,11 +91,10 @@ TEST(FastFloatMath, FloatPipelineTracksTheDoubleReference) {
         linearSrgbToXyz(rgbB[0], rgbB[1], rgbB[2], xyzB);
         xyzToLab<float, FastFloatMath>(xyzA, labA[0], labA[1], labA[2]);
         xyzToLab<float, FastFloatMath>(xyzB, labB[0], labB[1], labB[2]);
-        const float fast = ciede2000<float, FastFloatMath>(labA[0], labA[1], labA[2], labB[0],
-                                                           labB[1], labB[2]);
-        const double reference =
-            matevo::ciede2000(linearSrgbToLab({rgbA[0], rgbA[1], rgbA[2]}),
-                              linearSrgbToLab({rgbB[0], rgbB[1], rgbB[2]}));
+        const float fast =
+            ciede2000<float, FastFloatMath>(labA[0], labA[1], labA[2], labB[0], labB[1], labB[2]);
+        const double reference = matevo::ciede2000(linearSrgbToLab({rgbA[0], rgbA[1], rgbA[2]}),
+                                                   linearSrgbToLab({rgbB[0], rgbB[1], rgbB[2]}));
         worst = std::max(worst, std::fabs(fast - reference));
         signedSum += fast - reference;
     }

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "support/TestImages.h"
 #include "color/Ciede2000.h"
+#include "support/TestImages.h"
 
 namespace matevo {
 namespace {
@@ -68,22 +68,23 @@ TEST(ImageDifference, MaskedPixelsAreExcluded) {
         b.rgba[4 * i] = 1.0f;  // ...and a large red difference where a mask applies
         b.rgba[4 * i + 1] = 0.0f;
     }
-    a.rgba[4 * 0 + 3] = 0.0f;   // outside a's sphere
-    b.rgba[4 * 5 + 3] = 0.5f;   // exactly the threshold: not covered
+    a.rgba[4 * 0 + 3] = 0.0f;  // outside a's sphere
+    b.rgba[4 * 5 + 3] = 0.5f;  // exactly the threshold: not covered
     a.rgba[4 * 10 + 3] = 0.3f;
     b.rgba[4 * 15 + 3] = 0.0f;
     b.rgba[4 * 3 + 3] = 0.51f;  // just covered
 
     auto map = compareImages(a, b);
     ASSERT_TRUE(map.ok());
-    const double step = ciede2000(linearSrgbToLab({0.2, 0.2, 0.2}),
-                                  linearSrgbToLab({0.25, 0.25, 0.25}));
+    const double step =
+        ciede2000(linearSrgbToLab({0.2, 0.2, 0.2}), linearSrgbToLab({0.25, 0.25, 0.25}));
     EXPECT_EQ(map->stats.pixels, 12u);
     EXPECT_NEAR(map->stats.mean, step, 5e-4);
     EXPECT_NEAR(map->stats.max, step, 5e-4);
     EXPECT_NEAR(map->stats.p95, step, 5e-4);
     for (std::size_t i = 0; i < a.pixelCount(); ++i) {
-        const bool isMasked = std::find(std::begin(masked), std::end(masked), i) != std::end(masked);
+        const bool isMasked =
+            std::find(std::begin(masked), std::end(masked), i) != std::end(masked);
         EXPECT_EQ(map->covered[i], isMasked ? 0 : 1) << i;
         if (isMasked) {
             EXPECT_EQ(map->deltaE[i], 0.0f) << i;

@@ -39,8 +39,8 @@ void linearSrgbToXyz(Real r, Real g, Real b, Real (&xyz)[3]) {
     g = clampToUnit(g);
     b = clampToUnit(b);
     for (int row = 0; row < 3; ++row)
-        xyz[row] = Real(kRgbToXyz[row][0]) * r + Real(kRgbToXyz[row][1]) * g +
-                   Real(kRgbToXyz[row][2]) * b;
+        xyz[row] =
+            Real(kRgbToXyz[row][0]) * r + Real(kRgbToXyz[row][1]) * g + Real(kRgbToXyz[row][2]) * b;
 }
 
 template <typename Real, typename Math>
@@ -72,8 +72,8 @@ Real chromaWeight(Real chroma) {
 template <typename Real, typename Math>
 Real ciede2000(Real l1, Real a1, Real b1, Real l2, Real a2, Real b2) {
     // (2)-(7): a' stretched by G near the neutral axis; C' and h' in degrees, [0, 360).
-    const Real meanChroma = Real(0.5) * (Math::sqrt(a1 * a1 + b1 * b1) +
-                                         Math::sqrt(a2 * a2 + b2 * b2));
+    const Real meanChroma =
+        Real(0.5) * (Math::sqrt(a1 * a1 + b1 * b1) + Math::sqrt(a2 * a2 + b2 * b2));
     const Real aScale = Real(1.5) - Real(0.5) * chromaWeight<Real, Math>(meanChroma);  // 1 + G
     const Real a1p = aScale * a1;
     const Real a2p = aScale * a2;
@@ -141,8 +141,8 @@ Real ciede2000(Real l1, Real a1, Real b1, Real l2, Real a2, Real b2) {
     const Real lightnessTerm = lightnessDelta / lightnessWeight;
     const Real chromaTerm = chromaDelta / chromaWeightS;
     const Real hueTerm = hueDeltaBig / hueWeightS;
-    return Math::sqrt(lightnessTerm * lightnessTerm + chromaTerm * chromaTerm +
-                      hueTerm * hueTerm + rotation * chromaTerm * hueTerm);
+    return Math::sqrt(lightnessTerm * lightnessTerm + chromaTerm * chromaTerm + hueTerm * hueTerm +
+                      rotation * chromaTerm * hueTerm);
 }
 
 }  // namespace matevo::formulas

@@ -5,6 +5,7 @@
 // this project (minimax on [0, 1] for atan, [-1/2, 1/2] for 2^x); sine and cosine use their
 // Taylor series on [-45°, 45°].
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -13,11 +14,37 @@
 namespace matevo::formulas {
 
 struct FastFloatMath {
+    // Coefficients from the constant term up. 2^x on [-1/2, 1/2]; atan(r) / r in powers of r^2
+    // on [0, 1]; sin(r) / r and cos(r) in powers of r^2 (Taylor).
+    static constexpr std::array<float, 7> kExp2Coefficients = {1.0f,
+                                                               0.69314720670743624f,
+                                                               0.24022651505034731f,
+                                                               0.055503272201838795f,
+                                                               0.0096179945141859347f,
+                                                               0.0013400429988540646f,
+                                                               0.00015478022809815861f};
+    static constexpr std::array<float, 8> kAtanCoefficients = {
+        0.9999993355468136f,  -0.3332986064638426f,  0.1994656393694752f, -0.1390862029235393f,
+        0.09642171970112862f, -0.05591195847088065f, 0.0218626877435911f, -0.00405448852947783f};
+    static constexpr std::array<float, 5> kSineCoefficients = {1.0f, -1.0f / 6, 1.0f / 120,
+                                                               -1.0f / 5040, 1.0f / 362880};
+    static constexpr std::array<float, 6> kCosineCoefficients = {
+        1.0f, -1.0f / 2, 1.0f / 24, -1.0f / 720, 1.0f / 40320, -1.0f / 3628800};
+
+    // Horner's rule.
+    template <std::size_t N>
+    static float polynomial(float x, const std::array<float, N>& coefficients) {
+        float result = coefficients[N - 1];
+        for (std::size_t i = N - 1; i-- > 0;) result = result * x + coefficients[i];
+        return result;
+    }
+
     static float sqrt(float x) { return std::sqrt(x); }
 
     // For positive normal x.
     static float cbrt(float x) {
-        // Thirding the bit pattern thirds the exponent: a start within a few per cent, which two
+        // Thirding the bit pattern thirds the exponent (the constant adds back two thirds of the
+        // bias, 127 * 2^23 * 2/3, slightly tuned): a start within a few per cent, which two
         // Halley steps (cubic convergence) take to float precision.
         const auto bits = std::bit_cast<std::int32_t>(x);
         float y = std::bit_cast<float>(std::int32_t(float(bits) * (1.0f / 3.0f)) + 709921077);
@@ -33,33 +60,14 @@ struct FastFloatMath {
         const float twoPower = std::max(x, -87.0f) * std::numbers::log2e_v<float>;
         const auto whole = std::int32_t(twoPower + (twoPower < 0.0f ? -0.5f : 0.5f));
         const float fraction = twoPower - float(whole);  // in [-1/2, 1/2]
-        const float power =
-            1.0000000f +
-            fraction * (0.69314720670743624f +
-                        fraction * (0.24022651505034731f +
-                                    fraction * (0.055503272201838795f +
-                                                fraction * (0.0096179945141859347f +
-                                                            fraction * (0.0013400429988540646f +
-                                                                        fraction *
-                                                                            0.00015478022809815861f)))));
-        return power * std::bit_cast<float>((whole + 127) << 23);
+        return polynomial(fraction, kExp2Coefficients) * std::bit_cast<float>((whole + 127) << 23);
     }
 
     // In [0, 360); 0 for (0, 0).
     static float atan2Degrees(float y, float x) {
         const float ax = std::fabs(x), ay = std::fabs(y);
         const float ratio = std::min(ax, ay) / std::max(std::max(ax, ay), 1e-30f);
-        const float r2 = ratio * ratio;
-        const float atanRatio =
-            ratio *
-            (0.9999993355468136f +
-             r2 * (-0.3332986064638426f +
-                   r2 * (0.1994656393694752f +
-                         r2 * (-0.1390862029235393f +
-                               r2 * (0.09642171970112862f +
-                                     r2 * (-0.05591195847088065f +
-                                           r2 * (0.0218626877435911f +
-                                                 r2 * -0.00405448852947783f)))))));
+        const float atanRatio = ratio * polynomial(ratio * ratio, kAtanCoefficients);
         float degrees = atanRatio * (180.0f / std::numbers::pi_v<float>);
         degrees = ay > ax ? 90.0f - degrees : degrees;
         degrees = x < 0.0f ? 180.0f - degrees : degrees;
@@ -69,14 +77,12 @@ struct FastFloatMath {
     // For |degrees| below a few thousand.
     static void sinCosDegrees(float degrees, float& sine, float& cosine) {
         // Reduce to r in [-45°, 45°] and the quadrant q: sin(x) = sin(r + 90° q).
-        const auto quadrant = std::int32_t(degrees * (1.0f / 90.0f) + (degrees < 0.0f ? -0.5f : 0.5f));
+        const auto quadrant =
+            std::int32_t(degrees * (1.0f / 90.0f) + (degrees < 0.0f ? -0.5f : 0.5f));
         const float r = (degrees - float(quadrant) * 90.0f) * (std::numbers::pi_v<float> / 180.0f);
         const float r2 = r * r;
-        const float sinR =
-            r * (1.0f + r2 * (-1.0f / 6 + r2 * (1.0f / 120 + r2 * (-1.0f / 5040 + r2 / 362880))));
-        const float cosR =
-            1.0f +
-            r2 * (-0.5f + r2 * (1.0f / 24 + r2 * (-1.0f / 720 + r2 * (1.0f / 40320 - r2 / 3628800))));
+        const float sinR = r * polynomial(r2, kSineCoefficients);
+        const float cosR = polynomial(r2, kCosineCoefficients);
         const bool swap = (quadrant & 1) != 0;
         const float s = swap ? cosR : sinR;
         const float c = swap ? sinR : cosR;
