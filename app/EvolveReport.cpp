@@ -42,6 +42,16 @@ nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga) {
             {"best", population.empty() ? nlohmann::json() : population.front()}};
 }
 
+void addImageStatistics(nlohmann::json& report, const std::vector<DeltaEStats>& stats) {
+    auto& population = report["population"];
+    for (std::size_t rank = 0; rank < stats.size() && rank < population.size(); ++rank) {
+        population[rank]["mean_de00"] = stats[rank].mean;
+        population[rank]["max_de00"] = stats[rank].max;
+        population[rank]["p95_de00"] = stats[rank].p95;
+    }
+    if (!population.empty()) report["best"] = population.front();
+}
+
 void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga, std::FILE* out) {
     std::fprintf(out, "%s (%s): population %d, %d generations, %s distance, seed %llu\n",
                  preset.name.c_str(), describe(preset.family).c_str(), preset.ga.population,

@@ -5,12 +5,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "color/ImageDifference.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "io/Preset.h"
 
 namespace matevo::cli {
 
 nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga);
+// Adds mean_de00, max_de00 and p95_de00 to each population entry (rank order) and to best.
+void addImageStatistics(nlohmann::json& report, const std::vector<DeltaEStats>& stats);
 void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga, std::FILE* out);
 
 }  // namespace matevo::cli

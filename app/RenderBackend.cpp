@@ -32,14 +32,18 @@ RenderBackend parseRenderBackend(const std::string& text, const std::string& opt
     throw UsageError(option + ": expected gpu or cpu, got " + text);
 }
 
+void noticeCpuFallback(const std::string& command, const std::string& reason) {
+    std::fprintf(stderr, "%s: no usable Vulkan device (%s); rendering on the CPU instead\n",
+                 command.c_str(), reason.c_str());
+}
+
 std::vector<Image> renderMaterials(std::span<const MaterialInstance> materials,
                                    const SceneTextures& textures, const SceneSettings& scene,
                                    int size, RenderBackend backend, const std::string& command) {
     if (backend == RenderBackend::Gpu) {
         auto images = renderOnGpu(materials, textures, scene, size);
         if (images) return std::move(images).value();
-        std::fprintf(stderr, "%s: no usable Vulkan device (%s); rendering on the CPU instead\n",
-                     command.c_str(), images.error().message.c_str());
+        noticeCpuFallback(command, images.error().message);
     }
     std::vector<Image> images;
     for (const MaterialInstance& material : materials)

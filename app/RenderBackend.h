@@ -18,6 +18,9 @@ enum class RenderBackend { Gpu, Cpu };
 // Throws UsageError naming the option for anything but "gpu" or "cpu".
 RenderBackend parseRenderBackend(const std::string& text, const std::string& option);
 
+// The one-line notice printed when the GPU is not usable and the CPU takes over.
+void noticeCpuFallback(const std::string& command, const std::string& reason);
+
 // `command` prefixes the fallback notice, e.g. "matevo render".
 std::vector<Image> renderMaterials(std::span<const MaterialInstance> materials,
                                    const SceneTextures& textures, const SceneSettings& scene,

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "EvolveImages.h"
 #include "EvolveReport.h"
 #include "PresetOption.h"
 #include "commands/Commands.h"
@@ -18,7 +19,8 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo evolve [--preset P] [--population N] [--generations N]\n"
     "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
-    "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n\n"
+    "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
+    "                     [--size N] [--backend gpu|cpu]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(default: presets/validation_metal.json). Options override the preset's GA settings.\n"
     "  --weights      12 per-chromosome weights, in the order eta1 eta2 alpha1 alpha2 depth\n"
@@ -26,7 +28,12 @@ constexpr const char* kHelp =
     "  --normalize    divide each chromosome's difference by its family range\n"
     "  --elitism N    copy the N best unchanged into the next generation (paper: 0)\n"
     "  --json         print one JSON object: target, config, generations, population, best\n"
-    "  --out DIR      also write DIR/result.json (the same object)\n"
+    "  --out DIR      also write DIR/result.json (the same object), DIR/target.png and, best\n"
+    "                 first, DIR/candidates/candidate_NNN.png and DIR/heatmaps/heatmap_NNN.png\n"
+    "                 (per-pixel CIEDE2000 against the target, 0-10 through viridis); adds each\n"
+    "                 candidate's mean_de00 (and max, p95) to the JSON\n"
+    "  --size N       image side in pixels for --out (default: the preset's scene size)\n"
+    "  --backend B    gpu (default; falls back to the CPU when no Vulkan device is usable) or cpu\n"
     "Progress goes to stderr.\n";
 
 GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
@@ -74,6 +81,10 @@ int runEvolve(CommandLine& args) {
     choice.preset.ga = applyOverrides(args, choice.preset.ga);
     const bool asJson = args.flag("--json");
     const auto outDir = args.option("--out");
+    const int imageSize = int(
+        args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
+    const RenderBackend backend =
+        parseRenderBackend(args.option("--backend").value_or("gpu"), "evolve: --backend");
     args.finish();
 
     const Preset& preset = choice.preset;
@@ -95,6 +106,8 @@ int runEvolve(CommandLine& args) {
         if (error)
             throw UsageError("evolve: --out: cannot create folder '" + *outDir + "' (" +
                              error.message() + ")");
+        addImageStatistics(
+            report, writeEvolveImages(choice, ga.rankedPopulation(), imageSize, backend, *outDir));
         auto file = std::filesystem::path(*outDir) / "result.json";
         auto status = writeFileAtomically(file, report.dump(2) + "\n");
         if (!status) throw UsageError("evolve: " + status.error().message);

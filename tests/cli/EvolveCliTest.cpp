@@ -60,23 +60,55 @@ TEST(EvolveCli, WeightsChangeTheFitness) {
                 2.0 * plain["best"]["fitness"].get<double>(), 1e-12);
 }
 
-TEST(EvolveCli, OutWritesResultJson) {
+TEST(EvolveCli, OutWritesResultTargetCandidatesAndHeatmaps) {
     auto dir = fs::temp_directory_path() / ("matevo_evolve_out_" + std::to_string(::getpid()));
     fs::remove_all(dir);
-    auto result = runMatevo("evolve --population 10 --generations 2 --out '" + dir.string() + "'");
+    auto result = runMatevo("evolve --json --population 6 --generations 2 --size 32 --out '" +
+                            dir.string() + "'");
     ASSERT_EQ(result.exitCode, 0) << result.err;
     std::ifstream in(dir / "result.json");
     ASSERT_TRUE(in.good());
     auto json = nlohmann::json::parse(in);
-    EXPECT_EQ(json["population"].size(), 10u);
+    EXPECT_EQ(json, nlohmann::json::parse(result.out));  // the file holds what was printed
+    ASSERT_EQ(json["population"].size(), 6u);
+    EXPECT_TRUE(fs::is_regular_file(dir / "target.png"));
+    for (int rank = 0; rank < 6; ++rank) {
+        const std::string number = "00" + std::to_string(rank);
+        EXPECT_TRUE(fs::is_regular_file(dir / "candidates" / ("candidate_" + number + ".png")));
+        EXPECT_TRUE(fs::is_regular_file(dir / "heatmaps" / ("heatmap_" + number + ".png")));
+        const auto& entry = json["population"][std::size_t(rank)];
+        const double mean = entry["mean_de00"].get<double>();
+        EXPECT_GE(mean, 0.0);
+        EXPECT_LE(mean, entry["p95_de00"].get<double>() + 1e-9);
+        EXPECT_LE(entry["p95_de00"].get<double>(), entry["max_de00"].get<double>() + 1e-9);
+    }
+    EXPECT_EQ(json["best"], json["population"][0]);
     fs::remove_all(dir);
+}
+
+TEST(EvolveCli, CpuAndGpuBackendsAgreeOnTheCandidates) {
+    auto base = fs::temp_directory_path() / ("matevo_evolve_backend_" + std::to_string(::getpid()));
+    fs::remove_all(base);
+    nlohmann::json reports[2];
+    const char* backends[2] = {"cpu", "gpu"};
+    for (int i = 0; i < 2; ++i) {
+        auto result = runMatevo(std::string("evolve --json --population 4 --generations 1 ") +
+                                "--size 32 --backend " + backends[i] + " --out '" +
+                                (base / backends[i]).string() + "'");
+        ASSERT_EQ(result.exitCode, 0) << result.err;
+        reports[i] = nlohmann::json::parse(result.out);
+    }
+    for (std::size_t rank = 0; rank < 4; ++rank)
+        EXPECT_NEAR(reports[0]["population"][rank]["mean_de00"].get<double>(),
+                    reports[1]["population"][rank]["mean_de00"].get<double>(), 0.5);
+    fs::remove_all(base);
 }
 
 TEST(EvolveCli, BadInputExitsTwoWithOneLine) {
     for (const char* arguments :
          {"--population 0", "--population 2000000000", "--generations -1", "--metric cosine",
           "--weights 1,2,3", "--weights 1,1,1,1,1,1,1,1,1,1,1,x", "--seed -4", "--frobnicate",
-          "--preset /nonexistent.json", "--population"}) {
+          "--preset /nonexistent.json", "--population", "--backend metal", "--size 3"}) {
         auto result = runMatevo(std::string("evolve ") + arguments);
         EXPECT_EQ(result.exitCode, 2) << arguments;
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
