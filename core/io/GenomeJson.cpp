@@ -1,11 +1,9 @@
 #include "io/GenomeJson.h"
 
-#include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
 
 #include "io/JsonReader.h"
+#include "io/TextFile.h"
 
 namespace matevo {
 
@@ -43,13 +41,11 @@ Genome readGenome(JsonReader& reader) {
 }
 
 Result<Genome> loadGenome(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return Error{file.string() + ": cannot open for reading"};
-    std::stringstream text;
-    text << in.rdbuf();
+    auto text = readTextFile(file);
+    if (!text) return text.error();
     std::vector<std::string> warnings;
     try {
-        auto json = nlohmann::json::parse(text.str());
+        auto json = nlohmann::json::parse(*text);
         // A result.json or a population entry holds the genome under "genome"; accept both.
         const auto& object = json.is_object() && json.contains("genome") ? json["genome"] : json;
         JsonReader reader(object, "", warnings);

@@ -1,14 +1,12 @@
 #include "io/Preset.h"
 
-#include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
 
 #include "genome/FamilyRules.h"
 #include "io/AtomicFile.h"
 #include "io/GenomeJson.h"
 #include "io/JsonReader.h"
+#include "io/TextFile.h"
 
 namespace matevo {
 
@@ -131,11 +129,9 @@ Result<LoadedPreset> parsePreset(const std::string& jsonText, const std::string&
 }
 
 Result<LoadedPreset> loadPreset(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return Error{file.string() + ": cannot open for reading"};
-    std::stringstream text;
-    text << in.rdbuf();
-    auto loaded = parsePreset(text.str(), file.string());
+    auto text = readTextFile(file);
+    if (!text) return text.error();
+    auto loaded = parsePreset(*text, file.string());
     if (!loaded) return loaded;
     // Texture names are relative to the preset's folder: they must exist there.
     for (const auto& [field, name] :

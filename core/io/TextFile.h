@@ -1,0 +1,12 @@
+#pragma once
+// Reads a whole text file; the error names the file.
+#include <filesystem>
+#include <string>
+
+#include "common/Result.h"
+
+namespace matevo {
+
+Result<std::string> readTextFile(const std::filesystem::path& file);
+
+}  // namespace matevo
