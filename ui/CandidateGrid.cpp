@@ -22,6 +22,10 @@ void drawStatusLine(const EvolutionView& evolution) {
     else
         ImGui::TextColored(kMutedTextColor, "%zu candidates after %d generations",
                            evolution.candidates.size(), done);
+    if (!evolution.renderBackend.empty()) {
+        ImGui::SameLine();
+        ImGui::TextColored(kMutedTextColor, "- drawn on %s", evolution.renderBackend.c_str());
+    }
 }
 
 bool drawTile(const CandidateView& candidate, const HeatmapView& heatmap, float size,

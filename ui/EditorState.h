@@ -47,6 +47,7 @@ struct EvolutionView {
     std::vector<GenerationPoint> history;
     int totalGenerations = 0;
     bool running = false;
+    std::string renderBackend;  // what drew the tiles, e.g. "GPU (llvmpipe)"
 };
 
 struct EditorState {

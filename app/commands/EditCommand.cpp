@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "PresetOption.h"
+#include "RenderBackend.h"
 #include "commands/Commands.h"
 #include "editor/EditorApp.h"
 #include "io/ResourcePaths.h"
@@ -11,8 +12,8 @@ namespace matevo::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: matevo [edit] [PRESET] [--script FILE] [--frames N] [--size WxH] [--validate]\n"
-    "                     [--report-timings]\n\n"
+    "usage: matevo [edit] [PRESET] [--script FILE] [--frames N] [--size WxH]\n"
+    "                     [--backend gpu|cpu] [--validate] [--report-timings]\n\n"
     "Opens the editor on PRESET (default: presets/validation_metal.json beside the\n"
     "executable): the target sphere, a live grid of GA candidates with a CIEDE2000 heatmap,\n"
     "the GA controls and per-generation fitness. Needs a display; without one it says so and\n"
@@ -26,6 +27,8 @@ constexpr const char* kHelp =
     "                     screenshot PATH, save PATH, quit\n"
     "  --frames N         quit after N frames\n"
     "  --size WxH         initial window size (default 1280x800)\n"
+    "  --backend gpu|cpu  where candidate tiles render (default gpu; the CPU reference\n"
+    "                     renderer when no Vulkan device is usable)\n"
     "  --validate         enable VK_LAYER_KHRONOS_validation; any message makes the exit\n"
     "                     status 1\n"
     "  --report-timings   print median frame times (idle, while evolving) and the time from\n"
@@ -62,6 +65,8 @@ int runEdit(CommandLine& args) {
     }
     if (auto frames = args.integerOption("--frames", 1, 100000000)) options.maxFrames = int(*frames);
     if (auto size = args.option("--size")) parseSize(*size, options);
+    if (auto backend = args.option("--backend"))
+        options.gpuTiles = parseRenderBackend(*backend, "edit: --backend") == RenderBackend::Gpu;
     options.validation = args.flag("--validate");
     options.reportTimings = args.flag("--report-timings");
     const auto positionals = args.positionals();

@@ -136,6 +136,7 @@ private:
     ScriptPlayer script_;
     EditorTimings timings_;
     std::optional<Preset> submittedPreset_;
+    std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
@@ -191,7 +192,8 @@ EditorApp::EditorApp(const EditorOptions& options)
     imgui_ = std::make_unique<ImGuiSession>(window_.get(), *vulkan_, *renderer_, iniPath_);
     bridge_ = std::make_unique<ImageBridge>(*vulkan_, renderer_->renderPass());
     display_ = std::make_unique<EvolutionDisplay>(*bridge_);
-    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); });
+    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); }, options.gpuTiles,
+                                                options.validation);
     compareWorker_ = std::make_unique<CompareMetricsWorker>([] { glfwPostEmptyEvent(); });
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
@@ -222,7 +224,10 @@ int EditorApp::run() {
         if (shouldQuit()) break;
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_.get(), &width, &height);
-        if (width == 0 || height == 0) continue;  // minimised: nothing to draw into
+        if (width == 0 || height == 0) {  // minimised: nothing to draw into until restored
+            glfwWaitEventsTimeout(0.1);
+            continue;
+        }
 
         const bool evolving = worker_->busy();
         const auto started = Clock::now();
@@ -238,9 +243,9 @@ int EditorApp::run() {
         std::fprintf(stderr, "matevo edit: %s\n", failure_.c_str());
         return 1;
     }
-    if (vulkan_->validationMessages() > 0) {
-        std::fprintf(stderr, "matevo edit: %d Vulkan validation message(s)\n",
-                     vulkan_->validationMessages());
+    const int validationMessages = vulkan_->validationMessages() + worker_->validationMessages();
+    if (validationMessages > 0) {
+        std::fprintf(stderr, "matevo edit: %d Vulkan validation message(s)\n", validationMessages);
         return 1;
     }
     return 0;
@@ -265,7 +270,10 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
         compareWorker_->start({ui_.state().preset, ui_.state().presetPath,
                                ui_.state().compareMetrics.runs});
     submitChangesToWorker();
-    glfwSetWindowTitle(window_.get(), ui::windowTitle(ui_.state()).c_str());
+    if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
+        glfwSetWindowTitle(window_.get(), title.c_str());
+        title_ = std::move(title);
+    }
 
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);

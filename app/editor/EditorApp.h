@@ -15,6 +15,7 @@ struct EditorOptions {
     std::filesystem::path presetFile;
     std::vector<ScriptAction> script;
     int maxFrames = 0;  // 0: until the window closes
+    bool gpuTiles = true;  // render candidate tiles on the GPU when a device is usable
     bool validation = false;
     bool reportTimings = false;
     int width = 1280;

@@ -35,6 +35,7 @@ void EvolutionDisplay::show(EvolutionUpdate update, const ui::HeatmapView& heatm
     }
     view.history = shown_.history;
     view.totalGenerations = shown_.totalGenerations;
+    view.renderBackend = shown_.backend;
     view.running = !shown_.finished;
     colouredMin_ = heatmap.minDeltaE;
     colouredMax_ = heatmap.maxDeltaE;

@@ -3,45 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
-#include "scene/SceneTextures.h"
-#include "scene/SphereRenderer.h"
-
 namespace matevo::editor {
 namespace {
-
-// Renders within one job, remembering genomes already drawn: the best candidates of one
-// generation mostly survive into the next, so most tiles are reused rather than re-rendered.
-class CandidateRenderer {
-public:
-    CandidateRenderer(const Preset& preset, SceneTextures textures)
-        : preset_(preset), textures_(std::move(textures)) {}
-
-    Image render(const Genome& genome, int size) const {
-        const MaterialInstance material{genome, preset_.family, preset_.baseKappa};
-        return renderSphereCpu(material, textures_, preset_.scene, size);
-    }
-
-    const Image& tile(const Genome& genome) {
-        for (const auto& [drawn, image] : cache_)
-            if (drawn == genome) return image;
-        cache_.emplace_back(genome, render(genome, EvolutionWorker::kTileSize));
-        return cache_.back().second;
-    }
-
-    // Keeps only the genomes still on screen, so the cache stays the size of the grid.
-    void keepOnly(const std::vector<CandidateResult>& shown) {
-        std::erase_if(cache_, [&](const auto& entry) {
-            return std::none_of(shown.begin(), shown.end(), [&](const CandidateResult& c) {
-                return c.individual.genome == entry.first;
-            });
-        });
-    }
-
-private:
-    const Preset& preset_;
-    SceneTextures textures_;
-    std::vector<std::pair<Genome, Image>> cache_;
-};
 
 double meanOf(const std::vector<CandidateResult>& candidates) {
     if (candidates.empty()) return 0.0;
@@ -54,8 +17,10 @@ double meanOf(const std::vector<CandidateResult>& candidates) {
 
 }  // namespace
 
-EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate)
-    : onUpdate_(std::move(onUpdate)), thread_([this] { run(); }) {}
+EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate, bool useGpu, bool validation)
+    : onUpdate_(std::move(onUpdate)),
+      renderCache_(kTileSize, kTargetSize, kRenderCacheSize, useGpu, validation),
+      thread_([this] { run(); }) {}
 
 EvolutionWorker::~EvolutionWorker() {
     {
@@ -129,32 +94,29 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId) {
     EvolutionUpdate update;
     update.jobId = jobId;
     update.totalGenerations = preset.ga.generations;
-    auto textures = loadSceneTextures(preset, job.presetFile);
-    if (!textures) {
+    if (Status ready = renderCache_.prepare(preset, job.presetFile); !ready) {
         update.finished = true;
-        update.error = textures.error().message;
+        update.error = ready.error().message;
         publish(std::move(update));
         return;
     }
-    CandidateRenderer renderer(preset, std::move(*textures));
-    update.target = renderer.render(preset.target, kTargetSize);
-    const Image targetTile = renderer.render(preset.target, kTileSize);
+    update.target = renderCache_.target();
+    update.backend = renderCache_.backendName();
 
     GeneticAlgorithm ga(preset.family, preset.target, preset.ga);
     ga.initialize();
     for (;;) {
         if (cancelled(jobId)) return;
         const std::vector<Individual> ranked = ga.rankedPopulation();
-        const std::size_t shown = std::min<std::size_t>(ranked.size(), kGridTiles);
+        std::vector<Genome> shown;
+        for (std::size_t i = 0; i < ranked.size() && i < kGridTiles; ++i)
+            shown.push_back(ranked[i].genome);
+        auto tiles = renderCache_.tiles(shown, [&] { return cancelled(jobId); });
+        if (!tiles || cancelled(jobId)) return;
         update.candidates.clear();
-        for (std::size_t i = 0; i < shown; ++i) {
-            if (cancelled(jobId)) return;
-            CandidateResult candidate{int(i) + 1, ranked[i], renderer.tile(ranked[i].genome), {}};
-            auto deltaE = compareImages(targetTile, candidate.image);
-            if (deltaE) candidate.deltaE = std::move(*deltaE);
-            update.candidates.push_back(std::move(candidate));
-        }
-        renderer.keepOnly(update.candidates);
+        for (std::size_t i = 0; i < shown.size(); ++i)
+            update.candidates.push_back({int(i) + 1, ranked[i], std::move((*tiles)[i].image),
+                                         std::move((*tiles)[i].deltaE)});
         const GenerationStats& stats = ga.history().back();
         update.history.push_back(
             {stats.generation, stats.best, stats.mean, meanOf(update.candidates)});

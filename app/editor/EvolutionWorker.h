@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "CandidateRenderCache.h"
 #include "EditorState.h"
 #include "color/ImageDifference.h"
 #include "common/Image.h"
@@ -39,6 +40,7 @@ struct EvolutionUpdate {
     int totalGenerations = 0;
     bool finished = false;
     Image target;  // large, for the target panel
+    std::string backend;  // what rendered the tiles: "GPU (name)" or "CPU"
     std::vector<CandidateResult> candidates;  // best first
     std::vector<ui::GenerationPoint> history;
     std::string error;  // the job could not run (e.g. a missing texture)
@@ -49,8 +51,11 @@ public:
     static constexpr int kGridTiles = 24;
     static constexpr int kTileSize = 128;
     static constexpr int kTargetSize = 320;
+    static constexpr std::size_t kRenderCacheSize = 128;  // tiles (~50 MB)
 
-    explicit EvolutionWorker(std::function<void()> onUpdate);
+    // Tiles render on the GPU when `useGpu` and a device is usable; with `validation` the
+    // worker's GPU context runs under the Vulkan validation layer.
+    EvolutionWorker(std::function<void()> onUpdate, bool useGpu, bool validation);
     ~EvolutionWorker();
     EvolutionWorker(const EvolutionWorker&) = delete;
     EvolutionWorker& operator=(const EvolutionWorker&) = delete;
@@ -61,6 +66,8 @@ public:
     std::optional<EvolutionUpdate> takeLatest();
     // A job is queued or running.
     bool busy() const;
+    // Validation messages of the worker's GPU context so far.
+    int validationMessages() const { return validationMessages_.load(); }
 
 private:
     void run();
@@ -69,6 +76,7 @@ private:
     void publish(EvolutionUpdate update);
 
     std::function<void()> onUpdate_;
+    CandidateRenderCache renderCache_;  // used by the worker thread only
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<EvolutionJob> pending_;
@@ -76,6 +84,7 @@ private:
     bool working_ = false;
     bool stopping_ = false;
     std::atomic<std::uint64_t> latestJobId_{0};
+    std::atomic<int> validationMessages_{0};
     std::thread thread_;  // last: starts after everything it uses exists
 };
 

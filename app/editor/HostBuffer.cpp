@@ -13,13 +13,8 @@ HostBuffer::HostBuffer(const VulkanContext& context, VkDeviceSize size, VkBuffer
     check(vkCreateBuffer(device_, &info, nullptr, &buffer_), "vkCreateBuffer");
     VkMemoryRequirements needs;
     vkGetBufferMemoryRequirements(device_, buffer_, &needs);
-    VkMemoryAllocateInfo allocation{};
-    allocation.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-    allocation.allocationSize = needs.size;
-    allocation.memoryTypeIndex = context.memoryType(
-        needs.memoryTypeBits,
-        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-    check(vkAllocateMemory(device_, &allocation, nullptr, &memory_), "vkAllocateMemory");
+    memory_ = context.allocateMemory(
+        needs, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     check(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory");
     void* mapped = nullptr;
     check(vkMapMemory(device_, memory_, 0, size, 0, &mapped), "vkMapMemory");

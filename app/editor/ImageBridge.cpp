@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "ImageTransition.h"
 #include "VulkanContext.h"
 // SPIR-V generated at build time (app/CMakeLists.txt); the arrays need <cstdint> first.
 #include "shaders/image.frag.h"
@@ -20,22 +21,6 @@ VkShaderModule createShader(VkDevice device, const std::uint32_t* code, std::siz
     VkShaderModule module = VK_NULL_HANDLE;
     check(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule");
     return module;
-}
-
-void layoutBarrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
-                   VkAccessFlags srcAccess, VkAccessFlags dstAccess, VkPipelineStageFlags srcStage,
-                   VkPipelineStageFlags dstStage) {
-    VkImageMemoryBarrier barrier{};
-    barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
-    barrier.srcAccessMask = srcAccess;
-    barrier.dstAccessMask = dstAccess;
-    barrier.oldLayout = from;
-    barrier.newLayout = to;
-    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image;
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(commands, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 
 }  // namespace
@@ -63,12 +48,7 @@ EditorTexture::EditorTexture(const VulkanContext& context, VkDescriptorSetLayout
     check(vkCreateImage(device_, &info, nullptr, &image_), "vkCreateImage");
     VkMemoryRequirements needs;
     vkGetImageMemoryRequirements(device_, image_, &needs);
-    VkMemoryAllocateInfo allocation{};
-    allocation.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-    allocation.allocationSize = needs.size;
-    allocation.memoryTypeIndex =
-        context.memoryType(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    check(vkAllocateMemory(device_, &allocation, nullptr, &memory_), "vkAllocateMemory");
+    memory_ = context.allocateMemory(needs, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     check(vkBindImageMemory(device_, image_, memory_, 0), "vkBindImageMemory");
 
     VkImageViewCreateInfo view{};
@@ -110,20 +90,22 @@ void EditorTexture::stage(const Rgba8Image& pixels) {
 
 void EditorTexture::recordUpload(VkCommandBuffer commands) {
     if (!staged_) return;
-    layoutBarrier(commands, image_,
-                  initialised_ ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
-                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_SHADER_READ_BIT,
-                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT);
+    recordTransition(
+        commands, image_,
+        {initialised_ ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
+         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_SHADER_READ_BIT,
+         VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+         VK_PIPELINE_STAGE_TRANSFER_BIT});
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {std::uint32_t(width_), std::uint32_t(height_), 1};
     vkCmdCopyBufferToImage(commands, staging_.buffer(), image_,
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    layoutBarrier(commands, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                  VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+    recordTransition(commands, image_,
+                     {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT});
     staged_ = false;
     initialised_ = true;
 }

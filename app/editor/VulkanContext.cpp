@@ -185,14 +185,22 @@ void VulkanContext::runNow(const std::function<void(VkCommandBuffer)>& record) c
     vkFreeCommandBuffers(device_, setupCommandPool_, 1, &commands);
 }
 
-std::uint32_t VulkanContext::memoryType(std::uint32_t allowedBits,
-                                        VkMemoryPropertyFlags properties) const {
+VkDeviceMemory VulkanContext::allocateMemory(const VkMemoryRequirements& needs,
+                                             VkMemoryPropertyFlags properties) const {
     VkPhysicalDeviceMemoryProperties memory;
     vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memory);
-    for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i)
-        if ((allowedBits & (1u << i)) &&
-            (memory.memoryTypes[i].propertyFlags & properties) == properties)
-            return i;
+    for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
+        if (!(needs.memoryTypeBits & (1u << i)) ||
+            (memory.memoryTypes[i].propertyFlags & properties) != properties)
+            continue;
+        VkMemoryAllocateInfo allocation{};
+        allocation.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+        allocation.allocationSize = needs.size;
+        allocation.memoryTypeIndex = i;
+        VkDeviceMemory allocated = VK_NULL_HANDLE;
+        check(vkAllocateMemory(device_, &allocation, nullptr, &allocated), "vkAllocateMemory");
+        return allocated;
+    }
     throw std::runtime_error("no Vulkan memory type with the needed properties");
 }
 

@@ -30,9 +30,10 @@ public:
     VkSurfaceKHR surface() const { return surface_; }
     VkDescriptorPool descriptorPool() const { return descriptorPool_; }
 
-    // A memory type with these properties among the allowed bits; throws if none (lavapipe
-    // has one type that is everything at once, so this never fails there).
-    std::uint32_t memoryType(std::uint32_t allowedBits, VkMemoryPropertyFlags properties) const;
+    // Memory for a buffer or image with these needs and properties; throws if no memory type
+    // fits (lavapipe has one type that is everything at once, so this never fails there).
+    VkDeviceMemory allocateMemory(const VkMemoryRequirements& needs,
+                                  VkMemoryPropertyFlags properties) const;
     // Records commands with `record`, submits them and waits (setup work such as the font).
     void runNow(const std::function<void(VkCommandBuffer)>& record) const;
     // Validation warnings and errors seen so far (0 when validation is off).
