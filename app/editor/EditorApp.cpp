@@ -85,7 +85,8 @@ void loadFont() {
     static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x206F, 0};
     const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     ImGuiIO& io = ImGui::GetIO();
-    if (std::filesystem::exists(path) && io.Fonts->AddFontFromFileTTF(path, 14.0f, nullptr, kRanges))
+    if (std::filesystem::exists(path) &&
+        io.Fonts->AddFontFromFileTTF(path, 14.0f, nullptr, kRanges))
         return;
     io.Fonts->AddFontDefault();
 }
@@ -200,8 +201,8 @@ EditorApp::~EditorApp() {
 }
 
 bool EditorApp::shouldQuit() const {
-    return quitRequested_ || terminationRequested.load() ||
-           glfwWindowShouldClose(window_.get()) || !failure_.empty();
+    return quitRequested_ || terminationRequested.load() || glfwWindowShouldClose(window_.get()) ||
+           !failure_.empty();
 }
 
 int EditorApp::run() {
@@ -274,9 +275,8 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
         ImGui_ImplVulkan_RenderDrawData(drawData, commands);
     };
     Rgba8Image captured;
-    const bool drawn = renderer_->drawFrame(
-        VkExtent2D{std::uint32_t(width), std::uint32_t(height)}, recording,
-        captureNow ? &captured : nullptr);
+    const bool drawn = renderer_->drawFrame(VkExtent2D{std::uint32_t(width), std::uint32_t(height)},
+                                            recording, captureNow ? &captured : nullptr);
     if (drawn && captureNow) saveScreenshot(captured, *captureNow);
     if (!drawn && captureNow) screenshotPath = captureNow;  // try again next frame
     return drawn;
