@@ -209,12 +209,14 @@ int EditorApp::run() {
     int frames = 0;
     std::optional<std::filesystem::path> screenshotPath;
     while (!shouldQuit()) {
-        // Sleep while nothing changes; keep drawing while results or script steps are due.
-        const bool active = worker_->busy() || !script_.finished() || screenshotPath;
-        if (active)
+        // Draw only when something changed: input, a new generation (the worker posts an empty
+        // event), a due script step or snapshot. Spinning would take a core from the GA on a
+        // two-core machine. The timeout keeps the progress line and SIGTERM responsive.
+        const bool due = screenshotPath || (!script_.finished() && !script_.waitingForEvolution());
+        if (due)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(0.25);
+            glfwWaitEventsTimeout(worker_->busy() ? 0.1 : 0.25);
         if (shouldQuit()) break;
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_.get(), &width, &height);
