@@ -1,17 +1,15 @@
 #pragma once
 // The renderer `matevo experiment` injects into the core experiment: the preset's material
-// (family, kappa, textures, scene) bound, genomes in, sphere images out.
+// (family, kappa, textures, scene) bound, genomes in, sphere images out. On the GPU, one Vulkan
+// session serves every batch of the experiment; when no Vulkan device is usable it says so once
+// on stderr and renders on the CPU reference.
 #include <optional>
-#include <string_view>
 
 #include "PresetOption.h"
+#include "RenderBackend.h"
 #include "experiment/Experiment.h"
 
 namespace matevo::cli {
-
-enum class RenderBackend { Cpu };
-
-std::optional<RenderBackend> parseRenderBackend(std::string_view text);
 
 // Loads the preset's textures (a bad texture is a UsageError naming the preset and field).
 // imageSize: pixels per side; the preset's scene size when absent.

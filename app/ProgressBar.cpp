@@ -25,7 +25,8 @@ void ProgressBar::update(int done, const std::string& label) {
     if (percent == lastPercent_ && label == lastLabel_) return;
     lastPercent_ = percent;
     lastLabel_ = label;
-    std::fprintf(stream_, "\r[%s%s] %3d%% %d/%d %s\x1b[K", std::string(std::size_t(filled), '#').c_str(),
+    std::fprintf(stream_, "\r[%s%s] %3d%% %d/%d %s\x1b[K",
+                 std::string(std::size_t(filled), '#').c_str(),
                  std::string(std::size_t(kBarWidth - filled), '.').c_str(), percent, done, total_,
                  label.c_str());
     std::fflush(stream_);

@@ -43,6 +43,8 @@ ControlPanelActions drawControlPanel(EditorState& state, bool canUndo, bool canR
     drawMaterialControls(state.preset.family, state.preset.target);
     drawGaControls(state.preset.ga);
     ImGui::PopItemWidth();
+    if (ImGui::Button("Compare metrics")) state.compareMetrics.open = true;
+    hoverHint("The paper's section 5 experiment: the three metrics side by side");
     return actions;
 }
 

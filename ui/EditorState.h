@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include "CompareMetricsPanel.h"
 #include "genome/Genome.h"
 #include "io/Preset.h"
 
@@ -53,6 +54,7 @@ struct EditorState {
     Preset preset;  // the parameters: undoable, saved to and loaded from preset files
     HeatmapView heatmap;
     EvolutionView evolution;
+    CompareMetricsView compareMetrics;  // the "Compare metrics" window
     std::filesystem::path presetPath;  // empty until opened or saved
     Preset savedPreset;                // as last opened or saved, for the unsaved mark
     int selectedCandidate = -1;        // index into evolution.candidates; -1 = none

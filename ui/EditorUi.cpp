@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "CandidateGrid.h"
+#include "CompareMetricsPanel.h"
 #include "ControlPanel.h"
 #include "FitnessPlot.h"
 #include "InspectPanel.h"
@@ -42,6 +43,7 @@ FrameRequests EditorUi::draw() {
     if (beginPanel("Inspect", layout.inspect)) drawInspectPanel(state_);
     ImGui::End();
 
+    requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
     drawPathDialogs();
     handleShortcuts(requests);
     // One undo step per finished edit: a slider drag is recorded when it is released.

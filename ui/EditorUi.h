@@ -22,6 +22,7 @@ struct ShortcutKeys {
 struct FrameRequests {
     bool quit = false;
     bool snapshot = false;
+    bool runCompareMetrics = false;  // the "Compare metrics" window asked for a run
 };
 
 class EditorUi {

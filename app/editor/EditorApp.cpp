@@ -15,6 +15,8 @@
 #include <backends/imgui_impl_vulkan.h>
 #include <imgui.h>
 
+#include "CompareMetricsDisplay.h"
+#include "CompareMetricsWorker.h"
 #include "EditorTimings.h"
 #include "EditorUi.h"
 #include "EvolutionDisplay.h"
@@ -117,6 +119,7 @@ private:
     bool frame(std::optional<std::filesystem::path>& screenshotPath);
     void playScript(std::optional<std::filesystem::path>& screenshotPath);
     void applyEvolutionResults();
+    void applyCompareMetricsResults();
     void submitChangesToWorker();
     void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
     std::filesystem::path nextSnapshotPath() const;
@@ -137,6 +140,7 @@ private:
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
+    std::unique_ptr<CompareMetricsWorker> compareWorker_;
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
 };
 
@@ -191,11 +195,13 @@ EditorApp::EditorApp(const EditorOptions& options)
     display_ = std::make_unique<EvolutionDisplay>(*bridge_);
     worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); }, options.gpuTiles,
                                                 options.validation);
+    compareWorker_ = std::make_unique<CompareMetricsWorker>([] { glfwPostEmptyEvent(); });
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
 
 EditorApp::~EditorApp() {
+    compareWorker_.reset();
     worker_.reset();
     renderer_->waitIdle();
 }
@@ -216,7 +222,7 @@ int EditorApp::run() {
         if (due)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(worker_->busy() ? 0.1 : 0.25);
+            glfwWaitEventsTimeout(worker_->busy() || compareWorker_->busy() ? 0.1 : 0.25);
         if (shouldQuit()) break;
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_.get(), &width, &height);
@@ -254,6 +260,7 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     if (!captureNow) playScript(screenshotPath);
 
     applyEvolutionResults();
+    applyCompareMetricsResults();
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -261,6 +268,9 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     ImGui::Render();
     if (requests.quit) quitRequested_ = true;
     if (requests.snapshot) screenshotPath = nextSnapshotPath();
+    if (requests.runCompareMetrics)
+        compareWorker_->start({ui_.state().preset, ui_.state().presetPath,
+                               ui_.state().compareMetrics.runs});
     submitChangesToWorker();
     if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
         glfwSetWindowTitle(window_.get(), title.c_str());
@@ -306,6 +316,16 @@ void EditorApp::applyEvolutionResults() {
     } else {
         display_->recolour(state.heatmap, state.evolution);
     }
+}
+
+void EditorApp::applyCompareMetricsResults() {
+    ui::CompareMetricsView& view = ui_.state().compareMetrics;
+    view.running = compareWorker_->busy();
+    view.progress = compareWorker_->progress();
+    std::optional<CompareMetricsResult> result = compareWorker_->takeResult();
+    if (!result) return;
+    renderer_->waitIdle();  // textures are about to change
+    showCompareMetrics(*result, *bridge_, view);
 }
 
 void EditorApp::submitChangesToWorker() {

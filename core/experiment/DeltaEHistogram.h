@@ -9,7 +9,7 @@
 namespace matevo {
 
 struct HistogramAxis {
-    double upper = 10;     // ΔE00 at the right end
+    double upper = 10;  // ΔE00 at the right end
     double binWidth = 0.25;
 
     int binCount() const;

@@ -34,8 +34,8 @@ std::vector<RunRecord> evolveRuns(const ExperimentTarget& target,
             GeneticAlgorithm algorithm(target.family, target.genome, ga);
             algorithm.run();
             const Individual best = algorithm.rankedPopulation().front();
-            records[std::size_t(chunk)] = {target.name, metric,         settings.size, ga.seed,
-                                           run,         best.fitness,   0.0,           best.genome};
+            records[std::size_t(chunk)] = {target.name, metric,       settings.size, ga.seed,
+                                           run,         best.fitness, 0.0,           best.genome};
         },
         [&](int done) {
             if (progress) progress(done, runCount);

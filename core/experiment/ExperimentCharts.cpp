@@ -13,15 +13,16 @@ namespace matevo {
 namespace {
 
 std::string upperCase(std::string text) {
-    for (char& character : text) character = char(std::toupper(static_cast<unsigned char>(character)));
+    for (char& character : text)
+        character = char(std::toupper(static_cast<unsigned char>(character)));
     return text;
 }
 
 std::string subtitle(const RunSummary& summary) {
     char text[160];
     std::snprintf(text, sizeof text, "POP %d GEN %d, %d RUNS, MEDIAN %.2f, MEAN %.2f",
-                  summary.size.population, summary.size.generations, summary.runs,
-                  summary.median, summary.mean);
+                  summary.size.population, summary.size.generations, summary.runs, summary.median,
+                  summary.mean);
     return text;
 }
 
@@ -42,7 +43,9 @@ std::vector<ChartBand> perceptualChartBands() {
         const double upperEdge = std::min(bandUpperEdge(band), 100.0);
         const auto colour = bandColorSrgb(band);
         auto to8Bit = [](float channel) { return std::uint8_t(std::lround(channel * 255.0f)); };
-        bands.push_back({lowerEdge, upperEdge, {to8Bit(colour[0]), to8Bit(colour[1]), to8Bit(colour[2])},
+        bands.push_back({lowerEdge,
+                         upperEdge,
+                         {to8Bit(colour[0]), to8Bit(colour[1]), to8Bit(colour[2])},
                          std::string(bandRangeLabel(band))});
         lowerEdge = upperEdge;
     }

@@ -41,8 +41,8 @@ public:
         : axis_(axis), countAxisMax_(std::max(countAxisMax, 1)) {}
 
     int x(double deltaE) const {
-        return kLeft + int(std::lround((kRight - kLeft) * std::min(deltaE, axis_.upper) /
-                                       axis_.upper));
+        return kLeft +
+               int(std::lround((kRight - kLeft) * std::min(deltaE, axis_.upper) / axis_.upper));
     }
     int y(double count) const {
         return kBottom - int(std::lround((kBottom - kTop) * count / countAxisMax_));
@@ -120,9 +120,9 @@ void drawCountAxis(Canvas& canvas, const ChartLayout& layout) {
 
 Image drawHistogramChart(const DeltaEHistogram& histogram, std::span<const ChartBand> bands,
                          int countAxisMax, const HistogramChartLabels& labels) {
-    const int largestCount =
-        histogram.counts.empty() ? 0
-                                 : *std::max_element(histogram.counts.begin(), histogram.counts.end());
+    const int largestCount = histogram.counts.empty() ? 0
+                                                      : *std::max_element(histogram.counts.begin(),
+                                                                          histogram.counts.end());
     const ChartLayout layout(histogram.axis, std::max(countAxisMax, largestCount));
     Canvas canvas(kHistogramChartWidth, kHistogramChartHeight, kBackground);
     drawBands(canvas, layout, histogram.axis, bands);

@@ -52,8 +52,8 @@ TEST(DeltaEHistogram, CountsEveryValueOnce) {
     ASSERT_EQ(histogram.counts.size(), std::size_t(axis.binCount()));
     EXPECT_EQ(std::accumulate(histogram.counts.begin(), histogram.counts.end(), 0),
               int(values.size()));
-    EXPECT_EQ(histogram.counts[3], 1);                          // (0.75, 1]
-    EXPECT_EQ(histogram.counts[4], 1);                          // (1, 1.25]
+    EXPECT_EQ(histogram.counts[3], 1);                                 // (0.75, 1]
+    EXPECT_EQ(histogram.counts[4], 1);                                 // (1, 1.25]
     EXPECT_EQ(histogram.counts[std::size_t(axis.binCount() - 1)], 3);  // 9.99, 10, 37
 }
 

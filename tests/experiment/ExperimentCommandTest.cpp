@@ -38,7 +38,8 @@ protected:
     testing::CommandOutput runSmall(const fs::path& out, const std::string& extra = "") {
         return runMatevo("experiment --preset " + presetFile("validation_metal.json") +
                          " --runs 3 --runs-per-seed 2 --population 6 --generations 2 --size 24"
-                         " --backend cpu --out '" + out.string() + "' " + extra);
+                         " --backend cpu --out '" +
+                         out.string() + "' " + extra);
     }
 
     static std::string readFile(const fs::path& file) {
@@ -94,11 +95,44 @@ TEST_F(ExperimentCommand, SameSeedGivesTheSameCsvAndAnotherSeedADifferentOne) {
     EXPECT_NE(first, readFile(out_ / "c" / "results.csv"));
 }
 
+// The GPU batch renderer (lavapipe in CI) against the CPU reference: the same GA runs, and
+// mean ΔE00 scores within the renderers' cross-check tolerance (architecture.md: 0.5).
+TEST_F(ExperimentCommand, GpuBackendScoresTheSameRunsAsTheCpuReference) {
+    auto parse = [](const std::string& csv) {
+        std::vector<std::vector<std::string>> rows;
+        for (const auto& line : lines(csv)) {
+            std::vector<std::string> fields;
+            std::stringstream stream(line);
+            std::string field;
+            while (std::getline(stream, field, ',')) fields.push_back(field);
+            rows.push_back(fields);
+        }
+        return rows;
+    };
+    const auto cpu = runSmall(out_ / "cpu");
+    const auto gpu = runSmall(out_ / "gpu", "--backend gpu");
+    ASSERT_EQ(cpu.exitCode, 0) << cpu.err;
+    ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
+    for (const auto* output : {&gpu.out, &gpu.err})
+        EXPECT_EQ(output->find("VUID"), std::string::npos) << *output;
+    const auto cpuRows = parse(readFile(out_ / "cpu" / "results.csv"));
+    const auto gpuRows = parse(readFile(out_ / "gpu" / "results.csv"));
+    ASSERT_EQ(cpuRows.size(), gpuRows.size());
+    const std::size_t meanColumn = 7;
+    for (std::size_t row = 1; row < cpuRows.size(); ++row) {
+        for (std::size_t column = 0; column < cpuRows[row].size(); ++column) {
+            if (column != meanColumn) {
+                EXPECT_EQ(cpuRows[row][column], gpuRows[row][column]);
+            }
+        }
+        EXPECT_NEAR(std::stod(cpuRows[row][meanColumn]), std::stod(gpuRows[row][meanColumn]), 0.5)
+            << "run " << row;
+    }
+}
+
 TEST_F(ExperimentCommand, BadInputExitsWithStatusTwoAndOneLineNamingTheProblem) {
     const std::vector<std::pair<std::string, std::string>> cases = {
-        {"--runs 0", "--runs"},
-        {"--metric cosine", "--metric"},
-        {"--backend abacus", "--backend"},
+        {"--runs 0", "--runs"}, {"--metric cosine", "--metric"}, {"--backend abacus", "--backend"},
         {"--sweep", "--sweep"},  // with --population from runSmall
         {"--bogus", "--bogus"},
     };
@@ -108,8 +142,8 @@ TEST_F(ExperimentCommand, BadInputExitsWithStatusTwoAndOneLineNamingTheProblem) 
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
         EXPECT_NE(result.err.find(named), std::string::npos) << result.err;
     }
-    const auto missing = runMatevo("experiment --preset /nonexistent/preset.json --out '" +
-                                   out_.string() + "'");
+    const auto missing =
+        runMatevo("experiment --preset /nonexistent/preset.json --out '" + out_.string() + "'");
     EXPECT_EQ(missing.exitCode, 2);
     EXPECT_NE(missing.err.find("/nonexistent/preset.json"), std::string::npos) << missing.err;
 }

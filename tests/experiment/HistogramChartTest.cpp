@@ -54,10 +54,10 @@ TEST(HistogramChart, DrawsTallerBarsForLargerCountsOverTintedBands) {
     const int bottom = plot.bottom - 1;
     const Srgb8 barColour = pixelSrgb(chart, columnX(1.125), bottom);
     EXPECT_TRUE(sameColour(barColour, pixelSrgb(chart, columnX(5.125), bottom)));
-    const int tall = countPixels(chart, columnX(1.125), 0, columnX(1.125) + 1,
-                                 kHistogramChartHeight, barColour);
-    const int shortBar = countPixels(chart, columnX(5.125), 0, columnX(5.125) + 1,
-                                     kHistogramChartHeight, barColour);
+    const int tall =
+        countPixels(chart, columnX(1.125), 0, columnX(1.125) + 1, kHistogramChartHeight, barColour);
+    const int shortBar =
+        countPixels(chart, columnX(5.125), 0, columnX(5.125) + 1, kHistogramChartHeight, barColour);
     EXPECT_GT(shortBar, 0);
     EXPECT_NEAR(double(tall) / shortBar, 2.0, 0.05);
 
