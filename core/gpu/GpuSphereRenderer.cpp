@@ -154,16 +154,16 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
 
 Status GpuSphereRenderer::uploadMaterials(std::span<const MaterialInstance> materials) {
     // Tables are built first (in parallel, each into its own slot) to learn their sizes.
-    std::vector<LobeTable> tables(materials.size());
+    std::vector<LobeTable> lobeTables(materials.size());
     parallelForChunks(int(materials.size()), [&](int i) {
-        tables[std::size_t(i)] = LobeTable::build(materials[std::size_t(i)], *tables_);
+        lobeTables[std::size_t(i)] = LobeTable::build(materials[std::size_t(i)], *tables_);
     });
     std::vector<GpuMaterial> gpuMaterials(std::max<std::size_t>(materials.size(), 1));
     uint32_t entryCount = 0;
-    for (std::size_t i = 0; i < tables.size(); ++i) {
-        gpuMaterials[i] = {entryCount, uint32_t(tables[i].texelNodes()),
-                           uint32_t(tables[i].cosineNodes()), 0};
-        entryCount += uint32_t(tables[i].data().size() / LobeTable::kFloatsPerEntry);
+    for (std::size_t i = 0; i < lobeTables.size(); ++i) {
+        gpuMaterials[i] = {entryCount, uint32_t(lobeTables[i].texelNodes()),
+                           uint32_t(lobeTables[i].cosineNodes()), 0};
+        entryCount += uint32_t(lobeTables[i].data().size() / LobeTable::kFloatsPerEntry);
     }
     const VkDeviceSize materialBytes = gpuMaterials.size() * sizeof(GpuMaterial);
     const VkDeviceSize tableBytes =
@@ -178,7 +178,7 @@ Status GpuSphereRenderer::uploadMaterials(std::span<const MaterialInstance> mate
     }
     std::memcpy(materialBuffer_.bytes().data(), gpuMaterials.data(), materialBytes);
     auto entries = lobeTableBuffer_.as<float>().begin();
-    for (const LobeTable& table : tables)
+    for (const LobeTable& table : lobeTables)
         entries = std::copy(table.data().begin(), table.data().end(), entries);
     return Ok{};
 }
