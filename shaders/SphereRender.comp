@@ -2,26 +2,24 @@
 #extension GL_GOOGLE_include_directive : require
 // The paper's test scene on the GPU, one invocation per pixel and material: the same camera,
 // 2 x 2 subsamples, coverage alpha, sphere UV mapping, textures and shading as the CPU
-// reference (core/scene/SphereRenderer.cpp). Workgroups along y are materials, so each
-// workgroup runs one layer stack and the loop over slots does not diverge.
+// reference (core/scene/SphereRenderer.cpp), with the lobes interpolated from the material's
+// LobeTable (core/material/LobeTable.h). Workgroups along y are materials, so the branch on
+// the table's shape does not diverge.
 layout(local_size_x = 64) in;
 
 struct Material {
-    vec4 coatEta;    // xyz absolute IOR of the coat, w alpha1
-    vec4 baseEta;    // xyz absolute IOR of the base, w alpha2
-    vec4 baseKappa;  // xyz extinction of a conductor base, w textured layer (0, 1 top, 2 bottom)
-    vec4 sigmaS;     // xyz scattering of the medium, w depth (0: no medium slot)
-    vec4 sigmaA;     // xyz absorption of the medium, w Henyey-Greenstein g
+    uint firstEntry;   // of its lobe table
+    uint texelNodes;   // 1: no textured-roughness axis
+    uint cosineNodes;
+    uint unused;
 };
 
 layout(std430, binding = 0) readonly buffer Materials { Material materials[]; };
 layout(std430, binding = 1) writeonly buffer Renders { vec4 renderPixels[]; };
-layout(binding = 2) uniform sampler3D fgdTable;
-layout(binding = 3) uniform sampler3D tirTable;
-layout(binding = 4) uniform sampler2D roughnessTexture;  // 1x1 white when absent
-layout(binding = 5) uniform sampler2D baseColorTexture;  // 1x1 white when absent
+layout(binding = 2) uniform sampler2D roughnessTexture;  // 1x1 white when absent
+layout(binding = 3) uniform sampler2D baseColorTexture;  // 1x1 white when absent
 
-layout(std430, binding = 6) readonly buffer Scene {
+layout(std430, binding = 4) readonly buffer Scene {
     vec4 cameraPosition;       // w image size in pixels
     vec4 cameraForward;        // w tan(fov / 2)
     vec4 cameraRight;
@@ -29,36 +27,70 @@ layout(std430, binding = 6) readonly buffer Scene {
     vec4 toLight;
     vec4 lightRadiance;
     vec4 environmentRadiance;
-    vec4 tableAxes[4];         // mu, alpha, eta, kappa: (count, min, max, unused)
+    vec4 textured;             // x: 1 when a texture is present (else the UV is not needed)
 } scene;
 
-#include "BelcourTables.glsl"
-
-TableAxis tableMu;
-TableAxis tableAlpha;
-TableAxis tableEta;
-TableAxis tableKappa;
+// Three vec4 per entry: coat energy + alpha, base throughput + c(variance), base round trip +
+// c(variance + round-trip variance) with c(v) = v / (1 + v); entry (texel t, cosine m) at
+// firstEntry + t * cosineNodes + m.
+layout(std430, binding = 5) readonly buffer LobeTables { vec4 lobeEntries[]; };
 
 #include "BelcourBsdf.glsl"
 
 const int kSubsamplesPerAxis = 2;
 
+struct Entry {
+    vec4 coat;
+    vec4 base;
+    vec4 roundTrip;
+};
+
+void accumulate(inout Entry sum, uint entry, float weight) {
+    sum.coat += weight * lobeEntries[3 * entry];
+    sum.base += weight * lobeEntries[3 * entry + 1];
+    sum.roundTrip += weight * lobeEntries[3 * entry + 2];
+}
+
+float expandVariance(float compressed) { return compressed / max(1.0 - compressed, 1e-7); }
+
+// LobeTable::lobesAt: linear in cos_view, and in the texel when the table has that axis.
+LobeSet lobesAt(Material material, float cosView, float texel, vec3 tint) {
+    int cosineNodes = int(material.cosineNodes);
+    float cosinePosition = clamp(cosView, 0.0, 1.0) * float(cosineNodes - 1);
+    int m = min(int(cosinePosition), cosineNodes - 2);
+    float wm = cosinePosition - float(m);
+    Entry sum = Entry(vec4(0.0), vec4(0.0), vec4(0.0));
+    uint row = material.firstEntry + uint(m);
+    if (material.texelNodes > 1u) {
+        float texelPosition = clamp(texel, 0.0, 1.0) * float(material.texelNodes - 1u);
+        uint t = min(uint(texelPosition), material.texelNodes - 2u);
+        float wt = texelPosition - float(t);
+        row += t * uint(cosineNodes);
+        accumulate(sum, row, (1.0 - wt) * (1.0 - wm));
+        accumulate(sum, row + 1u, (1.0 - wt) * wm);
+        accumulate(sum, row + uint(cosineNodes), wt * (1.0 - wm));
+        accumulate(sum, row + uint(cosineNodes) + 1u, wt * wm);
+    } else {
+        accumulate(sum, row, 1.0 - wm);
+        accumulate(sum, row + 1u, wm);
+    }
+    float variance = expandVariance(sum.base.a);
+    return LobeSet(Lobe(sum.coat.rgb, sum.coat.a),
+                   tintedLobe(sum.base.rgb, sum.roundTrip.rgb, variance,
+                              expandVariance(sum.roundTrip.a) - variance, tint));
+}
+
 vec3 shade(Material material, vec3 normal, vec3 toViewer) {
-    vec2 uv = vec2(0.5 + atan(normal.x, normal.z) / (2.0 * kPi),
-                   acos(clamp(normal.y, -1.0, 1.0)) / kPi);
-    float roughnessTexel = texture(roughnessTexture, uv).r;
-    vec3 baseColor = texture(baseColorTexture, uv).rgb;
-    float texturedLayer = material.baseKappa.w;
-
-    InterfaceLayer coat = InterfaceLayer(material.coatEta.xyz, vec3(0.0),
-        max(0.0, material.coatEta.w * (texturedLayer == 1.0 ? roughnessTexel : 1.0)), vec3(1.0));
-    InterfaceLayer base = InterfaceLayer(material.baseEta.xyz, material.baseKappa.xyz,
-        max(0.0, material.baseEta.w * (texturedLayer == 2.0 ? roughnessTexel : 1.0)), baseColor);
-    MediumLayer medium = MediumLayer(material.sigmaS.w, material.sigmaS.xyz, material.sigmaA.xyz,
-                                     material.sigmaA.w);
-
+    float roughnessTexel = 1.0;
+    vec3 baseColor = vec3(1.0);
+    if (scene.textured.x > 0.0) {
+        vec2 uv = vec2(0.5 + atan(normal.x, normal.z) / (2.0 * kPi),
+                       acos(clamp(normal.y, -1.0, 1.0)) / kPi);
+        roughnessTexel = texture(roughnessTexture, uv).r;
+        baseColor = texture(baseColorTexture, uv).rgb;
+    }
     float cosView = max(dot(normal, toViewer), 0.0);
-    LobeSet lobes = computeLobes(coat, material.sigmaS.w > 0.0, medium, base, cosView);
+    LobeSet lobes = lobesAt(material, cosView, roughnessTexel, baseColor);
     vec3 toLight = scene.toLight.xyz;
     float cosLight = dot(normal, toLight);
     float cosHalf = dot(normal, normalize(toViewer + toLight));
@@ -72,10 +104,6 @@ void main() {
     uint pixelCount = uint(size * size);
     uint pixel = gl_GlobalInvocationID.x;
     if (pixel >= pixelCount) return;
-    tableMu = TableAxis(scene.tableAxes[0].x, scene.tableAxes[0].y, scene.tableAxes[0].z);
-    tableAlpha = TableAxis(scene.tableAxes[1].x, scene.tableAxes[1].y, scene.tableAxes[1].z);
-    tableEta = TableAxis(scene.tableAxes[2].x, scene.tableAxes[2].y, scene.tableAxes[2].z);
-    tableKappa = TableAxis(scene.tableAxes[3].x, scene.tableAxes[3].y, scene.tableAxes[3].z);
 
     Material material = materials[gl_GlobalInvocationID.y];
     vec3 origin = scene.cameraPosition.xyz;

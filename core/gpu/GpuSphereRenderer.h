@@ -1,7 +1,8 @@
 #pragma once
 // The test sphere rendered on the GPU (shaders/SphereRender.comp): many materials per
-// submission, the same scene, textures and FGD/TIR tables as the CPU reference
-// renderSphereCpu. Tables and textures are uploaded once; each call uploads only the materials.
+// submission, the same scene and textures as the CPU reference renderSphereCpu. Each material's
+// LobeTable is built on the CPU (the same numbers the CPU renderer shades from, so the back ends
+// agree) and uploaded with the materials; the shader interpolates it and evaluates the lobes.
 #include <span>
 #include <vector>
 
@@ -21,13 +22,13 @@ namespace matevo::gpu {
 
 class GpuSphereRenderer {
 public:
+    // `tables` must outlive the renderer (the process-wide defaultFgdTables() does).
     static Result<GpuSphereRenderer> create(const Device& device, CommandRunner& runner,
-                                            const FgdTables& tables,
-                                            const SceneTextures& textures);
+                                            const FgdTables& tables, const SceneTextures& textures);
 
     // Records the render of `materials` at size x size into `renders` (ImageBatch layout,
-    // materials.size() images). Uploads the materials and scene into buffers it keeps, so the
-    // caller must wait for the submission before recording again.
+    // materials.size() images). Uploads the materials' lobe tables and the scene into buffers
+    // it keeps, so the caller must wait for the submission before recording again.
     Status record(VkCommandBuffer commands, std::span<const MaterialInstance> materials,
                   const SceneSettings& scene, int size, const Buffer& renders);
 
@@ -37,16 +38,17 @@ public:
                                       const SceneSettings& scene, int size);
 
 private:
+    Status uploadMaterials(std::span<const MaterialInstance> materials);
+
     const Device* device_ = nullptr;
-    TableGrid grid_;
-    GpuImage fgd_;
-    GpuImage tir_;
+    const FgdTables* tables_ = nullptr;
+    bool textured_ = false;  // a texture is present: the shader needs the sphere's UV
     GpuImage roughness_;
     GpuImage baseColor_;
-    UniqueSampler tableSampler_;    // trilinear, clamped
     UniqueSampler textureSampler_;  // bilinear, wraps in u and clamps in v like sphereUv
     Buffer sceneBuffer_;
     Buffer materialBuffer_;
+    Buffer lobeTableBuffer_;
     ComputeKernel kernel_;
 };
 

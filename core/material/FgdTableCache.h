@@ -14,7 +14,7 @@
 namespace matevo {
 
 // Bump when the generator's mathematics change, so old caches are rebuilt.
-constexpr unsigned kTableFormatVersion = 1;
+constexpr unsigned kTableFormatVersion = 2;  // 2: no NaN at mu = 0, eta = 1
 
 Result<FgdTables> readFgdTables(const std::filesystem::path& file,
                                 const TableGenerationSettings& expected);

@@ -19,6 +19,8 @@ double fresnelDielectric(double cosIncident, double eta) {
 double fresnelConductor(double cosIncident, double eta, double kappa) {
     using Complex = std::complex<double>;
     const double cosI = std::clamp(cosIncident, 0.0, 1.0);
+    // Grazing incidence reflects everything; the formulas below give 0/0 there for eta = 1.
+    if (cosI <= 0.0) return 1.0;
     const Complex index(eta, kappa);
     const Complex sin2T = (1.0 - cosI * cosI) / (index * index);
     const Complex cosT = std::sqrt(1.0 - sin2T);

@@ -20,10 +20,11 @@ double largest(const Rgb& value) { return std::max({value.r, value.g, value.b});
 
 // Atomic statistics of one slot for the mean cosine at its top (belcour-model.md §2).
 struct SlotStatistics {
-    Rgb reflectDown{0.0};    // R12
-    Rgb transmitDown{1.0};   // T12
-    Rgb reflectUp{0.0};      // R21
-    Rgb transmitUp{1.0};     // T21
+    Rgb reflectance{0.0};   // R12 before the interface's tint
+    Rgb reflectDown{0.0};   // R12
+    Rgb transmitDown{1.0};  // T12
+    Rgb reflectUp{0.0};     // R21
+    Rgb transmitUp{1.0};    // T21
     double cosTransmitted = 1.0;
     double reflectVariance = 0.0;       // s_r12 = s_r21
     double transmitDownVariance = 0.0;  // s_t12
@@ -67,6 +68,7 @@ SlotStatistics interfaceStatistics(const InterfaceLayer& layer, const Rgb& etaAb
                 albedo.reflectance(cti, s.fgdAlpha, etaRelative[c], kappaRelative[c]), 0.0, 1.0);
     }
     const Rgb transmittance = 1.0 - reflectance;
+    s.reflectance = reflectance;
     s.reflectDown = reflectance * layer.tint;
     s.reflectUp = transmits ? s.reflectDown : Rgb(0.0);
     s.transmitDown = transmits ? transmittance : Rgb(0.0);
@@ -82,7 +84,10 @@ SlotStatistics mediumStatistics(const MediumLayer& medium, double cti, MediumVar
     Rgb scattered(0.0);
     for (int c = 0; c < 3; ++c) {
         const double opticalDepth = (medium.sigmaS[c] + medium.sigmaA[c]) * pathLength;
-        if (opticalDepth > 80.0) continue;  // nothing gets through; avoids 0 * inf
+        if (opticalDepth > 80.0) {  // nothing gets through (§6.5); avoids 0 * inf
+            s.transmitDown[c] = 0.0;
+            continue;
+        }
         const double attenuation = std::exp(-opticalDepth);
         scattered[c] = medium.sigmaS[c] * pathLength * attenuation;
         s.transmitDown[c] = attenuation + scattered[c];
@@ -103,14 +108,18 @@ struct Slot {
     const MediumLayer* medium = nullptr;
     Rgb etaAbove{1.0};
     double escapeEta = 0.0;  // n10 of the nearest interface above; 0 for the top interface
-    Lobe* lobe = nullptr;
+    TintableLobe* lobe = nullptr;
 };
 
-}  // namespace
+struct LoopResult {
+    TintableLobe coat;
+    TintableLobe base;
+    Rgb transmittance{0.0};  // T0i, with the tints applied
+};
 
-LobeSet computeLobes(const LayerStack& stack, double cosView, const InterfaceAlbedo& albedo,
-                     const AddingOptions& options) {
-    LobeSet lobes;
+LoopResult addingLoop(const LayerStack& stack, double cosView, const InterfaceAlbedo& albedo,
+                      const AddingOptions& options) {
+    LoopResult lobes;
     std::array<Slot, 3> slotStorage;  // no allocation: this runs per pixel
     std::size_t slotCount = 0;
     slotStorage[slotCount++] = {&stack.coat, nullptr, Rgb(1.0), 0.0, &lobes.coat};
@@ -123,16 +132,16 @@ LobeSet computeLobes(const LayerStack& stack, double cosView, const InterfaceAlb
 
     // The "empty slab" of §4, then one adding step per slot.
     // R0i itself is not needed: it is the sum of the lobes emitted so far.
-    Rgb up(0.0), transmitDown(1.0), transmitUp(1.0);  // Ri0, T0i, Ti0
+    Rgb up(0.0), transmitDown(1.0), transmitUp(1.0);                 // Ri0, T0i, Ti0
     double spreadDown = 0.0, spreadUp = 0.0, reflectSpreadUp = 0.0;  // s_t0i, s_ti0, s_ri0
-    double jacobianDown = 1.0, jacobianUp = 1.0;                      // j0i, ji0
+    double jacobianDown = 1.0, jacobianUp = 1.0;                     // j0i, ji0
     double cti = std::clamp(cosView, 0.0, 1.0);
 
     for (const Slot& slot : slots) {
         const SlotStatistics s =
-            slot.interface
-                ? interfaceStatistics(*slot.interface, slot.etaAbove, cti, spreadDown, albedo)
-                : mediumStatistics(*slot.medium, cti, options.mediumVariance);
+            slot.interface ? interfaceStatistics(*slot.interface, slot.etaAbove, cti, spreadDown,
+                                                 albedo)
+                           : mediumStatistics(*slot.medium, cti, options.mediumVariance);
         if (options.totalInternalReflection && slot.escapeEta > 0.0) {
             const double escaping = albedo.escapeFraction(cti, s.fgdAlpha, slot.escapeEta);
             up = glm::clamp(up + (1.0 - escaping) * transmitUp, 0.0, 1.0);
@@ -141,9 +150,8 @@ LobeSet computeLobes(const LayerStack& stack, double cosView, const InterfaceAlb
 
         const Rgb denominator = 1.0 - up * s.reflectDown;
         const Rgb safeDenominator = glm::max(denominator, Rgb(1e-6));
-        Rgb newLobe(0.0), upInterreflection(0.0), roundTrip(0.0);  // mR0i, mRi0, mRr
+        Rgb upInterreflection(0.0), roundTrip(0.0);  // mRi0, mRr
         if (average(denominator) > 0.0) {
-            newLobe = transmitDown * s.reflectDown * transmitUp / safeDenominator;
             upInterreflection = s.transmitUp * up * s.transmitDown / safeDenominator;
             roundTrip = up * s.reflectDown / safeDenominator;
         }
@@ -151,13 +159,15 @@ LobeSet computeLobes(const LayerStack& stack, double cosView, const InterfaceAlb
         const double roundTrips = average(roundTrip);
         const double newUpEnergy = average(newUp);
 
-        // Variance of this slot's lobe and the accumulated variances (§4 steps 5-6).
-        const double lobeVariance =
-            spreadUp + jacobianDown * (spreadDown + s.reflectVariance +
-                                       roundTrips * (s.reflectVariance + reflectSpreadUp));
-        const double nextSpreadDown = s.jacobianDown * spreadDown + s.transmitDownVariance +
-                                      s.jacobianDown * (s.reflectVariance + reflectSpreadUp) *
-                                          roundTrips;
+        // This slot's lobe (mR0i, its variance) with the tint left open, and the accumulated
+        // variances (§4 steps 5-6).
+        if (slot.lobe)
+            *slot.lobe = {transmitDown * s.reflectance * transmitUp, up * s.reflectance,
+                          spreadUp + jacobianDown * (spreadDown + s.reflectVariance),
+                          jacobianDown * (s.reflectVariance + reflectSpreadUp)};
+        const double nextSpreadDown =
+            s.jacobianDown * spreadDown + s.transmitDownVariance +
+            s.jacobianDown * (s.reflectVariance + reflectSpreadUp) * roundTrips;
         const double nextReflectSpreadUp =
             newUpEnergy > 0.0
                 ? (average(s.reflectUp) * s.reflectVariance +
@@ -170,9 +180,6 @@ LobeSet computeLobes(const LayerStack& stack, double cosView, const InterfaceAlb
         const double nextSpreadUp = jacobianUp * s.transmitUpVariance + spreadUp +
                                     jacobianUp * (s.reflectVariance + reflectSpreadUp) * roundTrips;
 
-        if (slot.lobe && average(newLobe) > 0.0)
-            *slot.lobe = Lobe{{newLobe.r, newLobe.g, newLobe.b}, varianceToRoughness(lobeVariance)};
-
         transmitDown = transmitDown * s.transmitDown / safeDenominator;
         transmitUp = s.transmitUp * transmitUp / safeDenominator;
         up = newUp;
@@ -184,8 +191,35 @@ LobeSet computeLobes(const LayerStack& stack, double cosView, const InterfaceAlb
         jacobianUp *= s.jacobianUp;
         if (s.conductor || largest(transmitDown) <= 0.0) break;
     }
-    lobes.transmittance = {transmitDown.r, transmitDown.g, transmitDown.b};
+    lobes.transmittance = transmitDown;
     return lobes;
+}
+
+}  // namespace
+
+Lobe TintableLobe::tinted(const Rgb& tint) const {
+    const Rgb denominator = 1.0 - roundTrip * tint;
+    if (average(denominator) <= 0.0) return {};
+    const Rgb safeDenominator = glm::max(denominator, Rgb(1e-6));
+    const Rgb energy = throughput * tint / safeDenominator;
+    if (average(energy) <= 0.0) return {};
+    const double roundTrips = average(roundTrip * tint / safeDenominator);
+    return {{energy.r, energy.g, energy.b},
+            varianceToRoughness(variance + roundTripVariance * roundTrips)};
+}
+
+LobeSet computeLobes(const LayerStack& stack, double cosView, const InterfaceAlbedo& albedo,
+                     const AddingOptions& options) {
+    const LoopResult loop = addingLoop(stack, cosView, albedo, options);
+    return {loop.coat.tinted(stack.coat.tint),
+            loop.base.tinted(stack.base.tint),
+            {loop.transmittance.r, loop.transmittance.g, loop.transmittance.b}};
+}
+
+UntintedLobes computeUntintedLobes(const LayerStack& stack, double cosView,
+                                   const InterfaceAlbedo& albedo, const AddingOptions& options) {
+    const LoopResult loop = addingLoop(stack, cosView, albedo, options);
+    return {loop.coat.tinted(stack.coat.tint), loop.base};
 }
 
 }  // namespace matevo

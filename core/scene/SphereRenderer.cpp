@@ -52,19 +52,26 @@ double hitUnitSphere(const glm::dvec3& origin, const glm::dvec3& direction) {
     return -b - std::sqrt(discriminant);
 }
 
+// LobesAt: (cos_view, SurfaceTexels) -> LobeSet.
+template <class LobesAt>
 struct Shader {
-    const MaterialInstance& material;
+    const LobesAt& lobesAt;
     const SceneTextures& textures;
-    const FgdTables& tables;
     glm::dvec3 toLight;
     glm::dvec3 lightRadiance;
     glm::dvec3 environmentRadiance;
 
-    glm::dvec3 radiance(const glm::dvec3& normal, const glm::dvec3& toViewer) const {
+    // Without textures the texels are neutral and the UV (two inverse trigonometric calls) is
+    // not needed.
+    SurfaceTexels texelsAt(const glm::dvec3& normal) const {
+        if (textures.roughness.width == 0 && textures.baseColor.width == 0) return {};
         const auto [u, v] = sphereUv(normal);
-        const LayerStack stack = makeLayerStack(material, texelsAt(textures, u, v));
+        return matevo::texelsAt(textures, u, v);
+    }
+
+    glm::dvec3 radiance(const glm::dvec3& normal, const glm::dvec3& toViewer) const {
         const double cosView = std::max(glm::dot(normal, toViewer), 0.0);
-        const LobeSet lobes = computeLobes(stack, cosView, tables);
+        const LobeSet lobes = lobesAt(cosView, texelsAt(normal));
         const double cosLight = glm::dot(normal, toLight);
         const double cosHalf = glm::dot(normal, glm::normalize(toViewer + toLight));
         const glm::dvec3 reflected = toVector(evaluateBsdf(lobes, cosView, cosLight, cosHalf)) *
@@ -73,18 +80,14 @@ struct Shader {
     }
 };
 
-}  // namespace
-
-Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,
-                      const SceneSettings& scene, int size, const FgdTables& tables) {
+template <class LobesAt>
+Image renderSphere(const LobesAt& lobesAt, const SceneTextures& textures,
+                   const SceneSettings& scene, int size) {
     Image image(size, size);
     const Camera camera(scene);
-    const Shader shader{material,
-                        textures,
-                        tables,
-                        glm::normalize(toVector(scene.lightDirection)),
-                        toVector(scene.lightRadiance),
-                        toVector(scene.environmentRadiance)};
+    const Shader<LobesAt> shader{lobesAt, textures, glm::normalize(toVector(scene.lightDirection)),
+                                 toVector(scene.lightRadiance),
+                                 toVector(scene.environmentRadiance)};
     const int subsamples = kSubsamplesPerAxis * kSubsamplesPerAxis;
 
     auto renderRows = [&](int chunk) {
@@ -115,6 +118,26 @@ Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& tex
     };
     parallelForChunks((size + kRowsPerChunk - 1) / kRowsPerChunk, renderRows);
     return image;
+}
+
+}  // namespace
+
+Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,
+                      const SceneSettings& scene, int size, const FgdTables& tables,
+                      const LobeTableShape& shape) {
+    const LobeTable table = LobeTable::build(material, tables, shape);
+    const auto lobesAt = [&](double cosView, const SurfaceTexels& texels) {
+        return table.lobesAt(cosView, texels);
+    };
+    return renderSphere(lobesAt, textures, scene, size);
+}
+
+Image renderSphereCpuExact(const MaterialInstance& material, const SceneTextures& textures,
+                           const SceneSettings& scene, int size, const FgdTables& tables) {
+    const auto lobesAt = [&](double cosView, const SurfaceTexels& texels) {
+        return computeLobes(makeLayerStack(material, texels), cosView, tables);
+    };
+    return renderSphere(lobesAt, textures, scene, size);
 }
 
 Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,

@@ -8,10 +8,12 @@
 // mean radiance of the hits, not premultiplied; the background is (0, 0, 0, 0).
 // Shading at a hit with normal n, view v, light direction l (normalised lightDirection):
 //   L = f_r(v, l) * lightRadiance * max(0, n.l) + (e_coat + e_base) * environmentRadiance
-// with the lobes of computeLobes at cos_view = n.v (Forward model), textures sampled at
-// sphereUv(n). Output is linear RGB: no tone mapping, no exposure.
+// with the lobes at cos_view = n.v (Forward model) from the material's LobeTable (the adding
+// loop interpolated over cos_view and the roughness texel), textures sampled at sphereUv(n).
+// Output is linear RGB: no tone mapping, no exposure.
 #include "common/Image.h"
 #include "material/FgdTables.h"
+#include "material/LobeTable.h"
 #include "material/MaterialInstance.h"
 #include "scene/SceneSettings.h"
 #include "scene/SceneTextures.h"
@@ -23,9 +25,16 @@ constexpr int kSubsamplesPerAxis = 2;
 
 // Multi-threaded over fixed row chunks; the result does not depend on the thread count.
 Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,
-                      const SceneSettings& scene, int size, const FgdTables& tables);
+                      const SceneSettings& scene, int size, const FgdTables& tables,
+                      const LobeTableShape& shape = {});
 
-// The same with the process-wide tables (built or read from the cache on first use).
+// The reference that the LobeTable approximates: the adding loop at every subsample (tens of
+// times slower). Only the tests that bound the table's error use it.
+Image renderSphereCpuExact(const MaterialInstance& material, const SceneTextures& textures,
+                           const SceneSettings& scene, int size, const FgdTables& tables);
+
+// The same as renderSphereCpu with the process-wide tables (built or read from the cache on first
+// use).
 Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,
                       const SceneSettings& scene, int size);
 

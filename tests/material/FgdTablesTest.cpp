@@ -1,5 +1,6 @@
 // FGD/TIR integrals against belcour-model.md §8, the tables against direct integration, and the
 // on-disk cache (version, settings and checksum checks).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -64,6 +65,14 @@ TEST(FgdTables, SmoothRowIsExactFresnelAtNodes) {
     EXPECT_NEAR(tables.reflectance(1.0, 0.5, 1.0, 1.0), 0.1588, 2e-4);
 }
 
+TEST(FgdTables, EveryEntryIsFinite) {
+    // The index-matched grazing node (mu = 0, alpha = 0, eta = 1) was once 0/0.
+    const FgdTables& tables = defaultFgdTables();
+    for (const auto* data : {&tables.fgdData(), &tables.tirData()})
+        EXPECT_TRUE(
+            std::all_of(data->begin(), data->end(), [](float v) { return std::isfinite(v); }));
+}
+
 // The grid was chosen by this error (docs/belcour-decisions.md): random points over the domain
 // the presets and Table 2 use, against direct integration.
 TEST(FgdTables, InterpolationErrorAgainstDirectIntegration) {
@@ -81,8 +90,8 @@ TEST(FgdTables, InterpolationErrorAgainstDirectIntegration) {
         const double alpha = 0.02 + 0.98 * next();
         const double eta = conductor ? 0.2 + 1.8 * next() : 1.05 + 1.95 * next();
         const double kappa = conductor ? 0.5 + 3.5 * next() : 0.0;
-        const double fgdError =
-            std::abs(tables.reflectance(mu, alpha, eta, kappa) - integrateFgd(mu, alpha, eta, kappa, 48));
+        const double fgdError = std::abs(tables.reflectance(mu, alpha, eta, kappa) -
+                                         integrateFgd(mu, alpha, eta, kappa, 48));
         fgdErrorSum += fgdError;
         fgdErrorMax = std::max(fgdErrorMax, fgdError);
         const double inside = 1.0 / eta;
@@ -112,7 +121,8 @@ protected:
 
 TEST_F(FgdTableCacheTest, WritesReadsBackAndRejectsStaleOrCorruptFiles) {
     const FgdTables built = loadOrBuildFgdTables(directory_, settings_);
-    const std::filesystem::path file = directory_ / "fgd_tir_v1.bin";
+    const std::filesystem::path file =
+        directory_ / ("fgd_tir_v" + std::to_string(kTableFormatVersion) + ".bin");
     ASSERT_TRUE(std::filesystem::exists(file));
 
     auto reread = readFgdTables(file, settings_);

@@ -43,7 +43,8 @@ void expectLobe(const Lobe& lobe, double energy, double alpha, double tolerance 
 }
 
 TEST(LayeredLobes, FresnelModeRegression) {
-    const LobeSet lobes = computeLobes(fresnelModeStack(), 0.8, SmoothFresnelAlbedo(), kFresnelMode);
+    const LobeSet lobes =
+        computeLobes(fresnelModeStack(), 0.8, SmoothFresnelAlbedo(), kFresnelMode);
     expectLobe(lobes.coat, 0.0438947, 0.1);
     expectLobe(lobes.base, 0.1641423, 0.3167380);
 }
@@ -57,26 +58,34 @@ TEST(LayeredLobes, FresnelModeRegressionWithMedium) {
 }
 
 TEST(LayeredLobes, BaseLobeMatchesClosedFormWithoutMedium) {
-    // belcour-model.md §4.1 with the tables (TIR off): e_2 = Tc^2 Rb / (1 - Rc Rb).
+    // belcour-model.md §4.1 with the tables (TIR off): e_2 = Tc^2 Rb t / (1 - Rc Rb t) for a
+    // base tinted by t, which TintableLobe must reproduce exactly.
     const FgdTables& tables = defaultFgdTables();
     LayerStack stack = fresnelModeStack();
+    stack.base.tint = Rgb(0.3, 0.6, 1.0);
     const double mu = 0.7;
     const LobeSet lobes = computeLobes(stack, mu, tables, {false, MediumVariance::EnergyWeighted});
     const double n = 1.5;
     const double ct = std::sqrt(1.0 - (1.0 - mu * mu) / (n * n));
     const double rc = tables.reflectance(mu, 0.1, n, 0.0);
     const double spreadT = roughnessToVariance(0.1 * (n - 1.0) / (2.0 * n));
-    const double rb = tables.reflectance(ct, varianceToRoughness(spreadT + roughnessToVariance(0.2)),
-                                         1.0 / n, 1.0 / n);
+    const double rb = tables.reflectance(
+        ct, varianceToRoughness(spreadT + roughnessToVariance(0.2)), 1.0 / n, 1.0 / n);
     const double tc = 1.0 - rc;
-    const double rr = rc * rb / (1.0 - rc * rb);
+    double rr = 0.0;
+    for (int c = 0; c < 3; ++c)
+        rr += rc * rb * stack.base.tint[c] / (1.0 - rc * rb * stack.base.tint[c]) / 3.0;
     const double jacobian = ct / mu * n;
     const double alphaBase = varianceToRoughness(
         roughnessToVariance(0.1 * (n - 1.0) / 2.0) +
         jacobian * (spreadT + roughnessToVariance(0.2) +
                     rr * (roughnessToVariance(0.2) + roughnessToVariance(0.1))));
     expectLobe(lobes.coat, rc, 0.1, 1e-9);
-    expectLobe(lobes.base, tc * tc * rb / (1.0 - rc * rb), alphaBase, 1e-9);
+    for (int c = 0; c < 3; ++c) {
+        const double tint = stack.base.tint[c];
+        EXPECT_NEAR(lobes.base.energy[c], tc * tc * rb * tint / (1.0 - rc * rb * tint), 1e-9);
+    }
+    EXPECT_NEAR(lobes.base.alpha, alphaBase, 1e-9);
 }
 
 TEST(LayeredLobes, SingleSmoothInterfaceIsExactFresnel) {
@@ -151,6 +160,22 @@ TEST(LayeredLobes, NothingBelowAConductorMatters) {
     EXPECT_EQ(changed.coat.energy, reference.coat.energy);
     EXPECT_EQ(changed.coat.alpha, reference.coat.alpha);
     EXPECT_EQ(changed.base.energy, (std::array<double, 3>{0.0, 0.0, 0.0}));
+}
+
+TEST(LayeredLobes, ThickAbsorbingMediumHidesTheBase) {
+    // §6.5: T = 0 once sigma_t x > 80. Under a coat of index 1.05 the optical depth passes 80
+    // for mu <= 0.3 (refracted cosine < 0.5), which must not let the base through.
+    LayerStack stack = fresnelModeStack();
+    stack.coat.eta = Rgb(1.05);
+    stack.medium = MediumLayer{40.0, Rgb(0.0), Rgb(1.0), 0.9};
+    for (double mu : {1.0, 0.6, 0.3, 0.1, 0.02}) {
+        const LobeSet lobes = computeLobes(stack, mu, defaultFgdTables());
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_LT(lobes.base.energy[c], 1e-15) << "mu " << mu;
+            EXPECT_LT(lobes.transmittance[c], 1e-15) << "mu " << mu;
+            EXPECT_GT(lobes.coat.energy[c], 0.0) << "mu " << mu;
+        }
+    }
 }
 
 TEST(LayeredLobes, ThinMediumIsContinuousWithNoMedium) {

@@ -29,7 +29,7 @@ TEST(Fresnel, TotalInternalReflectionBeyondTheCriticalAngle) {
 
 TEST(Fresnel, ConductorMatchesClosedFormsAndDielectricLimit) {
     EXPECT_NEAR(fresnelConductor(1.0, 1.0, 1.0), 0.2, 1e-12);
-    for (double mu : {0.05, 0.3, 0.7, 1.0})
+    for (double mu : {0.0, 0.05, 0.3, 0.7, 1.0})
         for (double eta : {0.6, 1.0, 1.5, 2.5})
             EXPECT_NEAR(fresnelConductor(mu, eta, 0.0), fresnelDielectric(mu, eta), 1e-12)
                 << mu << " " << eta;
