@@ -54,7 +54,8 @@ bool drawTile(const CandidateView& candidate, const HeatmapView& heatmap, float 
                      deltaText);
 
     if (selected || hovered) {
-        const ImU32 border = selected ? ImGui::GetColorU32(kAccentColor) : IM_COL32(200, 200, 200, 90);
+        const ImU32 border =
+            selected ? ImGui::GetColorU32(kAccentColor) : IM_COL32(200, 200, 200, 90);
         drawList.AddRect(topLeft, ImVec2(topLeft.x + size, topLeft.y + size), border, 3.0f, 0,
                          selected ? 2.5f : 1.0f);
     }
@@ -72,8 +73,8 @@ void drawCandidateGrid(EditorState& state) {
     const float available = ImGui::GetContentRegionAvail().x;
     const int columns =
         std::max(1, int(std::floor((available + spacing) / (kMinTileSize + spacing))));
-    const float tileSize = std::min(kMaxTileSize, (available - spacing * float(columns - 1)) /
-                                                      float(columns));
+    const float tileSize =
+        std::min(kMaxTileSize, (available - spacing * float(columns - 1)) / float(columns));
     for (std::size_t i = 0; i < evolution.candidates.size(); ++i) {
         if (i % std::size_t(columns) != 0) ImGui::SameLine();
         const bool selected = int(i) == state.selectedCandidate;

@@ -61,11 +61,14 @@ void drawChart(const char* title, const std::vector<Series>& series, int lastGen
 
     const auto point = [&](std::size_t i, float v) {
         const float t = count > 1 ? float(i) / float(count - 1) : 0.5f;
-        return ImVec2(left + t * (right - left), bottom - (v - low) / (high - low) * (bottom - top));
+        return ImVec2(left + t * (right - left),
+                      bottom - (v - low) / (high - low) * (bottom - top));
     };
     for (const Series& s : series) {
         for (std::size_t i = 0; i < s.values.size(); ++i) {
-            if (i > 0) drawList.AddLine(point(i - 1, s.values[i - 1]), point(i, s.values[i]), s.color, 2.0f);
+            if (i > 0)
+                drawList.AddLine(point(i - 1, s.values[i - 1]), point(i, s.values[i]), s.color,
+                                 2.0f);
             drawList.AddCircleFilled(point(i, s.values[i]), 2.5f, s.color);
         }
     }

@@ -42,9 +42,9 @@ void drawLegend(const HeatmapView& heatmap) {
     drawList.AddText(ImVec2(topLeft.x, topLeft.y + barHeight + 1.0f),
                      ImGui::GetColorU32(kMutedTextColor), label);
     std::snprintf(label, sizeof label, "%.3g", heatmap.maxDeltaE);
-    drawList.AddText(ImVec2(topLeft.x + width - ImGui::CalcTextSize(label).x,
-                            topLeft.y + barHeight + 1.0f),
-                     ImGui::GetColorU32(kMutedTextColor), label);
+    drawList.AddText(
+        ImVec2(topLeft.x + width - ImGui::CalcTextSize(label).x, topLeft.y + barHeight + 1.0f),
+        ImGui::GetColorU32(kMutedTextColor), label);
     // Band edges inside the range: a tick and the edge value, like the paper's thresholds.
     for (PerceptualBand band : kPerceptualBands) {
         const double edge = bandUpperEdge(band);
@@ -53,9 +53,9 @@ void drawLegend(const HeatmapView& heatmap) {
         drawList.AddLine(ImVec2(x, topLeft.y - 2.0f), ImVec2(x, topLeft.y + barHeight + 2.0f),
                          IM_COL32(255, 255, 255, 220), 1.5f);
         std::snprintf(label, sizeof label, "%g", edge);
-        drawList.AddText(ImVec2(x - ImGui::CalcTextSize(label).x * 0.5f,
-                                topLeft.y + barHeight + 1.0f),
-                         ImGui::GetColorU32(ImGuiCol_Text), label);
+        drawList.AddText(
+            ImVec2(x - ImGui::CalcTextSize(label).x * 0.5f, topLeft.y + barHeight + 1.0f),
+            ImGui::GetColorU32(ImGuiCol_Text), label);
     }
     if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();

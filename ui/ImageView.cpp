@@ -18,9 +18,9 @@ void drawImage(ImDrawList& drawList, ImVec2 topLeft, float size, ImTextureID ima
     if (!image) {
         const char* text = "rendering...";
         const ImVec2 textSize = ImGui::CalcTextSize(text);
-        drawList.AddText(ImVec2(topLeft.x + (size - textSize.x) * 0.5f,
-                                topLeft.y + (size - textSize.y) * 0.5f),
-                         IM_COL32(140, 140, 150, 255), text);
+        drawList.AddText(
+            ImVec2(topLeft.x + (size - textSize.x) * 0.5f, topLeft.y + (size - textSize.y) * 0.5f),
+            IM_COL32(140, 140, 150, 255), text);
     }
 }
 

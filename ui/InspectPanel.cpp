@@ -67,7 +67,8 @@ void drawInspectPanel(EditorState& state) {
         return;
     }
     // Until a tile is clicked, the best candidate is the one worth a closer look.
-    const bool chosen = state.selectedCandidate >= 0 && state.selectedCandidate < int(candidates.size());
+    const bool chosen =
+        state.selectedCandidate >= 0 && state.selectedCandidate < int(candidates.size());
     const CandidateView candidate = candidates[chosen ? std::size_t(state.selectedCandidate) : 0];
     ImGui::Text("Candidate #%d   fitness %.4f   mean ΔE00 %.2f", candidate.rank, candidate.fitness,
                 candidate.meanDeltaE00);
@@ -80,8 +81,8 @@ void drawInspectPanel(EditorState& state) {
     // Two square images (A/B view, heatmap) and the chromosome table beside them.
     constexpr float kTableWidth = 250.0f;
     const ImVec2 available = ImGui::GetContentRegionAvail();
-    const float imageSize = std::max(
-        64.0f, std::min(available.y - 4.0f, (available.x - kTableWidth - 16.0f) * 0.5f));
+    const float imageSize =
+        std::max(64.0f, std::min(available.y - 4.0f, (available.x - kTableWidth - 16.0f) * 0.5f));
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImTextureID shown =

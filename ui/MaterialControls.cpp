@@ -72,7 +72,8 @@ void drawChromosomeSliders(const MaterialFamily& family, Genome& target) {
         if (ImGui::SliderFloat(label.c_str(), &value, float(range.min), float(range.max), "%.4g",
                                logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
             target[i] = clampInto(range, value);
-            if (i == kEta1) target[kEta2] = clampInto(rules.eta2Given(target[kEta1]), target[kEta2]);
+            if (i == kEta1)
+                target[kEta2] = clampInto(rules.eta2Given(target[kEta1]), target[kEta2]);
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Table 2: %s", describe(range).c_str());
     }

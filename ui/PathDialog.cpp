@@ -24,8 +24,7 @@ std::optional<std::filesystem::path> PathDialog::draw() {
     if (!visible_) return chosen;
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(-1.0f);
-    const bool entered =
-        ImGui::InputText("##path", &path_, ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool entered = ImGui::InputText("##path", &path_, ImGuiInputTextFlags_EnterReturnsTrue);
     const bool confirmed = ImGui::Button("OK", ImVec2(100, 0)) || entered;
     ImGui::SameLine();
     const bool cancelled = ImGui::Button("Cancel", ImVec2(100, 0)) ||

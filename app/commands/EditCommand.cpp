@@ -63,7 +63,8 @@ int runEdit(CommandLine& args) {
         if (!script) throw UsageError("edit: --script: " + script.error().message);
         options.script = std::move(*script);
     }
-    if (auto frames = args.integerOption("--frames", 1, 100000000)) options.maxFrames = int(*frames);
+    if (auto frames = args.integerOption("--frames", 1, 100000000))
+        options.maxFrames = int(*frames);
     if (auto size = args.option("--size")) parseSize(*size, options);
     if (auto backend = args.option("--backend"))
         options.gpuTiles = parseRenderBackend(*backend, "edit: --backend") == RenderBackend::Gpu;

@@ -46,8 +46,7 @@ bool CandidateRenderCache::drawsTheSame(const Preset& preset,
                                         const std::filesystem::path& presetFile) const {
     return preset_ && presetFile == presetFile_ && preset.target == preset_->target &&
            preset.family == preset_->family && preset.baseKappa == preset_->baseKappa &&
-           preset.scene == preset_->scene &&
-           preset.roughnessTexture == preset_->roughnessTexture &&
+           preset.scene == preset_->scene && preset.roughnessTexture == preset_->roughnessTexture &&
            preset.baseColorTexture == preset_->baseColorTexture;
 }
 
@@ -101,9 +100,10 @@ bool CandidateRenderCache::drawOnGpu(const std::vector<Genome>& genomes) {
         return false;
     }
     for (std::size_t i = 0; i < genomes.size(); ++i)
-        entries_.push_back({genomes[i],
-                            {std::move(evaluation->candidates[i]), std::move(evaluation->deltaE[i])},
-                            useCounter_});
+        entries_.push_back(
+            {genomes[i],
+             {std::move(evaluation->candidates[i]), std::move(evaluation->deltaE[i])},
+             useCounter_});
     return true;
 }
 

@@ -87,7 +87,8 @@ void loadFont() {
     static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x206F, 0};
     const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     ImGuiIO& io = ImGui::GetIO();
-    if (std::filesystem::exists(path) && io.Fonts->AddFontFromFileTTF(path, 14.0f, nullptr, kRanges))
+    if (std::filesystem::exists(path) &&
+        io.Fonts->AddFontFromFileTTF(path, 14.0f, nullptr, kRanges))
         return;
     io.Fonts->AddFontDefault();
 }
@@ -206,21 +207,22 @@ EditorApp::~EditorApp() {
 }
 
 bool EditorApp::shouldQuit() const {
-    return quitRequested_ || terminationRequested.load() ||
-           glfwWindowShouldClose(window_.get()) || !failure_.empty();
+    return quitRequested_ || terminationRequested.load() || glfwWindowShouldClose(window_.get()) ||
+           !failure_.empty();
 }
 
 int EditorApp::run() {
     int frames = 0;
     std::optional<std::filesystem::path> screenshotPath;
     while (!shouldQuit()) {
-        // Sleep while nothing changes; keep drawing while results or script steps are due.
-        const bool active = worker_->busy() || compareWorker_->busy() || !script_.finished() ||
-                            screenshotPath;
-        if (active)
+        // Draw only when something changed: input, a new generation (the worker posts an empty
+        // event), a due script step or snapshot. Spinning would take a core from the GA on a
+        // two-core machine. The timeout keeps the progress line and SIGTERM responsive.
+        const bool due = screenshotPath || (!script_.finished() && !script_.waitingForEvolution());
+        if (due)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(0.25);
+            glfwWaitEventsTimeout(worker_->busy() || compareWorker_->busy() ? 0.1 : 0.25);
         if (shouldQuit()) break;
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_.get(), &width, &height);
@@ -285,9 +287,8 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
         ImGui_ImplVulkan_RenderDrawData(drawData, commands);
     };
     Rgba8Image captured;
-    const bool drawn = renderer_->drawFrame(
-        VkExtent2D{std::uint32_t(width), std::uint32_t(height)}, recording,
-        captureNow ? &captured : nullptr);
+    const bool drawn = renderer_->drawFrame(VkExtent2D{std::uint32_t(width), std::uint32_t(height)},
+                                            recording, captureNow ? &captured : nullptr);
     if (drawn && captureNow) saveScreenshot(captured, *captureNow);
     if (!drawn && captureNow) screenshotPath = captureNow;  // try again next frame
     return drawn;

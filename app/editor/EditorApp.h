@@ -14,7 +14,7 @@ struct EditorOptions {
     Preset preset;
     std::filesystem::path presetFile;
     std::vector<ScriptAction> script;
-    int maxFrames = 0;  // 0: until the window closes
+    int maxFrames = 0;     // 0: until the window closes
     bool gpuTiles = true;  // render candidate tiles on the GPU when a device is usable
     bool validation = false;
     bool reportTimings = false;

@@ -13,8 +13,8 @@ using Kind = ScriptAction::Kind;
 
 struct Grammar {
     Kind kind;
-    int numbers;   // integer arguments
-    bool text;     // one word argument after the numbers
+    int numbers;  // integer arguments
+    bool text;    // one word argument after the numbers
 };
 
 const std::map<std::string, Grammar>& grammar() {

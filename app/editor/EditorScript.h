@@ -22,8 +22,20 @@ namespace matevo::editor {
 
 struct ScriptAction {
     enum class Kind {
-        Wait, WaitEvolution, Population, Generations, Seed, Metric, Heatmap, Select, Undo,
-        Redo, Resize, Screenshot, Save, Quit
+        Wait,
+        WaitEvolution,
+        Population,
+        Generations,
+        Seed,
+        Metric,
+        Heatmap,
+        Select,
+        Undo,
+        Redo,
+        Resize,
+        Screenshot,
+        Save,
+        Quit
     };
     Kind kind = Kind::Wait;
     long long first = 0;   // the first number argument

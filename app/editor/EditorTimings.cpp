@@ -48,8 +48,8 @@ std::string EditorTimings::report() const {
                   "\"change_to_first_grid_ms\":%.1f,\"change_to_final_grid_ms\":%.1f,"
                   "\"changes\":%zu}",
                   median(idleFrames_), idleFrames_.size(), median(evolvingFrames_),
-                  evolvingFrames_.size(), median(changeToFirstGrid_),
-                  median(changeToFinalGrid_), changeToFirstGrid_.size());
+                  evolvingFrames_.size(), median(changeToFirstGrid_), median(changeToFinalGrid_),
+                  changeToFirstGrid_.size());
     return line;
 }
 

@@ -3,15 +3,18 @@
 #include <algorithm>
 #include <numeric>
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 namespace matevo::editor {
 namespace {
 
 double meanOf(const std::vector<CandidateResult>& candidates) {
     if (candidates.empty()) return 0.0;
-    return std::accumulate(candidates.begin(), candidates.end(), 0.0,
-                           [](double sum, const CandidateResult& c) {
-                               return sum + c.deltaE.stats.mean;
-                           }) /
+    return std::accumulate(
+               candidates.begin(), candidates.end(), 0.0,
+               [](double sum, const CandidateResult& c) { return sum + c.deltaE.stats.mean; }) /
            double(candidates.size());
 }
 
@@ -19,8 +22,7 @@ double meanOf(const std::vector<CandidateResult>& candidates) {
 
 EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate, bool useGpu, bool validation)
     : onUpdate_(std::move(onUpdate)),
-      renderCache_(kTileSize, kTargetSize, kRenderCacheSize, useGpu, validation),
-      thread_([this] { run(); }) {}
+      thread_([this, useGpu, validation] { run(useGpu, validation); }) {}
 
 EvolutionWorker::~EvolutionWorker() {
     {
@@ -67,7 +69,12 @@ void EvolutionWorker::publish(EvolutionUpdate update) {
     onUpdate_();
 }
 
-void EvolutionWorker::run() {
+void EvolutionWorker::run(bool useGpu, bool validation) {
+    // Below the UI thread, so frames stay smooth while the GA runs. Render and ΔE00 helper
+    // threads, and the worker's own lavapipe threads, inherit the niceness from this thread.
+    setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), kWorkerNiceness);
+    CandidateRenderCache renderCache(kTileSize, kTargetSize, kRenderCacheSize, useGpu,
+                                     validation);
     for (;;) {
         EvolutionJob job;
         std::uint64_t jobId = 0;
@@ -80,7 +87,8 @@ void EvolutionWorker::run() {
             jobId = latestJobId_.load();
             working_ = true;
         }
-        evolve(job, jobId);
+        evolve(job, jobId, renderCache);
+        validationMessages_.store(renderCache.validationMessages());
         {
             std::lock_guard lock(mutex_);
             working_ = false;
@@ -89,19 +97,20 @@ void EvolutionWorker::run() {
     }
 }
 
-void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId) {
+void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
+                             CandidateRenderCache& renderCache) {
     const Preset& preset = job.preset;
     EvolutionUpdate update;
     update.jobId = jobId;
     update.totalGenerations = preset.ga.generations;
-    if (Status ready = renderCache_.prepare(preset, job.presetFile); !ready) {
+    if (Status ready = renderCache.prepare(preset, job.presetFile); !ready) {
         update.finished = true;
         update.error = ready.error().message;
         publish(std::move(update));
         return;
     }
-    update.target = renderCache_.target();
-    update.backend = renderCache_.backendName();
+    update.target = renderCache.target();
+    update.backend = renderCache.backendName();
 
     GeneticAlgorithm ga(preset.family, preset.target, preset.ga);
     ga.initialize();
@@ -111,7 +120,7 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId) {
         std::vector<Genome> shown;
         for (std::size_t i = 0; i < ranked.size() && i < kGridTiles; ++i)
             shown.push_back(ranked[i].genome);
-        auto tiles = renderCache_.tiles(shown, [&] { return cancelled(jobId); });
+        auto tiles = renderCache.tiles(shown, [&] { return cancelled(jobId); });
         if (!tiles || cancelled(jobId)) return;
         update.candidates.clear();
         for (std::size_t i = 0; i < shown.size(); ++i)

@@ -39,8 +39,8 @@ struct EvolutionUpdate {
     std::uint64_t jobId = 0;
     int totalGenerations = 0;
     bool finished = false;
-    Image target;  // large, for the target panel
-    std::string backend;  // what rendered the tiles: "GPU (name)" or "CPU"
+    Image target;                             // large, for the target panel
+    std::string backend;                      // what rendered the tiles: "GPU (name)" or "CPU"
     std::vector<CandidateResult> candidates;  // best first
     std::vector<ui::GenerationPoint> history;
     std::string error;  // the job could not run (e.g. a missing texture)
@@ -52,6 +52,7 @@ public:
     static constexpr int kTileSize = 128;
     static constexpr int kTargetSize = 320;
     static constexpr std::size_t kRenderCacheSize = 128;  // tiles (~50 MB)
+    static constexpr int kWorkerNiceness = 5;
 
     // Tiles render on the GPU when `useGpu` and a device is usable; with `validation` the
     // worker's GPU context runs under the Vulkan validation layer.
@@ -70,13 +71,12 @@ public:
     int validationMessages() const { return validationMessages_.load(); }
 
 private:
-    void run();
-    void evolve(const EvolutionJob& job, std::uint64_t jobId);
+    void run(bool useGpu, bool validation);
+    void evolve(const EvolutionJob& job, std::uint64_t jobId, CandidateRenderCache& renderCache);
     bool cancelled(std::uint64_t jobId) const;
     void publish(EvolutionUpdate update);
 
     std::function<void()> onUpdate_;
-    CandidateRenderCache renderCache_;  // used by the worker thread only
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<EvolutionJob> pending_;

@@ -64,7 +64,8 @@ EditorTexture::EditorTexture(const VulkanContext& context, VkDescriptorSetLayout
     allocate.descriptorPool = pool_;
     allocate.descriptorSetCount = 1;
     allocate.pSetLayouts = &layout;
-    check(vkAllocateDescriptorSets(device_, &allocate, &descriptorSet_), "vkAllocateDescriptorSets");
+    check(vkAllocateDescriptorSets(device_, &allocate, &descriptorSet_),
+          "vkAllocateDescriptorSets");
     VkDescriptorImageInfo imageInfo{sampler, view_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkWriteDescriptorSet write{};
     write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
@@ -101,11 +102,11 @@ void EditorTexture::recordUpload(VkCommandBuffer commands) {
     region.imageExtent = {std::uint32_t(width_), std::uint32_t(height_), 1};
     vkCmdCopyBufferToImage(commands, staging_.buffer(), image_,
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    recordTransition(commands, image_,
-                     {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT});
+    recordTransition(
+        commands, image_,
+        {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+         VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT});
     staged_ = false;
     initialised_ = true;
 }
@@ -274,8 +275,7 @@ void ImageBridge::prepare(ImDrawData& drawData, VkCommandBuffer commands) {
                 continue;
             }
             draws_.push_back({this, static_cast<const EditorTexture*>(command.TextureId),
-                              command.ClipRect, command.ElemCount,
-                              command.IdxOffset + globalIndex,
+                              command.ClipRect, command.ElemCount, command.IdxOffset + globalIndex,
                               int(command.VtxOffset) + globalVertex});
             ImDrawCmd callback = command;
             callback.UserCallback = &ImageBridge::drawCallback;
@@ -299,8 +299,10 @@ void ImageBridge::drawCallback(const ImDrawList*, const ImDrawCmd* command) {
 void ImageBridge::draw(const ImageDraw& image) const {
     const float framebufferWidth = displaySize_.x * framebufferScale_.x;
     const float framebufferHeight = displaySize_.y * framebufferScale_.y;
-    const float clipX0 = std::max(0.0f, (image.clipRect.x - displayPosition_.x) * framebufferScale_.x);
-    const float clipY0 = std::max(0.0f, (image.clipRect.y - displayPosition_.y) * framebufferScale_.y);
+    const float clipX0 =
+        std::max(0.0f, (image.clipRect.x - displayPosition_.x) * framebufferScale_.x);
+    const float clipY0 =
+        std::max(0.0f, (image.clipRect.y - displayPosition_.y) * framebufferScale_.y);
     const float clipX1 =
         std::min(framebufferWidth, (image.clipRect.z - displayPosition_.x) * framebufferScale_.x);
     const float clipY1 =
@@ -309,8 +311,8 @@ void ImageBridge::draw(const ImageDraw& image) const {
 
     vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     const VkDescriptorSet set = image.texture->descriptorSet();
-    vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1,
-                            &set, 0, nullptr);
+    vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set,
+                            0, nullptr);
     const VkViewport viewport{0, 0, framebufferWidth, framebufferHeight, 0, 1};
     vkCmdSetViewport(commands_, 0, 1, &viewport);
     const VkRect2D scissor{{std::int32_t(clipX0), std::int32_t(clipY0)},

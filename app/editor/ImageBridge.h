@@ -31,7 +31,7 @@ public:
     VkDescriptorSet descriptorSet() const { return descriptorSet_; }
     ImTextureID id() { return static_cast<ImTextureID>(this); }
 
-    void stage(const Rgba8Image& pixels);  // copies into the staging buffer
+    void stage(const Rgba8Image& pixels);         // copies into the staging buffer
     void recordUpload(VkCommandBuffer commands);  // no-op unless something was staged
 
 private:

@@ -55,8 +55,8 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, bool evol
             ga.metric = *parseDistanceMetric(action.text);
             return true;
         case Kind::Heatmap:
-            state.heatmap.enabled = action.text == "toggle" ? !state.heatmap.enabled
-                                                            : action.text == "on";
+            state.heatmap.enabled =
+                action.text == "toggle" ? !state.heatmap.enabled : action.text == "on";
             return true;
         case Kind::Select:
             state.selectedCandidate = int(action.first);

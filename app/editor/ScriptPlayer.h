@@ -24,6 +24,10 @@ public:
     explicit ScriptPlayer(std::vector<ScriptAction> actions);
 
     bool finished() const { return next_ >= actions_.size(); }
+    // The next action waits for the GA run: frames are needed only when results arrive.
+    bool waitingForEvolution() const {
+        return !finished() && actions_[next_].kind == ScriptAction::Kind::WaitEvolution;
+    }
     // Runs the actions due this frame; `evolutionSettled` says the GA run is done and shown.
     ScriptEffects step(ui::EditorUi& ui, bool evolutionSettled);
 

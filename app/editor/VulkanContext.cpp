@@ -30,8 +30,7 @@ void check(VkResult result, const char* what) {
                                  std::to_string(int(result)) + ")");
 }
 
-Result<std::unique_ptr<VulkanContext>> VulkanContext::create(GLFWwindow* window,
-                                                             bool validation) {
+Result<std::unique_ptr<VulkanContext>> VulkanContext::create(GLFWwindow* window, bool validation) {
     std::unique_ptr<VulkanContext> context(new VulkanContext());
     if (Status s = context->createInstance(validation); !s) return s.error();
     if (glfwCreateWindowSurface(context->instance_, window, nullptr, &context->surface_) !=
@@ -97,7 +96,8 @@ Status VulkanContext::createInstance(bool validation) {
     if (validation) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        check(create(instance_, &messenger, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
+        check(create(instance_, &messenger, nullptr, &messenger_),
+              "vkCreateDebugUtilsMessengerEXT");
     }
     return Ok{};
 }
@@ -209,8 +209,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL VulkanContext::onDebugMessage(
     const VkDebugUtilsMessengerCallbackDataEXT* data, void* self) {
     static_cast<VulkanContext*>(self)->validationMessages_.fetch_add(1);
     const bool error = severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    std::fprintf(stderr, "vulkan validation %s: %s\n", error ? "error" : "warning",
-                 data->pMessage);
+    std::fprintf(stderr, "vulkan validation %s: %s\n", error ? "error" : "warning", data->pMessage);
     return VK_FALSE;
 }
 

@@ -187,9 +187,8 @@ bool WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& recording,
     Frame& frame = frames_[frameIndex_];
     check(vkWaitForFences(device_, 1, &frame.done, VK_TRUE, UINT64_MAX), "vkWaitForFences");
     std::uint32_t imageIndex = 0;
-    const VkResult acquired = vkAcquireNextImageKHR(device_, swapchain_, UINT64_MAX,
-                                                    frame.imageAcquired, VK_NULL_HANDLE,
-                                                    &imageIndex);
+    const VkResult acquired = vkAcquireNextImageKHR(
+        device_, swapchain_, UINT64_MAX, frame.imageAcquired, VK_NULL_HANDLE, &imageIndex);
     if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
         needsRebuild_ = true;
         return false;
@@ -254,10 +253,11 @@ void WindowRenderer::recordCapture(VkCommandBuffer commands, std::uint32_t image
     if (!readback_ || readback_->size() < bytes)
         readback_ = std::make_unique<HostBuffer>(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     VkImage image = images_[imageIndex];
-    recordTransition(commands, image,
-                     {VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
-                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT});
+    recordTransition(
+        commands, image,
+        {VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+         VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+         VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT});
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {extent_.width, extent_.height, 1};
@@ -275,8 +275,8 @@ void WindowRenderer::recordCapture(VkCommandBuffer commands, std::uint32_t image
     toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     toHost.buffer = readback_->buffer();
     toHost.size = VK_WHOLE_SIZE;
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
-                         0, nullptr, 1, &toHost, 0, nullptr);
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0,
+                         nullptr, 1, &toHost, 0, nullptr);
 }
 
 void WindowRenderer::finishCapture(const Frame& frame, Rgba8Image& capture) {

@@ -36,8 +36,7 @@ public:
     // Draws and presents one frame at the window's framebuffer size. Returns false when the
     // frame was skipped because the swapchain had to be rebuilt. With `capture`, the frame is
     // also read back (this waits for it to finish).
-    bool drawFrame(VkExtent2D size, const FrameRecording& recording,
-                   Rgba8Image* capture = nullptr);
+    bool drawFrame(VkExtent2D size, const FrameRecording& recording, Rgba8Image* capture = nullptr);
     // Waits until no frame is in flight, so resources they use may be changed.
     void waitIdle();
 

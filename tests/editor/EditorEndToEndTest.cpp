@@ -43,8 +43,7 @@ std::vector<Blob> spheres(const Screenshot& shot, const PixelRect& area, int min
         const double width = blob.bounds.x1 - blob.bounds.x0;
         const double height = blob.bounds.y1 - blob.bounds.y0;
         // A sphere's lit part is compact and about as wide as it is tall.
-        if (width / height > 0.6 && width / height < 1.6 &&
-            blob.pixels > 0.45 * width * height)
+        if (width / height > 0.6 && width / height < 1.6 && blob.pixels > 0.45 * width * height)
             round.push_back(blob);
     }
     return round;
@@ -61,16 +60,24 @@ protected:
                   "metric manhattan\n"
                   "generations 4\n"
                   "wait-evolution\n"
-                  "resize " << kWidth << " " << kHeight << "\n"
+                  "resize "
+               << kWidth << " " << kHeight
+               << "\n"
                   "wait 3\n"
-                  "screenshot " << (dir / "heatmap.png").string() << "\n"
+                  "screenshot "
+               << (dir / "heatmap.png").string()
+               << "\n"
                   "heatmap toggle\n"
                   "wait 2\n"
-                  "screenshot " << (dir / "plain.png").string() << "\n"
+                  "screenshot "
+               << (dir / "plain.png").string()
+               << "\n"
                   "heatmap toggle\n"
                   "select 0\n"
                   "wait 2\n"
-                  "save " << (dir / "saved.json").string() << "\n"
+                  "save "
+               << (dir / "saved.json").string()
+               << "\n"
                   "quit\n";
     }
     void TearDown() override { fs::remove_all(dir); }
@@ -81,11 +88,11 @@ protected:
 TEST_F(EditorEndToEnd, ScriptedSessionShowsTargetAndGridOfDistinctSpheresWithHeatmap) {
     fs::create_directories(dir / "config");
     fs::create_directories(dir / "cwd");
-    const std::string command =
-        "cd '" + (dir / "cwd").string() + "' && XDG_CONFIG_HOME='" + (dir / "config").string() +
-        "' '" + MATEVO_BINARY_DIR + "/matevo' edit '" + MATEVO_SOURCE_DIR +
-        "/presets/validation_metal.json' --validate --script '" + (dir / "script.txt").string() +
-        "' --frames 100000";
+    const std::string command = "cd '" + (dir / "cwd").string() + "' && XDG_CONFIG_HOME='" +
+                                (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+                                "/matevo' edit '" + MATEVO_SOURCE_DIR +
+                                "/presets/validation_metal.json' --validate --script '" +
+                                (dir / "script.txt").string() + "' --frames 100000";
     const CommandOutput run = runCommand(command);
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.err.find("validation"), std::string::npos) << run.err;
@@ -143,8 +150,7 @@ TEST(EditorWithoutDisplay, SaysSoNamesTheHeadlessCommandsAndExits2) {
 TEST(EditorScript, BadScriptIsBadUsageNamingFileAndLine) {
     const fs::path dir = freshDirectory("script");
     std::ofstream(dir / "bad.txt") << "wait 2\npopulation many\n";
-    const CommandOutput run =
-        runMatevo("edit --script '" + (dir / "bad.txt").string() + "'");
+    const CommandOutput run = runMatevo("edit --script '" + (dir / "bad.txt").string() + "'");
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_NE(run.err.find("bad.txt:2: population"), std::string::npos) << run.err;
     fs::remove_all(dir);

@@ -41,11 +41,13 @@ std::vector<Blob> Screenshot::litBlobs(const PixelRect& area, int minPixels) con
                 for (int c = 0; c < 3; ++c) sums[c] += pixel(px, py)[c];
                 blob.bounds = {std::min(blob.bounds.x0, px), std::min(blob.bounds.y0, py),
                                std::max(blob.bounds.x1, px + 1), std::max(blob.bounds.y1, py + 1)};
-                const int neighbours[4][2] = {{px + 1, py}, {px - 1, py}, {px, py + 1}, {px, py - 1}};
+                const int neighbours[4][2] = {
+                    {px + 1, py}, {px - 1, py}, {px, py + 1}, {px, py - 1}};
                 for (const auto& n : neighbours) {
                     if (n[0] < area.x0 || n[0] >= area.x1 || n[1] < area.y0 || n[1] >= area.y1)
                         continue;
-                    const std::size_t next = std::size_t(n[1]) * std::size_t(width_) + std::size_t(n[0]);
+                    const std::size_t next =
+                        std::size_t(n[1]) * std::size_t(width_) + std::size_t(n[0]);
                     if (seen[next] || !lit(n[0], n[1])) continue;
                     seen[next] = 1;
                     stack.push_back({n[0], n[1]});

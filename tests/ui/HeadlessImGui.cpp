@@ -9,9 +9,9 @@ HeadlessImGui::HeadlessImGui(ImVec2 displaySize) : context_(ImGui::CreateContext
     io.IniFilename = nullptr;
     io.DisplaySize = displaySize;
     io.DeltaTime = 1.0f / 60.0f;
-    // Letters map to their ASCII codes, as GLFW numbers them.
-    io.KeyMap[ImGuiKey_Z] = 'Z';
-    io.KeyMap[ImGuiKey_Y] = 'Y';
+    // Letters map to their ASCII codes, as GLFW numbers them; Enter and Escape as in GLFW.
+    for (ImGuiKey key : {ImGuiKey_A, ImGuiKey_C, ImGuiKey_V, ImGuiKey_X, ImGuiKey_Y, ImGuiKey_Z})
+        io.KeyMap[key] = "ACVXYZ"[key - ImGuiKey_A];
     io.KeyMap[ImGuiKey_Enter] = 257;
     io.KeyMap[ImGuiKey_Escape] = 256;
     unsigned char* pixels = nullptr;
