@@ -35,11 +35,14 @@ protected:
     void TearDown() override { fs::remove_all(out_); }
 
     // A small experiment on validation metal: 3 metrics x 3 runs, population 6, 2 generations.
+    static std::string smallArguments(const fs::path& out, const std::string& extra) {
+        return "experiment --preset " + presetFile("validation_metal.json") +
+               " --runs 3 --runs-per-seed 2 --population 6 --generations 2 --size 24"
+               " --backend cpu --out '" +
+               out.string() + "' " + extra;
+    }
     testing::CommandOutput runSmall(const fs::path& out, const std::string& extra = "") {
-        return runMatevo("experiment --preset " + presetFile("validation_metal.json") +
-                         " --runs 3 --runs-per-seed 2 --population 6 --generations 2 --size 24"
-                         " --backend cpu --out '" +
-                         out.string() + "' " + extra);
+        return runMatevo(smallArguments(out, extra));
     }
 
     static std::string readFile(const fs::path& file) {
@@ -110,7 +113,12 @@ TEST_F(ExperimentCommand, GpuBackendScoresTheSameRunsAsTheCpuReference) {
         return rows;
     };
     const auto cpu = runSmall(out_ / "cpu");
-    const auto gpu = runSmall(out_ / "gpu", "--backend gpu");
+    // Lavapipe leaks 128 bytes from JIT-compiled code (an "<unknown module>" frame; `matevo
+    // render --backend gpu` shows the same), which LeakSanitizer cannot attribute or suppress.
+    // Only this process skips leak detection; ASAN_OPTIONS means nothing without ASan.
+    const auto gpu =
+        testing::runCommand("ASAN_OPTIONS=detect_leaks=0 '" + std::string(MATEVO_BINARY_DIR) +
+                            "/matevo' " + smallArguments(out_ / "gpu", "--backend gpu"));
     ASSERT_EQ(cpu.exitCode, 0) << cpu.err;
     ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
     for (const auto* output : {&gpu.out, &gpu.err})
