@@ -3,10 +3,12 @@
 
 #include "BenchReport.h"
 #include "Timing.h"
+#include "color/Colormap.h"
 #include "color/ImageDifference.h"
 #include "evolve/GenomeSampling.h"
 #include "gpu/GpuContext.h"
 #include "gpu/GpuPopulationEvaluator.h"
+#include "gpu/HeatmapColormap.h"
 #include "material/FgdTableCache.h"
 #include "scene/SphereRenderer.h"
 
@@ -33,18 +35,9 @@ Grid makeGrid() {
     return grid;
 }
 
-gpu::DeltaE00Pass::Colormap greyColormap() {
-    gpu::DeltaE00Pass::Colormap colormap{};
-    for (std::size_t i = 0; i < colormap.size(); ++i) {
-        const float level = float(i) / float(colormap.size() - 1);
-        colormap[i] = {level, level, level, 1.0f};
-    }
-    return colormap;
-}
-
 // The same work on the CPU: render everything, ΔE00 of each candidate against the target, and
 // the heatmap colouring.
-double cpuGridMilliseconds(const Grid& grid, const gpu::DeltaE00Pass::Colormap& colormap) {
+double cpuGridMilliseconds(const Grid& grid) {
     const SceneTextures textures;
     const SceneSettings scene;
     return medianMilliseconds(3, [&] {
@@ -52,12 +45,7 @@ double cpuGridMilliseconds(const Grid& grid, const gpu::DeltaE00Pass::Colormap& 
         for (const MaterialInstance& candidate : grid.candidates) {
             const Image image = renderSphereCpu(candidate, textures, scene, kImageSize);
             auto map = compareImages(target, image);
-            Image heatmap(kImageSize, kImageSize);
-            for (std::size_t p = 0; p < map->deltaE.size(); ++p) {
-                if (!map->covered[p]) continue;
-                const auto entry = colormap[std::size_t(std::min(map->deltaE[p] / 10.0f, 1.0f) * 255.0f + 0.5f)];
-                std::copy(entry.begin(), entry.end(), heatmap.rgba.begin() + std::ptrdiff_t(p * 4));
-            }
+            const Image heatmap = heatmapImage(*map, HeatmapSettings{});
         }
     });
 }
@@ -66,7 +54,7 @@ double cpuGridMilliseconds(const Grid& grid, const gpu::DeltaE00Pass::Colormap& 
 
 void benchGpuGrid(BenchReport& report) {
     const Grid grid = makeGrid();
-    const auto colormap = greyColormap();
+    const auto colormap = gpu::heatmapColormap();
     (void)defaultFgdTables();  // table generation or loading is not part of the figure
     auto context = gpu::GpuContext::createHeadless();
     if (!context) {
@@ -91,7 +79,7 @@ void benchGpuGrid(BenchReport& report) {
                                       ": render + ΔE00 + heatmaps + read-back"});
         }
     }
-    report.push_back({"cpu_grid64_ms", cpuGridMilliseconds(grid, colormap),
+    report.push_back({"cpu_grid64_ms", cpuGridMilliseconds(grid),
                       "the same grid on the CPU reference renderer and core/color"});
 }
 
