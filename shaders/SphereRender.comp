@@ -1,10 +1,10 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The paper's test scene on the GPU, one invocation per pixel and material: the same camera,
-// 2 x 2 subsamples, coverage alpha, sphere UV mapping, textures and shading as the CPU
-// reference (core/scene/SphereRenderer.cpp), with the lobes interpolated from the material's
-// LobeTable (core/material/LobeTable.h). Workgroups along y are materials, so the branch on
-// the table's shape does not diverge.
+// 2 x 2 subsamples (interior pixels shaded once at the centre), coverage alpha, sphere UV
+// mapping, textures and shading as the CPU reference (core/scene/SphereRenderer.cpp), with the
+// lobes interpolated from the material's LobeTable (core/material/LobeTable.h). Workgroups
+// along y are materials, so the branch on the table's shape does not diverge.
 layout(local_size_x = 64) in;
 
 struct Material {
@@ -99,6 +99,28 @@ vec3 shade(Material material, vec3 normal, vec3 toViewer) {
     return reflected + environmentReflectance(lobes) * scene.environmentRadiance.rgb;
 }
 
+// Where the ray through image position p (pixels, y down) meets the sphere; false on a miss.
+bool traceSphere(vec2 p, int size, out vec3 normal, out vec3 toViewer) {
+    vec3 origin = scene.cameraPosition.xyz;
+    float tanHalfFov = scene.cameraForward.w;
+    vec2 ndc = vec2(2.0 * p.x / size - 1.0, 1.0 - 2.0 * p.y / size);
+    vec3 direction = normalize(scene.cameraForward.xyz +
+                               ndc.x * tanHalfFov * scene.cameraRight.xyz +
+                               ndc.y * tanHalfFov * scene.cameraUp.xyz);
+    float b = dot(origin, direction);
+    float discriminant = b * b - (dot(origin, origin) - 1.0);
+    if (discriminant < 0.0) return false;
+    float distance = -b - sqrt(discriminant);
+    if (distance <= 0.0) return false;
+    normal = normalize(origin + distance * direction);
+    toViewer = -direction;
+    return true;
+}
+
+vec2 subsampleOffset(int i) {
+    return (vec2(i % kSubsamplesPerAxis, i / kSubsamplesPerAxis) + 0.5) / float(kSubsamplesPerAxis);
+}
+
 void main() {
     int size = int(scene.cameraPosition.w);
     uint pixelCount = uint(size * size);
@@ -106,32 +128,32 @@ void main() {
     if (pixel >= pixelCount) return;
 
     Material material = materials[gl_GlobalInvocationID.y];
-    vec3 origin = scene.cameraPosition.xyz;
-    float tanHalfFov = scene.cameraForward.w;
-    int x = int(pixel % uint(size));
-    int y = int(pixel / uint(size));
+    vec2 corner = vec2(pixel % uint(size), pixel / uint(size));
 
-    vec3 sum = vec3(0.0);
+    const int kSubsamples = kSubsamplesPerAxis * kSubsamplesPerAxis;
+    vec3 normal;
+    vec3 toViewer;
     int hits = 0;
-    for (int sy = 0; sy < kSubsamplesPerAxis; ++sy) {
-        for (int sx = 0; sx < kSubsamplesPerAxis; ++sx) {
-            float ndcX = 2.0 * (float(x) + (float(sx) + 0.5) / kSubsamplesPerAxis) / size - 1.0;
-            float ndcY = 1.0 - 2.0 * (float(y) + (float(sy) + 0.5) / kSubsamplesPerAxis) / size;
-            vec3 direction = normalize(scene.cameraForward.xyz +
-                                       ndcX * tanHalfFov * scene.cameraRight.xyz +
-                                       ndcY * tanHalfFov * scene.cameraUp.xyz);
-            float b = dot(origin, direction);
-            float discriminant = b * b - (dot(origin, origin) - 1.0);
-            if (discriminant < 0.0) continue;
-            float distance = -b - sqrt(discriminant);
-            if (distance <= 0.0) continue;
-            vec3 normal = normalize(origin + distance * direction);
-            sum += shade(material, normal, -direction);
-            ++hits;
-        }
+    for (int i = 0; i < kSubsamples; ++i) {
+        if (traceSphere(corner + subsampleOffset(i), size, normal, toViewer)) ++hits;
     }
     uint index = gl_GlobalInvocationID.y * pixelCount + pixel;
-    renderPixels[index] = hits == 0 ? vec4(0.0)
-                                    : vec4(sum / float(hits),
-                                           float(hits) / float(kSubsamplesPerAxis * kSubsamplesPerAxis));
+    if (hits == 0) {
+        renderPixels[index] = vec4(0.0);
+        return;
+    }
+    // Interior pixels shade once, at the centre, as on the CPU; the silhouette keeps its
+    // subsamples (traced again: cheaper on lavapipe than keeping their hit points).
+    vec3 radiance = vec3(0.0);
+    if (hits == kSubsamples && traceSphere(corner + 0.5, size, normal, toViewer)) {
+        radiance = shade(material, normal, toViewer);
+    } else {
+        for (int i = 0; i < kSubsamples; ++i) {
+            if (traceSphere(corner + subsampleOffset(i), size, normal, toViewer)) {
+                radiance += shade(material, normal, toViewer);
+            }
+        }
+        radiance /= float(hits);
+    }
+    renderPixels[index] = vec4(radiance, float(hits) / float(kSubsamples));
 }

@@ -1,8 +1,10 @@
 #include "scene/SphereRenderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -80,6 +82,19 @@ struct Shader {
     }
 };
 
+// Where the ray through image position (x, y) meets the sphere.
+struct SurfacePoint {
+    glm::dvec3 normal;
+    glm::dvec3 toViewer;
+};
+
+std::optional<SurfacePoint> traceSphere(const Camera& camera, double x, double y, int size) {
+    const glm::dvec3 direction = camera.direction(x, y, size);
+    const double distance = hitUnitSphere(camera.position, direction);
+    if (distance <= 0.0) return std::nullopt;
+    return SurfacePoint{glm::normalize(camera.position + distance * direction), -direction};
+}
+
 template <class LobesAt>
 Image renderSphere(const LobesAt& lobesAt, const SceneTextures& textures,
                    const SceneSettings& scene, int size) {
@@ -88,30 +103,37 @@ Image renderSphere(const LobesAt& lobesAt, const SceneTextures& textures,
     const Shader<LobesAt> shader{lobesAt, textures, glm::normalize(toVector(scene.lightDirection)),
                                  toVector(scene.lightRadiance),
                                  toVector(scene.environmentRadiance)};
-    const int subsamples = kSubsamplesPerAxis * kSubsamplesPerAxis;
+    constexpr int subsamples = kSubsamplesPerAxis * kSubsamplesPerAxis;
 
     auto renderRows = [&](int chunk) {
         const int lastRow = std::min(size, (chunk + 1) * kRowsPerChunk);
         for (int y = chunk * kRowsPerChunk; y < lastRow; ++y) {
             for (int x = 0; x < size; ++x) {
-                glm::dvec3 sum(0.0);
+                std::array<SurfacePoint, subsamples> hitPoints;
                 int hits = 0;
                 for (int sy = 0; sy < kSubsamplesPerAxis; ++sy) {
                     for (int sx = 0; sx < kSubsamplesPerAxis; ++sx) {
-                        const glm::dvec3 direction =
-                            camera.direction(x + (sx + 0.5) / kSubsamplesPerAxis,
-                                             y + (sy + 0.5) / kSubsamplesPerAxis, size);
-                        const double distance = hitUnitSphere(camera.position, direction);
-                        if (distance <= 0.0) continue;
-                        const glm::dvec3 normal =
-                            glm::normalize(camera.position + distance * direction);
-                        sum += shader.radiance(normal, -direction);
-                        ++hits;
+                        const auto point = traceSphere(camera, x + (sx + 0.5) / kSubsamplesPerAxis,
+                                                       y + (sy + 0.5) / kSubsamplesPerAxis, size);
+                        if (point) hitPoints[hits++] = *point;
                     }
                 }
-                float* pixel = image.pixel(x, y);
                 if (hits == 0) continue;
-                for (int c = 0; c < 3; ++c) pixel[c] = float(sum[c] / hits);
+                // Interior pixels shade once, at the centre: shading dominates the cost and the
+                // radiance barely varies across one pixel; the silhouette keeps its subsamples.
+                const auto centre =
+                    hits == subsamples ? traceSphere(camera, x + 0.5, y + 0.5, size) : std::nullopt;
+                glm::dvec3 radiance(0.0);
+                if (centre) {
+                    radiance = shader.radiance(centre->normal, centre->toViewer);
+                } else {
+                    for (int i = 0; i < hits; ++i) {
+                        radiance += shader.radiance(hitPoints[i].normal, hitPoints[i].toViewer);
+                    }
+                    radiance /= hits;
+                }
+                float* pixel = image.pixel(x, y);
+                for (int c = 0; c < 3; ++c) pixel[c] = float(radiance[c]);
                 pixel[3] = float(hits) / float(subsamples);
             }
         }

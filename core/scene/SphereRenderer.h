@@ -4,8 +4,9 @@
 // Scene (docs/scene.md): a unit sphere at the origin; a pinhole camera at
 // SceneSettings::cameraPosition looking at the origin, +y up, vertical field of view
 // fieldOfViewDegrees, square image. Each pixel takes 2 x 2 subsamples at offsets (0.25, 0.75);
-// a subsample's ray hits the sphere or not, alpha = the fraction that hit (coverage), RGB = the
-// mean radiance of the hits, not premultiplied; the background is (0, 0, 0, 0).
+// a subsample's ray hits the sphere or not, alpha = the fraction that hit (coverage). RGB, not
+// premultiplied: interior pixels (every subsample hit) are shaded once at the pixel centre,
+// silhouette pixels take the mean radiance of their hits; the background is (0, 0, 0, 0).
 // Shading at a hit with normal n, view v, light direction l (normalised lightDirection):
 //   L = f_r(v, l) * lightRadiance * max(0, n.l) + (e_coat + e_base) * environmentRadiance
 // with the lobes at cos_view = n.v (Forward model) from the material's LobeTable (the adding

@@ -1,5 +1,5 @@
 // The error the lobe table adds to the renders: both back ends shade from it, so this is the
-// whole of the approximation against the adding loop at every subsample (docs/
+// whole of the approximation against the adding loop at every shading point (docs/
 // belcour-decisions.md quotes the figures this prints).
 #include <algorithm>
 #include <cmath>
