@@ -6,4 +6,4 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
 ./build/matevo evolve --out out "$@"
-echo "matevo: result written to out/ (out/result.json)"
+echo "matevo: written to out/: result.json, target.png, candidates/ and heatmaps/ (best first)"

@@ -113,12 +113,7 @@ TEST_F(ExperimentCommand, GpuBackendScoresTheSameRunsAsTheCpuReference) {
         return rows;
     };
     const auto cpu = runSmall(out_ / "cpu");
-    // Lavapipe leaks 128 bytes from JIT-compiled code (an "<unknown module>" frame; `matevo
-    // render --backend gpu` shows the same), which LeakSanitizer cannot attribute or suppress.
-    // Only this process skips leak detection; ASAN_OPTIONS means nothing without ASan.
-    const auto gpu =
-        testing::runCommand("ASAN_OPTIONS=detect_leaks=0 '" + std::string(MATEVO_BINARY_DIR) +
-                            "/matevo' " + smallArguments(out_ / "gpu", "--backend gpu"));
+    const auto gpu = runMatevo(smallArguments(out_ / "gpu", "--backend gpu"));
     ASSERT_EQ(cpu.exitCode, 0) << cpu.err;
     ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
     for (const auto* output : {&gpu.out, &gpu.err})
