@@ -22,7 +22,8 @@ nlohmann::json configJson(const Preset& preset) {
 
 }  // namespace
 
-nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga) {
+nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga,
+                            const std::vector<Individual>& ranked) {
     nlohmann::json generations = nlohmann::json::array();
     for (const auto& stats : ga.history())
         generations.push_back({{"generation", stats.generation},
@@ -31,7 +32,6 @@ nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga) {
                                {"worst", stats.worst},
                                {"diversity", stats.diversity}});
     nlohmann::json population = nlohmann::json::array();
-    const auto ranked = ga.rankedPopulation();
     for (const auto& individual : ranked)
         population.push_back(
             {{"genome", genomeToJson(individual.genome)}, {"fitness", individual.fitness}});
@@ -52,7 +52,8 @@ void addImageStatistics(nlohmann::json& report, const std::vector<DeltaEStats>& 
     if (!population.empty()) report["best"] = population.front();
 }
 
-void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga, std::FILE* out) {
+void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga,
+                        const std::vector<Individual>& ranked, std::FILE* out) {
     std::fprintf(out, "%s (%s): population %d, %d generations, %s distance, seed %llu\n",
                  preset.name.c_str(), describe(preset.family).c_str(), preset.ga.population,
                  preset.ga.generations, std::string(toString(preset.ga.metric)).c_str(),
@@ -62,7 +63,6 @@ void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga, std::F
     for (const auto& stats : ga.history())
         std::fprintf(out, "%10d %12.6f %12.6f %12.6f %12.6f\n", stats.generation, stats.best,
                      stats.mean, stats.worst, stats.diversity);
-    const auto ranked = ga.rankedPopulation();
     if (ranked.empty()) return;
     std::fprintf(out, "best (fitness %.6f):", ranked.front().fitness);
     for (std::size_t i = 0; i < kChromosomeCount; ++i)

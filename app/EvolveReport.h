@@ -2,6 +2,7 @@
 // The result of `matevo evolve` as the JSON object of the command-line contract, and its
 // human-readable summary.
 #include <cstdio>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -11,9 +12,12 @@
 
 namespace matevo::cli {
 
-nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga);
+// `ranked` is ga.rankedPopulation(), ranked once by the caller for every output.
+nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga,
+                            const std::vector<Individual>& ranked);
 // Adds mean_de00, max_de00 and p95_de00 to each population entry (rank order) and to best.
 void addImageStatistics(nlohmann::json& report, const std::vector<DeltaEStats>& stats);
-void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga, std::FILE* out);
+void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga,
+                        const std::vector<Individual>& ranked, std::FILE* out);
 
 }  // namespace matevo::cli

@@ -99,7 +99,8 @@ int runEvolve(CommandLine& args) {
     }
     if (showProgress) std::fputc('\n', stderr);
 
-    nlohmann::json report = evolveReport(preset, ga);
+    const auto ranked = ga.rankedPopulation();
+    nlohmann::json report = evolveReport(preset, ga, ranked);
     if (outDir) {
         std::error_code error;
         std::filesystem::create_directories(*outDir, error);
@@ -107,7 +108,7 @@ int runEvolve(CommandLine& args) {
             throw UsageError("evolve: --out: cannot create folder '" + *outDir + "' (" +
                              error.message() + ")");
         addImageStatistics(
-            report, writeEvolveImages(choice, ga.rankedPopulation(), imageSize, backend, *outDir));
+            report, writeEvolveImages(choice, ranked, imageSize, backend, *outDir));
         auto file = std::filesystem::path(*outDir) / "result.json";
         auto status = writeFileAtomically(file, report.dump(2) + "\n");
         if (!status) throw UsageError("evolve: " + status.error().message);
@@ -115,7 +116,7 @@ int runEvolve(CommandLine& args) {
     if (asJson)
         std::printf("%s\n", report.dump(2).c_str());
     else
-        printEvolveSummary(preset, ga, stdout);
+        printEvolveSummary(preset, ga, ranked, stdout);
     return 0;
 }
 
