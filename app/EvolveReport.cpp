@@ -2,6 +2,7 @@
 
 #include "genome/Genome.h"
 #include "io/GenomeJson.h"
+#include "io/MaterialFile.h"
 
 namespace matevo::cli {
 
@@ -22,8 +23,8 @@ nlohmann::json configJson(const Preset& preset) {
 
 }  // namespace
 
-nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga,
-                            const std::vector<Individual>& ranked) {
+nlohmann::json evolveReport(const Preset& preset, const std::filesystem::path& presetFile,
+                            const GeneticAlgorithm& ga, const std::vector<Individual>& ranked) {
     nlohmann::json generations = nlohmann::json::array();
     for (const auto& stats : ga.history())
         generations.push_back({{"generation", stats.generation},
@@ -35,11 +36,15 @@ nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga,
     for (const auto& individual : ranked)
         population.push_back(
             {{"genome", genomeToJson(individual.genome)}, {"fitness", individual.fitness}});
-    return {{"target", genomeToJson(preset.target)},
-            {"config", configJson(preset)},
-            {"generations", std::move(generations)},
-            {"population", population},
-            {"best", population.empty() ? nlohmann::json() : population.front()}};
+    nlohmann::json report = {{"target", genomeToJson(preset.target)},
+                             {"config", configJson(preset)},
+                             {"generations", std::move(generations)},
+                             {"population", population},
+                             {"best", population.empty() ? nlohmann::json() : population.front()}};
+    if (!ranked.empty())
+        report["best_material"] = materialToJson(
+            materialFromPreset(preset, presetFile, ranked.front().genome, preset.name + " best"));
+    return report;
 }
 
 void addImageStatistics(nlohmann::json& report, const std::vector<DeltaEStats>& stats) {

@@ -15,7 +15,11 @@ PresetChoice loadPresetFile(const std::filesystem::path& file) {
 }
 
 PresetChoice loadPresetOption(CommandLine& args) {
-    if (auto file = args.option("--preset")) return loadPresetFile(*file);
+    if (auto file = args.option("--preset")) {
+        PresetChoice choice = loadPresetFile(*file);
+        choice.named = true;
+        return choice;
+    }
     auto defaultFile = defaultPresetPath();
     if (!defaultFile) throw std::runtime_error(defaultFile.error().message);
     return loadPresetFile(*defaultFile);

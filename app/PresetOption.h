@@ -11,6 +11,7 @@ namespace matevo::cli {
 struct PresetChoice {
     Preset preset;
     std::filesystem::path file;  // textures are relative to its folder
+    bool named = false;          // given with --preset, not the default
 };
 
 PresetChoice loadPresetOption(CommandLine& args);

@@ -7,7 +7,7 @@
 
 #include "ImageView.h"
 #include "Widgets.h"
-#include "io/GenomeJson.h"
+#include "io/MaterialFile.h"
 
 namespace matevo::ui {
 namespace {
@@ -52,7 +52,11 @@ bool drawActions(EditorState& state, const CandidateView& candidate) {
     }
     ImGui::SameLine();
     if (ImGui::Button("Copy genome as JSON")) {
-        ImGui::SetClipboardText(genomeToJson(candidate.genome).dump(2).c_str());
+        // A whole material file, so that `render --genome` and `export` replay it on its own.
+        const MaterialFile material =
+            materialFromPreset(state.preset, state.presetPath, candidate.genome,
+                               state.preset.name + " candidate " + std::to_string(candidate.rank));
+        ImGui::SetClipboardText(materialToJson(material).dump(2).c_str());
         state.statusMessage = "Copied candidate #" + std::to_string(candidate.rank) + " as JSON";
     }
     return promoted;

@@ -100,7 +100,7 @@ int runEvolve(CommandLine& args) {
     if (showProgress) std::fputc('\n', stderr);
 
     const auto ranked = ga.rankedPopulation();
-    nlohmann::json report = evolveReport(preset, ga, ranked);
+    nlohmann::json report = evolveReport(preset, choice.file, ga, ranked);
     if (outDir) {
         std::error_code error;
         std::filesystem::create_directories(*outDir, error);

@@ -2,10 +2,9 @@
 #include <filesystem>
 #include <string>
 
-#include "PresetOption.h"
+#include "MaterialOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
-#include "io/GenomeJson.h"
 #include "io/ImageFile.h"
 
 namespace matevo::cli {
@@ -29,35 +28,33 @@ int runRender(CommandLine& args) {
             "usage: matevo render [--preset P] [--genome FILE.json] [--size N]\n"
             "                     [--backend cpu|gpu] --out FILE.png|FILE.exr\n\n"
             "Renders one material on the paper's test sphere (one light, transparent\n"
-            "background, alpha = coverage): the preset's target, or the genome in FILE.json\n"
-            "with the preset's family, base kappa, textures and scene. PNG is sRGB 8-bit,\n"
-            "EXR linear float. --size is the image side in pixels (default: the preset's).\n"
+            "background, alpha = coverage): the preset's target, or the material in FILE.json.\n"
+            "FILE.json is any material JSON matevo writes: a material file (variants, the\n"
+            "editor's copy), an evolve report (its best material) or a bare genome; a bare\n"
+            "genome takes family, base kappa, textures and scene from the preset. Values\n"
+            "outside the family's ranges (Table 2) are refused. PNG is sRGB 8-bit, EXR linear\n"
+            "float. --size is the image side in pixels (default: the material's scene).\n"
             "--backend gpu (default) renders with Vulkan; with no usable Vulkan device it says\n"
             "so on stderr and renders on the CPU. --backend cpu is the reference renderer.\n"
             "The default preset is presets/validation_metal.json beside the executable.\n");
         return 0;
     }
-    const PresetChoice choice = loadPresetOption(args);
+    const MaterialSource source(args, "render");
     const auto genomeFile = args.option("--genome");
-    const long long size =
-        args.integerOption("--size", 1, 8192).value_or(choice.preset.scene.imageSize);
+    const auto size = args.integerOption("--size", 1, 8192);
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "render: --backend");
     const std::filesystem::path out = outputPath(args);
     args.finish();
 
-    MaterialInstance material{choice.preset.target, choice.preset.family, choice.preset.baseKappa};
-    if (genomeFile) {
-        auto genome = loadGenome(*genomeFile);
-        if (!genome) throw UsageError(genome.error().message);
-        material.genome = *genome;
-    }
-    auto textures = loadSceneTextures(choice.preset, choice.file);
+    const MaterialFile material = genomeFile ? source.load(*genomeFile) : source.presetMaterial();
+    auto textures = loadSceneTextures(material, genomeFile.value_or(material.name));
     if (!textures) throw UsageError(textures.error().message);
 
-    const Image image = renderMaterials(std::span(&material, 1), *textures, choice.preset.scene,
-                                        int(size), backend, "matevo render")
-                            .front();
+    const Image image =
+        renderMaterials(std::span(&material.material, 1), *textures, material.scene,
+                        int(size.value_or(material.scene.imageSize)), backend, "matevo render")
+            .front();
     if (auto written = writeImage(image, out); !written) {
         std::fprintf(stderr, "matevo render: %s\n", written.error().message.c_str());
         return 1;

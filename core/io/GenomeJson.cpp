@@ -3,7 +3,6 @@
 #include <nlohmann/json.hpp>
 
 #include "io/JsonReader.h"
-#include "io/TextFile.h"
 
 namespace matevo {
 
@@ -14,7 +13,7 @@ constexpr double kMaxChromosomeValue = 1000.0;
 
 }  // namespace
 
-nlohmann::json genomeToJson(const Genome& genome) {
+nlohmann::ordered_json genomeToJson(const Genome& genome) {
     return {{"eta1", genome.eta1()},       {"eta2", genome.eta2()},
             {"alpha1", genome.alpha1()},   {"alpha2", genome.alpha2()},
             {"depth", genome.depth()},     {"sigma_s", genome.sigmaS()},
@@ -38,24 +37,6 @@ Genome readGenome(JsonReader& reader) {
     }
     if (reader.has("g")) genome[kG] = reader.number("g", -1.0, 1.0);
     return genome;
-}
-
-Result<Genome> loadGenome(const std::filesystem::path& file) {
-    auto text = readTextFile(file);
-    if (!text) return text.error();
-    std::vector<std::string> warnings;
-    try {
-        auto json = nlohmann::json::parse(*text);
-        // A result.json or a population entry holds the genome under "genome"; accept both.
-        const auto& object = json.is_object() && json.contains("genome") ? json["genome"] : json;
-        JsonReader reader(object, "", warnings);
-        Genome genome = readGenome(reader);
-        return genome;
-    } catch (const nlohmann::json::exception& error) {
-        return Error{file.string() + ": not valid JSON (" + error.what() + ")"};
-    } catch (const JsonFieldError& error) {
-        return Error{file.string() + ": " + error.what()};
-    }
 }
 
 }  // namespace matevo

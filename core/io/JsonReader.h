@@ -5,9 +5,11 @@
 // loaders turn it into a Result.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -32,6 +34,10 @@ public:
     template <std::size_t N>
     std::array<double, N> numbers(const std::string& key, double min, double max);
     JsonReader object(const std::string& key);
+    // A string naming one value of an enumeration; `expected` lists them for the error.
+    template <typename Enum>
+    Enum enumeration(const std::string& key, std::optional<Enum> (*parse)(std::string_view),
+                     const char* expected);
 
     // Call once every known field was read: warns about the others.
     void warnAboutUnknownFields();
@@ -60,6 +66,15 @@ std::array<double, N> JsonReader::numbers(const std::string& key, double min, do
         result[i] = checkedNumber(value[i], fieldPath(key) + "[" + std::to_string(i) + "]", min,
                                   max);
     return result;
+}
+
+template <typename Enum>
+Enum JsonReader::enumeration(const std::string& key,
+                             std::optional<Enum> (*parse)(std::string_view), const char* expected) {
+    auto text = string(key);
+    auto value = parse(text);
+    if (!value) fail(key, "unknown value '" + text + "' (expected " + expected + ")");
+    return *value;
 }
 
 }  // namespace matevo

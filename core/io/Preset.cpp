@@ -6,32 +6,12 @@
 #include "io/AtomicFile.h"
 #include "io/GenomeJson.h"
 #include "io/JsonReader.h"
+#include "io/MaterialFieldsJson.h"
 #include "io/TextFile.h"
 
 namespace matevo {
 
 namespace {
-
-template <typename Enum>
-Enum readEnum(JsonReader& reader, const std::string& key,
-              std::optional<Enum> (*parse)(std::string_view), const char* expected) {
-    auto text = reader.string(key);
-    auto value = parse(text);
-    if (!value) reader.fail(key, "unknown value '" + text + "' (expected " + expected + ")");
-    return *value;
-}
-
-MaterialFamily readFamily(JsonReader reader) {
-    MaterialFamily family;
-    family.coat = readEnum(reader, "coat", parseCoat, "roughcoat or clearcoat");
-    family.base = readEnum(reader, "base", parseBase, "conductor or dielectric");
-    family.hasMedium = reader.boolean("medium");
-    if (reader.has("textured_layer"))
-        family.texturedLayer =
-            readEnum(reader, "textured_layer", parseTexturedLayer, "none, top or bottom");
-    reader.warnAboutUnknownFields();
-    return family;
-}
 
 GaSettings readGaSettings(JsonReader reader) {
     GaSettings ga;
@@ -39,7 +19,7 @@ GaSettings readGaSettings(JsonReader reader) {
     ga.generations = int(reader.integer("generations", 0, kMaxGenerations));
     if (reader.has("metric"))
         ga.metric =
-            readEnum(reader, "metric", parseDistanceMetric, "chebyshev, euclidean or manhattan");
+            reader.enumeration("metric", parseDistanceMetric, "chebyshev, euclidean or manhattan");
     if (reader.has("weights")) ga.weights = reader.numbers<kChromosomeCount>("weights", 0.0, 1e6);
     if (reader.has("normalize_by_range"))
         ga.normalizeByRange = reader.boolean("normalize_by_range");
@@ -49,43 +29,11 @@ GaSettings readGaSettings(JsonReader reader) {
     return ga;
 }
 
-SceneSettings readScene(JsonReader reader) {
-    SceneSettings scene;
-    if (reader.has("image_size")) scene.imageSize = int(reader.integer("image_size", 8, 4096));
-    if (reader.has("camera_position"))
-        scene.cameraPosition = reader.numbers<3>("camera_position", -100.0, 100.0);
-    if (reader.has("field_of_view_degrees"))
-        scene.fieldOfViewDegrees = reader.number("field_of_view_degrees", 1.0, 170.0);
-    if (reader.has("light_direction")) {
-        scene.lightDirection = reader.numbers<3>("light_direction", -1e3, 1e3);
-        const auto& d = scene.lightDirection;
-        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < 1e-12)
-            reader.fail("light_direction", "must not be the zero vector");
-    }
-    if (reader.has("light_radiance"))
-        scene.lightRadiance = reader.numbers<3>("light_radiance", 0.0, 1e4);
-    if (reader.has("environment_radiance"))
-        scene.environmentRadiance = reader.numbers<3>("environment_radiance", 0.0, 1e4);
-    // The camera must sit outside the unit sphere it looks at.
-    const auto& c = scene.cameraPosition;
-    if (c[0] * c[0] + c[1] * c[1] + c[2] * c[2] <= 1.0 + 1e-6)
-        reader.fail("camera_position", "must lie outside the unit sphere");
-    reader.warnAboutUnknownFields();
-    return scene;
-}
-
-void readTextures(JsonReader reader, Preset& preset) {
-    if (reader.has("roughness")) preset.roughnessTexture = reader.string("roughness");
-    if (reader.has("base_color")) preset.baseColorTexture = reader.string("base_color");
-    reader.warnAboutUnknownFields();
-}
-
 Preset readPreset(JsonReader& root) {
     Preset preset;
     preset.name = root.string("name");
     if (root.has("description")) preset.description = root.string("description");
-    preset.family = readFamily(root.object("family"));
-    if (auto problem = validateFamily(preset.family)) root.fail("family", *problem);
+    preset.family = readFamily(root, "family");
     {
         JsonReader target = root.object("target");
         preset.target = readGenome(target);
@@ -93,18 +41,10 @@ Preset readPreset(JsonReader& root) {
     }
     // The target must be a member of its own family, or the GA could never approach it.
     if (auto problem = validateGenome(preset.target, preset.family)) root.fail("target", *problem);
-    if (preset.family.base == Base::Conductor) {
-        preset.baseKappa = root.numbers<3>("base_kappa", 0.0, 100.0);
-        const auto& k = preset.baseKappa;
-        if (k[0] <= 0.0 && k[1] <= 0.0 && k[2] <= 0.0)
-            root.fail("base_kappa", "a conductor base needs a positive extinction coefficient");
-    } else if (root.has("base_kappa")) {
-        root.numbers<3>("base_kappa", 0.0, 0.0);  // a dielectric has none: only zeros are valid
-    }
-    if (root.has("textures")) readTextures(root.object("textures"), preset);
-    if (preset.family.texturedLayer != TexturedLayer::None && preset.roughnessTexture.empty())
-        root.fail("textures.roughness",
-                  "a family with a textured layer needs a roughness texture");
+    preset.baseKappa = readBaseKappa(root, preset.family);
+    auto textures = readTextures(root, preset.family);
+    preset.roughnessTexture = std::move(textures.roughness);
+    preset.baseColorTexture = std::move(textures.baseColor);
     preset.ga = readGaSettings(root.object("ga"));
     if (root.has("scene")) preset.scene = readScene(root.object("scene"));
     root.warnAboutUnknownFields();
@@ -148,11 +88,7 @@ std::string serializePreset(const Preset& preset) {
     nlohmann::json json = {
         {"name", preset.name},
         {"description", preset.description},
-        {"family",
-         {{"coat", toString(preset.family.coat)},
-          {"base", toString(preset.family.base)},
-          {"medium", preset.family.hasMedium},
-          {"textured_layer", toString(preset.family.texturedLayer)}}},
+        {"family", familyToJson(preset.family)},
         {"target", genomeToJson(preset.target)},
         {"textures",
          {{"roughness", preset.roughnessTexture}, {"base_color", preset.baseColorTexture}}},
@@ -164,13 +100,7 @@ std::string serializePreset(const Preset& preset) {
           {"normalize_by_range", preset.ga.normalizeByRange},
           {"elitism", preset.ga.elitism},
           {"seed", preset.ga.seed}}},
-        {"scene",
-         {{"image_size", preset.scene.imageSize},
-          {"camera_position", preset.scene.cameraPosition},
-          {"field_of_view_degrees", preset.scene.fieldOfViewDegrees},
-          {"light_direction", preset.scene.lightDirection},
-          {"light_radiance", preset.scene.lightRadiance},
-          {"environment_radiance", preset.scene.environmentRadiance}}},
+        {"scene", sceneToJson(preset.scene)},
     };
     if (preset.family.base == Base::Conductor) json["base_kappa"] = preset.baseKappa;
     return json.dump(2) + "\n";

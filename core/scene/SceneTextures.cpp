@@ -9,23 +9,41 @@ namespace matevo {
 
 namespace {
 
-Result<Image> loadTexture(const std::filesystem::path& presetFile, const std::string& field,
-                          const std::string& name) {
-    if (name.empty()) return Image();
-    auto image = readImage(presetFile.parent_path() / name);
-    if (!image) return Error{presetFile.string() + ": " + field + ": " + image.error().message};
+// `source` names what asked for the texture (a preset or material file) in errors.
+Result<Image> loadTexture(const std::string& source, const std::string& field,
+                          const std::filesystem::path& file) {
+    if (file.empty()) return Image();
+    auto image = readImage(file);
+    if (!image) return Error{source + ": " + field + ": " + image.error().message};
     return image;
+}
+
+Result<SceneTextures> loadTextures(const std::string& source,
+                                   const std::filesystem::path& roughnessFile,
+                                   const std::filesystem::path& baseColorFile) {
+    auto roughness = loadTexture(source, "textures.roughness", roughnessFile);
+    if (!roughness) return roughness.error();
+    auto baseColor = loadTexture(source, "textures.base_color", baseColorFile);
+    if (!baseColor) return baseColor.error();
+    return SceneTextures{std::move(roughness).value(), std::move(baseColor).value()};
+}
+
+std::filesystem::path besidePreset(const std::filesystem::path& presetFile,
+                                   const std::string& name) {
+    return name.empty() ? std::filesystem::path() : presetFile.parent_path() / name;
 }
 
 }  // namespace
 
 Result<SceneTextures> loadSceneTextures(const Preset& preset,
                                         const std::filesystem::path& presetFile) {
-    auto roughness = loadTexture(presetFile, "textures.roughness", preset.roughnessTexture);
-    if (!roughness) return roughness.error();
-    auto baseColor = loadTexture(presetFile, "textures.base_color", preset.baseColorTexture);
-    if (!baseColor) return baseColor.error();
-    return SceneTextures{std::move(roughness).value(), std::move(baseColor).value()};
+    return loadTextures(presetFile.string(), besidePreset(presetFile, preset.roughnessTexture),
+                        besidePreset(presetFile, preset.baseColorTexture));
+}
+
+Result<SceneTextures> loadSceneTextures(const MaterialFile& material,
+                                        const std::string& sourceName) {
+    return loadTextures(sourceName, material.roughnessTexture, material.baseColorTexture);
 }
 
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v) {

@@ -6,6 +6,7 @@
 
 #include "common/Image.h"
 #include "common/Result.h"
+#include "io/MaterialFile.h"
 #include "io/Preset.h"
 #include "material/LayerStack.h"
 
@@ -20,6 +21,10 @@ struct SceneTextures {
 // name the preset file, the field and the image file.
 Result<SceneTextures> loadSceneTextures(const Preset& preset,
                                         const std::filesystem::path& presetFile);
+
+// Loads a material file's textures (absolute paths); errors name `sourceName` and the field.
+Result<SceneTextures> loadSceneTextures(const MaterialFile& material,
+                                        const std::string& sourceName);
 
 // Bilinear RGB at (u, v) with the wrap/clamp rule of SphereMapping.h.
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v);
