@@ -26,6 +26,7 @@ constexpr Subcommand kSubcommands[] = {
     {"compare", runCompare, "per-pixel CIEDE2000 between two images"},
     {"experiment", runExperiment, "the paper's section 5 experiment: metrics x runs"},
     {"bench", runBench, "measure the GA, CIEDE2000 and renderers; medians"},
+    {"export", runExport, "write materials for engines (glTF, MaterialX), fitted by dE00"},
 };
 
 void printHelp() {

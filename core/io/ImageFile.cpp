@@ -1,5 +1,6 @@
 #include "io/ImageFile.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
@@ -97,11 +98,12 @@ Result<Image> readImage(const std::filesystem::path& file) {
 
 namespace {
 
-std::vector<unsigned char> encodeSrgb8(const Image& image) {
+std::vector<unsigned char> encode8(const Image& image, PngValues values) {
     std::vector<unsigned char> bytes(image.rgba.size());
     for (std::size_t i = 0; i < image.rgba.size(); ++i) {
         double value = std::clamp(double(image.rgba[i]), 0.0, 1.0);
-        if (i % 4 != 3) value = linearToSrgb(value);  // alpha is coverage, not light
+        // Alpha is coverage, not light.
+        if (i % 4 != 3 && values == PngValues::Srgb) value = linearToSrgb(value);
         bytes[i] = static_cast<unsigned char>(std::lround(value * 255.0));
     }
     return bytes;
@@ -129,7 +131,7 @@ Status writeWith(const Image& image, const std::filesystem::path& target, FileKi
     const std::filesystem::path temporary = temporaryPathBeside(target);
     bool written = output->open(temporary.string(), spec);
     if (written) {
-        written = png ? output->write_image(OIIO::TypeDesc::UINT8, encodeSrgb8(image).data())
+        written = png ? output->write_image(OIIO::TypeDesc::UINT8, encode8(image, PngValues::Srgb).data())
                       : output->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data());
         written = output->close() && written;
     }
@@ -147,6 +149,26 @@ Status writeWith(const Image& image, const std::filesystem::path& target, FileKi
 }
 
 }  // namespace
+
+Result<std::vector<unsigned char>> encodePng(const Image& image, PngValues values) {
+    if (image.width <= 0 || image.height <= 0 || image.rgba.size() != image.pixelCount() * 4)
+        return Error{"cannot encode an empty or malformed image as PNG"};
+    auto output = OIIO::ImageOutput::create("png");
+    if (!output) return Error{"cannot encode PNG: " + oneLine(OIIO::geterror())};
+    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+    spec.alpha_channel = 3;
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    if (values == PngValues::Srgb) spec.attribute("oiio:ColorSpace", "sRGB");
+    OIIO::Filesystem::IOVecOutput memory;
+    output->set_ioproxy(&memory);
+    bool written = output->open("memory.png", spec);
+    if (written) {
+        written = output->write_image(OIIO::TypeDesc::UINT8, encode8(image, values).data());
+        written = output->close() && written;
+    }
+    if (!written) return Error{"cannot encode PNG: " + oneLine(output->geterror())};
+    return std::move(memory.buffer());
+}
 
 Status writeImage(const Image& image, const std::filesystem::path& file) {
     const FileKind kind = kindOf(file);

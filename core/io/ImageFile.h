@@ -3,6 +3,7 @@
 // linear float RGBA. In memory an Image is always linear with straight (unassociated) alpha, so
 // colour values are stored as they are and alpha is never multiplied in.
 #include <filesystem>
+#include <vector>
 
 #include "common/Image.h"
 #include "common/Result.h"
@@ -24,5 +25,10 @@ Result<Image> readImage(const std::filesystem::path& file);
 // Writes RGBA to .png (sRGB-encoded 8 bit, values clamped to [0, 1]) or .exr (32-bit float).
 // Atomic: written to a temporary file beside the target, then renamed over it.
 Status writeImage(const Image& image, const std::filesystem::path& file);
+
+// PNG file contents in memory (for files that embed images, such as glTF): 8-bit RGBA, the colour
+// sRGB-encoded (a colour texture) or stored as it is (data, such as roughness).
+enum class PngValues { Srgb, Linear };
+Result<std::vector<unsigned char>> encodePng(const Image& image, PngValues values);
 
 }  // namespace matevo

@@ -82,6 +82,17 @@ struct Shader {
     }
 };
 
+template <class LobesAt>
+auto belcourShader(const LobesAt& lobesAt, const SceneTextures& textures,
+                   const SceneSettings& scene) {
+    const Shader<LobesAt> shader{lobesAt, textures, glm::normalize(toVector(scene.lightDirection)),
+                                 toVector(scene.lightRadiance),
+                                 toVector(scene.environmentRadiance)};
+    return [shader](const glm::dvec3& normal, const glm::dvec3& toViewer) {
+        return shader.radiance(normal, toViewer);
+    };
+}
+
 // Where the ray through image position (x, y) meets the sphere.
 struct SurfacePoint {
     glm::dvec3 normal;
@@ -95,14 +106,11 @@ std::optional<SurfacePoint> traceSphere(const Camera& camera, double x, double y
     return SurfacePoint{glm::normalize(camera.position + distance * direction), -direction};
 }
 
-template <class LobesAt>
-Image renderSphere(const LobesAt& lobesAt, const SceneTextures& textures,
-                   const SceneSettings& scene, int size) {
+// RadianceAt: (normal, toViewer) -> radiance towards the camera.
+template <class RadianceAt>
+Image renderSphere(const RadianceAt& radianceAt, const SceneSettings& scene, int size) {
     Image image(size, size);
     const Camera camera(scene);
-    const Shader<LobesAt> shader{lobesAt, textures, glm::normalize(toVector(scene.lightDirection)),
-                                 toVector(scene.lightRadiance),
-                                 toVector(scene.environmentRadiance)};
     constexpr int subsamples = kSubsamplesPerAxis * kSubsamplesPerAxis;
 
     auto renderRows = [&](int chunk) {
@@ -125,10 +133,10 @@ Image renderSphere(const LobesAt& lobesAt, const SceneTextures& textures,
                     hits == subsamples ? traceSphere(camera, x + 0.5, y + 0.5, size) : std::nullopt;
                 glm::dvec3 radiance(0.0);
                 if (centre) {
-                    radiance = shader.radiance(centre->normal, centre->toViewer);
+                    radiance = radianceAt(centre->normal, centre->toViewer);
                 } else {
                     for (int i = 0; i < hits; ++i) {
-                        radiance += shader.radiance(hitPoints[i].normal, hitPoints[i].toViewer);
+                        radiance += radianceAt(hitPoints[i].normal, hitPoints[i].toViewer);
                     }
                     radiance /= hits;
                 }
@@ -151,7 +159,7 @@ Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& tex
     const auto lobesAt = [&](double cosView, const SurfaceTexels& texels) {
         return table.lobesAt(cosView, texels);
     };
-    return renderSphere(lobesAt, textures, scene, size);
+    return renderSphere(belcourShader(lobesAt, textures, scene), scene, size);
 }
 
 Image renderSphereCpuExact(const MaterialInstance& material, const SceneTextures& textures,
@@ -159,7 +167,11 @@ Image renderSphereCpuExact(const MaterialInstance& material, const SceneTextures
     const auto lobesAt = [&](double cosView, const SurfaceTexels& texels) {
         return computeLobes(makeLayerStack(material, texels), cosView, tables);
     };
-    return renderSphere(lobesAt, textures, scene, size);
+    return renderSphere(belcourShader(lobesAt, textures, scene), scene, size);
+}
+
+Image renderSphereImage(const SceneSettings& scene, int size, const SphereRadiance& radiance) {
+    return renderSphere(radiance, scene, size);
 }
 
 Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,

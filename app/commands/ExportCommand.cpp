@@ -1,0 +1,144 @@
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "MaterialOption.h"
+#include "ProgressBar.h"
+#include "commands/Commands.h"
+#include "export/ExportSet.h"
+
+namespace matevo::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kHelp =
+    "usage: matevo export (--genome FILE.json | --variants DIR) [--preset P]\n"
+    "                     [--format gltf|glb|mtlx] --out PATH [--json]\n"
+    "                     [--fit-size N] [--report-size N]\n\n"
+    "Writes materials for engines. glTF cannot express the layered Belcour model, so each\n"
+    "material is fitted: the glTF 2.0 parameters (metallic-roughness with\n"
+    "KHR_materials_clearcoat, _ior and _specular) whose render in matevo's scene is closest, by\n"
+    "mean CIEDE2000, to matevo's own render of the material. The report gives, per material, the\n"
+    "fitted parameters and the dE00 of the approximation.\n\n"
+    "  --genome FILE     one material: any material JSON matevo writes (a variant file, an\n"
+    "                    evolve report's best, the editor's copy, or a bare genome, which takes\n"
+    "                    family, kappa, textures and scene from --preset)\n"
+    "  --variants DIR    every variant_NNN.json of a `matevo variants --out DIR` set (in\n"
+    "                    DIR/variants or DIR itself), in name order\n"
+    "  --format F        gltf (PATH.gltf + PATH.bin), glb (one binary file) or mtlx (MaterialX\n"
+    "                    1.39 gltf_pbr materials; textures as PNGs beside it); default: from\n"
+    "                    the extension of --out\n"
+    "  --out PATH        the file to write (its folder must exist)\n"
+    "  --json            print the report as JSON (otherwise a table)\n"
+    "  --fit-size N      image side while fitting (default 64)\n"
+    "  --fit-renders N   renders the fit may use per material (default 900; fewer is faster\n"
+    "                    and coarser)\n"
+    "  --report-size N   image side of the reported dE00 (default 128)\n"
+    "Each material's glTF sphere sits on a grid, so any glTF viewer shows the whole set.\n";
+
+std::vector<fs::path> variantFiles(const fs::path& folder) {
+    const fs::path inner = folder / "variants";
+    const fs::path searched = fs::is_directory(inner) ? inner : folder;
+    if (!fs::is_directory(searched))
+        throw UsageError("export: --variants: " + folder.string() + ": no such folder");
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(searched)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_regular_file() && name.rfind("variant_", 0) == 0 &&
+            entry.path().extension() == ".json")
+            files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    if (files.empty())
+        throw UsageError("export: --variants: no variant_NNN.json in " + searched.string());
+    return files;
+}
+
+ExportFormat chooseFormat(const std::optional<std::string>& option, const fs::path& out) {
+    if (option) {
+        const auto format = parseExportFormat(*option);
+        if (!format)
+            throw UsageError("export: --format: unknown format '" + *option +
+                             "' (expected gltf, glb or mtlx)");
+        if (out.extension() != fileExtension(*format))
+            throw UsageError("export: --out: " + out.string() + ": a " + *option +
+                             " file ends in " + std::string(fileExtension(*format)));
+        return *format;
+    }
+    for (ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb, ExportFormat::MaterialX})
+        if (out.extension() == fileExtension(format)) return format;
+    throw UsageError("export: --out: " + out.string() +
+                     ": the extension must be .gltf, .glb or .mtlx (or give --format)");
+}
+
+void printTable(const ExportReport& report) {
+    std::printf("%-28s %8s %9s %9s %6s %7s %9s %8s\n", "material", "mean dE", "p95 dE",
+                "metallic", "rough", "coat", "coat rough", "ior");
+    double sum = 0.0;
+    for (const auto& variant : report.variants) {
+        const GltfMaterial& m = variant.fit.material;
+        std::printf("%-28s %8.3f %9.3f %9.3f %6.3f %7.3f %9.3f %8.3f\n", variant.name.c_str(),
+                    variant.deltaE.mean, variant.deltaE.p95, m.metallic, m.roughness,
+                    m.clearcoat, m.clearcoatRoughness, m.ior);
+        sum += variant.deltaE.mean;
+    }
+    std::printf("mean dE00 of the approximation over %zu material(s): %.3f (at %d px); wrote %s\n",
+                report.variants.size(), sum / double(report.variants.size()),
+                report.settings.reportSize, report.file.string().c_str());
+}
+
+}  // namespace
+
+int runExport(CommandLine& args) {
+    if (args.wantsHelp()) {
+        std::fputs(kHelp, stdout);
+        return 0;
+    }
+    const MaterialSource source(args, "export");
+    const auto genomeFile = args.option("--genome");
+    const auto variantsFolder = args.option("--variants");
+    const auto formatOption = args.option("--format");
+    const auto out = args.option("--out");
+    const bool asJson = args.flag("--json");
+    ExportSettings settings;
+    settings.fit.imageSize =
+        int(args.integerOption("--fit-size", 16, 512).value_or(settings.fit.imageSize));
+    settings.fit.maxEvaluations = int(
+        args.integerOption("--fit-renders", 20, 100000).value_or(settings.fit.maxEvaluations));
+    settings.reportSize =
+        int(args.integerOption("--report-size", 16, 2048).value_or(settings.reportSize));
+    args.finish();
+    if (genomeFile.has_value() == variantsFolder.has_value())
+        throw UsageError("export: give one of --genome FILE or --variants DIR");
+    if (!out) throw UsageError("export: --out PATH is required");
+    const ExportFormat format = chooseFormat(formatOption, *out);
+    const fs::path folder = fs::path(*out).parent_path();
+    if (!folder.empty() && !fs::is_directory(folder))
+        throw UsageError("export: --out: folder " + folder.string() + " does not exist");
+
+    std::vector<MaterialFile> materials;
+    const std::vector<fs::path> files =
+        genomeFile ? std::vector<fs::path>{*genomeFile} : variantFiles(*variantsFolder);
+    for (const auto& file : files) {
+        materials.push_back(source.load(file));
+        if (materials.back().name.empty()) materials.back().name = file.stem().string();
+    }
+
+    ProgressBar progress(int(materials.size()));
+    auto report = exportMaterials(materials, format, *out, settings,
+                                  [&](std::size_t done, std::size_t) {
+                                      progress.update(int(done), "fitting");
+                                  });
+    if (!report) throw UsageError("export: " + report.error().message);
+    if (asJson)
+        std::printf("%s\n", exportReportJson(*report).dump(2).c_str());
+    else
+        printTable(*report);
+    return 0;
+}
+
+}  // namespace matevo::cli

@@ -1,0 +1,209 @@
+// Export of the three validation presets to glTF and MaterialX: the files re-read by tinygltf
+// (the library that wrote them) field by field, the MaterialX document well-formed (libxml2)
+// with MaterialX 1.39's input names, and the reported ΔE00 recomputed here from our glTF BRDF
+// render against our Belcour render.
+#include "export/ExportSet.h"
+
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include "export/GltfRenderer.h"
+#include "io/Preset.h"
+#include "scene/SphereRenderer.h"
+#include "support/ScratchFolder.h"
+
+namespace matevo {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kPresets = fs::path(MATEVO_SOURCE_DIR) / "presets";
+
+MaterialFile presetTarget(const std::string& name) {
+    const fs::path file = kPresets / (name + ".json");
+    auto loaded = loadPreset(file);
+    EXPECT_TRUE(loaded.ok()) << loaded.error().message;
+    return materialFromPreset(loaded->preset, file, loaded->preset.target, name);
+}
+
+// The fits are the slow part: each preset is fitted once for every test here, and written in
+// each format from that one fit.
+const ExportReport& exportedPreset(const std::string& name, ExportFormat format,
+                                   const fs::path& file) {
+    static std::map<std::string, FittedSet> fits;
+    static std::map<std::string, ExportReport> reports;
+    auto fit = fits.find(name);
+    if (fit == fits.end()) {
+        auto fitted = fitForExport({presetTarget(name)});
+        EXPECT_TRUE(fitted.ok()) << fitted.error().message;
+        fit = fits.emplace(name, std::move(*fitted)).first;
+    }
+    auto report = writeExport(fit->second, format, file);
+    EXPECT_TRUE(report.ok()) << report.error().message;
+    return reports.insert_or_assign(name + file.string(), std::move(*report)).first->second;
+}
+
+const char* const kValidationPresets[] = {"validation_metal", "validation_painted_metal",
+                                          "validation_metal_depth"};
+
+double numberOf(const tinygltf::Value& object, const std::string& key) {
+    return object.Get(key).GetNumberAsDouble();
+}
+
+TEST(ExportSet, GltfFilesReadBackFieldByField) {
+    testing::ScratchFolder folder("export");
+    for (const char* name : kValidationPresets) {
+        for (ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb}) {
+            const fs::path file = folder / (std::string(name) + std::string(fileExtension(format)));
+            const ExportReport& report = exportedPreset(name, format, file);
+            ASSERT_EQ(report.variants.size(), 1u);
+            const GltfMaterial& fitted = report.variants[0].fit.material;
+
+            tinygltf::TinyGLTF loader;
+            tinygltf::Model model;
+            std::string error, warning;
+            const bool loaded =
+                format == ExportFormat::Glb
+                    ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
+                    : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
+            ASSERT_TRUE(loaded) << error;
+            EXPECT_TRUE(warning.empty()) << warning;
+            if (format == ExportFormat::Gltf) {
+                EXPECT_TRUE(fs::exists(fs::path(file).replace_extension(".bin")));
+                EXPECT_EQ(model.buffers[0].uri, std::string(name) + ".bin");
+            }
+            ASSERT_EQ(model.materials.size(), 1u);
+            const auto& material = model.materials[0];
+            EXPECT_EQ(material.name, name);
+            const auto& pbr = material.pbrMetallicRoughness;
+            for (int c = 0; c < 3; ++c)
+                EXPECT_DOUBLE_EQ(pbr.baseColorFactor[std::size_t(c)], fitted.baseColor[c]);
+            EXPECT_DOUBLE_EQ(pbr.metallicFactor, fitted.metallic);
+            EXPECT_DOUBLE_EQ(pbr.roughnessFactor, fitted.roughness);
+            const auto& clearcoat = material.extensions.at("KHR_materials_clearcoat");
+            EXPECT_DOUBLE_EQ(numberOf(clearcoat, "clearcoatFactor"), fitted.clearcoat);
+            EXPECT_DOUBLE_EQ(numberOf(clearcoat, "clearcoatRoughnessFactor"),
+                             fitted.clearcoatRoughness);
+            EXPECT_DOUBLE_EQ(numberOf(material.extensions.at("KHR_materials_ior"), "ior"),
+                             fitted.ior);
+            if (fitted.specular != 1.0) {
+                EXPECT_DOUBLE_EQ(
+                    numberOf(material.extensions.at("KHR_materials_specular"), "specularFactor"),
+                    fitted.specular);
+            }
+            // Textures follow the preset: painted metal's roughness drives the coat's,
+            // metal depth's base colour texture the base colour.
+            EXPECT_EQ(clearcoat.Has("clearcoatRoughnessTexture"),
+                      std::string(name) == "validation_painted_metal");
+            EXPECT_EQ(pbr.baseColorTexture.index >= 0,
+                      std::string(name) == "validation_metal_depth");
+            for (const auto& image : model.images) EXPECT_GT(image.width, 0) << image.name;
+            // One sphere: positions on the unit sphere, as many UVs as positions.
+            ASSERT_EQ(model.meshes.size(), 1u);
+            const auto& primitive = model.meshes[0].primitives[0];
+            EXPECT_EQ(primitive.material, 0);
+            const auto& positions = model.accessors[std::size_t(primitive.attributes.at("POSITION"))];
+            EXPECT_EQ(model.accessors[std::size_t(primitive.attributes.at("TEXCOORD_0"))].count,
+                      positions.count);
+            EXPECT_EQ(model.nodes.size(), 1u);
+            for (const char* extension :
+                 {"KHR_materials_clearcoat", "KHR_materials_ior"})
+                EXPECT_NE(std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                                    extension),
+                          model.extensionsUsed.end())
+                    << extension;
+        }
+    }
+}
+
+TEST(ExportSet, ReportedDeltaEIsRecomputedFromTheGltfRender) {
+    testing::ScratchFolder folder("export");
+    double sum = 0.0;
+    for (const char* name : kValidationPresets) {
+        const ExportReport& report =
+            exportedPreset(name, ExportFormat::Glb, folder / (std::string(name) + ".glb"));
+        const MaterialFile material = presetTarget(name);
+        auto textures = loadSceneTextures(material, name);
+        ASSERT_TRUE(textures.ok());
+        const int size = report.settings.reportSize;
+        const Image gltf = renderGltfSphere(report.variants[0].fit.material, *textures,
+                                            material.scene, size);
+        const Image belcour = renderSphereCpu(material.material, *textures, material.scene, size);
+        auto difference = compareImages(gltf, belcour);
+        ASSERT_TRUE(difference.ok());
+        EXPECT_NEAR(difference->stats.mean, report.variants[0].deltaE.mean, 1e-9) << name;
+        // A fit never does worse than where it started, and glTF reaches the Belcour look
+        // within a few ΔE00 (docs/export.md lists the figures).
+        EXPECT_LT(difference->stats.mean, 5.0) << name;
+        std::printf("%s: mean dE00 %.3f (p95 %.3f) at %d px, %d renders\n", name,
+                    difference->stats.mean, difference->stats.p95, size,
+                    report.variants[0].fit.evaluations);
+        sum += difference->stats.mean;
+    }
+    std::printf("mean over the validation presets: %.3f\n", sum / 3.0);
+}
+
+// MaterialX 1.39's gltf_pbr inputs and the nodes we use, named as its standard library does.
+const std::set<std::string> kGltfPbrInputs = {"base_color", "metallic", "roughness",
+                                              "specular", "specular_color", "ior",
+                                              "clearcoat", "clearcoat_roughness"};
+
+TEST(ExportSet, MaterialXIsWellFormedWithMaterialXInputNames) {
+    testing::ScratchFolder folder("export");
+    for (const char* name : kValidationPresets) {
+        const fs::path file = folder / (std::string(name) + ".mtlx");
+        const ExportReport& report = exportedPreset(name, ExportFormat::MaterialX, file);
+        ASSERT_EQ(report.variants.size(), 1u);
+        xmlDocPtr document = xmlReadFile(file.c_str(), nullptr, XML_PARSE_NONET);
+        ASSERT_NE(document, nullptr) << file;
+        xmlNodePtr root = xmlDocGetRootElement(document);
+        EXPECT_STREQ(reinterpret_cast<const char*>(root->name), "materialx");
+        xmlChar* version = xmlGetProp(root, BAD_CAST "version");
+        EXPECT_STREQ(reinterpret_cast<const char*>(version), "1.39");
+        xmlFree(version);
+        std::map<std::string, std::string> shaderInputs;
+        std::set<std::string> nodeNames;
+        int materials = 0;
+        for (xmlNodePtr node = root->children; node; node = node->next) {
+            if (node->type != XML_ELEMENT_NODE) continue;
+            const std::string element = reinterpret_cast<const char*>(node->name);
+            xmlChar* nodeName = xmlGetProp(node, BAD_CAST "name");
+            EXPECT_TRUE(nodeNames.insert(reinterpret_cast<const char*>(nodeName)).second);
+            xmlFree(nodeName);
+            if (element == "surfacematerial") ++materials;
+            if (element != "gltf_pbr") continue;
+            for (xmlNodePtr input = node->children; input; input = input->next) {
+                if (input->type != XML_ELEMENT_NODE) continue;
+                xmlChar* inputName = xmlGetProp(input, BAD_CAST "name");
+                xmlChar* value = xmlGetProp(input, BAD_CAST "value");
+                xmlChar* connected = xmlGetProp(input, BAD_CAST "nodename");
+                const std::string key = reinterpret_cast<const char*>(inputName);
+                EXPECT_TRUE(kGltfPbrInputs.count(key)) << key;
+                shaderInputs[key] = value ? reinterpret_cast<const char*>(value) : "(connected)";
+                EXPECT_TRUE(value || connected) << key;
+                if (connected) {
+                    EXPECT_TRUE(nodeNames.count(reinterpret_cast<const char*>(connected)));
+                }
+                xmlFree(inputName);
+                xmlFree(value);
+                xmlFree(connected);
+            }
+        }
+        EXPECT_EQ(materials, 1);
+        EXPECT_EQ(shaderInputs.size(), kGltfPbrInputs.size());
+        EXPECT_NEAR(std::stod(shaderInputs.at("metallic")),
+                    report.variants[0].fit.material.metallic, 1e-5);
+        xmlFreeDoc(document);
+    }
+}
+
+}  // namespace
+}  // namespace matevo
