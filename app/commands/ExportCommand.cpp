@@ -6,8 +6,10 @@
 
 #include "MaterialOption.h"
 #include "ProgressBar.h"
+#include "RenderBackend.h"
 #include "commands/Commands.h"
 #include "export/ExportSet.h"
+#include "gpu/PopulationRendererFactory.h"
 
 namespace matevo::cli {
 
@@ -38,6 +40,9 @@ constexpr const char* kHelp =
     "  --fit-renders N   renders the fit may use per material (default 900; fewer is faster\n"
     "                    and coarser)\n"
     "  --report-size N   image side of the reported dE00 (default 128)\n"
+    "  --backend B       renderer of matevo's own images: gpu (default; falls back to the CPU\n"
+    "                    when no Vulkan device is usable) or cpu; the glTF model is always\n"
+    "                    rendered on the CPU\n"
     "Each material's glTF sphere sits on a grid, so any glTF viewer shows the whole set.\n";
 
 std::vector<fs::path> variantFiles(const fs::path& folder) {
@@ -111,6 +116,8 @@ int runExport(CommandLine& args) {
         args.integerOption("--fit-renders", 20, 100000).value_or(settings.fit.maxEvaluations));
     settings.reportSize =
         int(args.integerOption("--report-size", 16, 2048).value_or(settings.reportSize));
+    const RenderBackend backend =
+        parseRenderBackend(args.option("--backend").value_or("gpu"), "export: --backend");
     args.finish();
     if (genomeFile.has_value() == variantsFolder.has_value())
         throw UsageError("export: give one of --genome FILE or --variants DIR");
@@ -128,8 +135,9 @@ int runExport(CommandLine& args) {
         if (materials.back().name.empty()) materials.back().name = file.stem().string();
     }
 
+    auto renderer = gpu::createPopulationRenderer({backend, "matevo export"}, SceneTextures{});
     ProgressBar progress(int(materials.size()));
-    auto report = exportMaterials(materials, format, *out, settings,
+    auto report = exportMaterials(materials, *renderer, format, *out, settings,
                                   [&](std::size_t done, std::size_t) {
                                       progress.update(int(done), "fitting");
                                   });

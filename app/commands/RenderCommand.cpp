@@ -5,6 +5,7 @@
 #include "MaterialOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "io/ImageFile.h"
 
 namespace matevo::cli {
@@ -51,11 +52,14 @@ int runRender(CommandLine& args) {
     auto textures = loadSceneTextures(material, genomeFile.value_or(material.name));
     if (!textures) throw UsageError(textures.error().message);
 
-    const Image image =
-        renderMaterials(std::span(&material.material, 1), *textures, material.scene,
-                        int(size.value_or(material.scene.imageSize)), backend, "matevo render")
-            .front();
-    if (auto written = writeImage(image, out); !written) {
+    auto renderer = gpu::createPopulationRenderer({backend, "matevo render"}, *textures);
+    auto images = renderer->render(std::span(&material.material, 1), material.scene,
+                                   int(size.value_or(material.scene.imageSize)));
+    if (!images) {
+        std::fprintf(stderr, "matevo render: %s\n", images.error().message.c_str());
+        return 1;
+    }
+    if (auto written = writeImage(images->front(), out); !written) {
         std::fprintf(stderr, "matevo render: %s\n", written.error().message.c_str());
         return 1;
     }

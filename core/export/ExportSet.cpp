@@ -3,7 +3,6 @@
 #include "export/GltfRenderer.h"
 #include "export/GltfWriter.h"
 #include "export/MaterialXWriter.h"
-#include "scene/SphereRenderer.h"
 
 namespace matevo {
 
@@ -33,7 +32,8 @@ std::string_view fileExtension(ExportFormat format) {
 }
 
 Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
-                               const ExportSettings& settings, const ExportProgress& progress) {
+                               PopulationRenderer& belcour, const ExportSettings& settings,
+                               const ExportProgress& progress) {
     if (materials.empty()) return Error{"nothing to export"};
     const MaterialFile& first = materials.front();
     for (const auto& material : materials)
@@ -44,18 +44,23 @@ Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
     auto textures = loadSceneTextures(first, first.name);
     if (!textures) return textures.error();
 
+    if (auto status = belcour.setTextures(*textures); !status) return status.error();
+
     FittedSet set{settings, std::move(*textures), {}};
     for (std::size_t i = 0; i < materials.size(); ++i) {
         const MaterialFile& material = materials[i];
-        const Image target = renderSphereCpu(material.material, set.textures, material.scene,
-                                             settings.fit.imageSize);
-        GltfFit fit = fitGltfMaterial(material.material, target, set.textures, material.scene,
-                                      settings.fit);
-        const Image reference =
-            renderSphereCpu(material.material, set.textures, material.scene, settings.reportSize);
+        const auto renderAt = [&](int size) {
+            return belcour.render(std::span(&material.material, 1), material.scene, size);
+        };
+        auto target = renderAt(settings.fit.imageSize);
+        if (!target) return Error{material.name + ": " + target.error().message};
+        GltfFit fit = fitGltfMaterial(material.material, target->front(), set.textures,
+                                      material.scene, settings.fit);
+        auto reference = renderAt(settings.reportSize);
+        if (!reference) return Error{material.name + ": " + reference.error().message};
         const Image approximation =
             renderGltfSphere(fit.material, set.textures, material.scene, settings.reportSize);
-        auto difference = compareImages(approximation, reference);
+        auto difference = compareImages(approximation, reference->front());
         if (!difference) return Error{material.name + ": " + difference.error().message};
         set.variants.push_back({material.name, std::move(fit), difference->stats});
         if (progress) progress(i + 1, materials.size());
@@ -76,10 +81,11 @@ Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
 }
 
 Result<ExportReport> exportMaterials(const std::vector<MaterialFile>& materials,
-                                     ExportFormat format, const std::filesystem::path& file,
+                                     PopulationRenderer& belcour, ExportFormat format,
+                                     const std::filesystem::path& file,
                                      const ExportSettings& settings,
                                      const ExportProgress& progress) {
-    auto set = fitForExport(materials, settings, progress);
+    auto set = fitForExport(materials, belcour, settings, progress);
     if (!set) return set.error();
     return writeExport(*set, format, file);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Export of one material or a set (all from one preset: the same textures) to an engine format:
-// each material is rendered with our Belcour model on the CPU, the glTF parameters are fitted to
+// each material is rendered with our Belcour model (through the one render interface), the glTF parameters are fitted to
 // that render (GltfFit.h), the fit is rendered again at the report size and compared, and the
 // file is written (GltfWriter.h, MaterialXWriter.h). Shared by `matevo export` and the editor.
 #include <filesystem>
@@ -16,6 +16,7 @@
 #include "common/Result.h"
 #include "export/GltfFit.h"
 #include "io/MaterialFile.h"
+#include "render/PopulationRenderer.h"
 
 namespace matevo {
 
@@ -52,16 +53,18 @@ struct ExportReport {
 // Called after each material is fitted: (done, count).
 using ExportProgress = std::function<void(std::size_t, std::size_t)>;
 
-// Fits every material (errors name the material). `materials` must share textures.
+// Fits every material (errors name the material). `materials` must share textures; `belcour`
+// draws our renders of them (it is given their textures).
 Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
-                               const ExportSettings& settings = {},
+                               PopulationRenderer& belcour, const ExportSettings& settings = {},
                                const ExportProgress& progress = {});
 // Writes the fitted set in `format` to `file`.
 Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
                                  const std::filesystem::path& file);
 // Both steps.
 Result<ExportReport> exportMaterials(const std::vector<MaterialFile>& materials,
-                                     ExportFormat format, const std::filesystem::path& file,
+                                     PopulationRenderer& belcour, ExportFormat format,
+                                     const std::filesystem::path& file,
                                      const ExportSettings& settings = {},
                                      const ExportProgress& progress = {});
 

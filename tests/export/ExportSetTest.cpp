@@ -17,6 +17,7 @@
 
 #include "export/GltfRenderer.h"
 #include "io/Preset.h"
+#include "render/CpuPopulationRenderer.h"
 #include "scene/SphereRenderer.h"
 #include "support/ScratchFolder.h"
 
@@ -42,7 +43,8 @@ const ExportReport& exportedPreset(const std::string& name, ExportFormat format,
     static std::map<std::string, ExportReport> reports;
     auto fit = fits.find(name);
     if (fit == fits.end()) {
-        auto fitted = fitForExport({presetTarget(name)});
+        CpuPopulationRenderer belcour({});
+        auto fitted = fitForExport({presetTarget(name)}, belcour);
         EXPECT_TRUE(fitted.ok()) << fitted.error().message;
         fit = fits.emplace(name, std::move(*fitted)).first;
     }
