@@ -3,22 +3,17 @@
 #include "genome/Genome.h"
 #include "io/GenomeJson.h"
 #include "io/MaterialFile.h"
+#include "io/PresetFieldsJson.h"
 
 namespace matevo::cli {
 
 namespace {
 
 nlohmann::json configJson(const Preset& preset) {
-    const GaSettings& ga = preset.ga;
-    return {{"preset", preset.name},
-            {"family", describe(preset.family)},
-            {"population", ga.population},
-            {"generations", ga.generations},
-            {"metric", toString(ga.metric)},
-            {"weights", ga.weights},
-            {"normalize_by_range", ga.normalizeByRange},
-            {"elitism", ga.elitism},
-            {"seed", ga.seed}};
+    nlohmann::json config = gaSettingsToJson(preset.ga);
+    config["preset"] = preset.name;
+    config["family"] = describe(preset.family);
+    return config;
 }
 
 }  // namespace

@@ -11,15 +11,25 @@ packages=(
     python3-skimage python3-deap python3-numpy
 )
 
+# The Khronos glTF validator (tests/export) comes from npm; Debian's npm only when none is there.
+command -v npm >/dev/null || packages+=(nodejs npm)
+
 missing=()
 for package in "${packages[@]}"; do
     status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)
     [[ "$status" == "install ok installed" ]] || missing+=("$package")
 done
-[[ ${#missing[@]} -eq 0 ]] && exit 0
+if [[ ${#missing[@]} -gt 0 ]]; then
+    echo "matevo: installing ${missing[*]}" >&2
+    sudo=""
+    [[ $(id -u) -eq 0 ]] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends \
+        "${missing[@]}"
+fi
 
-echo "matevo: installing ${missing[*]}" >&2
-sudo=""
-[[ $(id -u) -eq 0 ]] || sudo="sudo"
-$sudo apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+validator="$(dirname "$0")/../tests/export/gltf-validator"
+if [[ ! -d "$validator/node_modules/gltf-validator" ]]; then
+    echo "matevo: installing the glTF validator (npm) into tests/export/gltf-validator" >&2
+    npm ci --prefix "$validator" --no-audit --no-fund --loglevel=error
+fi

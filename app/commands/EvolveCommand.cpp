@@ -11,6 +11,7 @@
 #include "commands/Commands.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "io/AtomicFile.h"
+#include "io/GaCheckpoint.h"
 
 namespace matevo::cli {
 
@@ -20,7 +21,7 @@ constexpr const char* kHelp =
     "usage: matevo evolve [--preset P] [--population N] [--generations N]\n"
     "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
-    "                     [--size N] [--backend gpu|cpu]\n\n"
+    "                     [--size N] [--backend gpu|cpu] [--checkpoint FILE] [--resume FILE]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(default: presets/validation_metal.json). Options override the preset's GA settings.\n"
     "  --weights      12 per-chromosome weights, in the order eta1 eta2 alpha1 alpha2 depth\n"
@@ -34,6 +35,10 @@ constexpr const char* kHelp =
     "                 candidate's mean_de00 (and max, p95) to the JSON\n"
     "  --size N       image side in pixels for --out (default: the preset's scene size)\n"
     "  --backend B    gpu (default; falls back to the CPU when no Vulkan device is usable) or cpu\n"
+    "  --checkpoint FILE  after every generation, save the run's state (population, history,\n"
+    "                 random generator) to FILE, atomically\n"
+    "  --resume FILE  continue the run saved in FILE (same preset and settings; --generations\n"
+    "                 may be larger): the result equals the uninterrupted run's, bit for bit\n"
     "Progress goes to stderr.\n";
 
 GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
@@ -70,6 +75,17 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     return ga;
 }
 
+void resume(GeneticAlgorithm& ga, const Preset& preset, const std::string& file) {
+    auto checkpoint = loadCheckpoint(file);
+    if (!checkpoint) throw UsageError("evolve: --resume: " + checkpoint.error().message);
+    if (auto mismatch = checkpointMismatch(*checkpoint, preset.family, preset.target,
+                                           preset.baseKappa, preset.ga))
+        throw UsageError("evolve: --resume: " + file + ": " + *mismatch);
+    if (!ga.restore(checkpoint->state))
+        throw UsageError("evolve: --resume: " + file +
+                         ": population: its size or history does not fit the settings");
+}
+
 }  // namespace
 
 int runEvolve(CommandLine& args) {
@@ -85,14 +101,28 @@ int runEvolve(CommandLine& args) {
         args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "evolve: --backend");
+    const auto checkpointFile = args.option("--checkpoint");
+    const auto resumeFile = args.option("--resume");
     args.finish();
 
     const Preset& preset = choice.preset;
     GeneticAlgorithm ga(preset.family, preset.target, preset.ga);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
-    ga.initialize();
+    if (resumeFile)
+        resume(ga, preset, *resumeFile);
+    else
+        ga.initialize();
+    auto saveState = [&] {
+        if (!checkpointFile) return;
+        const GaCheckpoint checkpoint{preset.family, preset.target, preset.baseKappa, preset.ga,
+                                      ga.state()};
+        if (auto saved = saveCheckpoint(checkpoint, *checkpointFile); !saved)
+            throw UsageError("evolve: --checkpoint: " + saved.error().message);
+    };
+    saveState();
     while (!ga.finished()) {
         ga.step();
+        saveState();
         if (showProgress)
             std::fprintf(stderr, "\rmatevo evolve: generation %d/%d", ga.generation(),
                          preset.ga.generations);

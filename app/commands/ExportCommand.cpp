@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -8,8 +9,10 @@
 #include "ProgressBar.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
+#include "color/Colormap.h"
 #include "export/ExportSet.h"
 #include "gpu/PopulationRendererFactory.h"
+#include "io/ImageFile.h"
 
 namespace matevo::cli {
 
@@ -43,6 +46,9 @@ constexpr const char* kHelp =
     "  --backend B       renderer of matevo's own images: gpu (default; falls back to the CPU\n"
     "                    when no Vulkan device is usable) or cpu; the glTF model is always\n"
     "                    rendered on the CPU\n"
+    "  --images DIR      also write, per material, NAME_matevo.png (our render), NAME_gltf.png\n"
+    "                    (the fitted glTF material in the same scene) and NAME_heatmap.png\n"
+    "                    (their per-pixel dE00, 0-10 through viridis) at the report size\n"
     "Each material's glTF sphere sits on a grid, so any glTF viewer shows the whole set.\n";
 
 std::vector<fs::path> variantFiles(const fs::path& folder) {
@@ -86,14 +92,39 @@ void printTable(const ExportReport& report) {
     double sum = 0.0;
     for (const auto& variant : report.variants) {
         const GltfMaterial& m = variant.fit.material;
+        const DeltaEStats& stats = variant.deltaE.stats;
         std::printf("%-28s %8.3f %9.3f %9.3f %6.3f %7.3f %9.3f %8.3f\n", variant.name.c_str(),
-                    variant.deltaE.mean, variant.deltaE.p95, m.metallic, m.roughness,
-                    m.clearcoat, m.clearcoatRoughness, m.ior);
-        sum += variant.deltaE.mean;
+                    stats.mean, stats.p95, m.metallic, m.roughness, m.clearcoat,
+                    m.clearcoatRoughness, m.ior);
+        sum += stats.mean;
     }
     std::printf("mean dE00 of the approximation over %zu material(s): %.3f (at %d px); wrote %s\n",
                 report.variants.size(), sum / double(report.variants.size()),
                 report.settings.reportSize, report.file.string().c_str());
+}
+
+// Names made safe for files: letters, digits, '-' and '_'.
+std::string fileStem(const std::string& name) {
+    std::string stem;
+    for (unsigned char c : name) stem += std::isalnum(c) || c == '-' || c == '_' ? char(c) : '_';
+    return stem;
+}
+
+void writeImages(const ExportReport& report, const fs::path& folder) {
+    std::error_code error;
+    fs::create_directories(folder, error);
+    if (error)
+        throw UsageError("export: --images: cannot create folder '" + folder.string() + "' (" +
+                         error.message() + ")");
+    for (const auto& variant : report.variants) {
+        const std::string stem = fileStem(variant.name);
+        for (const auto& [suffix, image] :
+             {std::pair{"_matevo.png", variant.matevoRender},
+              std::pair{"_gltf.png", variant.gltfRender},
+              std::pair{"_heatmap.png", heatmapImage(variant.deltaE, HeatmapSettings{})}})
+            if (auto written = writeImage(image, folder / (stem + suffix)); !written)
+                throw UsageError("export: --images: " + written.error().message);
+    }
 }
 
 }  // namespace
@@ -118,6 +149,7 @@ int runExport(CommandLine& args) {
         int(args.integerOption("--report-size", 16, 2048).value_or(settings.reportSize));
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "export: --backend");
+    const auto imageFolder = args.option("--images");
     args.finish();
     if (genomeFile.has_value() == variantsFolder.has_value())
         throw UsageError("export: give one of --genome FILE or --variants DIR");
@@ -135,13 +167,17 @@ int runExport(CommandLine& args) {
         if (materials.back().name.empty()) materials.back().name = file.stem().string();
     }
 
-    auto renderer = gpu::createPopulationRenderer({backend, "matevo export"}, SceneTextures{});
+    gpu::RendererRequest request;
+    request.backend = backend;
+    request.who = "matevo export";
+    auto renderer = gpu::createPopulationRenderer(request, SceneTextures{});
     ProgressBar progress(int(materials.size()));
     auto report = exportMaterials(materials, *renderer, format, *out, settings,
                                   [&](std::size_t done, std::size_t) {
                                       progress.update(int(done), "fitting");
                                   });
     if (!report) throw UsageError("export: " + report.error().message);
+    if (imageFolder) writeImages(*report, *imageFolder);
     if (asJson)
         std::printf("%s\n", exportReportJson(*report).dump(2).c_str());
     else

@@ -62,7 +62,8 @@ Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
             renderGltfSphere(fit.material, set.textures, material.scene, settings.reportSize);
         auto difference = compareImages(approximation, reference->front());
         if (!difference) return Error{material.name + ": " + difference.error().message};
-        set.variants.push_back({material.name, std::move(fit), difference->stats});
+        set.variants.push_back({material.name, std::move(fit), std::move(*difference),
+                                std::move(reference->front()), approximation});
         if (progress) progress(i + 1, materials.size());
     }
     return set;
@@ -117,12 +118,13 @@ nlohmann::ordered_json exportReportJson(const ExportReport& report) {
     nlohmann::ordered_json variants = nlohmann::ordered_json::array();
     double sum = 0.0;
     for (const auto& variant : report.variants) {
-        sum += variant.deltaE.mean;
+        const DeltaEStats& stats = variant.deltaE.stats;
+        sum += stats.mean;
         variants.push_back({{"name", variant.name},
                             {"gltf", gltfParameters(variant.fit.material)},
-                            {"mean_de00", variant.deltaE.mean},
-                            {"max_de00", variant.deltaE.max},
-                            {"p95_de00", variant.deltaE.p95},
+                            {"mean_de00", stats.mean},
+                            {"max_de00", stats.max},
+                            {"p95_de00", stats.p95},
                             {"fit_mean_de00", variant.fit.meanDeltaE00},
                             {"fit_renders", variant.fit.evaluations}});
     }

@@ -32,8 +32,10 @@ struct ExportSettings {
 
 struct ExportedVariant {
     std::string name;
-    GltfFit fit;           // the parameters and the ΔE00 at the fitting size
-    DeltaEStats deltaE;    // fitted glTF render vs Belcour render at the report size
+    GltfFit fit;        // the parameters and the ΔE00 at the fitting size
+    DeltaEMap deltaE;   // fitted glTF render vs Belcour render at the report size
+    Image matevoRender;  // the two renders at the report size, for a look
+    Image gltfRender;
 };
 
 // The fitted set, ready to be written in any format.

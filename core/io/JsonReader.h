@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/Result.h"
+
 namespace matevo {
 
 struct JsonFieldError : std::runtime_error {
@@ -55,6 +57,24 @@ private:
     std::vector<std::string>& warnings_;
     std::set<std::string> read_;
 };
+
+// Parses a JSON document and reads it with `read(const nlohmann::json&)`, which may throw
+// JsonFieldError: a syntax error or a field error becomes an Error naming `sourceName`, and the
+// warnings gathered while reading are prefixed with it.
+template <typename T, typename Read>
+Result<T> readJsonDocument(const std::string& jsonText, const std::string& sourceName,
+                           std::vector<std::string>& warnings, Read&& read) {
+    try {
+        const auto json = nlohmann::json::parse(jsonText);
+        T value = read(json);
+        for (auto& warning : warnings) warning = sourceName + ": " + warning;
+        return value;
+    } catch (const nlohmann::json::exception& error) {
+        return Error{sourceName + ": not valid JSON (" + error.what() + ")"};
+    } catch (const JsonFieldError& error) {
+        return Error{sourceName + ": " + error.what()};
+    }
+}
 
 template <std::size_t N>
 std::array<double, N> JsonReader::numbers(const std::string& key, double min, double max) {

@@ -4,7 +4,7 @@
 #include "io/AtomicFile.h"
 #include "io/GenomeJson.h"
 #include "io/JsonReader.h"
-#include "io/MaterialFieldsJson.h"
+#include "io/PresetFieldsJson.h"
 #include "io/TextFile.h"
 
 namespace matevo {
@@ -125,15 +125,12 @@ Status saveMaterial(const MaterialFile& material, const fs::path& file) {
 Result<LoadedMaterial> parseMaterial(const std::string& jsonText, const std::string& sourceName,
                                      const fs::path& folder, const MaterialFile& context) {
     LoadedMaterial loaded;
-    try {
-        const auto json = nlohmann::json::parse(jsonText);
-        loaded.file = readAnyMaterial(json, folder, context, loaded.warnings, loaded.fromContext);
-    } catch (const nlohmann::json::exception& error) {
-        return Error{sourceName + ": not valid JSON (" + error.what() + ")"};
-    } catch (const JsonFieldError& error) {
-        return Error{sourceName + ": " + error.what()};
-    }
-    for (auto& warning : loaded.warnings) warning = sourceName + ": " + warning;
+    auto file = readJsonDocument<MaterialFile>(
+        jsonText, sourceName, loaded.warnings, [&](const nlohmann::json& json) {
+            return readAnyMaterial(json, folder, context, loaded.warnings, loaded.fromContext);
+        });
+    if (!file) return file.error();
+    loaded.file = std::move(*file);
     return loaded;
 }
 

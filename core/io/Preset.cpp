@@ -6,28 +6,12 @@
 #include "io/AtomicFile.h"
 #include "io/GenomeJson.h"
 #include "io/JsonReader.h"
-#include "io/MaterialFieldsJson.h"
+#include "io/PresetFieldsJson.h"
 #include "io/TextFile.h"
 
 namespace matevo {
 
 namespace {
-
-GaSettings readGaSettings(JsonReader reader) {
-    GaSettings ga;
-    ga.population = int(reader.integer("population", 2, kMaxPopulation));
-    ga.generations = int(reader.integer("generations", 0, kMaxGenerations));
-    if (reader.has("metric"))
-        ga.metric =
-            reader.enumeration("metric", parseDistanceMetric, "chebyshev, euclidean or manhattan");
-    if (reader.has("weights")) ga.weights = reader.numbers<kChromosomeCount>("weights", 0.0, 1e6);
-    if (reader.has("normalize_by_range"))
-        ga.normalizeByRange = reader.boolean("normalize_by_range");
-    if (reader.has("elitism")) ga.elitism = int(reader.integer("elitism", 0, ga.population - 1));
-    if (reader.has("seed")) ga.seed = reader.unsignedInteger("seed");
-    reader.warnAboutUnknownFields();
-    return ga;
-}
 
 Preset readPreset(JsonReader& root) {
     Preset preset;
@@ -54,18 +38,14 @@ Preset readPreset(JsonReader& root) {
 }  // namespace
 
 Result<LoadedPreset> parsePreset(const std::string& jsonText, const std::string& sourceName) {
-    LoadedPreset loaded;
-    try {
-        auto json = nlohmann::json::parse(jsonText);
-        JsonReader root(json, "", loaded.warnings);
-        loaded.preset = readPreset(root);
-    } catch (const nlohmann::json::exception& error) {
-        return Error{sourceName + ": not valid JSON (" + error.what() + ")"};
-    } catch (const JsonFieldError& error) {
-        return Error{sourceName + ": " + error.what()};
-    }
-    for (auto& warning : loaded.warnings) warning = sourceName + ": " + warning;
-    return loaded;
+    std::vector<std::string> warnings;
+    auto preset = readJsonDocument<Preset>(jsonText, sourceName, warnings,
+                                           [&](const nlohmann::json& json) {
+                                               JsonReader root(json, "", warnings);
+                                               return readPreset(root);
+                                           });
+    if (!preset) return preset.error();
+    return LoadedPreset{std::move(*preset), std::move(warnings)};
 }
 
 Result<LoadedPreset> loadPreset(const std::filesystem::path& file) {
@@ -92,14 +72,7 @@ std::string serializePreset(const Preset& preset) {
         {"target", genomeToJson(preset.target)},
         {"textures",
          {{"roughness", preset.roughnessTexture}, {"base_color", preset.baseColorTexture}}},
-        {"ga",
-         {{"population", preset.ga.population},
-          {"generations", preset.ga.generations},
-          {"metric", toString(preset.ga.metric)},
-          {"weights", preset.ga.weights},
-          {"normalize_by_range", preset.ga.normalizeByRange},
-          {"elitism", preset.ga.elitism},
-          {"seed", preset.ga.seed}}},
+        {"ga", gaSettingsToJson(preset.ga)},
         {"scene", sceneToJson(preset.scene)},
     };
     if (preset.family.base == Base::Conductor) json["base_kappa"] = preset.baseKappa;

@@ -37,7 +37,8 @@ TEST(ExportCommand, EvolveJsonExportsToGlbWithAReport) {
     const auto out = folder / "best.glb";
     const auto exported = testing::runMatevo("export --genome " + shellQuoted(folder / "ev.json") +
                                              " --out " + shellQuoted(out) +
-                                             " --json --fit-size 24 --fit-renders 120 --report-size 32");
+                                             " --json --fit-size 24 --fit-renders 120 --report-size 32"
+                                             " --images " + shellQuoted(folder / "look"));
     ASSERT_EQ(exported.exitCode, 0) << exported.err;
     const auto report = nlohmann::json::parse(exported.out);
     EXPECT_EQ(report["format"], "glb");
@@ -47,6 +48,9 @@ TEST(ExportCommand, EvolveJsonExportsToGlbWithAReport) {
     EXPECT_TRUE(variant["gltf"].contains("clearcoat_roughness"));
     EXPECT_EQ(variant["gltf"]["roughness_texture"], "clearcoat");
     EXPECT_TRUE(fs::exists(out));
+    const std::string stem = "validation_painted_metal_best";
+    for (const char* suffix : {"_matevo.png", "_gltf.png", "_heatmap.png"})
+        EXPECT_TRUE(fs::exists(folder / "look" / (stem + suffix))) << suffix;
 }
 
 TEST(ExportCommand, AVariantFolderBecomesOneAssetWithAMaterialPerVariant) {

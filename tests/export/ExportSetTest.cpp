@@ -10,15 +10,18 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include "export/GltfRenderer.h"
 #include "io/Preset.h"
 #include "render/CpuPopulationRenderer.h"
 #include "scene/SphereRenderer.h"
+#include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 
 namespace matevo {
@@ -141,7 +144,7 @@ TEST(ExportSet, ReportedDeltaEIsRecomputedFromTheGltfRender) {
         const Image belcour = renderSphereCpu(material.material, *textures, material.scene, size);
         auto difference = compareImages(gltf, belcour);
         ASSERT_TRUE(difference.ok());
-        EXPECT_NEAR(difference->stats.mean, report.variants[0].deltaE.mean, 1e-9) << name;
+        EXPECT_NEAR(difference->stats.mean, report.variants[0].deltaE.stats.mean, 1e-9) << name;
         // A fit never does worse than where it started, and glTF reaches the Belcour look
         // within a few ΔE00 (docs/export.md lists the figures).
         EXPECT_LT(difference->stats.mean, 5.0) << name;
@@ -151,6 +154,31 @@ TEST(ExportSet, ReportedDeltaEIsRecomputedFromTheGltfRender) {
         sum += difference->stats.mean;
     }
     std::printf("mean over the validation presets: %.3f\n", sum / 3.0);
+}
+
+// The official Khronos validator (npm gltf-validator, installed by scripts/install-deps.sh).
+TEST(ExportSet, KhronosValidatorFindsNoErrors) {
+    testing::ScratchFolder folder("export");
+    std::string files;
+    for (const char* name : kValidationPresets) {
+        for (ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb}) {
+            const fs::path file = folder / (std::string(name) + std::string(fileExtension(format)));
+            exportedPreset(name, format, file);
+            files += " '" + file.string() + "'";
+        }
+    }
+    const fs::path script = fs::path(MATEVO_SOURCE_DIR) / "tests/export/gltf-validator/validate.js";
+    const auto result = testing::runCommand(std::string(MATEVO_NODE) + " '" + script.string() +
+                                            "'" + files);
+    EXPECT_EQ(result.exitCode, 0) << result.out << result.err;
+    std::size_t reports = 0;
+    std::istringstream lines(result.out);
+    for (std::string line; std::getline(lines, line);) {
+        const auto report = nlohmann::json::parse(line);
+        EXPECT_EQ(report["errors"], 0) << line;
+        ++reports;
+    }
+    EXPECT_EQ(reports, 6u) << result.err;
 }
 
 // MaterialX 1.39's gltf_pbr inputs and the nodes we use, named as its standard library does.

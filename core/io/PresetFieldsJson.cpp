@@ -1,4 +1,4 @@
-#include "io/MaterialFieldsJson.h"
+#include "io/PresetFieldsJson.h"
 
 #include "genome/FamilyRules.h"
 #include "io/JsonReader.h"
@@ -84,6 +84,32 @@ nlohmann::ordered_json sceneToJson(const SceneSettings& scene) {
             {"light_direction", scene.lightDirection},
             {"light_radiance", scene.lightRadiance},
             {"environment_radiance", scene.environmentRadiance}};
+}
+
+GaSettings readGaSettings(JsonReader reader) {
+    GaSettings ga;
+    ga.population = int(reader.integer("population", 2, kMaxPopulation));
+    ga.generations = int(reader.integer("generations", 0, kMaxGenerations));
+    if (reader.has("metric"))
+        ga.metric = reader.enumeration("metric", parseDistanceMetric,
+                                       "chebyshev, euclidean or manhattan");
+    if (reader.has("weights")) ga.weights = reader.numbers<kChromosomeCount>("weights", 0.0, 1e6);
+    if (reader.has("normalize_by_range"))
+        ga.normalizeByRange = reader.boolean("normalize_by_range");
+    if (reader.has("elitism")) ga.elitism = int(reader.integer("elitism", 0, ga.population - 1));
+    if (reader.has("seed")) ga.seed = reader.unsignedInteger("seed");
+    reader.warnAboutUnknownFields();
+    return ga;
+}
+
+nlohmann::ordered_json gaSettingsToJson(const GaSettings& ga) {
+    return {{"population", ga.population},
+            {"generations", ga.generations},
+            {"metric", toString(ga.metric)},
+            {"weights", ga.weights},
+            {"normalize_by_range", ga.normalizeByRange},
+            {"elitism", ga.elitism},
+            {"seed", ga.seed}};
 }
 
 }  // namespace matevo

@@ -1,12 +1,14 @@
 #pragma once
-// The JSON fields that a preset and a material file share: the family, the conductor base's
-// kappa and the scene. Readers throw JsonFieldError naming the field (JsonReader.h); writers
-// keep the keys in the order a person reads them.
+// The JSON fields that presets share with material files and GA checkpoints: the family, the
+// conductor base's kappa, the textures, the scene and the GA settings. Readers throw
+// JsonFieldError naming the field (JsonReader.h); writers keep the keys in the order a person
+// reads them.
 #include <array>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "evolve/GaSettings.h"
 #include "genome/MaterialFamily.h"
 #include "scene/SceneSettings.h"
 
@@ -32,5 +34,8 @@ TextureNames readTextures(JsonReader& parent, const MaterialFamily& family);
 
 SceneSettings readScene(JsonReader reader);
 nlohmann::ordered_json sceneToJson(const SceneSettings& scene);
+
+GaSettings readGaSettings(JsonReader reader);
+nlohmann::ordered_json gaSettingsToJson(const GaSettings& ga);
 
 }  // namespace matevo
