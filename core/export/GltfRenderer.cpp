@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -104,10 +105,13 @@ glm::dvec3 toVector(const std::array<double, 3>& values) {
 
 Image renderGltfSphere(const GltfMaterial& material, const SceneTextures& textures,
                        const SceneSettings& scene, int size, GltfRenderQuality quality) {
-    const AlbedoTable albedo(material, maxRoughnessTexel(textures), resolutionFor(quality));
+    const glm::dvec3 environmentRadiance = toVector(ambientRadiance(scene));
+    // The paper's scene has no ambient light: then the albedo is not needed.
+    std::optional<AlbedoTable> albedo;
+    if (environmentRadiance != glm::dvec3(0.0))
+        albedo.emplace(material, maxRoughnessTexel(textures), resolutionFor(quality));
     const glm::dvec3 toLight = glm::normalize(toVector(scene.lightDirection));
     const glm::dvec3 lightRadiance = toVector(scene.lightRadiance);
-    const glm::dvec3 environmentRadiance = toVector(scene.environmentRadiance);
     const bool textured = textures.roughness.width > 0 || textures.baseColor.width > 0;
     return renderSphereImage(scene, size, [&](const glm::dvec3& normal,
                                               const glm::dvec3& toViewer) {
@@ -122,9 +126,11 @@ Image renderGltfSphere(const GltfMaterial& material, const SceneTextures& textur
         const glm::dvec3 half = glm::normalize(toViewer + toLight);
         const auto f = evaluateGltfBrdf(surface, cosView, cosLight, glm::dot(normal, half),
                                         glm::dot(toViewer, half));
-        const auto environment = albedo.at(cosView, texels.roughness, surface.baseColor);
-        return toVector(f) * lightRadiance * std::max(cosLight, 0.0) +
-               toVector(environment) * environmentRadiance;
+        glm::dvec3 radiance = toVector(f) * lightRadiance * std::max(cosLight, 0.0);
+        if (albedo)
+            radiance += toVector(albedo->at(cosView, texels.roughness, surface.baseColor)) *
+                        environmentRadiance;
+        return radiance;
     });
 }
 

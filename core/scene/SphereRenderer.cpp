@@ -87,7 +87,7 @@ auto belcourShader(const LobesAt& lobesAt, const SceneTextures& textures,
                    const SceneSettings& scene) {
     const Shader<LobesAt> shader{lobesAt, textures, glm::normalize(toVector(scene.lightDirection)),
                                  toVector(scene.lightRadiance),
-                                 toVector(scene.environmentRadiance)};
+                                 toVector(ambientRadiance(scene))};
     return [shader](const glm::dvec3& normal, const glm::dvec3& toViewer) {
         return shader.radiance(normal, toViewer);
     };
