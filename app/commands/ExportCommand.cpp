@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kHelp =
-    "usage: matevo export (--genome FILE.json | --variants DIR) [--preset P]\n"
+    "usage: matevo export [--genome FILE.json | --variants DIR] [--preset P]\n"
     "                     [--format gltf|glb|mtlx] --out PATH [--json]\n"
     "                     [--fit-size N] [--report-size N]\n\n"
     "Writes materials for engines. glTF cannot express the layered Belcour model, so each\n"
@@ -29,6 +29,7 @@ constexpr const char* kHelp =
     "KHR_materials_clearcoat, _ior and _specular) whose render in matevo's scene is closest, by\n"
     "mean CIEDE2000, to matevo's own render of the material. The report gives, per material, the\n"
     "fitted parameters and the dE00 of the approximation.\n\n"
+    "With neither --genome nor --variants, the preset's target is exported.\n"
     "  --genome FILE     one material: any material JSON matevo writes (a variant file, an\n"
     "                    evolve report's best, the editor's copy, or a bare genome, which takes\n"
     "                    family, kappa, textures and scene from --preset)\n"
@@ -151,8 +152,8 @@ int runExport(CommandLine& args) {
         parseRenderBackend(args.option("--backend").value_or("gpu"), "export: --backend");
     const auto imageFolder = args.option("--images");
     args.finish();
-    if (genomeFile.has_value() == variantsFolder.has_value())
-        throw UsageError("export: give one of --genome FILE or --variants DIR");
+    if (genomeFile && variantsFolder)
+        throw UsageError("export: give --genome FILE or --variants DIR, not both");
     if (!out) throw UsageError("export: --out PATH is required");
     const ExportFormat format = chooseFormat(formatOption, *out);
     const fs::path folder = fs::path(*out).parent_path();
@@ -160,8 +161,11 @@ int runExport(CommandLine& args) {
         throw UsageError("export: --out: folder " + folder.string() + " does not exist");
 
     std::vector<MaterialFile> materials;
+    if (!genomeFile && !variantsFolder) materials.push_back(source.presetMaterial());
     const std::vector<fs::path> files =
-        genomeFile ? std::vector<fs::path>{*genomeFile} : variantFiles(*variantsFolder);
+        genomeFile      ? std::vector<fs::path>{*genomeFile}
+        : variantsFolder ? variantFiles(*variantsFolder)
+                         : std::vector<fs::path>{};
     for (const auto& file : files) {
         materials.push_back(source.load(file));
         if (materials.back().name.empty()) materials.back().name = file.stem().string();

@@ -103,11 +103,9 @@ nlohmann::ordered_json gltfParameters(const GltfMaterial& m) {
                                    {"clearcoat", m.clearcoat},
                                    {"clearcoat_roughness", m.clearcoatRoughness},
                                    {"base_color_texture", m.baseColorTextured}};
-    json["roughness_texture"] = m.roughnessTexture == GltfRoughnessTexture::None ? "none"
-                                : m.roughnessTexture == GltfRoughnessTexture::Base
-                                    ? "base"
-                                    : "clearcoat";
-    if (m.roughnessTexture != GltfRoughnessTexture::None)
+    json["roughness_texture"] = m.roughnessTextured;
+    json["clearcoat_roughness_texture"] = m.clearcoatRoughnessTextured;
+    if (m.roughnessTextured || m.clearcoatRoughnessTextured)
         json["roughness_texel_scale"] = m.roughnessTexelScale;
     return json;
 }

@@ -68,10 +68,10 @@ GltfSurface gltfSurface(const GltfMaterial& material, const std::array<double, 3
         std::sqrt(std::clamp(roughnessTexel * material.roughnessTexelScale, 0.0, 1.0));
     const double roughness =
         material.roughness *
-        (material.roughnessTexture == GltfRoughnessTexture::Base ? textureGreen : 1.0);
+        (material.roughnessTextured ? textureGreen : 1.0);
     const double clearcoatRoughness =
         material.clearcoatRoughness *
-        (material.roughnessTexture == GltfRoughnessTexture::Clearcoat ? textureGreen : 1.0);
+        (material.clearcoatRoughnessTextured ? textureGreen : 1.0);
     surface.metallic = material.metallic;
     // A delta light would make a perfectly smooth lobe invisible; both models clamp alike.
     surface.alpha = std::max(roughness * roughness, kMinimumLobeAlpha);

@@ -84,7 +84,8 @@ GltfMaterial physicalGuess(const MaterialInstance& instance, const SceneTextures
         const double largest = std::max(maxTexel(textures.roughness), 1e-6);
         guess.roughnessTexelScale = 1.0 / largest;
         const bool top = instance.family.texturedLayer == TexturedLayer::Top;
-        guess.roughnessTexture = top ? GltfRoughnessTexture::Clearcoat : GltfRoughnessTexture::Base;
+        guess.roughnessTextured = true;
+        guess.clearcoatRoughnessTextured = top;
         (top ? topScale : bottomScale) = largest;
     }
     // glTF alpha = factor^2 * scale * texel, Belcour alpha = weight * texel.

@@ -10,9 +10,6 @@
 
 namespace matevo {
 
-// Which glTF roughness the scene's roughness texture drives.
-enum class GltfRoughnessTexture { None, Base, Clearcoat };
-
 struct GltfMaterial {
     std::array<double, 3> baseColor = {1.0, 1.0, 1.0};  // linear
     double metallic = 1.0;
@@ -23,7 +20,10 @@ struct GltfMaterial {
     double clearcoat = 0.0;                                  // KHR_materials_clearcoat
     double clearcoatRoughness = 0.0;
     bool baseColorTextured = false;
-    GltfRoughnessTexture roughnessTexture = GltfRoughnessTexture::None;
+    // Which roughnesses the scene's roughness texture drives: a textured top layer roughens
+    // the coat and, seen through it, the base; a textured bottom layer the base alone.
+    bool roughnessTextured = false;
+    bool clearcoatRoughnessTextured = false;
     double roughnessTexelScale = 1.0;
 
     bool operator==(const GltfMaterial&) const = default;

@@ -31,9 +31,9 @@ class AlbedoTable {
 public:
     AlbedoTable(const GltfMaterial& material, double maxTexel, TableResolution resolution)
         : cosViewSteps_(resolution.cosViewSteps),
-          texelSteps_(material.roughnessTexture == GltfRoughnessTexture::None
-                          ? 0
-                          : resolution.texelSteps),
+          texelSteps_(material.roughnessTextured || material.clearcoatRoughnessTextured
+                          ? resolution.texelSteps
+                          : 0),
           maxTexel_(std::max(maxTexel, 1e-6)) {
         for (int t = 0; t <= texelSteps_; ++t) {
             const double texel = texelSteps_ ? maxTexel_ * t / texelSteps_ : 1.0;

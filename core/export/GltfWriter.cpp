@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
+#include <cctype>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -122,7 +122,7 @@ tinygltf::Material toGltf(const NamedGltfMaterial& named, const SharedTextures& 
     pbr.metallicFactor = m.metallic;
     pbr.roughnessFactor = m.roughness;
     if (m.baseColorTextured) pbr.baseColorTexture.index = textures.baseColor;
-    if (m.roughnessTexture == GltfRoughnessTexture::Base)
+    if (m.roughnessTextured)
         pbr.metallicRoughnessTexture.index = textures.roughness;
 
     auto use = [&](const std::string& extension, tinygltf::Value::Object values) {
@@ -133,7 +133,7 @@ tinygltf::Material toGltf(const NamedGltfMaterial& named, const SharedTextures& 
     };
     tinygltf::Value::Object clearcoat{{"clearcoatFactor", number(m.clearcoat)},
                                       {"clearcoatRoughnessFactor", number(m.clearcoatRoughness)}};
-    if (m.roughnessTexture == GltfRoughnessTexture::Clearcoat)
+    if (m.clearcoatRoughnessTextured)
         clearcoat["clearcoatRoughnessTexture"] = textureReference(textures.roughness);
     use("KHR_materials_clearcoat", std::move(clearcoat));
     use("KHR_materials_ior", {{"ior", number(m.ior)}});
@@ -161,7 +161,7 @@ Result<tinygltf::Model> buildModel(const std::vector<NamedGltfMaterial>& materia
     });
     const auto roughnessUser =
         std::find_if(materials.begin(), materials.end(), [](const auto& m) {
-            return m.material.roughnessTexture != GltfRoughnessTexture::None;
+            return m.material.roughnessTextured || m.material.clearcoatRoughnessTextured;
         });
     if (anyBaseColor) {
         auto texture = addTexture(model, textures.baseColor, PngValues::Srgb, "base_color");

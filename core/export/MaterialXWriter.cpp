@@ -97,10 +97,10 @@ std::string materialXDocument(const std::vector<NamedGltfMaterial>& materials,
         if (m.baseColorTextured)
             baseColorNode = texturedFactor(out, id + "_base_color", baseColorFile, true,
                                            color(m.baseColor));
-        if (m.roughnessTexture == GltfRoughnessTexture::Base)
+        if (m.roughnessTextured)
             roughnessNode = texturedFactor(out, id + "_roughness", roughnessFile, false,
                                            number(m.roughness));
-        if (m.roughnessTexture == GltfRoughnessTexture::Clearcoat)
+        if (m.clearcoatRoughnessTextured)
             clearcoatRoughnessNode = texturedFactor(out, id + "_clearcoat_roughness",
                                                     roughnessFile, false,
                                                     number(m.clearcoatRoughness));
@@ -138,7 +138,7 @@ Status writeMaterialX(const std::vector<NamedGltfMaterial>& materials,
     double roughnessTexelScale = 1.0;
     for (const auto& [name, m] : materials) {
         anyBaseColor = anyBaseColor || m.baseColorTextured;
-        if (m.roughnessTexture != GltfRoughnessTexture::None) {
+        if (m.roughnessTextured || m.clearcoatRoughnessTextured) {
             anyRoughness = true;
             roughnessTexelScale = m.roughnessTexelScale;
         }

@@ -1,8 +1,6 @@
 #include "export/NelderMead.h"
 
 #include <algorithm>
-#include <cmath>
-#include <numeric>
 
 namespace matevo {
 

@@ -72,6 +72,8 @@ MaterialFile readAnyMaterial(const nlohmann::json& json, const fs::path& folder,
             reader.fail("format", std::string("must be \"") + kMaterialFormat + "\"");
         return readMaterialFile(reader, folder);
     }
+    if (root.has("target") && root.has("ga"))
+        throw JsonFieldError("a preset, not a material (give it with --preset)");
     // A genome without its family: the context supplies the rest.
     fromContext = true;
     MaterialFile result = context;

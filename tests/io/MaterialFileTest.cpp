@@ -153,6 +153,13 @@ TEST(MaterialFile, ABareGenomeTakesTheContextAndItsFamilyRules) {
     EXPECT_NE(outside.error().message.find("roughcoat"), std::string::npos);
 }
 
+TEST(MaterialFile, APresetIsNotTakenForAGenome) {
+    auto read = parseMaterial(R"({"name": "p", "target": {"eta1": 1.2}, "ga": {}})", "p.json", "/tmp",
+                              paintedMetal());
+    ASSERT_FALSE(read.ok());
+    EXPECT_EQ(read.error().message, "p.json: a preset, not a material (give it with --preset)");
+}
+
 TEST(MaterialFile, MissingTextureFileNamesFileAndField) {
     testing::ScratchFolder folder("material");
     const auto file = folder / "m.json";
