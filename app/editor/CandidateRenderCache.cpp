@@ -12,8 +12,7 @@ constexpr std::size_t kTilesPerSubmission = 8;
 }  // namespace
 
 CandidateRenderCache::CandidateRenderCache(int tileSize, int targetSize, std::size_t capacity,
-                                           const gpu::Device& device,
-                                           gpu::RendererRequest request)
+                                           const gpu::Device& device, gpu::RendererRequest request)
     : tileSize_(tileSize),
       targetSize_(targetSize),
       capacity_(capacity),
@@ -104,8 +103,8 @@ Status CandidateRenderCache::draw(std::span<const Genome> genomes) {
     options.candidateImages = !gpuRenderer_;
     const MaterialInstance target = material(preset_->target);
     auto evaluation =
-        gpuRenderer_ ? gpuRenderer_->evaluateIntoTiles(target, materials, preset_->scene,
-                                                       tileSize_, options, targets)
+        gpuRenderer_ ? gpuRenderer_->evaluateIntoTiles(target, materials, preset_->scene, tileSize_,
+                                                       options, targets)
                      : renderer_->evaluate(target, materials, preset_->scene, tileSize_, options);
     if (!evaluation) return evaluation.error();
     if (!gpuRenderer_)

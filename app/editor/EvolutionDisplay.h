@@ -23,7 +23,8 @@ public:
     bool shownFinished() const { return finished_; }
 
 private:
-    Result<std::shared_ptr<ShownImage>> showTile(const std::shared_ptr<const gpu::DisplayTile>& tile);
+    Result<std::shared_ptr<ShownImage>> showTile(
+        const std::shared_ptr<const gpu::DisplayTile>& tile);
 
     ImageBridge& bridge_;
     std::uint64_t jobId_ = 0;

@@ -25,11 +25,6 @@ struct FragmentSettings {
 };
 constexpr std::uint32_t kTransformBytes = 4 * sizeof(float);
 
-Status checked(VkResult result, const char* what) {
-    if (result == VK_SUCCESS) return Ok{};
-    return gpu::vulkanError(what, result);
-}
-
 Result<gpu::UniqueSampler> createSampler(VkDevice device, VkFilter filter) {
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = filter;
@@ -39,7 +34,8 @@ Result<gpu::UniqueSampler> createSampler(VkDevice device, VkFilter filter) {
         VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     info.maxLod = 0.0f;
     VkSampler sampler = VK_NULL_HANDLE;
-    if (Status s = checked(vkCreateSampler(device, &info, nullptr, &sampler), "creating a sampler");
+    if (Status s = gpu::checkVulkan(vkCreateSampler(device, &info, nullptr, &sampler),
+                                    "creating a sampler");
         !s)
         return s.error();
     return gpu::UniqueSampler(device, sampler);
@@ -51,8 +47,8 @@ Result<gpu::UniqueShaderModule> createShader(VkDevice device, const std::uint32_
     info.codeSize = bytes;
     info.pCode = code;
     VkShaderModule module = VK_NULL_HANDLE;
-    if (Status s = checked(vkCreateShaderModule(device, &info, nullptr, &module),
-                           "creating a shader module");
+    if (Status s = gpu::checkVulkan(vkCreateShaderModule(device, &info, nullptr, &module),
+                                    "creating a shader module");
         !s)
         return s.error();
     return gpu::UniqueShaderModule(device, module);
@@ -101,8 +97,8 @@ Status ImageBridge::createLayouts() {
     setLayout.bindingCount = 3;
     setLayout.pBindings = bindings;
     VkDescriptorSetLayout set = VK_NULL_HANDLE;
-    if (Status s = checked(vkCreateDescriptorSetLayout(device_, &setLayout, nullptr, &set),
-                           "creating a descriptor set layout");
+    if (Status s = gpu::checkVulkan(vkCreateDescriptorSetLayout(device_, &setLayout, nullptr, &set),
+                                    "creating a descriptor set layout");
         !s)
         return s;
     setLayout_ = gpu::UniqueDescriptorSetLayout(device_, set);
@@ -116,8 +112,9 @@ Status ImageBridge::createLayouts() {
     layout.pushConstantRangeCount = 2;
     layout.pPushConstantRanges = ranges;
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    if (Status s = checked(vkCreatePipelineLayout(device_, &layout, nullptr, &pipelineLayout),
-                           "creating a pipeline layout");
+    if (Status s =
+            gpu::checkVulkan(vkCreatePipelineLayout(device_, &layout, nullptr, &pipelineLayout),
+                             "creating a pipeline layout");
         !s)
         return s;
     pipelineLayout_ = gpu::UniquePipelineLayout(device_, pipelineLayout);
@@ -153,7 +150,8 @@ Status ImageBridge::createPipeline(VkRenderPass renderPass) {
     VkPipelineInputAssemblyStateCreateInfo assembly{
         VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    VkPipelineViewportStateCreateInfo viewport{
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport.viewportCount = 1;
     viewport.scissorCount = 1;
     VkPipelineRasterizationStateCreateInfo raster{
@@ -201,7 +199,7 @@ Status ImageBridge::createPipeline(VkRenderPass renderPass) {
     info.layout = pipelineLayout_.get();
     info.renderPass = renderPass;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    if (Status s = checked(
+    if (Status s = gpu::checkVulkan(
             vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
             "creating the image pipeline");
         !s)
@@ -236,8 +234,8 @@ Result<std::shared_ptr<ShownImage>> ImageBridge::show(
     allocate.descriptorSetCount = 1;
     allocate.pSetLayouts = &layout;
     VkDescriptorSet set = VK_NULL_HANDLE;
-    if (Status s = checked(vkAllocateDescriptorSets(device_, &allocate, &set),
-                           "allocating a descriptor set for an image");
+    if (Status s = gpu::checkVulkan(vkAllocateDescriptorSets(device_, &allocate, &set),
+                                    "allocating a descriptor set for an image");
         !s)
         return s.error();
     const gpu::GpuImage& deltaE = tile->deltaE ? *tile->deltaE : *noDeltaE_->deltaE;

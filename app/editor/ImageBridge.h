@@ -46,8 +46,8 @@ private:
         ShownImage* owner;
         bool heatmap;
     };
-    ShownImage(std::shared_ptr<const gpu::DisplayTile> tile, VkDevice device,
-               VkDescriptorPool pool, VkDescriptorSet set);
+    ShownImage(std::shared_ptr<const gpu::DisplayTile> tile, VkDevice device, VkDescriptorPool pool,
+               VkDescriptorSet set);
 
     std::shared_ptr<const gpu::DisplayTile> tile_;
     VkDevice device_;
@@ -95,13 +95,12 @@ private:
     gpu::UniqueDescriptorSetLayout setLayout_;
     gpu::UniquePipelineLayout pipelineLayout_;
     gpu::UniquePipeline pipeline_;
-    gpu::Buffer colormap_;                 // the heatmap colours, a uniform buffer
+    gpu::Buffer colormap_;                      // the heatmap colours, a uniform buffer
     std::optional<gpu::DisplayTile> noDeltaE_;  // 1x1 "not covered", bound for tiles without one
     float minDeltaE_ = 0.0f;
     float maxDeltaE_ = 10.0f;
     // Per frame slot: what its draws use, kept until the slot is drawn again.
-    std::array<std::vector<std::shared_ptr<ShownImage>>, WindowRenderer::kFramesInFlight>
-        inFlight_;
+    std::array<std::vector<std::shared_ptr<ShownImage>>, WindowRenderer::kFramesInFlight> inFlight_;
     // Per frame: what the callbacks need (they receive only the draw command).
     std::vector<ImageDraw> draws_;
     VkCommandBuffer commands_ = VK_NULL_HANDLE;

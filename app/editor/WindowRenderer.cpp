@@ -10,18 +10,12 @@
 namespace matevo::editor {
 namespace {
 
-Status checked(VkResult result, const char* what) {
-    if (result == VK_SUCCESS) return Ok{};
-    return gpu::vulkanError(what, result);
-}
-
 VkSurfaceFormatKHR chooseSurfaceFormat(const VulkanContext& context) {
     const VkPhysicalDevice physicalDevice = context.device().physicalDevice();
     std::uint32_t count = 0;
     vkGetPhysicalDeviceSurfaceFormatsKHR(physicalDevice, context.surface(), &count, nullptr);
     std::vector<VkSurfaceFormatKHR> formats(count);
-    vkGetPhysicalDeviceSurfaceFormatsKHR(physicalDevice, context.surface(), &count,
-                                         formats.data());
+    vkGetPhysicalDeviceSurfaceFormatsKHR(physicalDevice, context.surface(), &count, formats.data());
     // UNORM: ImGui's colours and our sRGB-encoded images are written as they are.
     for (const auto& format : formats)
         if ((format.format == VK_FORMAT_B8G8R8A8_UNORM ||
@@ -34,8 +28,8 @@ VkSurfaceFormatKHR chooseSurfaceFormat(const VulkanContext& context) {
 Result<gpu::UniqueSemaphore> createSemaphore(VkDevice device) {
     VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     VkSemaphore semaphore = VK_NULL_HANDLE;
-    if (Status s = checked(vkCreateSemaphore(device, &info, nullptr, &semaphore),
-                           "creating a semaphore");
+    if (Status s = gpu::checkVulkan(vkCreateSemaphore(device, &info, nullptr, &semaphore),
+                                    "creating a semaphore");
         !s)
         return s.error();
     return gpu::UniqueSemaphore(device, semaphore);
@@ -63,7 +57,7 @@ WindowRenderer::~WindowRenderer() {
 
 Status WindowRenderer::waitIdle() {
     const auto queueLock = context_.device().lockQueue();
-    return checked(vkQueueWaitIdle(context_.device().queue()), "waiting for the queue");
+    return gpu::checkVulkan(vkQueueWaitIdle(context_.device().queue()), "waiting for the queue");
 }
 
 Status WindowRenderer::createRenderPass() {
@@ -96,8 +90,8 @@ Status WindowRenderer::createRenderPass() {
     info.dependencyCount = 1;
     info.pDependencies = &dependency;
     VkRenderPass renderPass = VK_NULL_HANDLE;
-    if (Status s = checked(vkCreateRenderPass(device_, &info, nullptr, &renderPass),
-                           "creating the window's render pass");
+    if (Status s = gpu::checkVulkan(vkCreateRenderPass(device_, &info, nullptr, &renderPass),
+                                    "creating the window's render pass");
         !s)
         return s;
     renderPass_ = gpu::UniqueRenderPass(device_, renderPass);
@@ -109,8 +103,8 @@ Status WindowRenderer::createFrames() {
         VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pool.queueFamilyIndex = context_.device().queueFamily();
         VkCommandPool commandPool = VK_NULL_HANDLE;
-        if (Status s = checked(vkCreateCommandPool(device_, &pool, nullptr, &commandPool),
-                               "creating a command pool");
+        if (Status s = gpu::checkVulkan(vkCreateCommandPool(device_, &pool, nullptr, &commandPool),
+                                        "creating a command pool");
             !s)
             return s;
         frame.commandPool = gpu::UniqueCommandPool(device_, commandPool);
@@ -118,14 +112,16 @@ Status WindowRenderer::createFrames() {
         allocate.commandPool = commandPool;
         allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
         allocate.commandBufferCount = 1;
-        if (Status s = checked(vkAllocateCommandBuffers(device_, &allocate, &frame.commands),
-                               "allocating a command buffer");
+        if (Status s =
+                gpu::checkVulkan(vkAllocateCommandBuffers(device_, &allocate, &frame.commands),
+                                 "allocating a command buffer");
             !s)
             return s;
         VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
         fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;
         VkFence done = VK_NULL_HANDLE;
-        if (Status s = checked(vkCreateFence(device_, &fence, nullptr, &done), "creating a fence");
+        if (Status s = gpu::checkVulkan(vkCreateFence(device_, &fence, nullptr, &done),
+                                        "creating a fence");
             !s)
             return s;
         frame.done = gpu::UniqueFence(device_, done);
@@ -139,9 +135,9 @@ Status WindowRenderer::createFrames() {
 Status WindowRenderer::createSwapchain(VkExtent2D size) {
     const VkPhysicalDevice physicalDevice = context_.device().physicalDevice();
     VkSurfaceCapabilitiesKHR capabilities;
-    if (Status s = checked(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(
-                               physicalDevice, context_.surface(), &capabilities),
-                           "reading the surface's capabilities");
+    if (Status s = gpu::checkVulkan(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(
+                                        physicalDevice, context_.surface(), &capabilities),
+                                    "reading the surface's capabilities");
         !s)
         return s;
     extent_ = capabilities.currentExtent.width != UINT32_MAX ? capabilities.currentExtent : size;
@@ -166,8 +162,8 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
     info.clipped = VK_TRUE;
     info.oldSwapchain = swapchain_.get();
     VkSwapchainKHR created = VK_NULL_HANDLE;
-    if (Status s = checked(vkCreateSwapchainKHR(device_, &info, nullptr, &created),
-                           "creating the swapchain");
+    if (Status s = gpu::checkVulkan(vkCreateSwapchainKHR(device_, &info, nullptr, &created),
+                                    "creating the swapchain");
         !s)
         return s;
     images_.clear();  // the old swapchain's views and framebuffers, before the swapchain
@@ -186,8 +182,8 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
         view.format = surfaceFormat_.format;
         view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         VkImageView imageView = VK_NULL_HANDLE;
-        if (Status s = checked(vkCreateImageView(device_, &view, nullptr, &imageView),
-                               "creating a swapchain image view");
+        if (Status s = gpu::checkVulkan(vkCreateImageView(device_, &view, nullptr, &imageView),
+                                        "creating a swapchain image view");
             !s)
             return s;
         target.view = gpu::UniqueImageView(device_, imageView);
@@ -199,8 +195,9 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
         framebuffer.height = extent_.height;
         framebuffer.layers = 1;
         VkFramebuffer handle = VK_NULL_HANDLE;
-        if (Status s = checked(vkCreateFramebuffer(device_, &framebuffer, nullptr, &handle),
-                               "creating a framebuffer");
+        if (Status s =
+                gpu::checkVulkan(vkCreateFramebuffer(device_, &framebuffer, nullptr, &handle),
+                                 "creating a framebuffer");
             !s)
             return s;
         target.framebuffer = gpu::UniqueFramebuffer(device_, handle);
@@ -220,8 +217,8 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
     }
     Frame& frame = frames_[frameIndex_];
     VkFence done = frame.done.get();
-    if (Status s = checked(vkWaitForFences(device_, 1, &done, VK_TRUE, UINT64_MAX),
-                           "waiting for a frame");
+    if (Status s = gpu::checkVulkan(vkWaitForFences(device_, 1, &done, VK_TRUE, UINT64_MAX),
+                                    "waiting for a frame");
         !s)
         return s.error();
     std::uint32_t imageIndex = 0;
@@ -233,13 +230,16 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
         return false;
     }
     if (acquired != VK_SUBOPTIMAL_KHR)
-        if (Status s = checked(acquired, "acquiring a swapchain image"); !s) return s.error();
+        if (Status s = gpu::checkVulkan(acquired, "acquiring a swapchain image"); !s)
+            return s.error();
     vkResetFences(device_, 1, &done);
     vkResetCommandPool(device_, frame.commandPool.get(), 0);
 
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    if (Status s = checked(vkBeginCommandBuffer(frame.commands, &begin), "recording a frame"); !s)
+    if (Status s =
+            gpu::checkVulkan(vkBeginCommandBuffer(frame.commands, &begin), "recording a frame");
+        !s)
         return s.error();
     VkClearValue clear{};
     clear.color = {{0.09f, 0.09f, 0.10f, 1.0f}};
@@ -254,7 +254,7 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
     vkCmdEndRenderPass(frame.commands);
     if (capture)
         if (Status s = recordCapture(frame.commands, imageIndex); !s) return s.error();
-    if (Status s = checked(vkEndCommandBuffer(frame.commands), "recording a frame"); !s)
+    if (Status s = gpu::checkVulkan(vkEndCommandBuffer(frame.commands), "recording a frame"); !s)
         return s.error();
 
     const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
@@ -278,8 +278,8 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
     VkResult presented = VK_SUCCESS;
     {
         const auto queueLock = context_.device().lockQueue();
-        if (Status s = checked(vkQueueSubmit(context_.device().queue(), 1, &submit, done),
-                               "submitting a frame");
+        if (Status s = gpu::checkVulkan(vkQueueSubmit(context_.device().queue(), 1, &submit, done),
+                                        "submitting a frame");
             !s)
             return s.error();
         presented = vkQueuePresentKHR(context_.device().queue(), &present);
@@ -287,12 +287,12 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
     if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
         acquired == VK_SUBOPTIMAL_KHR)
         needsRebuild_ = true;
-    else if (Status s = checked(presented, "presenting a frame"); !s)
+    else if (Status s = gpu::checkVulkan(presented, "presenting a frame"); !s)
         return s.error();
 
     if (capture) {
-        if (Status s = checked(vkWaitForFences(device_, 1, &done, VK_TRUE, UINT64_MAX),
-                               "waiting for a frame");
+        if (Status s = gpu::checkVulkan(vkWaitForFences(device_, 1, &done, VK_TRUE, UINT64_MAX),
+                                        "waiting for a frame");
             !s)
             return s.error();
         finishCapture(*capture);
@@ -304,18 +304,16 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
 Status WindowRenderer::recordCapture(VkCommandBuffer commands, std::uint32_t imageIndex) {
     const VkDeviceSize bytes = VkDeviceSize(extent_.width) * extent_.height * 4;
     if (!readback_ || readback_->size() < bytes) {
-        auto buffer = gpu::Buffer::create(context_.device(), bytes,
-                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                          gpu::MemoryUse::Readback);
+        auto buffer = gpu::Buffer::create(
+            context_.device(), bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback);
         if (!buffer) return buffer.error();
         readback_ = std::move(buffer).value();
     }
     VkImage image = images_[imageIndex].image;
-    gpu::transitionImage(commands, image, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                         VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_ACCESS_TRANSFER_READ_BIT);
+    gpu::transitionImage(
+        commands, image, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {extent_.width, extent_.height, 1};

@@ -9,20 +9,6 @@ namespace {
 constexpr VkImageUsageFlags kTileUsage =
     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 
-VkImageMemoryBarrier layoutChange(VkImage image, VkImageLayout from, VkImageLayout to,
-                                  VkAccessFlags sourceAccess, VkAccessFlags destinationAccess) {
-    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    barrier.srcAccessMask = sourceAccess;
-    barrier.dstAccessMask = destinationAccess;
-    barrier.oldLayout = from;
-    barrier.newLayout = to;
-    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image;
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    return barrier;
-}
-
 void copyImage(VkCommandBuffer commands, const Buffer& batch, VkDeviceSize bytesPerImage,
                uint32_t index, const GpuImage& image) {
     VkBufferImageCopy region{};
@@ -59,16 +45,16 @@ void recordCopiesToTiles(VkCommandBuffer commands, const Buffer& renders, const 
     std::vector<VkImageMemoryBarrier> toTransfer;
     std::vector<VkImageMemoryBarrier> toShader;
     for (const DisplayTile* tile : tiles) {
-        for (const GpuImage* image : {&tile->render, deltaE && tile->deltaE ? &*tile->deltaE
-                                                                            : nullptr}) {
+        for (const GpuImage* image :
+             {&tile->render, deltaE && tile->deltaE ? &*tile->deltaE : nullptr}) {
             if (!image) continue;
-            toTransfer.push_back(layoutChange(image->handle(), VK_IMAGE_LAYOUT_UNDEFINED,
-                                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                                              VK_ACCESS_TRANSFER_WRITE_BIT));
-            toShader.push_back(layoutChange(
-                image->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                VK_ACCESS_SHADER_READ_BIT));
+            toTransfer.push_back(layoutBarrier(image->handle(), VK_IMAGE_LAYOUT_UNDEFINED,
+                                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                                               VK_ACCESS_TRANSFER_WRITE_BIT));
+            toShader.push_back(layoutBarrier(image->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                             VK_ACCESS_TRANSFER_WRITE_BIT,
+                                             VK_ACCESS_SHADER_READ_BIT));
         }
     }
     // The batches were written by compute shaders or by the host.

@@ -24,8 +24,7 @@ struct DisplayTile {
     GpuImage render;
     std::optional<GpuImage> deltaE;
 
-    static Result<DisplayTile> create(const Device& device, int width, int height,
-                                      bool withDeltaE);
+    static Result<DisplayTile> create(const Device& device, int width, int height, bool withDeltaE);
 };
 
 // Records copies of image i of `renders` (and of `deltaE`, when given, into tiles that have

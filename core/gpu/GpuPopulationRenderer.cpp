@@ -64,8 +64,8 @@ Status GpuPopulationRenderer::renderTarget(const TargetKey& key) {
     if (!buffer) return buffer.error();
     auto commands = runner_.begin();
     if (!commands) return commands.error();
-    if (auto recorded = renderer_.record(*commands, std::span(&key.material, 1), key.scene,
-                                         key.size, *buffer);
+    if (auto recorded =
+            renderer_.record(*commands, std::span(&key.material, 1), key.scene, key.size, *buffer);
         !recorded)
         return recorded.error();
     computeWriteToHostReadBarrier(*commands);
@@ -104,10 +104,10 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
         return recorded.error();
     // Also orders the target's render of an earlier submission before the pass reads it.
     computeWriteToComputeReadBarrier(*commands);
-    deltaEPass_.record(*commands, {&targetRender_, &renders_, &deltaE_, &heatmaps_,
-                                   shape.pixelCount(), shape.count, 0, 0,
-                                   float(options.heatmap.minDeltaE),
-                                   float(options.heatmap.maxDeltaE)});
+    deltaEPass_.record(
+        *commands,
+        {&targetRender_, &renders_, &deltaE_, &heatmaps_, shape.pixelCount(), shape.count, 0, 0,
+         float(options.heatmap.minDeltaE), float(options.heatmap.maxDeltaE)});
     if (!tiles.empty()) recordCopiesToTiles(*commands, renders_, &deltaE_, shape, tiles);
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
@@ -122,15 +122,14 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
 }
 
 Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
-                                             const SceneSettings& scene,
-                                             const DisplayTile& tile) {
+                                             const SceneSettings& scene, const DisplayTile& tile) {
     const ImageBatchShape shape{tile.width, tile.height, 1};
     auto buffer = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
     if (!buffer) return buffer.error();
     auto commands = runner_.begin();
     if (!commands) return commands.error();
-    if (auto recorded = renderer_.record(*commands, std::span(&material, 1), scene, tile.width,
-                                         *buffer);
+    if (auto recorded =
+            renderer_.record(*commands, std::span(&material, 1), scene, tile.width, *buffer);
         !recorded)
         return recorded.error();
     const DisplayTile* tiles[] = {&tile};

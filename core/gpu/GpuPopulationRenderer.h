@@ -62,7 +62,7 @@ private:
     GpuSphereRenderer renderer_;
     DeltaE00Pass deltaEPass_;
     std::optional<TargetKey> targetKey_;
-    Image target_;        // the host copy of targetRender_
+    Image target_;  // the host copy of targetRender_
     Buffer targetRender_;
     ImageBatchShape bufferShape_;
     Buffer renders_;
