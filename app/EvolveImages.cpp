@@ -13,7 +13,7 @@ namespace {
 
 void writeOrThrow(const Image& image, const std::filesystem::path& file) {
     auto status = writeImage(image, file);
-    if (!status) throw UsageError("evolve: " + status.error().message);
+    if (!status) throw UsageError(status.error().message);
 }
 
 std::string rankedName(const char* prefix, std::size_t rank) {
@@ -44,7 +44,7 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
     for (const char* folder : {"candidates", "heatmaps"}) {
         std::filesystem::create_directories(outDir / folder, error);
         if (error)
-            throw UsageError("evolve: --out: cannot create '" + (outDir / folder).string() +
+            throw UsageError("--out: cannot create '" + (outDir / folder).string() +
                              "' (" + error.message() + ")");
     }
     writeOrThrow(evaluation.target, outDir / "target.png");

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ExperimentRenderer.h"
+#include "Messages.h"
 #include "PresetOption.h"
 #include "ProgressBar.h"
 #include "commands/Commands.h"
@@ -29,7 +30,8 @@ constexpr const char* kHelp =
     "distance metric, N GA runs (default 36) at a population and generation count (default 50\n"
     "and 5); the best individual of each run is rendered and scored by its mean CIEDE2000\n"
     "against the target's render.\n"
-    "  --preset P         target preset (default presets/validation_metal.json)\n"
+    "  --preset P         target preset, a file or a name from matevo presets\n"
+    "                     (default validation_metal)\n"
     "  --all              the three validation presets (metal, painted metal, metal depth)\n"
     "  --sweep            the paper's sizes instead of --population/--generations: (50,5),\n"
     "                     (100,10), (300,20), and (500,50) for a material with a medium\n"
@@ -57,7 +59,7 @@ std::vector<DistanceMetric> parseMetrics(const std::optional<std::string>& text)
         return {DistanceMetric::Chebyshev, DistanceMetric::Euclidean, DistanceMetric::Manhattan};
     auto metric = parseDistanceMetric(*text);
     if (!metric)
-        throw UsageError("experiment: --metric: unknown metric '" + *text +
+        throw UsageError("--metric: unknown metric '" + *text +
                          "' (expected chebyshev, euclidean, manhattan or all)");
     return {*metric};
 }
@@ -65,9 +67,9 @@ std::vector<DistanceMetric> parseMetrics(const std::optional<std::string>& text)
 std::vector<PresetChoice> choosePresets(CommandLine& args) {
     if (!args.flag("--all")) return {loadPresetOption(args)};
     if (args.option("--preset"))
-        throw UsageError("experiment: --preset and --all exclude each other");
+        throw UsageError("--preset and --all exclude each other");
     auto folder = findResourceDirectory("presets");
-    if (!folder) throw std::runtime_error(folder.error().message);
+    if (!folder) throw UsageError(folder.error().message);
     std::vector<PresetChoice> presets;
     for (const char* file : kValidationPresets) presets.push_back(loadPresetFile(*folder / file));
     return presets;
@@ -91,7 +93,7 @@ Request parseRequest(CommandLine& args) {
     const auto generations = args.integerOption("--generations", 0, kMaxGenerations);
     if (request.sweep && (population || generations))
         throw UsageError(
-            "experiment: --sweep sets the population and generations itself; "
+            "--sweep sets the population and generations itself; "
             "leave out --population and --generations");
     if (population) settings.size.population = int(*population);
     if (generations) settings.size.generations = int(*generations);
@@ -102,7 +104,7 @@ Request parseRequest(CommandLine& args) {
     if (auto seed = args.unsignedOption("--seed")) settings.seed = *seed;
     if (auto size = args.integerOption("--size", 8, 4096)) request.imageSize = int(*size);
     if (auto backend = args.option("--backend"))
-        request.backend = parseRenderBackend(*backend, "experiment: --backend");
+        request.backend = parseRenderBackend(*backend, "--backend");
     if (auto out = args.option("--out")) request.outDir = *out;
     args.finish();
     return request;
@@ -125,8 +127,9 @@ std::string sizeLabel(const GaSize& size) {
     return label;
 }
 
+// A file that cannot be written is the output folder's fault: bad input, exit 2.
 void writeOrThrow(const Status& status) {
-    if (!status) throw std::runtime_error(status.error().message);
+    if (!status) throw UsageError(status.error().message);
 }
 
 // One chart per metric for one preset and size, sharing their axes.
@@ -174,7 +177,7 @@ int runExperiment(CommandLine& args) {
     std::error_code error;
     std::filesystem::create_directories(request.outDir, error);
     if (error)
-        throw UsageError("experiment: --out: cannot create folder '" + request.outDir.string() +
+        throw UsageError("--out: cannot create folder '" + request.outDir.string() +
                          "' (" + error.message() + ")");
 
     const auto started = std::chrono::steady_clock::now();
@@ -211,8 +214,10 @@ int runExperiment(CommandLine& args) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
     printSummaries(allRecords, stdout);
-    std::fprintf(stderr, "matevo experiment: %zu runs in %.1f s; results in %s\n",
-                 allRecords.size(), seconds, request.outDir.string().c_str());
+    char done[64];
+    std::snprintf(done, sizeof done, "%zu runs in %.1f s; results in ", allRecords.size(),
+                  seconds);
+    printMessage(done + request.outDir.string());
     return 0;
 }
 
