@@ -25,7 +25,8 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo experiment [--preset P | --all] [--runs N] [--population N]\n"
     "                         [--generations N] [--sweep] [--metric M|all] [--seed S]\n"
-    "                         [--runs-per-seed N] [--size N] [--backend gpu|cpu] [--out DIR]\n\n"
+    "                         [--runs-per-seed N] [--size N] [--scene paper|ambient]\n"
+    "                         [--backend gpu|cpu] [--out DIR]\n\n"
     "The experiment of Bernardi et al. (2020) section 5: for the target material and each\n"
     "distance metric, N GA runs (default 36) at a population and generation count (default 50\n"
     "and 5); the best individual of each run is rendered and scored by its mean CIEDE2000\n"
@@ -41,6 +42,9 @@ constexpr const char* kHelp =
     "                     (k+1)-th SplitMix64 draw of its block seed as its GA seed (the CSV's\n"
     "                     seed column; replay one run with matevo evolve --seed)\n"
     "  --size N           render size in pixels (default: the preset's scene, 256)\n"
+    "  --scene M          paper (default): the paper's scene, one light and no ambient\n"
+    "                     term, whatever mode the preset names; ambient: the light plus the\n"
+    "                     preset's uniform environment\n"
     "  --backend B        gpu (default): Vulkan, one batch per 64 runs; with no usable\n"
     "                     Vulkan device it says so on stderr and renders on the CPU.\n"
     "                     cpu: the CPU reference renderer\n"
@@ -80,6 +84,7 @@ struct Request {
     ExperimentSettings settings;
     bool sweep = false;
     std::optional<int> imageSize;
+    SceneMode sceneMode = SceneMode::Paper;
     RenderBackend backend = RenderBackend::Gpu;
     std::filesystem::path outDir = "experiment-results";
 };
@@ -103,6 +108,15 @@ Request parseRequest(CommandLine& args) {
     settings.metrics = parseMetrics(args.option("--metric"));
     if (auto seed = args.unsignedOption("--seed")) settings.seed = *seed;
     if (auto size = args.integerOption("--size", 8, 4096)) request.imageSize = int(*size);
+    if (auto text = args.option("--scene")) {
+        auto mode = parseSceneMode(*text);
+        if (!mode)
+            throw UsageError("--scene: unknown mode '" + *text +
+                             "' (expected paper or ambient)");
+        request.sceneMode = *mode;
+    }
+    // The §5 protocol is defined in its own scene: the option, not the preset, decides.
+    for (auto& choice : request.presets) choice.preset.scene.mode = request.sceneMode;
     if (auto backend = args.option("--backend"))
         request.backend = parseRenderBackend(*backend, "--backend");
     if (auto out = args.option("--out")) request.outDir = *out;
@@ -215,9 +229,9 @@ int runExperiment(CommandLine& args) {
 
     printSummaries(allRecords, stdout);
     char done[64];
-    std::snprintf(done, sizeof done, "%zu runs in %.1f s; results in ", allRecords.size(),
-                  seconds);
-    printMessage(done + request.outDir.string());
+    std::snprintf(done, sizeof done, "%zu runs in %.1f s in the ", allRecords.size(), seconds);
+    printMessage(done + std::string(describe(request.sceneMode)) + " scene; results in " +
+                 request.outDir.string());
     return 0;
 }
 
