@@ -1,11 +1,10 @@
 #include "MaterialOption.h"
 
-#include <cstdio>
+#include "Messages.h"
 
 namespace matevo::cli {
 
-MaterialSource::MaterialSource(CommandLine& args, std::string command)
-    : command_(std::move(command)), preset_(loadPresetOption(args)) {}
+MaterialSource::MaterialSource(CommandLine& args) : preset_(loadPresetOption(args)) {}
 
 MaterialFile MaterialSource::presetMaterial() const {
     return materialFromPreset(preset_.preset, preset_.file, preset_.preset.target,
@@ -16,10 +15,9 @@ MaterialFile MaterialSource::load(const std::filesystem::path& file) const {
     auto loaded = loadMaterial(file, presetMaterial());
     if (!loaded) throw UsageError(loaded.error().message);
     if (preset_.named && !loaded->fromContext)
-        throw UsageError(command_ + ": --preset: not used: " + file.string() +
+        throw UsageError("--preset: not used: " + file.string() +
                          " names its own family, kappa, textures and scene");
-    for (const auto& warning : loaded->warnings)
-        std::fprintf(stderr, "matevo: warning: %s\n", warning.c_str());
+    for (const auto& warning : loaded->warnings) printWarning(warning);
     return std::move(loaded->file);
 }
 

@@ -5,7 +5,6 @@
 // names its own, --preset would do nothing and is refused. Warnings go to stderr; errors become
 // a UsageError (exit 2).
 #include <filesystem>
-#include <string>
 
 #include "CommandLine.h"
 #include "PresetOption.h"
@@ -15,15 +14,14 @@ namespace matevo::cli {
 
 class MaterialSource {
 public:
-    // Consumes --preset. `command` prefixes messages ("render").
-    MaterialSource(CommandLine& args, std::string command);
+    // Consumes --preset.
+    explicit MaterialSource(CommandLine& args);
 
     // The preset's target as a material.
     MaterialFile presetMaterial() const;
     MaterialFile load(const std::filesystem::path& file) const;
 
 private:
-    std::string command_;
     PresetChoice preset_;
 };
 

@@ -7,6 +7,7 @@
 
 #include "EvolveImages.h"
 #include "EvolveReport.h"
+#include "Messages.h"
 #include "PresetOption.h"
 #include "commands/Commands.h"
 #include "evolve/GeneticAlgorithm.h"
@@ -23,7 +24,8 @@ constexpr const char* kHelp =
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
     "                     [--size N] [--backend gpu|cpu] [--checkpoint FILE] [--resume FILE]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
-    "(default: presets/validation_metal.json). Options override the preset's GA settings.\n"
+    "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
+    "override the preset's GA settings.\n"
     "  --weights      12 per-chromosome weights, in the order eta1 eta2 alpha1 alpha2 depth\n"
     "                 sigma_s(r,g,b) sigma_a(r,g,b) g\n"
     "  --normalize    divide each chromosome's difference by its family range\n"
@@ -34,7 +36,8 @@ constexpr const char* kHelp =
     "                 (per-pixel CIEDE2000 against the target, 0-10 through viridis); adds each\n"
     "                 candidate's mean_de00 (and max, p95) to the JSON\n"
     "  --size N       image side in pixels for --out (default: the preset's scene size)\n"
-    "  --backend B    gpu (default; falls back to the CPU when no Vulkan device is usable) or cpu\n"
+    "  --backend B    renderer for --out: gpu (default; falls back to the CPU when no Vulkan\n"
+    "                 device is usable) or cpu\n"
     "  --checkpoint FILE  after every generation, save the run's state (population, history,\n"
     "                 random generator) to FILE, atomically\n"
     "  --resume FILE  continue the run saved in FILE (same preset and settings; --generations\n"
@@ -49,18 +52,18 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     if (auto metric = args.option("--metric")) {
         auto parsed = parseDistanceMetric(*metric);
         if (!parsed)
-            throw UsageError("evolve: --metric: unknown metric '" + *metric +
+            throw UsageError("--metric: unknown metric '" + *metric +
                              "' (expected chebyshev, euclidean or manhattan)");
         ga.metric = *parsed;
     }
     if (auto weights = args.option("--weights")) {
-        auto values = parseNumberList(*weights, "evolve: --weights");
+        auto values = parseNumberList(*weights, "--weights");
         if (values.size() != kChromosomeCount)
-            throw UsageError("evolve: --weights: expected 12 comma-separated numbers, got " +
+            throw UsageError("--weights: expected 12 comma-separated numbers, got " +
                              std::to_string(values.size()));
         for (std::size_t i = 0; i < kChromosomeCount; ++i) {
             if (values[i] < 0)
-                throw UsageError("evolve: --weights: weight of " +
+                throw UsageError("--weights: weight of " +
                                  std::string(chromosomeName(i)) + " must not be negative");
             ga.weights[i] = values[i];
         }
@@ -69,7 +72,7 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     if (auto elitism = args.integerOption("--elitism", 0, kMaxPopulation))
         ga.elitism = int(*elitism);
     if (ga.elitism >= ga.population)
-        throw UsageError("evolve: --elitism must be smaller than the population (" +
+        throw UsageError("--elitism must be smaller than the population (" +
                          std::to_string(ga.population) + ")");
     if (auto seed = args.unsignedOption("--seed")) ga.seed = *seed;
     return ga;
@@ -77,12 +80,12 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
 
 void resume(GeneticAlgorithm& ga, const Preset& preset, const std::string& file) {
     auto checkpoint = loadCheckpoint(file);
-    if (!checkpoint) throw UsageError("evolve: --resume: " + checkpoint.error().message);
+    if (!checkpoint) throw UsageError("--resume: " + checkpoint.error().message);
     if (auto mismatch = checkpointMismatch(*checkpoint, preset.family, preset.target,
                                            preset.baseKappa, preset.ga))
-        throw UsageError("evolve: --resume: " + file + ": " + *mismatch);
+        throw UsageError("--resume: " + file + ": " + *mismatch);
     if (!ga.restore(checkpoint->state))
-        throw UsageError("evolve: --resume: " + file +
+        throw UsageError("--resume: " + file +
                          ": population: its size or history does not fit the settings");
 }
 
@@ -100,7 +103,10 @@ int runEvolve(CommandLine& args) {
     const int imageSize = int(
         args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
     const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "evolve: --backend");
+        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    // Images are rendered only for --out.
+    args.onlyWith("--size", "--out");
+    args.onlyWith("--backend", "--out");
     const auto checkpointFile = args.option("--checkpoint");
     const auto resumeFile = args.option("--resume");
     args.finish();
@@ -117,15 +123,15 @@ int runEvolve(CommandLine& args) {
         const GaCheckpoint checkpoint{preset.family, preset.target, preset.baseKappa, preset.ga,
                                       ga.state()};
         if (auto saved = saveCheckpoint(checkpoint, *checkpointFile); !saved)
-            throw UsageError("evolve: --checkpoint: " + saved.error().message);
+            throw UsageError("--checkpoint: " + saved.error().message);
     };
     saveState();
     while (!ga.finished()) {
         ga.step();
         saveState();
         if (showProgress)
-            std::fprintf(stderr, "\rmatevo evolve: generation %d/%d", ga.generation(),
-                         preset.ga.generations);
+            std::fprintf(stderr, "\r%sgeneration %d/%d", messagePrefix().c_str(),
+                         ga.generation(), preset.ga.generations);
     }
     if (showProgress) std::fputc('\n', stderr);
 
@@ -135,13 +141,13 @@ int runEvolve(CommandLine& args) {
         std::error_code error;
         std::filesystem::create_directories(*outDir, error);
         if (error)
-            throw UsageError("evolve: --out: cannot create folder '" + *outDir + "' (" +
+            throw UsageError("--out: cannot create folder '" + *outDir + "' (" +
                              error.message() + ")");
         addImageStatistics(
             report, writeEvolveImages(choice, ranked, imageSize, backend, *outDir));
         auto file = std::filesystem::path(*outDir) / "result.json";
         auto status = writeFileAtomically(file, report.dump(2) + "\n");
-        if (!status) throw UsageError("evolve: " + status.error().message);
+        if (!status) throw UsageError(status.error().message);
     }
     if (asJson)
         std::printf("%s\n", report.dump(2).c_str());

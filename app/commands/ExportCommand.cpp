@@ -56,7 +56,7 @@ std::vector<fs::path> variantFiles(const fs::path& folder) {
     const fs::path inner = folder / "variants";
     const fs::path searched = fs::is_directory(inner) ? inner : folder;
     if (!fs::is_directory(searched))
-        throw UsageError("export: --variants: " + folder.string() + ": no such folder");
+        throw UsageError("--variants: " + folder.string() + ": no such folder");
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(searched)) {
         const std::string name = entry.path().filename().string();
@@ -66,7 +66,7 @@ std::vector<fs::path> variantFiles(const fs::path& folder) {
     }
     std::sort(files.begin(), files.end());
     if (files.empty())
-        throw UsageError("export: --variants: no variant_NNN.json in " + searched.string());
+        throw UsageError("--variants: no variant_NNN.json in " + searched.string());
     return files;
 }
 
@@ -74,16 +74,16 @@ ExportFormat chooseFormat(const std::optional<std::string>& option, const fs::pa
     if (option) {
         const auto format = parseExportFormat(*option);
         if (!format)
-            throw UsageError("export: --format: unknown format '" + *option +
+            throw UsageError("--format: unknown format '" + *option +
                              "' (expected gltf, glb or mtlx)");
         if (out.extension() != fileExtension(*format))
-            throw UsageError("export: --out: " + out.string() + ": a " + *option +
+            throw UsageError("--out: " + out.string() + ": a " + *option +
                              " file ends in " + std::string(fileExtension(*format)));
         return *format;
     }
     for (ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb, ExportFormat::MaterialX})
         if (out.extension() == fileExtension(format)) return format;
-    throw UsageError("export: --out: " + out.string() +
+    throw UsageError("--out: " + out.string() +
                      ": the extension must be .gltf, .glb or .mtlx (or give --format)");
 }
 
@@ -115,7 +115,7 @@ void writeImages(const ExportReport& report, const fs::path& folder) {
     std::error_code error;
     fs::create_directories(folder, error);
     if (error)
-        throw UsageError("export: --images: cannot create folder '" + folder.string() + "' (" +
+        throw UsageError("--images: cannot create folder '" + folder.string() + "' (" +
                          error.message() + ")");
     for (const auto& variant : report.variants) {
         const std::string stem = fileStem(variant.name);
@@ -124,7 +124,7 @@ void writeImages(const ExportReport& report, const fs::path& folder) {
               std::pair{"_gltf.png", variant.gltfRender},
               std::pair{"_heatmap.png", heatmapImage(variant.deltaE, HeatmapSettings{})}})
             if (auto written = writeImage(image, folder / (stem + suffix)); !written)
-                throw UsageError("export: --images: " + written.error().message);
+                throw UsageError("--images: " + written.error().message);
     }
 }
 
@@ -135,7 +135,7 @@ int runExport(CommandLine& args) {
         std::fputs(kHelp, stdout);
         return 0;
     }
-    const MaterialSource source(args, "export");
+    const MaterialSource source(args);
     const auto genomeFile = args.option("--genome");
     const auto variantsFolder = args.option("--variants");
     const auto formatOption = args.option("--format");
@@ -149,16 +149,16 @@ int runExport(CommandLine& args) {
     settings.reportSize =
         int(args.integerOption("--report-size", 16, 2048).value_or(settings.reportSize));
     const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "export: --backend");
+        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const auto imageFolder = args.option("--images");
     args.finish();
     if (genomeFile && variantsFolder)
-        throw UsageError("export: give --genome FILE or --variants DIR, not both");
-    if (!out) throw UsageError("export: --out PATH is required");
+        throw UsageError("give --genome FILE or --variants DIR, not both");
+    if (!out) throw UsageError("--out PATH is required");
     const ExportFormat format = chooseFormat(formatOption, *out);
     const fs::path folder = fs::path(*out).parent_path();
     if (!folder.empty() && !fs::is_directory(folder))
-        throw UsageError("export: --out: folder " + folder.string() + " does not exist");
+        throw UsageError("--out: folder " + folder.string() + " does not exist");
 
     std::vector<MaterialFile> materials;
     if (!genomeFile && !variantsFolder) materials.push_back(source.presetMaterial());
@@ -180,7 +180,7 @@ int runExport(CommandLine& args) {
                                   [&](std::size_t done, std::size_t) {
                                       progress.update(int(done), "fitting");
                                   });
-    if (!report) throw UsageError("export: " + report.error().message);
+    if (!report) throw UsageError(report.error().message);
     if (imageFolder) writeImages(*report, *imageFolder);
     if (asJson)
         std::printf("%s\n", exportReportJson(*report).dump(2).c_str());

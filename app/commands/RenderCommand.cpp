@@ -14,10 +14,10 @@ namespace {
 
 std::filesystem::path outputPath(CommandLine& args) {
     const auto out = args.option("--out");
-    if (!out) throw UsageError("render: --out FILE.png|FILE.exr is required");
+    if (!out) throw UsageError("--out FILE.png|FILE.exr is required");
     const std::string extension = std::filesystem::path(*out).extension().string();
     if (extension != ".png" && extension != ".exr")
-        throw UsageError("render: --out: " + *out + ": the extension must be .png or .exr");
+        throw UsageError("--out: " + *out + ": the extension must be .png or .exr");
     return *out;
 }
 
@@ -37,14 +37,14 @@ int runRender(CommandLine& args) {
             "float. --size is the image side in pixels (default: the material's scene).\n"
             "--backend gpu (default) renders with Vulkan; with no usable Vulkan device it says\n"
             "so on stderr and renders on the CPU. --backend cpu is the reference renderer.\n"
-            "The default preset is presets/validation_metal.json beside the executable.\n");
+            "--preset is a file or a name from matevo presets (default validation_metal).\n");
         return 0;
     }
-    const MaterialSource source(args, "render");
+    const MaterialSource source(args);
     const auto genomeFile = args.option("--genome");
     const auto size = args.integerOption("--size", 1, 8192);
     const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "render: --backend");
+        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const std::filesystem::path out = outputPath(args);
     args.finish();
 
@@ -55,14 +55,9 @@ int runRender(CommandLine& args) {
     auto renderer = gpu::createPopulationRenderer({backend, "matevo render"}, *textures);
     auto images = renderer->render(std::span(&material.material, 1), material.scene,
                                    int(size.value_or(material.scene.imageSize)));
-    if (!images) {
-        std::fprintf(stderr, "matevo render: %s\n", images.error().message.c_str());
-        return 1;
-    }
-    if (auto written = writeImage(images->front(), out); !written) {
-        std::fprintf(stderr, "matevo render: %s\n", written.error().message.c_str());
-        return 1;
-    }
+    if (!images) throw std::runtime_error(images.error().message);
+    if (auto written = writeImage(images->front(), out); !written)
+        throw UsageError("--out: " + written.error().message);
     return 0;
 }
 
