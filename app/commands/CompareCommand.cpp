@@ -1,9 +1,11 @@
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "color/Colormap.h"
+#include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "commands/Commands.h"
 #include "io/ImageFile.h"
@@ -12,17 +14,30 @@ namespace matevo::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: matevo compare A B [--heatmap OUT.png] [--range MIN,MAX] [--json]\n\n"
-    "Per-pixel CIEDE2000 (kL = kC = kH = 1) between images A and B of the same size, pooled over\n"
-    "the pixels both images cover (alpha > 0.5), or over all pixels when neither has alpha.\n"
-    "Images are .png (sRGB-encoded) or .exr (linear); colours are clamped to [0, 1] and taken\n"
-    "as linear sRGB -> XYZ (D65) -> L*a*b*.\n\n"
-    "  --heatmap OUT.png  also write the per-pixel dE00 through the viridis colour map,\n"
-    "                     transparent where a pixel is not covered (.png or .exr)\n"
+    "usage: matevo compare A B [--metric de00|flip] [--ppd N] [--heatmap OUT.png]\n"
+    "                      [--range MIN,MAX] [--json]\n\n"
+    "The difference between images A and B of the same size, pooled over the pixels both\n"
+    "images cover (alpha > 0.5), or over all pixels when neither has alpha. Images are .png\n"
+    "(sRGB-encoded) or .exr (linear); colours are clamped to [0, 1].\n\n"
+    "  --metric de00      (default) per-pixel CIEDE2000 (kL = kC = kH = 1), linear sRGB ->\n"
+    "                     XYZ (D65) -> L*a*b*\n"
+    "  --metric flip      LDR-FLIP (Andersson et al. 2020): colour after the eye's contrast\n"
+    "                     sensitivity plus edge and point differences, per pixel in [0, 1],\n"
+    "                     on the images composited over black\n"
+    "  --ppd N            FLIP's viewing condition in pixels per degree (default 67.02: a\n"
+    "                     0.7 m wide 3840-pixel monitor at 0.7 m)\n"
+    "  --heatmap OUT.png  also write the per-pixel error through a colour map (dE00: viridis\n"
+    "                     over --range; FLIP: magma over [0, 1]), transparent where a pixel is\n"
+    "                     not covered (.png or .exr)\n"
     "  --range MIN,MAX    dE00 range of the colour map (default 0,10)\n"
-    "  --json             print {\"mean_de00\", \"max_de00\", \"p95_de00\", \"pixels\"}\n\n"
-    "p95 is the nearest-rank 95th percentile. Exit status 2 when a file cannot be read or is not\n"
-    "an image, the sizes differ, or no pixel is covered in both images.\n";
+    "  --json             print {\"mean_de00\", \"max_de00\", \"p95_de00\", \"pixels\"}, or with\n"
+    "                     FLIP {\"mean_flip\", \"median_flip\", \"q1_flip\", \"q3_flip\",\n"
+    "                     \"max_flip\", \"pixels\"}\n\n"
+    "p95 is the nearest-rank 95th percentile. FLIP's median and quartiles are weighted by the\n"
+    "error itself, as its authors pool it. Exit status 2 when a file cannot be read or is not an\n"
+    "image, the sizes differ, or no pixel is covered in both images.\n";
+
+enum class Metric { DeltaE00, Flip };
 
 ImageFileContents readOrThrow(const std::string& file) {
     auto contents = readImageFile(file);
@@ -42,39 +57,39 @@ HeatmapSettings parseRange(const std::string& text) {
 
 }  // namespace
 
-int runCompare(CommandLine& args) {
-    if (args.wantsHelp()) {
-        std::printf("%s", kHelp);
-        return 0;
-    }
-    const bool asJson = args.flag("--json");
-    const auto heatmapFile = args.option("--heatmap");
-    const auto range = args.option("--range");
-    const auto files = args.positionals();
-    args.finish();
-    if (files.size() != 2)
-        throw UsageError("compare: expected two images A B (see matevo compare --help)");
-    const HeatmapSettings settings = range ? parseRange(*range) : HeatmapSettings{};
+namespace {
 
-    const ImageFileContents a = readOrThrow(files[0]);
-    const ImageFileContents b = readOrThrow(files[1]);
-    if (a.image.width != b.image.width || a.image.height != b.image.height)
-        throw UsageError("compare: image sizes differ: " + files[0] + " is " +
-                         std::to_string(a.image.width) + "x" + std::to_string(a.image.height) +
-                         ", " + files[1] + " is " + std::to_string(b.image.width) + "x" +
-                         std::to_string(b.image.height));
+Metric parseMetric(const std::optional<std::string>& text) {
+    if (!text || *text == "de00") return Metric::DeltaE00;
+    if (*text == "flip") return Metric::Flip;
+    throw UsageError("compare: --metric: unknown metric '" + *text + "' (expected de00 or flip)");
+}
+
+// Both files named, for the error when they share no covered pixel.
+struct Inputs {
+    const Image& a;
+    const Image& b;
+    std::string names;  // "A and B"
+};
+
+UsageError nothingCovered(const Inputs& inputs) {
+    return UsageError("compare: no pixel is covered in both " + inputs.names + " (alpha > 0.5)");
+}
+
+void writeHeatmap(const Image& heatmap, const std::optional<std::string>& file) {
+    if (!file) return;
+    auto written = writeImage(heatmap, *file);
+    if (!written) throw UsageError("compare: --heatmap: " + written.error().message);
+}
+
+void reportDeltaE(const Inputs& inputs, const HeatmapSettings& settings,
+                  const std::optional<std::string>& heatmapFile, bool asJson) {
     // An image without alpha reads as fully covered, so coverage always comes from alpha.
-    auto map = compareImages(a.image, b.image);
+    auto map = compareImages(inputs.a, inputs.b);
     if (!map) throw UsageError("compare: " + map.error().message);
     const DeltaEStats& stats = map->stats;
-    if (stats.pixels == 0)
-        throw UsageError("compare: no pixel is covered in both " + files[0] + " and " + files[1] +
-                         " (alpha > 0.5)");
-
-    if (heatmapFile) {
-        auto written = writeImage(heatmapImage(*map, settings), *heatmapFile);
-        if (!written) throw UsageError("compare: --heatmap: " + written.error().message);
-    }
+    if (stats.pixels == 0) throw nothingCovered(inputs);
+    writeHeatmap(heatmapImage(*map, settings), heatmapFile);
     if (asJson) {
         nlohmann::ordered_json out;
         out["mean_de00"] = stats.mean;
@@ -86,6 +101,76 @@ int runCompare(CommandLine& args) {
         std::printf("mean dE00 %.4f, max %.4f, p95 %.4f over %zu pixels\n", stats.mean, stats.max,
                     stats.p95, stats.pixels);
     }
+}
+
+void reportFlip(const Inputs& inputs, const FlipSettings& settings,
+                const std::optional<std::string>& heatmapFile, bool asJson) {
+    auto map = computeFlip(inputs.a, inputs.b, true, settings);
+    if (!map) throw UsageError("compare: " + map.error().message);
+    const FlipStats& stats = map->stats;
+    if (stats.pixels == 0) throw nothingCovered(inputs);
+    writeHeatmap(flipHeatmapImage(*map), heatmapFile);
+    if (asJson) {
+        nlohmann::ordered_json out;
+        out["mean_flip"] = stats.mean;
+        out["median_flip"] = stats.weightedMedian;
+        out["q1_flip"] = stats.firstWeightedQuartile;
+        out["q3_flip"] = stats.thirdWeightedQuartile;
+        out["max_flip"] = stats.max;
+        out["pixels"] = stats.pixels;
+        std::printf("%s\n", out.dump().c_str());
+    } else {
+        std::printf(
+            "mean FLIP %.4f, weighted median %.4f, quartiles %.4f / %.4f, max %.4f over %zu "
+            "pixels\n",
+            stats.mean, stats.weightedMedian, stats.firstWeightedQuartile,
+            stats.thirdWeightedQuartile, stats.max, stats.pixels);
+    }
+}
+
+}  // namespace
+
+int runCompare(CommandLine& args) {
+    if (args.wantsHelp()) {
+        std::printf("%s", kHelp);
+        return 0;
+    }
+    const bool asJson = args.flag("--json");
+    const auto heatmapFile = args.option("--heatmap");
+    const auto range = args.option("--range");
+    const Metric metric = parseMetric(args.option("--metric"));
+    const auto pixelsPerDegree = args.option("--ppd");
+    const auto files = args.positionals();
+    args.finish();
+    if (files.size() != 2)
+        throw UsageError("compare: expected two images A B (see matevo compare --help)");
+    if (metric == Metric::Flip && range)
+        throw UsageError("compare: --range is for dE00; FLIP's colour map spans its fixed range "
+                         "[0, 1]");
+    if (metric == Metric::DeltaE00 && pixelsPerDegree)
+        throw UsageError("compare: --ppd is FLIP's viewing condition; add --metric flip");
+    const HeatmapSettings settings = range ? parseRange(*range) : HeatmapSettings{};
+    FlipSettings flipSettings;
+    if (pixelsPerDegree) {
+        const auto values = parseNumberList(*pixelsPerDegree, "compare: --ppd");
+        if (values.size() != 1 || !(values[0] > 0.0 && values[0] <= 1000.0))
+            throw UsageError("compare: --ppd: expected a number in (0, 1000], got '" +
+                             *pixelsPerDegree + "'");
+        flipSettings.pixelsPerDegree = values[0];
+    }
+
+    const ImageFileContents a = readOrThrow(files[0]);
+    const ImageFileContents b = readOrThrow(files[1]);
+    if (a.image.width != b.image.width || a.image.height != b.image.height)
+        throw UsageError("compare: image sizes differ: " + files[0] + " is " +
+                         std::to_string(a.image.width) + "x" + std::to_string(a.image.height) +
+                         ", " + files[1] + " is " + std::to_string(b.image.width) + "x" +
+                         std::to_string(b.image.height));
+    const Inputs inputs{a.image, b.image, files[0] + " and " + files[1]};
+    if (metric == Metric::Flip)
+        reportFlip(inputs, flipSettings, heatmapFile, asJson);
+    else
+        reportDeltaE(inputs, settings, heatmapFile, asJson);
     return 0;
 }
 
