@@ -7,6 +7,7 @@
 #include "color/Colormap.h"
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
+#include "Messages.h"
 #include "commands/Commands.h"
 #include "io/ImageFile.h"
 
@@ -14,8 +15,8 @@ namespace matevo::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: matevo compare A B [--metric de00|flip] [--ppd N] [--heatmap OUT.png]\n"
-    "                      [--range MIN,MAX] [--json]\n\n"
+    "usage: matevo compare A B [--metric de00|flip] [--ppd N] [--heatmap OUT.png\n"
+    "                      [--range MIN,MAX]] [--json] [--fail-above X]\n\n"
     "The difference between images A and B of the same size, pooled over the pixels both\n"
     "images cover (alpha > 0.5), or over all pixels when neither has alpha. Images are .png\n"
     "(sRGB-encoded) or .exr (linear); colours are clamped to [0, 1].\n\n"
@@ -32,7 +33,9 @@ constexpr const char* kHelp =
     "  --range MIN,MAX    dE00 range of the colour map (default 0,10)\n"
     "  --json             print {\"mean_de00\", \"max_de00\", \"p95_de00\", \"pixels\"}, or with\n"
     "                     FLIP {\"mean_flip\", \"median_flip\", \"q1_flip\", \"q3_flip\",\n"
-    "                     \"max_flip\", \"pixels\"}\n\n"
+    "                     \"max_flip\", \"pixels\"}\n"
+    "  --fail-above X     exit status 3 when the mean (dE00, or FLIP with --metric flip) is\n"
+    "                     above X (for pipelines; the figures are printed either way)\n\n"
     "p95 is the nearest-rank 95th percentile. FLIP's median and quartiles are weighted by the\n"
     "error itself, as its authors pool it. Exit status 2 when a file cannot be read or is not an\n"
     "image, the sizes differ, or no pixel is covered in both images.\n";
@@ -41,31 +44,27 @@ enum class Metric { DeltaE00, Flip };
 
 ImageFileContents readOrThrow(const std::string& file) {
     auto contents = readImageFile(file);
-    if (!contents) throw UsageError("compare: " + contents.error().message);
+    if (!contents) throw UsageError(contents.error().message);
     return std::move(*contents);
 }
 
 HeatmapSettings parseRange(const std::string& text) {
-    const auto bounds = parseNumberList(text, "compare: --range");
+    const auto bounds = parseNumberList(text, "--range");
     if (bounds.size() != 2 || !(bounds[0] < bounds[1]))
-        throw UsageError("compare: --range: expected MIN,MAX with MIN < MAX, got '" + text + "'");
+        throw UsageError("--range: expected MIN,MAX with MIN < MAX, got '" + text + "'");
     HeatmapSettings settings;
     settings.minDeltaE = bounds[0];
     settings.maxDeltaE = bounds[1];
     return settings;
 }
 
-}  // namespace
-
-namespace {
-
 Metric parseMetric(const std::optional<std::string>& text) {
     if (!text || *text == "de00") return Metric::DeltaE00;
     if (*text == "flip") return Metric::Flip;
-    throw UsageError("compare: --metric: unknown metric '" + *text + "' (expected de00 or flip)");
+    throw UsageError("--metric: unknown metric '" + *text + "' (expected de00 or flip)");
 }
 
-// Both files named, for the error when they share no covered pixel.
+// The two images, named for the error when they share no covered pixel.
 struct Inputs {
     const Image& a;
     const Image& b;
@@ -73,20 +72,21 @@ struct Inputs {
 };
 
 UsageError nothingCovered(const Inputs& inputs) {
-    return UsageError("compare: no pixel is covered in both " + inputs.names + " (alpha > 0.5)");
+    return UsageError("no pixel is covered in both " + inputs.names + " (alpha > 0.5)");
 }
 
 void writeHeatmap(const Image& heatmap, const std::optional<std::string>& file) {
     if (!file) return;
     auto written = writeImage(heatmap, *file);
-    if (!written) throw UsageError("compare: --heatmap: " + written.error().message);
+    if (!written) throw UsageError("--heatmap: " + written.error().message);
 }
 
-void reportDeltaE(const Inputs& inputs, const HeatmapSettings& settings,
-                  const std::optional<std::string>& heatmapFile, bool asJson) {
+// Prints the figures; returns the pooled mean for --fail-above.
+double reportDeltaE(const Inputs& inputs, const HeatmapSettings& settings,
+                    const std::optional<std::string>& heatmapFile, bool asJson) {
     // An image without alpha reads as fully covered, so coverage always comes from alpha.
     auto map = compareImages(inputs.a, inputs.b);
-    if (!map) throw UsageError("compare: " + map.error().message);
+    if (!map) throw UsageError(map.error().message);
     const DeltaEStats& stats = map->stats;
     if (stats.pixels == 0) throw nothingCovered(inputs);
     writeHeatmap(heatmapImage(*map, settings), heatmapFile);
@@ -101,12 +101,13 @@ void reportDeltaE(const Inputs& inputs, const HeatmapSettings& settings,
         std::printf("mean dE00 %.4f, max %.4f, p95 %.4f over %zu pixels\n", stats.mean, stats.max,
                     stats.p95, stats.pixels);
     }
+    return stats.mean;
 }
 
-void reportFlip(const Inputs& inputs, const FlipSettings& settings,
-                const std::optional<std::string>& heatmapFile, bool asJson) {
+double reportFlip(const Inputs& inputs, const FlipSettings& settings,
+                  const std::optional<std::string>& heatmapFile, bool asJson) {
     auto map = computeFlip(inputs.a, inputs.b, true, settings);
-    if (!map) throw UsageError("compare: " + map.error().message);
+    if (!map) throw UsageError(map.error().message);
     const FlipStats& stats = map->stats;
     if (stats.pixels == 0) throw nothingCovered(inputs);
     writeHeatmap(flipHeatmapImage(*map), heatmapFile);
@@ -126,6 +127,7 @@ void reportFlip(const Inputs& inputs, const FlipSettings& settings,
             stats.mean, stats.weightedMedian, stats.firstWeightedQuartile,
             stats.thirdWeightedQuartile, stats.max, stats.pixels);
     }
+    return stats.mean;
 }
 
 }  // namespace
@@ -138,40 +140,47 @@ int runCompare(CommandLine& args) {
     const bool asJson = args.flag("--json");
     const auto heatmapFile = args.option("--heatmap");
     const auto range = args.option("--range");
+    const auto failAbove = args.numberOption("--fail-above");
     const Metric metric = parseMetric(args.option("--metric"));
-    const auto pixelsPerDegree = args.option("--ppd");
+    const auto pixelsPerDegree = args.numberOption("--ppd");
+    args.onlyWith("--range", "--heatmap");
     const auto files = args.positionals();
     args.finish();
     if (files.size() != 2)
-        throw UsageError("compare: expected two images A B (see matevo compare --help)");
+        throw UsageError("expected two images A B (see matevo compare --help)");
     if (metric == Metric::Flip && range)
-        throw UsageError("compare: --range is for dE00; FLIP's colour map spans its fixed range "
-                         "[0, 1]");
+        throw UsageError("--range is for dE00; FLIP's colour map spans its fixed range [0, 1]");
     if (metric == Metric::DeltaE00 && pixelsPerDegree)
-        throw UsageError("compare: --ppd is FLIP's viewing condition; add --metric flip");
+        throw UsageError("--ppd is FLIP's viewing condition; add --metric flip");
     const HeatmapSettings settings = range ? parseRange(*range) : HeatmapSettings{};
     FlipSettings flipSettings;
     if (pixelsPerDegree) {
-        const auto values = parseNumberList(*pixelsPerDegree, "compare: --ppd");
-        if (values.size() != 1 || !(values[0] > 0.0 && values[0] <= 1000.0))
-            throw UsageError("compare: --ppd: expected a number in (0, 1000], got '" +
-                             *pixelsPerDegree + "'");
-        flipSettings.pixelsPerDegree = values[0];
+        if (!(*pixelsPerDegree > 0.0 && *pixelsPerDegree <= 1000.0))
+            throw UsageError("--ppd: expected a number in (0, 1000], got " +
+                             std::to_string(*pixelsPerDegree));
+        flipSettings.pixelsPerDegree = *pixelsPerDegree;
     }
 
     const ImageFileContents a = readOrThrow(files[0]);
     const ImageFileContents b = readOrThrow(files[1]);
     if (a.image.width != b.image.width || a.image.height != b.image.height)
-        throw UsageError("compare: image sizes differ: " + files[0] + " is " +
+        throw UsageError("image sizes differ: " + files[0] + " is " +
                          std::to_string(a.image.width) + "x" + std::to_string(a.image.height) +
                          ", " + files[1] + " is " + std::to_string(b.image.width) + "x" +
                          std::to_string(b.image.height));
     const Inputs inputs{a.image, b.image, files[0] + " and " + files[1]};
-    if (metric == Metric::Flip)
-        reportFlip(inputs, flipSettings, heatmapFile, asJson);
-    else
-        reportDeltaE(inputs, settings, heatmapFile, asJson);
-    return 0;
+    const double mean = metric == Metric::Flip
+                            ? reportFlip(inputs, flipSettings, heatmapFile, asJson)
+                            : reportDeltaE(inputs, settings, heatmapFile, asJson);
+    if (failAbove && mean > *failAbove) {
+        std::fflush(stdout);
+        char text[128];
+        std::snprintf(text, sizeof text, "mean %s %.4f is above --fail-above %g",
+                      metric == Metric::Flip ? "FLIP" : "dE00", mean, *failAbove);
+        printMessage(text);
+        return exitCode(ExitStatus::AboveThreshold);
+    }
+    return exitCode(ExitStatus::Success);
 }
 
 }  // namespace matevo::cli

@@ -80,6 +80,9 @@ TEST_F(CompareCommandTest, FlipJsonReportsTheLibraryStatisticsOverTheSamePixels)
     const auto far = nlohmann::json::parse(
         runMatevo("compare " + files + " --metric flip --ppd 20 --json").out);
     EXPECT_NE(far.at("mean_flip").get<double>(), map->stats.mean);
+    // --fail-above judges the chosen metric's mean.
+    EXPECT_EQ(runMatevo("compare " + files + " --metric flip --fail-above 0.01").exitCode, 3);
+    EXPECT_EQ(runMatevo("compare " + files + " --metric flip --fail-above 0.99").exitCode, 0);
 }
 
 TEST_F(CompareCommandTest, FlipHeatmapIsMagmaOverTheUnitRange) {
