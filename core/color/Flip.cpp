@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "color/ImageDifference.h"
 #include "color/detail/ForEachChunk.h"
 
 namespace matevo {
@@ -233,13 +234,9 @@ FlipStats poolFlip(const std::vector<float>& errors) {
 
 Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useAlpha,
                             const FlipSettings& settings, unsigned workerCount) {
-    if (reference.width != test.width || reference.height != test.height)
-        return Error{"image sizes differ: " + std::to_string(reference.width) + "x" +
-                     std::to_string(reference.height) + " and " + std::to_string(test.width) +
-                     "x" + std::to_string(test.height)};
+    if (auto comparable = requireComparable(reference, test); !comparable)
+        return comparable.error();
     const std::size_t pixelCount = reference.pixelCount();
-    if (reference.rgba.size() != pixelCount * 4 || test.rgba.size() != pixelCount * 4)
-        return Error{"malformed image: pixel data does not match its size"};
     if (!(settings.pixelsPerDegree > 0.0) || settings.pixelsPerDegree > 1000.0)
         return Error{"pixels per degree must be in (0, 1000]"};
 

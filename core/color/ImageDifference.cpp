@@ -109,15 +109,20 @@ double nearestRankPercentile95(const DeltaEMap& map, const std::vector<ChunkSumm
 
 }  // namespace
 
-Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
-                                unsigned workerCount) {
+Status requireComparable(const Image& a, const Image& b) {
     if (a.width != b.width || a.height != b.height)
         return Error{"image sizes differ: " + std::to_string(a.width) + "x" +
                      std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
                      std::to_string(b.height)};
-    const std::size_t pixelCount = a.pixelCount();
-    if (a.rgba.size() != pixelCount * 4 || b.rgba.size() != pixelCount * 4)
+    if (a.rgba.size() != a.pixelCount() * 4 || b.rgba.size() != b.pixelCount() * 4)
         return Error{"malformed image: pixel data does not match its size"};
+    return Ok{};
+}
+
+Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
+                                unsigned workerCount) {
+    if (auto comparable = requireComparable(a, b); !comparable) return comparable.error();
+    const std::size_t pixelCount = a.pixelCount();
 
     DeltaEMap map;
     map.width = a.width;
