@@ -1,3 +1,4 @@
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -5,6 +6,7 @@
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
+#include "common/MemoryBudget.h"
 #include "io/GenomeJson.h"
 #include "io/ImageFile.h"
 
@@ -45,6 +47,11 @@ int runRender(CommandLine& args) {
         parseRenderBackend(args.option("--backend").value_or("gpu"), "render: --backend");
     const std::filesystem::path out = outputPath(args);
     args.finish();
+    // The render, its read-back and the encoded file: about three RGBA float images.
+    if (auto fits = checkMemoryEstimate(std::uint64_t(size) * std::uint64_t(size) * 16 * 3,
+                                        "render: --size " + std::to_string(size));
+        !fits)
+        throw UsageError(fits.error().message);
 
     MaterialInstance material{choice.preset.target, choice.preset.family, choice.preset.baseKappa};
     if (genomeFile) {
@@ -58,10 +65,8 @@ int runRender(CommandLine& args) {
     const Image image = renderMaterials(std::span(&material, 1), *textures, choice.preset.scene,
                                         int(size), backend, "matevo render")
                             .front();
-    if (auto written = writeImage(image, out); !written) {
-        std::fprintf(stderr, "matevo render: %s\n", written.error().message.c_str());
-        return 1;
-    }
+    if (auto written = writeImage(image, out); !written)
+        throw UsageError("render: " + written.error().message);
     return 0;
 }
 
