@@ -11,20 +11,6 @@ namespace matevo::cli {
 
 namespace {
 
-Result<gpu::PopulationEvaluation> evaluateOnGpu(const MaterialInstance& target,
-                                                std::span<const MaterialInstance> candidates,
-                                                const SceneTextures& textures,
-                                                const SceneSettings& scene, int size,
-                                                const HeatmapSettings& heatmap) {
-    auto context = gpu::GpuContext::createHeadless();
-    if (!context) return context.error();
-    auto evaluator = gpu::GpuPopulationEvaluator::create(context->device, defaultFgdTables(),
-                                                         textures, gpu::heatmapColormap());
-    if (!evaluator) return evaluator.error();
-    const gpu::HeatmapRange range{float(heatmap.minDeltaE), float(heatmap.maxDeltaE)};
-    return evaluator->evaluate(target, candidates, scene, size, range);
-}
-
 gpu::PopulationEvaluation evaluateOnCpu(const MaterialInstance& target,
                                         std::span<const MaterialInstance> candidates,
                                         const SceneTextures& textures, const SceneSettings& scene,
@@ -43,18 +29,38 @@ gpu::PopulationEvaluation evaluateOnCpu(const MaterialInstance& target,
 
 }  // namespace
 
-gpu::PopulationEvaluation evaluatePopulation(const MaterialInstance& target,
-                                             std::span<const MaterialInstance> candidates,
-                                             const SceneTextures& textures,
-                                             const SceneSettings& scene, int size,
-                                             const HeatmapSettings& heatmap,
-                                             RenderBackend backend, const std::string& command) {
-    if (backend == RenderBackend::Gpu) {
-        auto evaluation = evaluateOnGpu(target, candidates, textures, scene, size, heatmap);
-        if (evaluation) return std::move(evaluation).value();
-        noticeCpuFallback(command, evaluation.error().message);
+PopulationEvaluator::PopulationEvaluator(const SceneTextures& textures, RenderBackend backend,
+                                         const std::string& command)
+    : textures_(textures), command_(command) {
+    if (backend != RenderBackend::Gpu) return;
+    auto context = gpu::GpuContext::createHeadless();
+    if (!context) {
+        noticeCpuFallback(command_, context.error().message);
+        return;
     }
-    return evaluateOnCpu(target, candidates, textures, scene, size, heatmap);
+    context_ = std::make_unique<gpu::GpuContext>(std::move(*context));
+    auto evaluator = gpu::GpuPopulationEvaluator::create(context_->device, defaultFgdTables(),
+                                                         textures_, gpu::heatmapColormap());
+    if (!evaluator) {
+        noticeCpuFallback(command_, evaluator.error().message);
+        return;
+    }
+    gpu_.emplace(std::move(*evaluator));
+}
+
+PopulationEvaluator::~PopulationEvaluator() = default;
+
+gpu::PopulationEvaluation PopulationEvaluator::evaluate(
+    const MaterialInstance& target, std::span<const MaterialInstance> candidates,
+    const SceneSettings& scene, int size, const HeatmapSettings& heatmap) {
+    if (gpu_) {
+        const gpu::HeatmapRange range{float(heatmap.minDeltaE), float(heatmap.maxDeltaE)};
+        auto evaluation = gpu_->evaluate(target, candidates, scene, size, range);
+        if (evaluation) return std::move(evaluation).value();
+        noticeCpuFallback(command_, evaluation.error().message);
+        gpu_.reset();
+    }
+    return evaluateOnCpu(target, candidates, textures_, scene, size, heatmap);
 }
 
 }  // namespace matevo::cli

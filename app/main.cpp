@@ -1,5 +1,6 @@
 // matevo: evolve variants of a layered material. Dispatches to one subcommand; maps failures to
 // the exit statuses of the command-line contract (0 ok, 2 bad usage or input, 1 internal).
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -46,6 +47,9 @@ void printHelp() {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Past a file size limit (ulimit -f) a write must fail with EFBIG, reported as an error
+    // (exit 2, no partial file), instead of SIGXFSZ ending the process.
+    std::signal(SIGXFSZ, SIG_IGN);
     std::vector<std::string> args(argv + 1, argv + argc);
     if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
         printHelp();

@@ -5,16 +5,21 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "ExperimentRenderer.h"
 #include "PresetOption.h"
 #include "ProgressBar.h"
+#include "StopSignals.h"
 #include "commands/Commands.h"
+#include "common/StopRequest.h"
 #include "experiment/Experiment.h"
 #include "experiment/ExperimentCharts.h"
 #include "experiment/ResultsCsv.h"
 #include "experiment/RunSummary.h"
 #include "io/AtomicFile.h"
 #include "io/ImageFile.h"
+#include "io/OutputFolder.h"
 #include "io/ResourcePaths.h"
 
 namespace matevo::cli {
@@ -24,7 +29,8 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo experiment [--preset P | --all] [--runs N] [--population N]\n"
     "                         [--generations N] [--sweep] [--metric M|all] [--seed S]\n"
-    "                         [--runs-per-seed N] [--size N] [--backend gpu|cpu] [--out DIR]\n\n"
+    "                         [--runs-per-seed N] [--size N] [--backend gpu|cpu] [--out DIR]\n"
+    "                         [--force]\n\n"
     "The experiment of Bernardi et al. (2020) section 5: for the target material and each\n"
     "distance metric, N GA runs (default 36) at a population and generation count (default 50\n"
     "and 5); the best individual of each run is rendered and scored by its mean CIEDE2000\n"
@@ -47,7 +53,12 @@ constexpr const char* kHelp =
     "                                    generations, seed, run, fitness, mean_de00, 12 genes\n"
     "                       PRESET_pP_gG_METRIC.png  histogram of mean DE00 with the\n"
     "                                    paper's perceptual bands\n"
-    "Prints a summary per metric (median, band counts); a progress bar goes to stderr.\n";
+    "                       report.json  runs completed; \"partial\": true after a stop\n"
+    "  --force            replace DIR when it holds an earlier matevo output (else a folder\n"
+    "                     with files is refused); DIR always holds one whole experiment\n"
+    "Prints a summary per metric (median, band counts); a progress bar goes to stderr.\n"
+    "Ctrl-C (SIGINT) or SIGTERM stops after the runs in progress and writes the completed\n"
+    "runs, marked partial (exit 130 or 143).\n";
 
 const char* const kValidationPresets[] = {"validation_metal.json", "validation_painted_metal.json",
                                           "validation_metal_depth.json"};
@@ -80,6 +91,7 @@ struct Request {
     std::optional<int> imageSize;
     RenderBackend backend = RenderBackend::Gpu;
     std::filesystem::path outDir = "experiment-results";
+    bool replaceOutput = false;
 };
 
 Request parseRequest(CommandLine& args) {
@@ -104,6 +116,7 @@ Request parseRequest(CommandLine& args) {
     if (auto backend = args.option("--backend"))
         request.backend = parseRenderBackend(*backend, "experiment: --backend");
     if (auto out = args.option("--out")) request.outDir = *out;
+    request.replaceOutput = args.flag("--force");
     args.finish();
     return request;
 }
@@ -126,7 +139,7 @@ std::string sizeLabel(const GaSize& size) {
 }
 
 void writeOrThrow(const Status& status) {
-    if (!status) throw std::runtime_error(status.error().message);
+    if (!status) throw UsageError("experiment: " + status.error().message);
 }
 
 // One chart per metric for one preset and size, sharing their axes.
@@ -163,19 +176,9 @@ void printSummaries(std::span<const RunRecord> records, std::FILE* out) {
     }
 }
 
-}  // namespace
-
-int runExperiment(CommandLine& args) {
-    if (args.wantsHelp()) {
-        std::fputs(kHelp, stdout);
-        return 0;
-    }
-    const Request request = parseRequest(args);
-    std::error_code error;
-    std::filesystem::create_directories(request.outDir, error);
-    if (error)
-        throw UsageError("experiment: --out: cannot create folder '" + request.outDir.string() +
-                         "' (" + error.message() + ")");
+// Runs the experiment into the claimed folder and commits it.
+int runInto(const Request& request, OutputFolder& output) {
+    const std::filesystem::path& outDir = output.staging();
 
     const auto started = std::chrono::steady_clock::now();
     std::vector<RunRecord> allRecords;
@@ -183,6 +186,7 @@ int runExperiment(CommandLine& args) {
         ProgressBar progress(totalWork(request));
         int finishedWork = 0;
         for (const auto& choice : request.presets) {
+            if (stopRequested()) break;
             const Preset& preset = choice.preset;
             const RenderGenomes render =
                 makeExperimentRenderer(choice, request.imageSize, request.backend);
@@ -190,6 +194,7 @@ int runExperiment(CommandLine& args) {
             const std::vector<GaSize> sizes =
                 request.sweep ? paperSweep(preset.family) : std::vector{request.settings.size};
             for (const GaSize& size : sizes) {
+                if (stopRequested()) break;
                 ExperimentSettings settings = request.settings;
                 settings.size = size;
                 const std::string label = preset.name + " " + sizeLabel(size);
@@ -199,21 +204,54 @@ int runExperiment(CommandLine& args) {
                 if (!records) throw std::runtime_error(records.error().message);
                 finishedWork += int(records->size()) * 2;
                 allRecords.insert(allRecords.end(), records->begin(), records->end());
-                // Rewritten after every block of runs, atomically: an interrupted sweep keeps
-                // what it finished.
-                writeOrThrow(
-                    writeFileAtomically(request.outDir / "results.csv", resultsCsv(allRecords)));
-                writeHistograms(*records, choice.file.stem().string(), request.outDir);
+                writeOrThrow(writeFileAtomically(outDir / "results.csv", resultsCsv(allRecords)));
+                if (!records->empty())
+                    writeHistograms(*records, choice.file.stem().string(), outDir);
             }
         }
     }
+    nlohmann::json report = {{"runs_completed", allRecords.size()}, {"partial", false}};
+    if (const int signal = stopRequested()) {
+        report["partial"] = true;
+        report["stopped_by"] = signalName(signal);
+        if (allRecords.empty())
+            writeOrThrow(writeFileAtomically(outDir / "results.csv", resultsCsv(allRecords)));
+    }
+    writeOrThrow(writeFileAtomically(outDir / "report.json", report.dump(2) + "\n"));
+    writeOrThrow(output.commit());
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
     printSummaries(allRecords, stdout);
     std::fprintf(stderr, "matevo experiment: %zu runs in %.1f s; results in %s\n",
                  allRecords.size(), seconds, request.outDir.string().c_str());
+    if (const int signal = stopRequested()) {
+        std::fprintf(stderr,
+                     "matevo experiment: stopped by %s; the completed runs are written, "
+                     "marked partial\n",
+                     signalName(signal).c_str());
+        return stoppedExitStatus(signal);
+    }
     return 0;
+}
+
+}  // namespace
+
+int runExperiment(CommandLine& args) {
+    if (args.wantsHelp()) {
+        std::fputs(kHelp, stdout);
+        return 0;
+    }
+    const Request request = parseRequest(args);
+    installStopSignalHandlers();
+    // Refused before any run: a folder with other files, or one we cannot write beside.
+    auto output = OutputFolder::claim(request.outDir, request.replaceOutput);
+    if (!output) throw UsageError("experiment: --out: " + output.error().message);
+    try {
+        return runInto(request, *output);
+    } catch (const UsageError& error) {
+        throw UsageError(output->userFacing(error.what()));
+    }
 }
 
 }  // namespace matevo::cli
