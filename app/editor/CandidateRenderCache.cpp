@@ -1,5 +1,7 @@
 #include "CandidateRenderCache.h"
 
+#include <cstdio>
+
 #include <algorithm>
 
 #include "color/Colormap.h"
@@ -27,7 +29,11 @@ CandidateRenderCache::CandidateRenderCache(int tileSize, int targetSize, std::si
     : tileSize_(tileSize), targetSize_(targetSize), capacity_(capacity) {
     if (!useGpu) return;
     auto context = gpu::GpuContext::createHeadless({validation, true});
-    if (context) gpu_ = std::make_unique<gpu::GpuContext>(std::move(*context));
+    if (context)
+        gpu_ = std::make_unique<gpu::GpuContext>(std::move(*context));
+    else
+        std::fprintf(stderr, "matevo edit: notice: tiles render on the CPU (%s)\n",
+                     context.error().message.c_str());
 }
 
 CandidateRenderCache::~CandidateRenderCache() = default;
