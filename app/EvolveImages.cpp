@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 
 #include "CommandLine.h"
-#include "PopulationEvaluation.h"
 #include "common/StopRequest.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "io/ImageFile.h"
 #include "scene/SceneTextures.h"
 
@@ -50,7 +51,8 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
                              "' (" + error.message() + ")");
     }
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
-    PopulationEvaluator evaluator(*textures, backend, "matevo evolve");
+    // One renderer for every batch: it keeps the target's render between them.
+    auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
     std::vector<DeltaEStats> stats;
     for (std::size_t first = 0; first < ranked.size() && !stopRequested();
          first += kEvolveImageBatch) {
@@ -58,15 +60,15 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
         std::vector<MaterialInstance> candidates;
         for (std::size_t i = first; i < first + count; ++i)
             candidates.push_back({ranked[i].genome, preset.family, preset.baseKappa});
-        const auto evaluation =
-            evaluator.evaluate(target, candidates, preset.scene, size, HeatmapSettings{});
-        if (first == 0) writeOrThrow(evaluation.target, outDir / "target.png");
+        auto evaluation = renderer->evaluate(target, candidates, preset.scene, size);
+        if (!evaluation) throw std::runtime_error("evolve: " + evaluation.error().message);
+        if (first == 0) writeOrThrow(evaluation->target, outDir / "target.png");
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t rank = first + i;
-            writeOrThrow(evaluation.candidates[i],
+            writeOrThrow(evaluation->candidates[i],
                          outDir / "candidates" / rankedName("candidate", rank));
-            writeOrThrow(evaluation.heatmaps[i], outDir / "heatmaps" / rankedName("heatmap", rank));
-            stats.push_back(evaluation.deltaE[i].stats);
+            writeOrThrow(evaluation->heatmaps[i], outDir / "heatmaps" / rankedName("heatmap", rank));
+            stats.push_back(evaluation->deltaE[i].stats);
         }
     }
     return stats;
