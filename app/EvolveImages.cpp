@@ -16,7 +16,7 @@ namespace {
 
 void writeOrThrow(const Image& image, const std::filesystem::path& file) {
     auto status = writeImage(image, file);
-    if (!status) throw UsageError("evolve: " + status.error().message);
+    if (!status) throw UsageError(status.error().message);
 }
 
 std::string rankedName(const char* prefix, std::size_t rank) {
@@ -47,7 +47,7 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
     for (const char* folder : {"candidates", "heatmaps"}) {
         std::filesystem::create_directories(outDir / folder, error);
         if (error)
-            throw UsageError("evolve: --out: cannot create '" + (outDir / folder).string() +
+            throw UsageError("--out: cannot create '" + (outDir / folder).string() +
                              "' (" + error.message() + ")");
     }
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
@@ -61,7 +61,7 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
         for (std::size_t i = first; i < first + count; ++i)
             candidates.push_back({ranked[i].genome, preset.family, preset.baseKappa});
         auto evaluation = renderer->evaluate(target, candidates, preset.scene, size);
-        if (!evaluation) throw std::runtime_error("evolve: " + evaluation.error().message);
+        if (!evaluation) throw std::runtime_error(evaluation.error().message);
         if (first == 0) writeOrThrow(evaluation->target, outDir / "target.png");
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t rank = first + i;

@@ -8,6 +8,7 @@
 
 #include "EvolveImages.h"
 #include "EvolveReport.h"
+#include "Messages.h"
 #include "PresetOption.h"
 #include "StopSignals.h"
 #include "common/MemoryBudget.h"
@@ -27,7 +28,8 @@ constexpr const char* kHelp =
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
     "                     [--size N] [--backend gpu|cpu] [--force]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
-    "(default: presets/validation_metal.json). Options override the preset's GA settings.\n"
+    "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
+    "override the preset's GA settings.\n"
     "  --weights      12 per-chromosome weights, in the order eta1 eta2 alpha1 alpha2 depth\n"
     "                 sigma_s(r,g,b) sigma_a(r,g,b) g\n"
     "  --normalize    divide each chromosome's difference by its family range\n"
@@ -38,7 +40,8 @@ constexpr const char* kHelp =
     "                 (per-pixel CIEDE2000 against the target, 0-10 through viridis); adds each\n"
     "                 candidate's mean_de00 (and max, p95) to the JSON\n"
     "  --size N       image side in pixels for --out (default: the preset's scene size)\n"
-    "  --backend B    gpu (default; falls back to the CPU when no Vulkan device is usable) or cpu\n"
+    "  --backend B    renderer for --out: gpu (default; falls back to the CPU when no Vulkan\n"
+    "                 device is usable) or cpu\n"
     "  --force        replace DIR when it holds an earlier matevo output (else a folder with\n"
     "                 files is refused); DIR always holds one whole run\n"
     "Progress goes to stderr. Ctrl-C (SIGINT) or SIGTERM stops after the current generation or\n"
@@ -52,18 +55,18 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     if (auto metric = args.option("--metric")) {
         auto parsed = parseDistanceMetric(*metric);
         if (!parsed)
-            throw UsageError("evolve: --metric: unknown metric '" + *metric +
+            throw UsageError("--metric: unknown metric '" + *metric +
                              "' (expected chebyshev, euclidean or manhattan)");
         ga.metric = *parsed;
     }
     if (auto weights = args.option("--weights")) {
-        auto values = parseNumberList(*weights, "evolve: --weights");
+        auto values = parseNumberList(*weights, "--weights");
         if (values.size() != kChromosomeCount)
-            throw UsageError("evolve: --weights: expected 12 comma-separated numbers, got " +
+            throw UsageError("--weights: expected 12 comma-separated numbers, got " +
                              std::to_string(values.size()));
         for (std::size_t i = 0; i < kChromosomeCount; ++i) {
             if (values[i] < 0)
-                throw UsageError("evolve: --weights: weight of " +
+                throw UsageError("--weights: weight of " +
                                  std::string(chromosomeName(i)) + " must not be negative");
             ga.weights[i] = values[i];
         }
@@ -72,7 +75,7 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     if (auto elitism = args.integerOption("--elitism", 0, kMaxPopulation))
         ga.elitism = int(*elitism);
     if (ga.elitism >= ga.population)
-        throw UsageError("evolve: --elitism must be smaller than the population (" +
+        throw UsageError("--elitism must be smaller than the population (" +
                          std::to_string(ga.population) + ")");
     if (auto seed = args.unsignedOption("--seed")) ga.seed = *seed;
     return ga;
@@ -93,20 +96,23 @@ int runEvolve(CommandLine& args) {
     const int imageSize = int(
         args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
     const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "evolve: --backend");
+        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    // Images are rendered only for --out.
+    args.onlyWith("--size", "--out");
+    args.onlyWith("--backend", "--out");
+    args.onlyWith("--force", "--out");
     args.finish();
-    if (replaceOutput && !outDir) throw UsageError("evolve: --force needs --out");
 
     installStopSignalHandlers();
     // Everything that can be refused is refused before the work starts.
     std::optional<OutputFolder> output;
     if (outDir) {
         if (auto fits = checkMemoryEstimate(evolveImagesMemoryEstimate(imageSize),
-                                            "evolve: --out at --size " + std::to_string(imageSize));
+                                            "--out at --size " + std::to_string(imageSize));
             !fits)
             throw UsageError(fits.error().message);
         auto claimed = OutputFolder::claim(*outDir, replaceOutput);
-        if (!claimed) throw UsageError("evolve: --out: " + claimed.error().message);
+        if (!claimed) throw UsageError("--out: " + claimed.error().message);
         output.emplace(std::move(*claimed));
     }
 
@@ -117,8 +123,8 @@ int runEvolve(CommandLine& args) {
     while (!ga.finished() && !stopRequested()) {
         ga.step();
         if (showProgress)
-            std::fprintf(stderr, "\rmatevo evolve: generation %d/%d", ga.generation(),
-                         preset.ga.generations);
+            std::fprintf(stderr, "\r%sgeneration %d/%d", messagePrefix().c_str(),
+                         ga.generation(), preset.ga.generations);
     }
     if (showProgress) std::fputc('\n', stderr);
 
@@ -140,18 +146,19 @@ int runEvolve(CommandLine& args) {
     }
     if (output) {
         auto status = writeFileAtomically(output->staging() / "result.json", report.dump(2) + "\n");
-        if (!status) throw UsageError("evolve: " + output->userFacing(status.error().message));
+        if (!status) throw UsageError(output->userFacing(status.error().message));
         if (auto committed = output->commit(); !committed)
-            throw UsageError("evolve: --out: " + committed.error().message);
+            throw UsageError("--out: " + committed.error().message);
     }
     if (asJson)
         std::printf("%s\n", report.dump(2).c_str());
     else
         printEvolveSummary(preset, ga, ranked, stdout);
     if (const int signal = stopRequested()) {
-        std::fprintf(stderr, "matevo evolve: stopped by %s after generation %d of %d%s\n",
-                     signalName(signal).c_str(), ga.generation(), preset.ga.generations,
-                     output ? "; what is complete is written, marked partial" : "");
+        printMessage("stopped by " + signalName(signal) + " after generation " +
+                     std::to_string(ga.generation()) + " of " +
+                     std::to_string(preset.ga.generations) +
+                     (output ? "; what is complete is written, marked partial" : ""));
         return stoppedExitStatus(signal);
     }
     return 0;
