@@ -1,24 +1,17 @@
 // libFuzzer target: the FGD/TIR table cache reader, on a 2-node grid so that inputs of a valid
-// file's size (204 bytes) are reachable. When the first byte is odd the harness writes a correct
-// checksum into the input, so the fuzzer also reaches the checks behind the checksum (a forged
-// file with NaN or out-of-range values).
+// file's size (204 bytes) are reachable. When the first byte is odd the rest is taken as the
+// table values and written as a file with a correct checksum, so the fuzzer also reaches the
+// checks behind the checksum (a forged file with NaN or out-of-range values).
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "material/FgdTableCache.h"
 
 namespace {
-
-std::uint64_t fnv1a(const unsigned char* data, std::size_t size) {
-    std::uint64_t hash = 14695981039346656037ull;
-    for (std::size_t i = 0; i < size; ++i) {
-        hash ^= data[i];
-        hash *= 1099511628211ull;
-    }
-    return hash;
-}
 
 matevo::TableGenerationSettings smallSettings() {
     matevo::TableGenerationSettings settings;
@@ -27,18 +20,26 @@ matevo::TableGenerationSettings smallSettings() {
     return settings;
 }
 
+// The first fgdSize() + tirSize() floats of `bytes` (zero-padded) as a cache file.
+std::string forgedFile(const std::uint8_t* bytes, std::size_t size,
+                       const matevo::TableGenerationSettings& settings) {
+    const std::size_t fgdCount = settings.grid.fgdSize();
+    std::vector<float> values(fgdCount + settings.grid.tirSize(), 0.0f);
+    std::memcpy(values.data(), bytes, std::min(size, values.size() * sizeof(float)));
+    std::vector<float> fgd(values.begin(), values.begin() + std::ptrdiff_t(fgdCount));
+    std::vector<float> tir(values.begin() + std::ptrdiff_t(fgdCount), values.end());
+    return matevo::serializeFgdTables(matevo::FgdTables(settings.grid, fgd, tir), settings);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0) return 0;
-    std::string bytes(reinterpret_cast<const char*>(data) + 1, size - 1);
-    if ((data[0] & 1) && bytes.size() >= sizeof(std::uint64_t)) {
-        const std::size_t offset = bytes.size() - sizeof(std::uint64_t);
-        const std::uint64_t sum =
-            fnv1a(reinterpret_cast<const unsigned char*>(bytes.data()), offset);
-        std::memcpy(bytes.data() + offset, &sum, sizeof sum);
-    }
-    auto tables = matevo::parseFgdTables(bytes, smallSettings(), "fuzz.bin");
+    const matevo::TableGenerationSettings settings = smallSettings();
+    const std::string bytes = (data[0] & 1)
+                                  ? forgedFile(data + 1, size - 1, settings)
+                                  : std::string(reinterpret_cast<const char*>(data) + 1, size - 1);
+    auto tables = matevo::parseFgdTables(bytes, settings, "fuzz.bin");
     // Anything accepted must be usable: finite lookups in [0, 1].
     if (tables) {
         const double albedo = tables->reflectance(0.5, 0.5, 1.5, 1.0);
