@@ -17,7 +17,7 @@
 namespace matevo {
 namespace {
 
-enum class FileKind { kPng, kExr, kUnsupported };
+enum class FileKind { kPng, kExr, kHdr, kUnsupported };
 
 FileKind kindOf(const std::filesystem::path& file) {
     std::string extension = file.extension().string();
@@ -25,6 +25,7 @@ FileKind kindOf(const std::filesystem::path& file) {
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension == ".png") return FileKind::kPng;
     if (extension == ".exr") return FileKind::kExr;
+    if (extension == ".hdr") return FileKind::kHdr;  // Radiance RGBE: environments, read only
     return FileKind::kUnsupported;
 }
 
@@ -51,7 +52,7 @@ void expandToRgba(const float* source, int channels, bool hasAlpha, float* rgba)
 Result<ImageFileContents> readImageFile(const std::filesystem::path& file) {
     const FileKind kind = kindOf(file);
     if (kind == FileKind::kUnsupported)
-        return fileError(file, "unsupported image type (expected .png or .exr)");
+        return fileError(file, "unsupported image type (expected .png, .exr or .hdr)");
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec))
         return fileError(file, "cannot read: no such file");
@@ -61,7 +62,9 @@ Result<ImageFileContents> readImageFile(const std::filesystem::path& file) {
     config.attribute("oiio:UnassociatedAlpha", 1);
     auto input = OIIO::ImageInput::open(file.string(), &config);
     if (!input) return fileError(file, "not a readable image: " + oneLine(OIIO::geterror()));
-    const std::string expectedFormat = kind == FileKind::kPng ? "png" : "openexr";
+    const std::string expectedFormat = kind == FileKind::kPng   ? "png"
+                                       : kind == FileKind::kHdr ? "hdr"
+                                                                : "openexr";
     if (input->format_name() != expectedFormat)
         return fileError(file, std::string("contents are ") + input->format_name() +
                                    ", not what the extension says");
@@ -150,7 +153,7 @@ Status writeWith(const Image& image, const std::filesystem::path& target, FileKi
 
 Status writeImage(const Image& image, const std::filesystem::path& file) {
     const FileKind kind = kindOf(file);
-    if (kind == FileKind::kUnsupported)
+    if (kind != FileKind::kPng && kind != FileKind::kExr)
         return fileError(file, "unsupported image type (expected .png or .exr)");
     if (image.width <= 0 || image.height <= 0 || image.rgba.size() != image.pixelCount() * 4)
         return fileError(file, "cannot write an empty or malformed image");

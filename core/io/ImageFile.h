@@ -16,8 +16,8 @@ struct ImageFileContents {
     bool hasAlpha = false;
 };
 
-// Errors are one line naming the file: unsupported extension, unreadable, not an image, or an
-// unsupported channel layout. Grey files are expanded to RGB.
+// Reads .png, .exr and Radiance .hdr (linear; for environments). Errors are one line naming the
+// file: unsupported extension, unreadable, not an image, or an unsupported channel layout. Grey files are expanded to RGB.
 Result<ImageFileContents> readImageFile(const std::filesystem::path& file);
 Result<Image> readImage(const std::filesystem::path& file);
 
