@@ -25,7 +25,7 @@ Result<SceneTextures> loadSceneTextures(const Preset& preset,
     if (!roughness) return roughness.error();
     auto baseColor = loadTexture(presetFile, "textures.base_color", preset.baseColorTexture);
     if (!baseColor) return baseColor.error();
-    return SceneTextures{std::move(roughness).value(), std::move(baseColor).value()};
+    return SceneTextures{std::move(roughness).value(), std::move(baseColor).value(), {}};
 }
 
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v) {
