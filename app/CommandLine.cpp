@@ -112,4 +112,12 @@ std::vector<double> parseNumberList(const std::string& text, const std::string& 
     return values;
 }
 
+ImageSize parseImageSize(const std::string& text, const std::string& what, ImageSize minimum,
+                         int maximum) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) throw UsageError(what + ": expected WxH, got '" + text + "'");
+    return {int(parseInteger(text.substr(0, x), what + " width", minimum.width, maximum)),
+            int(parseInteger(text.substr(x + 1), what + " height", minimum.height, maximum))};
+}
+
 }  // namespace matevo::cli

@@ -26,6 +26,7 @@ constexpr Subcommand kSubcommands[] = {
     {"compare", runCompare, "per-pixel CIEDE2000 between two images"},
     {"experiment", runExperiment, "the paper's section 5 experiment: metrics x runs"},
     {"bench", runBench, "measure the GA, CIEDE2000 and renderers; medians"},
+    {"scene", runScene, "render many instances of a mesh, one variant each, to PNG or EXR"},
 };
 
 void printHelp() {

@@ -17,5 +17,6 @@ void benchGeneticAlgorithm(BenchReport& report);
 void benchCpuRender(BenchReport& report);
 void benchDeltaE00(BenchReport& report);
 void benchGpuGrid(BenchReport& report);  // gpu_grid64_ms and cpu_grid64_ms
+void benchScene(BenchReport& report);    // scene_* frame times of the raster renderer
 
 }  // namespace matevo::bench

@@ -24,6 +24,7 @@ int runBench(CommandLine& args) {
     bench::benchCpuRender(report);
     bench::benchDeltaE00(report);
     bench::benchGpuGrid(report);
+    bench::benchScene(report);
 
     if (asJson) {
         nlohmann::json out = nlohmann::json::object();

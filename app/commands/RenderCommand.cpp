@@ -7,6 +7,7 @@
 #include "commands/Commands.h"
 #include "io/GenomeJson.h"
 #include "io/ImageFile.h"
+#include "scene/LightingChoice.h"
 
 namespace matevo::cli {
 
@@ -27,11 +28,15 @@ int runRender(CommandLine& args) {
     if (args.wantsHelp()) {
         std::printf(
             "usage: matevo render [--preset P] [--genome FILE.json] [--size N]\n"
-            "                     [--backend cpu|gpu] --out FILE.png|FILE.exr\n\n"
+            "                     [--backend cpu|gpu] [--env paper|ambient|studio|FILE]\n"
+            "                     --out FILE.png|FILE.exr\n\n"
             "Renders one material on the paper's test sphere (one light, transparent\n"
             "background, alpha = coverage): the preset's target, or the genome in FILE.json\n"
             "with the preset's family, base kappa, textures and scene. PNG is sRGB 8-bit,\n"
             "EXR linear float. --size is the image side in pixels (default: the preset's).\n"
+            "--env lights it: paper (the single light alone), ambient (the light plus a uniform\n"
+            "environment), studio (the light plus matevo's generated studio) or a lat-long .hdr\n"
+            "or .exr FILE (the light plus that environment); default: the preset's scene.\n"
             "--backend gpu (default) renders with Vulkan; with no usable Vulkan device it says\n"
             "so on stderr and renders on the CPU. --backend cpu is the reference renderer.\n"
             "The default preset is presets/validation_metal.json beside the executable.\n");
@@ -43,6 +48,7 @@ int runRender(CommandLine& args) {
         args.integerOption("--size", 1, 8192).value_or(choice.preset.scene.imageSize);
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "render: --backend");
+    const auto lighting = args.option("--env");
     const std::filesystem::path out = outputPath(args);
     args.finish();
 
@@ -54,8 +60,12 @@ int runRender(CommandLine& args) {
     }
     auto textures = loadSceneTextures(choice.preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
+    SceneSettings scene = choice.preset.scene;
+    if (lighting)
+        if (auto lit = applyLightingChoice(*lighting, scene, *textures); !lit)
+            throw UsageError("render: --env: " + lit.error().message);
 
-    const Image image = renderMaterials(std::span(&material, 1), *textures, choice.preset.scene,
+    const Image image = renderMaterials(std::span(&material, 1), *textures, scene,
                                         int(size), backend, "matevo render")
                             .front();
     if (auto written = writeImage(image, out); !written) {
