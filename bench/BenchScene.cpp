@@ -14,20 +14,19 @@
 namespace matevo::bench {
 namespace {
 
-constexpr int kInstances = 100;
 constexpr int kRepetitions = 7;
 
 struct SceneCase {
-    const char* key;
+    std::string key;
     const Mesh* mesh;
     int width;
     int height;
-    const char* what;
+    std::string what;
 };
 
 }  // namespace
 
-void benchScene(BenchReport& report) {
+void benchScene(BenchReport& report, int instanceCount) {
     (void)defaultFgdTables();  // table generation or loading is not part of the figure
     auto context = gpu::GpuContext::createHeadless();
     if (!context) {
@@ -40,25 +39,27 @@ void benchScene(BenchReport& report) {
     const MaterialFamily family{Coat::Clearcoat, Base::Conductor, true, TexturedLayer::None};
     Random random(100);
     std::vector<MaterialInstance> materials;
-    for (int i = 0; i < kInstances; ++i)
+    for (int i = 0; i < instanceCount; ++i)
         materials.push_back({randomGenome(family, random), family, {3.1, 2.9, 2.8}});
     SceneTextures textures;
     textures.environment = *loadEnvironment("studio");
     SceneSettings scene;
     scene.environmentRadiance = {0.0, 0.0, 0.0};
     const std::vector<SceneInstance> instances =
-        layoutInstances(kInstances, InstanceLayout::Grid, kInstances);
+        layoutInstances(instanceCount, InstanceLayout::Grid, instanceCount);
 
     // The figure, then the same frame with fewer pixels and with fewer triangles: which one
     // moves the time says what limits it.
     const Mesh shaderBall = makeShaderBallMesh();
     const Mesh coarseSphere = makeSphereMesh(32, 16);
+    const std::string count = std::to_string(instanceCount);
     const SceneCase cases[] = {
-        {"scene_100x_shaderball_1280x720_ms", &shaderBall, 1280, 720, "100 shader balls"},
-        {"scene_100x_shaderball_320x180_ms", &shaderBall, 320, 180,
+        {"scene_" + count + "x_shaderball_1280x720_ms", &shaderBall, 1280, 720,
+         count + " shader balls"},
+        {"scene_" + count + "x_shaderball_320x180_ms", &shaderBall, 320, 180,
          "the same at 1/16 of the pixels"},
-        {"scene_100x_sphere992_1280x720_ms", &coarseSphere, 1280, 720,
-         "100 spheres of 992 triangles"},
+        {"scene_" + count + "x_sphere992_1280x720_ms", &coarseSphere, 1280, 720,
+         count + " spheres of 992 triangles"},
     };
     for (const SceneCase& sceneCase : cases) {
         auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner,
@@ -83,9 +84,9 @@ void benchScene(BenchReport& report) {
         if (!failed)
             report.push_back(
                 {sceneCase.key, milliseconds,
-                 std::string(sceneCase.what) + " (" +
+                 sceneCase.what + " (" +
                      std::to_string(sceneCase.mesh->triangleCount()) + " triangles each), " +
-                     std::to_string(kInstances) + " materials, studio environment, 4x MSAA, " +
+                     count + " materials, studio environment, 4x MSAA, " +
                      std::to_string(sceneCase.width) + "x" + std::to_string(sceneCase.height) +
                      " on " + context->device.name() + ": one frame, no read-back"});
     }

@@ -50,8 +50,8 @@ std::vector<SceneInstance> layoutInstances(int count, InstanceLayout layout, int
         return instances;
     }
     // Crowd: rejection-sampled positions at least 2.05 apart (unit spheres do not touch) in a
-    // disc of about twice the grid's area, every instance turned at random.
-    const double radius = kSpacing * std::sqrt(double(count)) * 0.8 + kSpacing;
+    // disc of about 1.7 times the grid's area, every instance turned at random.
+    const double radius = kSpacing * std::sqrt(1.7 * double(count) / std::numbers::pi) + 1.0;
     std::vector<glm::dvec2> taken;
     for (int i = 0; i < count; ++i) {
         glm::dvec2 position(0.0);
