@@ -44,7 +44,7 @@ void benchScene(BenchReport& report, int instanceCount) {
     SceneTextures textures;
     textures.environment = *loadEnvironment("studio");
     SceneSettings scene;
-    scene.environmentRadiance = {0.0, 0.0, 0.0};
+    scene.mode = SceneMode::Environment;
     const std::vector<SceneInstance> instances =
         layoutInstances(instanceCount, InstanceLayout::Grid, instanceCount);
 

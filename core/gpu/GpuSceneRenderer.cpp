@@ -66,7 +66,7 @@ GpuFrame toGpu(const SceneFrame& frame, const SceneSettings& scene,
         scene.lightDirection[0], scene.lightDirection[1], scene.lightDirection[2]));
     store(gpu.toLight, {toLight.x, toLight.y, toLight.z}, 0.0);
     store(gpu.lightRadiance, scene.lightRadiance, 0.0);
-    store(gpu.ambient, scene.environmentRadiance, textures.environmentLevels());
+    store(gpu.ambient, ambientRadiance(scene), textures.environmentLevels());
     store(gpu.textured, {textures.textured() ? 1.0 : 0.0, 0.0, 0.0}, 0.0);
     return gpu;
 }

@@ -53,7 +53,7 @@ GpuScene toGpu(const SceneSettings& scene, int size, const GpuSceneTextures& tex
     store(gpu.cameraUp, up, 0.0);
     store(gpu.toLight, glm::normalize(toVector(scene.lightDirection)), 0.0);
     store(gpu.lightRadiance, toVector(scene.lightRadiance), 0.0);
-    store(gpu.environmentRadiance, toVector(scene.environmentRadiance),
+    store(gpu.environmentRadiance, toVector(ambientRadiance(scene)),
           textures.environmentLevels());
     store(gpu.textured, {textures.textured() ? 1.0 : 0.0, 0.0, 0.0}, 0.0);
     return gpu;

@@ -4,8 +4,8 @@
 //   ambient  the light plus a uniform environment (SceneSettings::environmentRadiance)
 //   studio   the light plus the studio environment our code generates (StudioEnvironment.h)
 //   FILE     the light plus a lat-long .hdr / .exr environment
-// The environment ones are prefiltered here (PrefilteredEnvironment.h) and put into
-// SceneTextures, which both renderers shade from.
+// It sets SceneSettings::mode (and environment); the environment ones are prefiltered here
+// (PrefilteredEnvironment.h) and put into SceneTextures, which both renderers shade from.
 #include <string>
 
 #include "common/Result.h"

@@ -19,8 +19,9 @@ struct SceneTextures {
     PrefilteredEnvironment environment;
 };
 
-// Loads the preset's textures; their names are relative to the preset file's folder. Errors
-// name the preset file, the field and the image file.
+// Loads the preset's textures, and its environment in the environment scene mode; their names
+// are relative to the preset file's folder. Errors name the preset file, the field and the
+// image file.
 Result<SceneTextures> loadSceneTextures(const Preset& preset,
                                         const std::filesystem::path& presetFile);
 

@@ -8,9 +8,10 @@
 // premultiplied: interior pixels (every subsample hit) are shaded once at the pixel centre,
 // silhouette pixels take the mean radiance of their hits; the background is (0, 0, 0, 0).
 // Shading at a hit with normal n, view v, light direction l (normalised lightDirection):
-//   L = f_r(v, l) * lightRadiance * max(0, n.l) + (e_coat + e_base) * environmentRadiance
+//   L = f_r(v, l) * lightRadiance * max(0, n.l) + (e_coat + e_base) * ambientRadiance(scene)
 //       + e_coat * P(r, alpha_coat) + e_base * P(r, alpha_base)
-// where P is the prefiltered environment of SceneTextures (when there is one) around the mirror
+// (the ambient term is zero unless in the ambient mode, SceneSettings.h) where P is the
+// prefiltered environment of SceneTextures (the environment mode's) around the mirror
 // direction r (core/scene/PrefilteredEnvironment.h),
 // with the lobes at cos_view = n.v (Forward model) from the material's LobeTable (the adding
 // loop interpolated over cos_view and the roughness texel), textures sampled at sphereUv(n).

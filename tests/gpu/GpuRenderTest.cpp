@@ -90,12 +90,18 @@ TEST(GpuRender, MatchesCpuOnValidationPresets) {
         presets.push_back(loaded->preset);
         textures.push_back(std::move(sceneTextures).value());
     }
+    // Both scene modes: the ambient term is part of what the back ends must share.
     std::vector<RenderCase> cases;
-    for (std::size_t i = 0; i < presets.size(); ++i)
-        cases.push_back({files[i].filename().string(),
-                         {presets[i].target, presets[i].family, presets[i].baseKappa},
-                         &textures[i],
-                         presets[i].scene});
+    for (std::size_t i = 0; i < presets.size(); ++i) {
+        for (SceneMode mode : {SceneMode::Paper, SceneMode::Ambient}) {
+            SceneSettings scene = presets[i].scene;
+            scene.mode = mode;
+            cases.push_back({files[i].filename().string() + " " + std::string(toString(mode)),
+                             {presets[i].target, presets[i].family, presets[i].baseKappa},
+                             &textures[i],
+                             scene});
+        }
+    }
     expectBackEndsAgree(cases);
 }
 

@@ -23,7 +23,7 @@ constexpr int kImageSize = 96;
 
 // The paper's single light and nothing else.
 SceneSettings paperLight(SceneSettings scene) {
-    scene.environmentRadiance = {0.0, 0.0, 0.0};
+    scene.mode = SceneMode::Paper;
     return scene;
 }
 
