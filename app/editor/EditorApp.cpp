@@ -22,6 +22,7 @@
 #include "EvolutionDisplay.h"
 #include "EvolutionWorker.h"
 #include "ImageBridge.h"
+#include "SceneViewWorker.h"
 #include "ScriptPlayer.h"
 #include "VulkanContext.h"
 #include "WindowRenderer.h"
@@ -31,6 +32,9 @@ namespace matevo::editor {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The Scene window's texture slot, after those of the grid and of Compare metrics.
+constexpr std::size_t kSceneViewSlot = 5000;
 
 // Signal handlers can only set a flag; the frame loop reads it.
 std::atomic<bool> terminationRequested{false};
@@ -120,6 +124,7 @@ private:
     void playScript(std::optional<std::filesystem::path>& screenshotPath);
     void applyEvolutionResults();
     void applyCompareMetricsResults();
+    void applySceneView();
     void submitChangesToWorker();
     void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
     std::filesystem::path nextSnapshotPath() const;
@@ -141,6 +146,8 @@ private:
     std::string failure_;
     bool quitRequested_ = false;
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
+    std::unique_ptr<SceneViewWorker> sceneWorker_;
+    std::optional<SceneViewJob> requestedScene_;
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
 };
 
@@ -201,11 +208,14 @@ EditorApp::EditorApp(const EditorOptions& options)
     compareRenderer.headless = {options.validation, true};
     compareWorker_ =
         std::make_unique<CompareMetricsWorker>([] { glfwPostEmptyEvent(); }, compareRenderer);
+    sceneWorker_ = std::make_unique<SceneViewWorker>([] { glfwPostEmptyEvent(); },
+                                                     options.validation);
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
 
 EditorApp::~EditorApp() {
+    sceneWorker_.reset();
     compareWorker_.reset();
     worker_.reset();
     renderer_->waitIdle();
@@ -250,7 +260,8 @@ int EditorApp::run() {
         std::fprintf(stderr, "matevo edit: %s\n", failure_.c_str());
         return 1;
     }
-    const int validationMessages = vulkan_->validationMessages() + worker_->validationMessages();
+    const int validationMessages = vulkan_->validationMessages() + worker_->validationMessages() +
+                                   sceneWorker_->validationMessages();
     if (validationMessages > 0) {
         std::fprintf(stderr, "matevo edit: %d Vulkan validation message(s)\n", validationMessages);
         return 1;
@@ -266,6 +277,7 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
 
     applyEvolutionResults();
     applyCompareMetricsResults();
+    applySceneView();
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -331,6 +343,32 @@ void EditorApp::applyCompareMetricsResults() {
     if (!result) return;
     renderer_->waitIdle();  // textures are about to change
     showCompareMetrics(*result, *bridge_, view);
+}
+
+// Shows a finished render of the Scene window, and asks for a new one when the window is open
+// and its controls, the candidates or the preset changed.
+void EditorApp::applySceneView() {
+    ui::EditorState& state = ui_.state();
+    ui::SceneView& view = state.sceneView;
+    if (std::optional<SceneViewResult> result = sceneWorker_->takeResult()) {
+        view.status = result->status;
+        if (result->image.width > 0) {
+            renderer_->waitIdle();  // the texture is about to change
+            view.image = bridge_->setImage(kSceneViewSlot, toDisplayImage(result->image));
+            view.imageWidth = result->image.width;
+            view.imageHeight = result->image.height;
+            view.camera = result->camera;
+            view.instances = std::move(result->instances);
+        }
+    }
+    if (!view.open || view.controls.width == 0) return;
+    SceneViewJob job{view.controls, state.preset, state.presetPath, {}};
+    for (const ui::CandidateView& candidate : state.evolution.candidates)
+        job.materials.push_back({candidate.genome, state.preset.family, state.preset.baseKappa});
+    // Orbiting asks for a frame per mouse move; the worker keeps only the newest.
+    if (requestedScene_ == job) return;
+    requestedScene_ = job;
+    sceneWorker_->request(std::move(job));
 }
 
 void EditorApp::submitChangesToWorker() {

@@ -27,6 +27,8 @@ const std::map<std::string, Grammar>& grammar() {
         {"metric", {Kind::Metric, 0, true}},
         {"heatmap", {Kind::Heatmap, 0, true}},
         {"select", {Kind::Select, 1, false}},
+        {"scene", {Kind::Scene, 0, true}},
+        {"wait-scene", {Kind::WaitScene, 0, false}},
         {"undo", {Kind::Undo, 0, false}},
         {"redo", {Kind::Redo, 0, false}},
         {"resize", {Kind::Resize, 2, false}},
@@ -48,6 +50,8 @@ std::string validateText(const ScriptAction& action) {
     if (action.kind == Kind::Heatmap && action.text != "on" && action.text != "off" &&
         action.text != "toggle")
         return "expected on, off or toggle, got '" + action.text + "'";
+    if (action.kind == Kind::Scene && action.text != "open" && action.text != "close")
+        return "expected open or close, got '" + action.text + "'";
     if (action.kind == Kind::Resize && (action.first < 64 || action.second < 64))
         return "the window must be at least 64 x 64";
     return {};

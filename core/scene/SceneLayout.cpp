@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <glm/geometric.hpp>
@@ -118,6 +119,31 @@ SceneCamera orbitCamera(const glm::dvec3& target, double yawDegrees, double pitc
     const glm::dvec3 offset(std::sin(yaw) * std::cos(pitch), std::sin(pitch),
                             std::cos(yaw) * std::cos(pitch));
     return {target + distance * offset, target, fieldOfViewDegrees};
+}
+
+std::optional<std::size_t> pickInstance(const SceneCamera& camera, double aspect,
+                                        const glm::dvec2& ndc,
+                                        std::span<const SceneInstance> instances) {
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 up = glm::cross(right, forward);
+    const double tanHalfFov = std::tan(camera.fieldOfViewDegrees * std::numbers::pi / 360.0);
+    const glm::dvec3 direction = glm::normalize(forward + ndc.x * tanHalfFov * aspect * right +
+                                                ndc.y * tanHalfFov * up);
+    std::optional<std::size_t> nearest;
+    double nearestDistance = std::numeric_limits<double>::max();
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+        const glm::dvec3 toCentre = glm::dvec3(instances[i].transform[3]) - camera.position;
+        const double along = glm::dot(toCentre, direction);
+        const double missDistance2 = glm::dot(toCentre, toCentre) - along * along;
+        if (along <= 0.0 || missDistance2 > 1.0) continue;
+        const double distance = along - std::sqrt(1.0 - missDistance2);
+        if (distance < nearestDistance) {
+            nearestDistance = distance;
+            nearest = i;
+        }
+    }
+    return nearest;
 }
 
 }  // namespace matevo

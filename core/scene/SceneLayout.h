@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace matevo {
@@ -42,5 +43,11 @@ SceneCamera frameInstances(std::span<const SceneInstance> instances, double aspe
 // horizon, both in degrees.
 SceneCamera orbitCamera(const glm::dvec3& target, double yawDegrees, double pitchDegrees,
                         double distance, double fieldOfViewDegrees = 32.0);
+
+// The instance whose bounding sphere (radius 1 about its origin) the ray through `ndc` (x right,
+// y up, both in [-1, 1] across the image) meets first; none when it meets no instance.
+std::optional<std::size_t> pickInstance(const SceneCamera& camera, double aspect,
+                                        const glm::dvec2& ndc,
+                                        std::span<const SceneInstance> instances);
 
 }  // namespace matevo

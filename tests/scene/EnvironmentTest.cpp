@@ -8,6 +8,7 @@
 
 #include "io/ImageFile.h"
 #include "scene/LatLong.h"
+#include "scene/SceneTextures.h"
 #include "scene/StudioEnvironment.h"
 #include "support/ScratchFolder.h"
 
@@ -101,6 +102,27 @@ TEST(StudioEnvironment, LoadsHdrAndExrFilesAndRefusesBadOnes) {
     auto text = loadEnvironment((folder / "text.hdr").string(), small);
     ASSERT_FALSE(text.ok());
     EXPECT_NE(text.error().message.find("text.hdr"), std::string::npos);
+}
+
+TEST(StudioEnvironment, PresetInTheEnvironmentModeLoadsItsEnvironment) {
+    testing::ScratchFolder folder("environment_preset");
+    Preset preset;
+    preset.scene.mode = SceneMode::Environment;
+    preset.scene.environment = "hall.exr";  // relative to the preset's folder
+    auto missing = loadSceneTextures(preset, folder / "p.json");
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().message.find("p.json: scene.environment: "), std::string::npos)
+        << missing.error().message;
+    EXPECT_NE(missing.error().message.find("hall.exr"), std::string::npos);
+
+    ASSERT_TRUE(writeImage(makeStudioEnvironment(32), folder / "hall.exr").ok());
+    auto loaded = loadSceneTextures(preset, folder / "p.json");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    EXPECT_FALSE(loaded->environment.empty());
+    preset.scene.mode = SceneMode::Paper;
+    auto paper = loadSceneTextures(preset, folder / "p.json");
+    ASSERT_TRUE(paper.ok());
+    EXPECT_TRUE(paper->environment.empty());
 }
 
 }  // namespace
