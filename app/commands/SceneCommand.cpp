@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "Messages.h"
 #include "PresetOption.h"
 #include "color/ToneMap.h"
 #include "commands/Commands.h"
@@ -43,10 +44,10 @@ constexpr const char* kHelp =
 
 std::filesystem::path outputPath(CommandLine& args) {
     const auto out = args.option("--out");
-    if (!out) throw UsageError("scene: --out FILE.png|FILE.exr is required");
+    if (!out) throw UsageError("--out FILE.png|FILE.exr is required");
     const std::string extension = std::filesystem::path(*out).extension().string();
     if (extension != ".png" && extension != ".exr")
-        throw UsageError("scene: --out: " + *out + ": the extension must be .png or .exr");
+        throw UsageError("--out: " + *out + ": the extension must be .png or .exr");
     return *out;
 }
 
@@ -56,11 +57,11 @@ std::vector<MaterialInstance> loadMaterials(const std::optional<std::string>& fo
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
     if (!folder) return {target};
     auto variants = loadVariantFolder(*folder);
-    if (!variants) throw UsageError("scene: --variants: " + variants.error().message);
+    if (!variants) throw UsageError("--variants: " + variants.error().message);
     std::vector<MaterialInstance> materials;
     for (const VariantFile& variant : *variants) {
         if (auto invalid = validateGenome(variant.genome, preset.family))
-            throw UsageError("scene: --variants: " + variant.file.string() + ": " + *invalid +
+            throw UsageError("--variants: " + variant.file.string() + ": " + *invalid +
                              " (family of " + preset.name + ")");
         materials.push_back({variant.genome, preset.family, preset.baseKappa});
     }
@@ -80,26 +81,26 @@ int runScene(CommandLine& args) {
     const auto instanceCount = args.integerOption("--instances", 1, 100000);
     const std::string layoutName = args.option("--layout").value_or("grid");
     const auto layout = parseInstanceLayout(layoutName);
-    if (!layout) throw UsageError("scene: --layout: expected grid or crowd, got " + layoutName);
+    if (!layout) throw UsageError("--layout: expected grid or crowd, got " + layoutName);
     const std::string environmentName = args.option("--env").value_or("studio");
-    const double exposure = parseNumber(args.option("--exposure").value_or("0"), "scene: --exposure");
+    const double exposure = parseNumber(args.option("--exposure").value_or("0"), "--exposure");
     const std::string toneMapName = args.option("--tonemap").value_or("aces");
     const auto toneMap = parseToneMap(toneMapName);
-    if (!toneMap) throw UsageError("scene: --tonemap: expected aces or none, got " + toneMapName);
+    if (!toneMap) throw UsageError("--tonemap: expected aces or none, got " + toneMapName);
     const ImageSize size =
-        parseImageSize(args.option("--size").value_or("1280x720"), "scene: --size", {16, 16}, 8192);
+        parseImageSize(args.option("--size").value_or("1280x720"), "--size", {16, 16}, 8192);
     const std::uint64_t seed = args.unsignedOption("--seed").value_or(1);
     const std::filesystem::path out = outputPath(args);
     args.finish();
 
     const std::vector<MaterialInstance> materials = loadMaterials(variantFolder, choice.preset);
     auto mesh = loadMesh(meshName);
-    if (!mesh) throw UsageError("scene: --mesh: " + mesh.error().message);
+    if (!mesh) throw UsageError("--mesh: " + mesh.error().message);
     auto textures = loadSceneTextures(choice.preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
     SceneSettings scene = choice.preset.scene;
     if (auto lit = applyLightingChoice(environmentName, scene, *textures); !lit)
-        throw UsageError("scene: --env: " + lit.error().message);
+        throw UsageError("--env: " + lit.error().message);
 
     const std::vector<SceneInstance> instances = layoutInstances(
         int(instanceCount.value_or(std::max<long long>(1, (long long)materials.size()))), *layout,
@@ -107,8 +108,8 @@ int runScene(CommandLine& args) {
     const SceneCamera camera = frameInstances(instances, double(size.width) / size.height);
 
     auto failed = [](const Error& error) {
-        std::fprintf(stderr, "matevo scene: %s\n", error.message.c_str());
-        return 1;
+        printMessage(error.message);
+        return exitCode(ExitStatus::InternalFailure);
     };
     auto context = gpu::GpuContext::createHeadless();
     if (!context) return failed({"needs a Vulkan device: " + context.error().message});
@@ -123,7 +124,8 @@ int runScene(CommandLine& args) {
 
     compositeOverEnvironment(*image, camera, textures->environment);
     if (out.extension() == ".png") applyExposureAndToneMap(*image, exposure, *toneMap);
-    if (auto written = writeImage(*image, out); !written) return failed(written.error());
+    if (auto written = writeImage(*image, out); !written)
+        throw UsageError("--out: " + written.error().message);
     std::printf("%zu instances of %s (%zu triangles each), %zu materials, %s lighting: %s\n",
                 instances.size(), meshName.c_str(), mesh->triangleCount(), materials.size(),
                 environmentName.c_str(), out.string().c_str());

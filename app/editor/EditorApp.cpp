@@ -33,9 +33,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The Scene window's texture slot, after those of the grid and of Compare metrics.
-constexpr std::size_t kSceneViewSlot = 5000;
-
 // Signal handlers can only set a flag; the frame loop reads it.
 std::atomic<bool> terminationRequested{false};
 
@@ -113,7 +110,7 @@ private:
     // ImGui's context and its GLFW and Vulkan backends, shut down in reverse.
     class ImGuiSession {
     public:
-        ImGuiSession(GLFWwindow* window, const VulkanContext& vulkan,
+        ImGuiSession(GLFWwindow* window, VulkanContext& vulkan,
                      const WindowRenderer& renderer, const std::string& iniPath);
         ~ImGuiSession();
         ImGuiSession(const ImGuiSession&) = delete;
@@ -145,13 +142,15 @@ private:
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
+    std::vector<std::shared_ptr<ShownImage>> compareImages_;  // what Compare metrics shows
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
+    std::shared_ptr<ShownImage> sceneImage_;  // what the Scene window shows
     std::unique_ptr<SceneViewWorker> sceneWorker_;
     std::optional<SceneViewJob> requestedScene_;
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
 };
 
-EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, const VulkanContext& vulkan,
+EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, VulkanContext& vulkan,
                                       const WindowRenderer& renderer, const std::string& iniPath) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -161,17 +160,22 @@ EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, const VulkanContext& v
     loadFont();
     ImGui_ImplGlfw_InitForVulkan(window, true);
     ImGui_ImplVulkan_InitInfo info{};
-    info.Instance = vulkan.instance();
-    info.PhysicalDevice = vulkan.physicalDevice();
-    info.Device = vulkan.device();
-    info.QueueFamily = vulkan.queueFamily();
-    info.Queue = vulkan.queue();
+    info.Instance = vulkan.instance().handle();
+    info.PhysicalDevice = vulkan.device().physicalDevice();
+    info.Device = vulkan.device().handle();
+    info.QueueFamily = vulkan.device().queueFamily();
+    info.Queue = vulkan.device().queue();
     info.DescriptorPool = vulkan.descriptorPool();
     info.MinImageCount = renderer.minImageCount();
     info.ImageCount = renderer.imageCount();
     info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
     ImGui_ImplVulkan_Init(&info, renderer.renderPass());
-    vulkan.runNow([](VkCommandBuffer commands) { ImGui_ImplVulkan_CreateFontsTexture(commands); });
+    gpu::CommandRunner& runner = vulkan.setupRunner();
+    auto commands = runner.begin();
+    if (!commands) throw std::runtime_error(commands.error().message);
+    ImGui_ImplVulkan_CreateFontsTexture(*commands);
+    if (Status uploaded = runner.submitAndWait(); !uploaded)
+        throw std::runtime_error(uploaded.error().message);
     ImGui_ImplVulkan_DestroyFontUploadObjects();
 }
 
@@ -195,21 +199,26 @@ EditorApp::EditorApp(const EditorOptions& options)
     vulkan_ = std::move(*vulkan);
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
-    renderer_ = std::make_unique<WindowRenderer>(
-        *vulkan_, VkExtent2D{std::uint32_t(width), std::uint32_t(height)});
+    auto renderer =
+        WindowRenderer::create(*vulkan_, VkExtent2D{std::uint32_t(width), std::uint32_t(height)});
+    if (!renderer) throw std::runtime_error(renderer.error().message);
+    renderer_ = std::move(renderer).value();
     imgui_ = std::make_unique<ImGuiSession>(window_.get(), *vulkan_, *renderer_, iniPath_);
-    bridge_ = std::make_unique<ImageBridge>(*vulkan_, renderer_->renderPass());
+    auto bridge = ImageBridge::create(*vulkan_, renderer_->renderPass());
+    if (!bridge) throw std::runtime_error(bridge.error().message);
+    bridge_ = std::move(bridge).value();
     display_ = std::make_unique<EvolutionDisplay>(*bridge_);
-    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); }, options.backend,
-                                                options.validation);
+    // The workers render on the window's device: tiles are shown without leaving the GPU.
+    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); }, vulkan_->device(),
+                                                options.backend);
     gpu::RendererRequest compareRenderer;
     compareRenderer.backend = options.backend;
     compareRenderer.who = "matevo edit: Compare metrics";
-    compareRenderer.headless = {options.validation, true};
+    compareRenderer.device = &vulkan_->device();
     compareWorker_ =
         std::make_unique<CompareMetricsWorker>([] { glfwPostEmptyEvent(); }, compareRenderer);
     sceneWorker_ = std::make_unique<SceneViewWorker>([] { glfwPostEmptyEvent(); },
-                                                     options.validation);
+                                                     vulkan_->device());
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
@@ -218,7 +227,7 @@ EditorApp::~EditorApp() {
     sceneWorker_.reset();
     compareWorker_.reset();
     worker_.reset();
-    renderer_->waitIdle();
+    (void)renderer_->waitIdle();  // frames in flight use the images released below
 }
 
 bool EditorApp::shouldQuit() const {
@@ -260,8 +269,7 @@ int EditorApp::run() {
         std::fprintf(stderr, "matevo edit: %s\n", failure_.c_str());
         return 1;
     }
-    const int validationMessages = vulkan_->validationMessages() + worker_->validationMessages() +
-                                   sceneWorker_->validationMessages();
+    const int validationMessages = vulkan_->validationMessages();
     if (validationMessages > 0) {
         std::fprintf(stderr, "matevo edit: %d Vulkan validation message(s)\n", validationMessages);
         return 1;
@@ -297,15 +305,17 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
     ImDrawData* drawData = ImGui::GetDrawData();
+    bridge_->setHeatmapRange(ui_.state().heatmap.minDeltaE, ui_.state().heatmap.maxDeltaE);
     FrameRecording recording;
-    recording.beforePass = [this](VkCommandBuffer commands) { bridge_->recordUploads(commands); };
-    recording.inPass = [this, drawData](VkCommandBuffer commands) {
-        bridge_->prepare(*drawData, commands);
+    recording.inPass = [this, drawData](VkCommandBuffer commands, std::size_t frameSlot) {
+        bridge_->prepare(*drawData, commands, frameSlot);
         ImGui_ImplVulkan_RenderDrawData(drawData, commands);
     };
     Rgba8Image captured;
-    const bool drawn = renderer_->drawFrame(VkExtent2D{std::uint32_t(width), std::uint32_t(height)},
-                                            recording, captureNow ? &captured : nullptr);
+    auto drawFrame = renderer_->drawFrame(VkExtent2D{std::uint32_t(width), std::uint32_t(height)},
+                                          recording, captureNow ? &captured : nullptr);
+    if (!drawFrame) failure_ = drawFrame.error().message;
+    const bool drawn = drawFrame && *drawFrame;
     if (drawn && captureNow) saveScreenshot(captured, *captureNow);
     if (!drawn && captureNow) screenshotPath = captureNow;  // try again next frame
     return drawn;
@@ -324,15 +334,10 @@ void EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath)
 void EditorApp::applyEvolutionResults() {
     ui::EditorState& state = ui_.state();
     std::optional<EvolutionUpdate> update = worker_->takeLatest();
-    const bool recolour = display_->needsRecolour(state.heatmap);
-    if (!update && !recolour) return;
-    renderer_->waitIdle();  // textures are about to change
-    if (update) {
-        if (!update->error.empty()) state.statusMessage = update->error;
-        display_->show(std::move(*update), state.heatmap, state.evolution);
-    } else {
-        display_->recolour(state.heatmap, state.evolution);
-    }
+    if (!update) return;
+    if (!update->error.empty()) state.statusMessage = update->error;
+    if (Status shown = display_->show(std::move(*update), state.evolution); !shown)
+        failure_ = shown.error().message;
 }
 
 void EditorApp::applyCompareMetricsResults() {
@@ -341,8 +346,12 @@ void EditorApp::applyCompareMetricsResults() {
     view.progress = compareWorker_->progress();
     std::optional<CompareMetricsResult> result = compareWorker_->takeResult();
     if (!result) return;
-    renderer_->waitIdle();  // textures are about to change
-    showCompareMetrics(*result, *bridge_, view);
+    auto shown = showCompareMetrics(*result, *bridge_, view);
+    if (!shown) {
+        failure_ = shown.error().message;
+        return;
+    }
+    compareImages_ = std::move(shown).value();
 }
 
 // Shows a finished render of the Scene window, and asks for a new one when the window is open
@@ -353,8 +362,13 @@ void EditorApp::applySceneView() {
     if (std::optional<SceneViewResult> result = sceneWorker_->takeResult()) {
         view.status = result->status;
         if (result->image.width > 0) {
-            renderer_->waitIdle();  // the texture is about to change
-            view.image = bridge_->setImage(kSceneViewSlot, toDisplayImage(result->image));
+            auto shown = bridge_->upload(std::span(&result->image, 1));
+            if (!shown) {
+                view.status = shown.error().message;
+                return;
+            }
+            sceneImage_ = shown->front();
+            view.image = sceneImage_->render();
             view.imageWidth = result->image.width;
             view.imageHeight = result->image.height;
             view.camera = result->camera;

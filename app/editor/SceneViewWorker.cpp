@@ -5,7 +5,6 @@
 #include <utility>
 
 #include "color/ToneMap.h"
-#include "gpu/GpuContext.h"
 #include "gpu/GpuSceneRenderer.h"
 #include "material/FgdTableCache.h"
 #include "mesh/MeshFile.h"
@@ -17,7 +16,6 @@ namespace matevo::editor {
 // Rebuilt when the mesh, the lighting or the preset's textures change; materials are set per
 // job.
 struct SceneViewRenderer {
-    gpu::GpuContext context;
     gpu::CommandRunner runner;
     std::optional<gpu::GpuSceneRenderer> scene;
     std::string key;  // mesh, lighting and texture files of `scene`
@@ -26,8 +24,8 @@ struct SceneViewRenderer {
     std::size_t triangles = 0;
 };
 
-SceneViewWorker::SceneViewWorker(std::function<void()> onUpdate, bool validation)
-    : onUpdate_(std::move(onUpdate)), validation_(validation), thread_([this] { loop(); }) {}
+SceneViewWorker::SceneViewWorker(std::function<void()> onUpdate, const gpu::Device& device)
+    : onUpdate_(std::move(onUpdate)), device_(device), thread_([this] { loop(); }) {}
 
 SceneViewWorker::~SceneViewWorker() {
     {
@@ -54,7 +52,7 @@ std::optional<SceneViewResult> SceneViewWorker::takeResult() {
 namespace {
 
 Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
-                               const SceneViewJob& job, bool validation);
+                               const SceneViewJob& job, const gpu::Device& device);
 
 }  // namespace
 
@@ -70,7 +68,7 @@ void SceneViewWorker::loop() {
         }
         SceneViewResult result;
         try {
-            auto rendered = render(renderer, job, validation_);
+            auto rendered = render(renderer, job, device_);
             if (rendered) {
                 result = std::move(rendered).value();
             } else {
@@ -80,10 +78,6 @@ void SceneViewWorker::loop() {
             result.status = std::string("scene view: ") + error.what();
         }
         result.controls = job.controls;
-        if (renderer) {
-            const auto& log = renderer->context.instance.validationLog();
-            validationMessages_.store(log.errorCount() + log.warningCount());
-        }
         {
             std::lock_guard lock(mutex_);
             result_ = std::move(result);
@@ -95,18 +89,15 @@ void SceneViewWorker::loop() {
 namespace {
 
 Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
-                               const SceneViewJob& job, bool validation) {
+                               const SceneViewJob& job, const gpu::Device& device) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const ui::SceneViewControls& controls = job.controls;
     if (job.materials.empty()) return Error{"no candidates yet"};
     if (!renderer) {
-        auto context = gpu::GpuContext::createHeadless({.validation = validation});
-        if (!context) return Error{"scene view needs Vulkan: " + context.error().message};
-        auto runner = gpu::CommandRunner::create(context->device);
+        auto runner = gpu::CommandRunner::create(device);
         if (!runner) return runner.error();
-        renderer.reset(new SceneViewRenderer{std::move(context).value(),
-                                                     std::move(runner).value(), {}, {}, {}, {}, 0});
+        renderer.reset(new SceneViewRenderer{std::move(runner).value(), {}, {}, {}, {}, 0});
     }
     const std::string meshName = ui::kSceneMeshes[controls.mesh];
     const std::string lighting = ui::kSceneLightings[controls.lighting];
@@ -121,7 +112,7 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
         renderer->settings = job.preset.scene;
         if (auto lit = applyLightingChoice(lighting, renderer->settings, *textures); !lit)
             return lit.error();
-        auto scene = gpu::GpuSceneRenderer::create(renderer->context.device, renderer->runner,
+        auto scene = gpu::GpuSceneRenderer::create(device, renderer->runner,
                                                    defaultFgdTables(), *textures, *mesh);
         if (!scene) return scene.error();
         renderer->scene.emplace(std::move(scene).value());
@@ -151,7 +142,7 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
                   "%d instances of %s (%zu triangles each), %zu candidates, %s lighting, "
                   "ACES tone map; %.0f ms on %s",
                   controls.instances, meshName.c_str(), renderer->triangles, job.materials.size(),
-                  lighting.c_str(), milliseconds, renderer->context.device.name().c_str());
+                  lighting.c_str(), milliseconds, device.name().c_str());
     result.status = status;
     return result;
 }

@@ -1,9 +1,8 @@
 #pragma once
 // Renders the Scene window (ui/ScenePanel.h) on a worker thread with the raster scene renderer
-// (core/gpu/GpuSceneRenderer), so that orbiting never blocks the UI. Only the newest request
+// (core/gpu/GpuSceneRenderer) on the window's device, so that orbiting never blocks the UI. Only the newest request
 // matters: one queued while a render runs replaces any older one. The UI thread takes the
 // finished render and is woken through `onUpdate` (which must be thread-safe).
-#include <atomic>
 #include <condition_variable>
 #include <filesystem>
 #include <functional>
@@ -16,6 +15,7 @@
 
 #include "ScenePanel.h"
 #include "common/Image.h"
+#include "gpu/Device.h"
 #include "io/Preset.h"
 #include "material/MaterialInstance.h"
 
@@ -42,27 +42,25 @@ struct SceneViewRenderer;  // the Vulkan side, owned by the worker thread only
 
 class SceneViewWorker {
 public:
-    SceneViewWorker(std::function<void()> onUpdate, bool validation);
+    // `device` (the window's) must outlive the worker; submissions take its queue lock.
+    SceneViewWorker(std::function<void()> onUpdate, const gpu::Device& device);
     ~SceneViewWorker();
     SceneViewWorker(const SceneViewWorker&) = delete;
     SceneViewWorker& operator=(const SceneViewWorker&) = delete;
 
     void request(SceneViewJob job);
     std::optional<SceneViewResult> takeResult();
-    // Errors and warnings the validation layer reported on the worker's device so far.
-    int validationMessages() const { return validationMessages_.load(); }
 
 private:
     void loop();
 
     std::function<void()> onUpdate_;
-    bool validation_;
+    const gpu::Device& device_;
     std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<SceneViewJob> pending_;
     std::optional<SceneViewResult> result_;
     bool stopping_ = false;
-    std::atomic<int> validationMessages_{0};
     std::thread thread_;
 };
 
