@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "Suggestion.h"
@@ -134,6 +135,15 @@ std::vector<double> parseNumberList(const std::string& text, const std::string& 
     std::string item;
     while (std::getline(stream, item, ',')) values.push_back(parseNumber(item, what));
     return values;
+}
+
+std::string imageOutputPath(CommandLine& args) {
+    const auto out = args.option("--out");
+    if (!out) throw UsageError("--out FILE.png|FILE.exr is required");
+    const std::string extension = std::filesystem::path(*out).extension().string();
+    if (extension != ".png" && extension != ".exr")
+        throw UsageError("--out: " + *out + ": the extension must be .png or .exr");
+    return *out;
 }
 
 ImageSize parseImageSize(const std::string& text, const std::string& what, ImageSize minimum,

@@ -58,6 +58,9 @@ long long parseInteger(const std::string& text, const std::string& what, long lo
 double parseNumber(const std::string& text, const std::string& what);
 std::vector<double> parseNumberList(const std::string& text, const std::string& what);
 
+// The required `--out FILE.png|FILE.exr` of the commands that write one image.
+std::string imageOutputPath(CommandLine& args);
+
 struct ImageSize {
     int width = 0;
     int height = 0;

@@ -12,19 +12,6 @@
 
 namespace matevo::cli {
 
-namespace {
-
-std::filesystem::path outputPath(CommandLine& args) {
-    const auto out = args.option("--out");
-    if (!out) throw UsageError("--out FILE.png|FILE.exr is required");
-    const std::string extension = std::filesystem::path(*out).extension().string();
-    if (extension != ".png" && extension != ".exr")
-        throw UsageError("--out: " + *out + ": the extension must be .png or .exr");
-    return *out;
-}
-
-}  // namespace
-
 int runRender(CommandLine& args) {
     if (args.wantsHelp()) {
         std::printf(
@@ -50,7 +37,7 @@ int runRender(CommandLine& args) {
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const auto lighting = args.option("--env");
-    const std::filesystem::path out = outputPath(args);
+    const std::filesystem::path out = imageOutputPath(args);
     args.finish();
 
     MaterialInstance material{choice.preset.target, choice.preset.family, choice.preset.baseKappa};

@@ -42,15 +42,6 @@ constexpr const char* kHelp =
     "  --size WxH     image size (default 1280x720); --seed S the crowd's layout (default 1)\n"
     "PNG is sRGB 8-bit after exposure and tone mapping; EXR is linear, before them.\n";
 
-std::filesystem::path outputPath(CommandLine& args) {
-    const auto out = args.option("--out");
-    if (!out) throw UsageError("--out FILE.png|FILE.exr is required");
-    const std::string extension = std::filesystem::path(*out).extension().string();
-    if (extension != ".png" && extension != ".exr")
-        throw UsageError("--out: " + *out + ": the extension must be .png or .exr");
-    return *out;
-}
-
 // The variants as materials of the preset's family; errors name the file and the rule.
 std::vector<MaterialInstance> loadMaterials(const std::optional<std::string>& folder,
                                             const Preset& preset) {
@@ -90,7 +81,7 @@ int runScene(CommandLine& args) {
     const ImageSize size =
         parseImageSize(args.option("--size").value_or("1280x720"), "--size", {16, 16}, 8192);
     const std::uint64_t seed = args.unsignedOption("--seed").value_or(1);
-    const std::filesystem::path out = outputPath(args);
+    const std::filesystem::path out = imageOutputPath(args);
     args.finish();
 
     const std::vector<MaterialInstance> materials = loadMaterials(variantFolder, choice.preset);

@@ -1,5 +1,6 @@
 #include "gpu/ComputeKernel.h"
 
+#include "gpu/ShaderModule.h"
 #include "gpu/VulkanError.h"
 
 namespace matevo::gpu {
@@ -12,14 +13,9 @@ Result<ComputeKernel> ComputeKernel::create(const Device& device,
     ComputeKernel kernel;
     kernel.pushConstantBytes_ = pushConstantBytes;
 
-    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    moduleInfo.codeSize = spirv.size_bytes();
-    moduleInfo.pCode = spirv.data();
-    VkShaderModule module = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateShaderModule(vkDevice, &moduleInfo, nullptr, &module);
-        result != VK_SUCCESS)
-        return vulkanError("creating a shader module", result);
-    kernel.module_ = UniqueShaderModule(vkDevice, module);
+    auto module = createShaderModule(vkDevice, spirv);
+    if (!module) return module.error();
+    kernel.module_ = std::move(module).value();
 
     auto set = DescriptorSet::create(device, std::move(bindings), VK_SHADER_STAGE_COMPUTE_BIT);
     if (!set) return set.error();
@@ -42,7 +38,7 @@ Result<ComputeKernel> ComputeKernel::create(const Device& device,
     VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    pipelineInfo.stage.module = module;
+    pipelineInfo.stage.module = kernel.module_.get();
     pipelineInfo.stage.pName = "main";
     pipelineInfo.layout = pipelineLayout;
     VkPipeline pipeline = VK_NULL_HANDLE;

@@ -12,6 +12,7 @@
 #include <shaders/kSceneRasterFragmentSpirv.h>
 #include <shaders/kSceneRasterVertexSpirv.h>
 
+#include "gpu/ShaderModule.h"
 #include "gpu/VulkanError.h"
 
 namespace matevo::gpu {
@@ -78,17 +79,6 @@ Result<Buffer> createFilledBuffer(const Device& device, std::span<const std::byt
     if (!buffer) return buffer;
     std::memcpy(buffer->bytes().data(), bytes.data(), bytes.size());
     return buffer;
-}
-
-Result<UniqueShaderModule> createModule(VkDevice device, std::span<const uint32_t> spirv) {
-    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = spirv.size_bytes();
-    info.pCode = spirv.data();
-    VkShaderModule module = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateShaderModule(device, &info, nullptr, &module);
-        result != VK_SUCCESS)
-        return vulkanError("creating a shader module", result);
-    return UniqueShaderModule(device, module);
 }
 
 // Multisampled colour and depth, resolved into a single-sample image that a transfer (or, in
@@ -161,9 +151,9 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
 
 Result<UniquePipeline> createPipeline(VkDevice device, VkRenderPass renderPass,
                                       VkPipelineLayout layout) {
-    auto vertexModule = createModule(device, kSceneRasterVertexSpirv);
+    auto vertexModule = createShaderModule(device, kSceneRasterVertexSpirv);
     if (!vertexModule) return vertexModule.error();
-    auto fragmentModule = createModule(device, kSceneRasterFragmentSpirv);
+    auto fragmentModule = createShaderModule(device, kSceneRasterFragmentSpirv);
     if (!fragmentModule) return fragmentModule.error();
     VkPipelineShaderStageCreateInfo stages[2]{};
     stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
