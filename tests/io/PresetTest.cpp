@@ -200,7 +200,7 @@ TEST(Preset, SceneModeIsReadAndDefaultsToThePapersScene) {
 
     const std::string message =
         errorOf(replaced(withScene, R"("scene": {})", R"("scene": {"mode": "studio"})"));
-    EXPECT_NE(message.find("p.json: scene.mode: unknown value 'studio' (expected paper or ambient)"),
+    EXPECT_NE(message.find("p.json: scene.mode: unknown value 'studio' (expected paper, ambient or environment)"),
               std::string::npos)
         << message;
 }
