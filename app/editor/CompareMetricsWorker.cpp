@@ -1,5 +1,7 @@
 #include "CompareMetricsWorker.h"
 
+#include <exception>
+#include <string>
 #include <utility>
 
 #include "experiment/Experiment.h"
@@ -23,7 +25,15 @@ bool CompareMetricsWorker::start(CompareMetricsJob job) {
     if (thread_.joinable()) thread_.join();  // the previous job has finished
     progress_.store(0.0f);
     thread_ = std::thread([this, job = std::move(job)] {
-        CompareMetricsResult result = compute(job);
+        // Nothing may escape a thread: a failure becomes the result's error, shown in the window.
+        CompareMetricsResult result;
+        try {
+            result = compute(job);
+        } catch (const std::exception& error) {
+            result.error = std::string("the comparison failed: ") + error.what();
+        } catch (...) {
+            result.error = "the comparison failed";
+        }
         {
             std::lock_guard lock(mutex_);
             result_ = std::move(result);
@@ -69,7 +79,7 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
         onUpdate_();
     });
     result.renders.resize(result.records.size());
-    const Status scored = scoreRuns(
+    const auto scored = scoreRuns(
         result.records, target->front(), render, 16,
         [&](int done, int total) {
             progress_.store(0.5f + 0.5f * float(done) / float(total));

@@ -4,6 +4,7 @@
 //  "sigma_a":[r,g,b], "g":…}. The medium fields may be left out (they default to 0).
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -16,6 +17,8 @@ class JsonReader;
 
 nlohmann::json genomeToJson(const Genome& genome);
 Genome readGenome(JsonReader& reader);  // throws JsonFieldError naming the field
+// The genome JSON in `text`; errors name `sourceName` and the field.
+Result<Genome> parseGenome(std::string_view text, const std::string& sourceName);
 Result<Genome> loadGenome(const std::filesystem::path& file);
 
 }  // namespace matevo
