@@ -1,5 +1,6 @@
 #include "mesh/GltfReader.h"
 
+#include <cctype>
 #include <cstring>
 #include <functional>
 #include <string>
@@ -11,6 +12,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <tiny_gltf.h>
+
+#include "io/InputFile.h"
 
 namespace matevo {
 namespace {
@@ -238,16 +241,23 @@ struct MeshBuilder {
 
 Result<Mesh> readGltf(const std::filesystem::path& file) {
     const std::string name = file.string();
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(file, error))
-        return Error{name + ": not a readable file"};
+    auto bytes = readInputFile(file, kMaxMeshFileBytes);
+    if (!bytes) return bytes.error();
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skipImage, nullptr);
     tinygltf::Model model;
     std::string errors, warnings;
-    const bool binary = file.extension() == ".glb";
-    const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &errors, &warnings, name)
-                               : loader.LoadASCIIFromFile(&model, &errors, &warnings, name);
+    // External buffers are found beside the file.
+    const std::string folder = file.parent_path().string();
+    std::string extension = file.extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const bool loaded =
+        extension == ".glb"
+            ? loader.LoadBinaryFromMemory(&model, &errors, &warnings,
+                                          reinterpret_cast<const unsigned char*>(bytes->data()),
+                                          unsigned(bytes->size()), folder)
+            : loader.LoadASCIIFromString(&model, &errors, &warnings, bytes->data(),
+                                         unsigned(bytes->size()), folder);
     if (!loaded) {
         // tinygltf's messages span lines; the first says what went wrong.
         std::string first = errors.substr(0, errors.find('\n'));

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "io/TextFile.h"
+#include "io/InputFile.h"
 #include "mesh/GeneratedMeshes.h"
 #include "mesh/GltfReader.h"
 #include "mesh/ObjReader.h"
@@ -19,7 +19,7 @@ Result<Mesh> loadMesh(const std::string& nameOrFile) {
                    [](unsigned char c) { return char(std::tolower(c)); });
     Result<Mesh> mesh = Error{};
     if (extension == ".obj") {
-        auto text = readTextFile(file);
+        auto text = readInputFile(file, kMaxMeshFileBytes);
         if (!text) return text.error();
         mesh = parseObj(*text, nameOrFile);
     } else if (extension == ".gltf" || extension == ".glb") {
