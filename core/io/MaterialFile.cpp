@@ -47,6 +47,8 @@ MaterialFile readMaterialFile(JsonReader& root, const fs::path& folder) {
     result.roughnessTexture = resolvedTexture(folder, textures.roughness);
     result.baseColorTexture = resolvedTexture(folder, textures.baseColor);
     if (root.has("scene")) result.scene = readScene(root.object("scene"));
+    if (result.scene.environment != "studio")
+        result.scene.environment = resolvedTexture(folder, result.scene.environment).string();
     root.warnAboutUnknownFields();
     return result;
 }
@@ -94,11 +96,14 @@ MaterialFile readAnyMaterial(const nlohmann::json& json, const fs::path& folder,
 MaterialFile materialFromPreset(const Preset& preset, const fs::path& presetFile,
                                 const Genome& genome, std::string name) {
     const fs::path folder = presetFile.parent_path();
-    return {std::move(name),
-            {genome, preset.family, preset.baseKappa},
-            resolvedTexture(folder, preset.roughnessTexture),
-            resolvedTexture(folder, preset.baseColorTexture),
-            preset.scene};
+    MaterialFile material{std::move(name),
+                          {genome, preset.family, preset.baseKappa},
+                          resolvedTexture(folder, preset.roughnessTexture),
+                          resolvedTexture(folder, preset.baseColorTexture),
+                          preset.scene};
+    if (material.scene.environment != "studio")
+        material.scene.environment = resolvedTexture(folder, material.scene.environment).string();
+    return material;
 }
 
 nlohmann::ordered_json materialToJson(const MaterialFile& material, const fs::path& folder) {

@@ -55,7 +55,8 @@ TextureNames readTextures(JsonReader& parent, const MaterialFamily& family) {
 SceneSettings readScene(JsonReader reader) {
     SceneSettings scene;
     if (reader.has("mode"))
-        scene.mode = reader.enumeration("mode", parseSceneMode, "paper or ambient");
+        scene.mode = reader.enumeration("mode", parseSceneMode, "paper, ambient or environment");
+    if (reader.has("environment")) scene.environment = reader.string("environment");
     if (reader.has("image_size")) scene.imageSize = int(reader.integer("image_size", 8, 4096));
     if (reader.has("camera_position"))
         scene.cameraPosition = reader.numbers<3>("camera_position", -100.0, 100.0);
@@ -93,7 +94,8 @@ nlohmann::ordered_json sceneToJson(const SceneSettings& scene) {
             {"field_of_view_degrees", scene.fieldOfViewDegrees},
             {"light_direction", scene.lightDirection},
             {"light_radiance", scene.lightRadiance},
-            {"environment_radiance", scene.environmentRadiance}};
+            {"environment_radiance", scene.environmentRadiance},
+            {"environment", scene.environment}};
 }
 
 GaSettings readGaSettings(JsonReader reader) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "io/ImageFile.h"
+#include "scene/StudioEnvironment.h"
 
 namespace matevo {
 
@@ -39,6 +40,22 @@ Result<SceneTextures> loadTextures(const std::string& source,
     return SceneTextures{std::move(roughness).value(), std::move(baseColor).value()};
 }
 
+// The environment mode's lighting: "studio", or a file (relative to `folder` unless absolute).
+Result<SceneTextures> withEnvironment(SceneTextures textures, const SceneSettings& scene,
+                                      const std::filesystem::path& folder,
+                                      const std::string& source) {
+    if (scene.mode != SceneMode::Environment) return textures;
+    const std::filesystem::path name(scene.environment);
+    const std::string file = scene.environment == "studio" || name.is_absolute()
+                                 ? scene.environment
+                                 : (folder / name).string();
+    auto environment = loadEnvironment(file);
+    if (!environment)
+        return Error{source + ": scene.environment: " + environment.error().message};
+    textures.environment = std::move(environment).value();
+    return textures;
+}
+
 std::filesystem::path besidePreset(const std::filesystem::path& presetFile,
                                    const std::string& name) {
     return name.empty() ? std::filesystem::path() : presetFile.parent_path() / name;
@@ -48,13 +65,20 @@ std::filesystem::path besidePreset(const std::filesystem::path& presetFile,
 
 Result<SceneTextures> loadSceneTextures(const Preset& preset,
                                         const std::filesystem::path& presetFile) {
-    return loadTextures(presetFile.string(), besidePreset(presetFile, preset.roughnessTexture),
-                        besidePreset(presetFile, preset.baseColorTexture));
+    auto textures =
+        loadTextures(presetFile.string(), besidePreset(presetFile, preset.roughnessTexture),
+                     besidePreset(presetFile, preset.baseColorTexture));
+    if (!textures) return textures;
+    return withEnvironment(std::move(*textures), preset.scene, presetFile.parent_path(),
+                           presetFile.string());
 }
 
 Result<SceneTextures> loadSceneTextures(const MaterialFile& material,
                                         const std::string& sourceName) {
-    return loadTextures(sourceName, material.roughnessTexture, material.baseColorTexture);
+    auto textures =
+        loadTextures(sourceName, material.roughnessTexture, material.baseColorTexture);
+    if (!textures) return textures;
+    return withEnvironment(std::move(*textures), material.scene, {}, sourceName);
 }
 
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v) {
