@@ -20,7 +20,15 @@ int runRender(CommandLine& args) {
             "                     [--backend cpu|gpu] [--env paper|ambient|studio|FILE]\n"
             "                     --out FILE.png|FILE.exr\n\n"
             "Renders one material on the paper's test sphere (one light, transparent\n"
-    auto images = renderer->render(std::span(&material.material, 1), scene, imageSize);
+            "background, alpha = coverage): the preset's target, or the material in FILE.json.\n"
+            "FILE.json is any material JSON matevo writes: a material file (variants, the\n"
+            "editor's copy), an evolve report (its best material) or a bare genome; a bare\n"
+            "genome takes family, base kappa, textures and scene from the preset. Values\n"
+            "outside the family's ranges (Table 2) are refused. PNG is sRGB 8-bit, EXR linear\n"
+            "float. --size is the image side in pixels (default: the material's scene).\n"
+            "--env lights it: paper (the single light alone), ambient (the light plus a uniform\n"
+            "environment), studio (the light plus matevo's generated studio) or a lat-long .hdr\n"
+            "or .exr FILE (the light plus that environment); default: the material's scene.\n"
             "--backend gpu (default) renders with Vulkan; with no usable Vulkan device it says\n"
             "so on stderr and renders on the CPU. --backend cpu is the reference renderer.\n"
             "--preset is a file or a name from matevo presets (default validation_metal).\n");
@@ -37,7 +45,8 @@ int runRender(CommandLine& args) {
     const MaterialFile material = genomeFile ? source.load(*genomeFile) : source.presetMaterial();
     const int imageSize = int(size.value_or(material.scene.imageSize));
     // The render, its read-back and the encoded file: about three RGBA float images.
-    if (auto fits = checkMemoryEstimate(std::uint64_t(imageSize) * std::uint64_t(imageSize) * 16 * 3,
+    const std::uint64_t bytes = std::uint64_t(imageSize) * std::uint64_t(imageSize) * 16 * 3;
+    if (auto fits = checkMemoryEstimate(bytes,
                                         "--size " + std::to_string(imageSize));
         !fits)
         throw UsageError(fits.error().message);
