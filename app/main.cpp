@@ -35,6 +35,7 @@ constexpr Subcommand kSubcommands[] = {
     {"experiment", runExperiment, "the paper's section 5 experiment: metrics x runs"},
     {"presets", runPresets, "list the presets --preset NAME accepts (shipped and your own)"},
     {"bench", runBench, "measure the GA, CIEDE2000 and renderers; medians"},
+    {"scene", runScene, "render many instances of a mesh, one variant each, to PNG or EXR"},
 };
 
 void printHelp() {

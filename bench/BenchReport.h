@@ -17,5 +17,6 @@ void benchGeneticAlgorithm(BenchReport& report);
 void benchCpuRender(BenchReport& report);
 void benchDeltaE00(BenchReport& report);
 void benchGpuGrid(BenchReport& report);  // gpu_grid64_ms and cpu_grid64_ms
+void benchScene(BenchReport& report, int instances);  // scene_* frame times, raster renderer
 
 }  // namespace matevo::bench

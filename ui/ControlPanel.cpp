@@ -45,6 +45,9 @@ ControlPanelActions drawControlPanel(EditorState& state, bool canUndo, bool canR
     ImGui::PopItemWidth();
     if (ImGui::Button("Compare metrics")) state.compareMetrics.open = true;
     hoverHint("The paper's section 5 experiment: the three metrics side by side");
+    ImGui::SameLine();
+    if (ImGui::Button("Scene")) state.sceneView.open = true;
+    hoverHint("The paper's section 6 application: many instances of a mesh, one candidate each");
     return actions;
 }
 

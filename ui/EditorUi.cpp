@@ -4,6 +4,7 @@
 
 #include "CandidateGrid.h"
 #include "CompareMetricsPanel.h"
+#include "ScenePanel.h"
 #include "ControlPanel.h"
 #include "FitnessPlot.h"
 #include "InspectPanel.h"
@@ -44,6 +45,7 @@ FrameRequests EditorUi::draw() {
     ImGui::End();
 
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
+    drawSceneWindow(state_);
     drawPathDialogs();
     handleShortcuts(requests);
     // One undo step per finished edit: a slider drag is recorded when it is released.

@@ -10,13 +10,15 @@ namespace matevo::cli {
 int runBench(CommandLine& args) {
     if (args.wantsHelp()) {
         std::printf(
-            "usage: matevo bench [--json]\n\n"
+            "usage: matevo bench [--json] [--scene-instances N]\n\n"
             "Measures medians of the genetic algorithm (pop 100 x 10 generations, genotype\n"
             "fitness), CIEDE2000 throughput and the renderers. Prints a table, or one JSON object\n"
-            "with --json. scripts/bench.sh runs the Python peers beside it and prints ratios.\n");
+            "with --json. scripts/bench.sh runs the Python peers beside it and prints ratios.\n"
+            "--scene-instances N sets the instances of the scene figures (default 100).\n");
         return 0;
     }
     const bool asJson = args.flag("--json");
+    const int sceneInstances = int(args.integerOption("--scene-instances", 1, 1000000).value_or(100));
     args.finish();
 
     bench::BenchReport report;
@@ -24,6 +26,7 @@ int runBench(CommandLine& args) {
     bench::benchCpuRender(report);
     bench::benchDeltaE00(report);
     bench::benchGpuGrid(report);
+    bench::benchScene(report, sceneInstances);
 
     if (asJson) {
         nlohmann::json out = nlohmann::json::object();

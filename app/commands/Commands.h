@@ -11,5 +11,6 @@ int runCompare(CommandLine& args);
 int runExperiment(CommandLine& args);
 int runPresets(CommandLine& args);
 int runBench(CommandLine& args);
+int runScene(CommandLine& args);
 
 }  // namespace matevo::cli
