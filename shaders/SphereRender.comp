@@ -22,7 +22,7 @@ layout(binding = 3) uniform sampler2D baseColorTexture;  // 1x1 white when absen
 layout(std430, binding = 4) readonly buffer Scene {
     vec4 cameraPosition;       // w image size in pixels
     vec4 cameraForward;        // w tan(fov / 2)
-    vec4 cameraRight;
+    vec4 cameraRight;          // w radius of the sphere's image (a centred disc) in pixels
     vec4 cameraUp;
     vec4 toLight;
     vec4 lightRadiance;
@@ -133,9 +133,17 @@ void main() {
     const int kSubsamples = kSubsamplesPerAxis * kSubsamplesPerAxis;
     vec3 normal;
     vec3 toViewer;
-    int hits = 0;
-    for (int i = 0; i < kSubsamples; ++i) {
-        if (traceSphere(corner + subsampleOffset(i), size, normal, toViewer)) ++hits;
+    // Only pixels near the disc's edge need the subsample test: elsewhere every subsample hits
+    // (or misses), as the test would find. The margin exceeds the subsamples' reach from the
+    // pixel centre (0.36 px) with room for rounding.
+    const float kEdgeMargin = 1.0;
+    float fromCentre = length(corner + 0.5 - 0.5 * float(size));
+    float discRadius = scene.cameraRight.w;
+    int hits = fromCentre < discRadius - kEdgeMargin ? kSubsamples : 0;
+    if (abs(fromCentre - discRadius) <= kEdgeMargin) {
+        for (int i = 0; i < kSubsamples; ++i) {
+            if (traceSphere(corner + subsampleOffset(i), size, normal, toViewer)) ++hits;
+        }
     }
     uint index = gl_GlobalInvocationID.y * pixelCount + pixel;
     if (hits == 0) {

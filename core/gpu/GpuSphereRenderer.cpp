@@ -54,11 +54,16 @@ GpuScene toGpu(const SceneSettings& scene, int size, bool textured) {
     const glm::dvec3 forward = glm::normalize(-position);
     const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
     const glm::dvec3 up = glm::cross(right, forward);
+    // The sphere's image is a disc around the image centre (the camera looks at the sphere's
+    // centre): the cone of half-angle asin(1 / distance) on the unit image plane, in pixels.
+    const double tanHalfFov = std::tan(scene.fieldOfViewDegrees * std::numbers::pi / 360.0);
+    const double cameraDistance = glm::length(position);
+    // From inside the sphere nothing is seen: a radius of 0 leaves every pixel a miss.
+    const double silhouetteAngle = cameraDistance > 1.0 ? std::asin(1.0 / cameraDistance) : 0.0;
     GpuScene gpu{};
     store(gpu.cameraPosition, position, size);
-    store(gpu.cameraForward, forward,
-          std::tan(scene.fieldOfViewDegrees * std::numbers::pi / 360.0));
-    store(gpu.cameraRight, right, 0.0);
+    store(gpu.cameraForward, forward, tanHalfFov);
+    store(gpu.cameraRight, right, std::tan(silhouetteAngle) / tanHalfFov * 0.5 * double(size));
     store(gpu.cameraUp, up, 0.0);
     store(gpu.toLight, glm::normalize(toVector(scene.lightDirection)), 0.0);
     store(gpu.lightRadiance, toVector(scene.lightRadiance), 0.0);
