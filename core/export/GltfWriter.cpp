@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
-#include "export/SphereMesh.h"
+#include "mesh/GeneratedMeshes.h"
 #include "io/AtomicFile.h"
 #include "io/ImageFile.h"
 
@@ -50,27 +50,32 @@ struct SphereAccessors {
     int positions, normals, uvs, indices;
 };
 
+// Appends one attribute of every vertex as a tightly packed array; returns its buffer view.
+template <typename Attribute>
+int addVertexAttribute(tinygltf::Model& model, const Mesh& mesh, Attribute MeshVertex::*member) {
+    std::vector<Attribute> values;
+    values.reserve(mesh.vertices.size());
+    for (const auto& vertex : mesh.vertices) values.push_back(vertex.*member);
+    return addBufferView(model, values.data(), values.size() * sizeof(Attribute), kArrayBuffer);
+}
+
 SphereAccessors addSphere(tinygltf::Model& model) {
-    const SphereMesh mesh = makeSphereMesh();
-    const std::size_t vertexBytes = mesh.positions.size() * sizeof(mesh.positions[0]);
-    const int positionView = addBufferView(model, mesh.positions.data(), vertexBytes, kArrayBuffer);
+    const Mesh mesh = makeSphereMesh(64, 32);
+    const std::size_t count = mesh.vertices.size();
     SphereAccessors accessors;
-    accessors.positions = addAccessor(model, positionView, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                      mesh.positions.size(), TINYGLTF_TYPE_VEC3);
+    accessors.positions =
+        addAccessor(model, addVertexAttribute(model, mesh, &MeshVertex::position),
+                    TINYGLTF_COMPONENT_TYPE_FLOAT, count, TINYGLTF_TYPE_VEC3);
     model.accessors[std::size_t(accessors.positions)].minValues = {-1.0, -1.0, -1.0};
     model.accessors[std::size_t(accessors.positions)].maxValues = {1.0, 1.0, 1.0};
-    // A unit sphere's normals are its positions: the same bytes, their own view.
-    const int normalView = addBufferView(model, mesh.positions.data(), vertexBytes, kArrayBuffer);
-    accessors.normals = addAccessor(model, normalView, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                    mesh.positions.size(), TINYGLTF_TYPE_VEC3);
-    const int uvView = addBufferView(model, mesh.uvs.data(), mesh.uvs.size() * sizeof(mesh.uvs[0]),
-                                     kArrayBuffer);
-    accessors.uvs = addAccessor(model, uvView, TINYGLTF_COMPONENT_TYPE_FLOAT, mesh.uvs.size(),
-                                TINYGLTF_TYPE_VEC2);
+    accessors.normals = addAccessor(model, addVertexAttribute(model, mesh, &MeshVertex::normal),
+                                    TINYGLTF_COMPONENT_TYPE_FLOAT, count, TINYGLTF_TYPE_VEC3);
+    accessors.uvs = addAccessor(model, addVertexAttribute(model, mesh, &MeshVertex::uv),
+                                TINYGLTF_COMPONENT_TYPE_FLOAT, count, TINYGLTF_TYPE_VEC2);
     const int indexView =
         addBufferView(model, mesh.indices.data(), mesh.indices.size() * sizeof(mesh.indices[0]),
                       kElementArrayBuffer);
-    accessors.indices = addAccessor(model, indexView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+    accessors.indices = addAccessor(model, indexView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
                                     mesh.indices.size(), TINYGLTF_TYPE_SCALAR);
     return accessors;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Writes a set of fitted glTF materials as one glTF 2.0 asset through tinygltf: one material per
-// variant on its own sphere (SphereMesh.h), the spheres side by side on a grid so that any viewer
+// variant on its own sphere (mesh/GeneratedMeshes.h), the spheres side by side on a grid so that any viewer
 // shows the set. Metallic-roughness core plus KHR_materials_clearcoat and KHR_materials_ior, and
 // KHR_materials_specular where the fit moved specular from its default. `.glb` is one binary
 // file; `.gltf` is the JSON with a `.bin` of the same name beside it. Textures (the scene's base
