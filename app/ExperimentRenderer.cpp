@@ -36,8 +36,8 @@ Result<std::shared_ptr<GpuSession>> openGpuSession(const SceneTextures& textures
 
 }  // namespace
 
-RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<int> imageSize,
-                                     RenderBackend backend) {
+RenderGenomesAtSize makeGenomeRenderer(const PresetChoice& choice, RenderBackend backend,
+                                       const std::string& command) {
     auto textures = loadSceneTextures(choice.preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
     // Shared, not copied: the renderer is copied into std::function and the textures are large.
@@ -48,12 +48,11 @@ RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<i
         if (session)
             gpuSession = std::move(*session);
         else
-            noticeCpuFallback("matevo experiment", session.error().message);
+            noticeCpuFallback(command, session.error().message);
     }
     const Preset& preset = choice.preset;
-    const int size = imageSize.value_or(preset.scene.imageSize);
     return [sharedTextures, gpuSession, family = preset.family, kappa = preset.baseKappa,
-            scene = preset.scene, size](std::span<const Genome> genomes) {
+            scene = preset.scene](std::span<const Genome> genomes, int size) {
         std::vector<MaterialInstance> materials;
         for (const Genome& genome : genomes) materials.push_back({genome, family, kappa});
         if (gpuSession)
@@ -63,6 +62,13 @@ RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<i
             images.push_back(renderSphereCpu(material, *sharedTextures, scene, size));
         return Result<std::vector<Image>>(std::move(images));
     };
+}
+
+RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<int> imageSize,
+                                     RenderBackend backend) {
+    const int size = imageSize.value_or(choice.preset.scene.imageSize);
+    return [render = makeGenomeRenderer(choice, backend, "matevo experiment"),
+            size](std::span<const Genome> genomes) { return render(genomes, size); };
 }
 
 }  // namespace matevo::cli

@@ -45,6 +45,9 @@ ControlPanelActions drawControlPanel(EditorState& state, bool canUndo, bool canR
     ImGui::PopItemWidth();
     if (ImGui::Button("Compare metrics")) state.compareMetrics.open = true;
     hoverHint("The paper's section 5 experiment: the three metrics side by side");
+    ImGui::SameLine();
+    if (ImGui::Button("Variants")) state.variants.open = true;
+    hoverHint("A set of variants a chosen perceptible difference from the target");
     return actions;
 }
 

@@ -9,6 +9,7 @@
 #include "InspectPanel.h"
 #include "PanelLayout.h"
 #include "TargetPanel.h"
+#include "VariantsPanel.h"
 
 namespace matevo::ui {
 
@@ -44,6 +45,7 @@ FrameRequests EditorUi::draw() {
     ImGui::End();
 
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
+    requests.variants = drawVariantsWindow(state_.variants);
     drawPathDialogs();
     handleShortcuts(requests);
     // One undo step per finished edit: a slider drag is recorded when it is released.

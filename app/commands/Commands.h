@@ -10,5 +10,6 @@ int runRender(CommandLine& args);
 int runCompare(CommandLine& args);
 int runExperiment(CommandLine& args);
 int runBench(CommandLine& args);
+int runVariants(CommandLine& args);
 
 }  // namespace matevo::cli

@@ -23,6 +23,8 @@
 #include "EvolutionWorker.h"
 #include "ImageBridge.h"
 #include "ScriptPlayer.h"
+#include "VariantsDisplay.h"
+#include "VariantsWorker.h"
 #include "VulkanContext.h"
 #include "WindowRenderer.h"
 #include "io/ImageFile.h"
@@ -117,9 +119,11 @@ private:
     };
 
     bool frame(std::optional<std::filesystem::path>& screenshotPath);
-    void playScript(std::optional<std::filesystem::path>& screenshotPath);
+    ui::VariantsActions playScript(std::optional<std::filesystem::path>& screenshotPath);
     void applyEvolutionResults();
     void applyCompareMetricsResults();
+    void applyVariantsResults();
+    void handleVariantsActions(const ui::VariantsActions& actions);
     void submitChangesToWorker();
     void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
     std::filesystem::path nextSnapshotPath() const;
@@ -141,6 +145,9 @@ private:
     std::string failure_;
     bool quitRequested_ = false;
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
+    std::unique_ptr<VariantsWorker> variantsWorker_;
+    std::optional<VariantsResult> shownVariants_;  // the set in the Variants window
+    std::vector<Genome> discardedVariants_;        // since its last fresh run
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
 };
 
@@ -196,11 +203,13 @@ EditorApp::EditorApp(const EditorOptions& options)
     worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); }, options.gpuTiles,
                                                 options.validation);
     compareWorker_ = std::make_unique<CompareMetricsWorker>([] { glfwPostEmptyEvent(); });
+    variantsWorker_ = std::make_unique<VariantsWorker>([] { glfwPostEmptyEvent(); });
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
 
 EditorApp::~EditorApp() {
+    variantsWorker_.reset();
     compareWorker_.reset();
     worker_.reset();
     renderer_->waitIdle();
@@ -222,7 +231,8 @@ int EditorApp::run() {
         if (due)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(worker_->busy() || compareWorker_->busy() ? 0.1 : 0.25);
+            glfwWaitEventsTimeout(
+                worker_->busy() || compareWorker_->busy() || variantsWorker_->busy() ? 0.1 : 0.25);
         if (shouldQuit()) break;
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_.get(), &width, &height);
@@ -257,10 +267,12 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     // A screenshot shows the frame after the one that asked, so the request has settled; the
     // script waits for it.
     const std::optional<std::filesystem::path> captureNow = std::exchange(screenshotPath, {});
-    if (!captureNow) playScript(screenshotPath);
+    ui::VariantsActions scriptedVariants;
+    if (!captureNow) scriptedVariants = playScript(screenshotPath);
 
     applyEvolutionResults();
     applyCompareMetricsResults();
+    applyVariantsResults();
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -271,6 +283,8 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     if (requests.runCompareMetrics)
         compareWorker_->start({ui_.state().preset, ui_.state().presetPath,
                                ui_.state().compareMetrics.runs});
+    handleVariantsActions(requests.variants);
+    handleVariantsActions(scriptedVariants);
     submitChangesToWorker();
     if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
         glfwSetWindowTitle(window_.get(), title.c_str());
@@ -294,14 +308,16 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     return drawn;
 }
 
-void EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
-    const bool settled = !worker_->busy() && display_->shownFinished();
+ui::VariantsActions EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
+    const ScriptPlayer::Settled settled{!worker_->busy() && display_->shownFinished(),
+                                        !variantsWorker_->busy() && !variantsWorker_->hasResult()};
     const ScriptEffects effects = script_.step(ui_, settled);
     if (!effects.error.empty()) failure_ = effects.error;
     if (effects.quit) quitRequested_ = true;
     if (effects.resize)
         glfwSetWindowSize(window_.get(), effects.resize->first, effects.resize->second);
     screenshotPath = effects.screenshot;
+    return effects.variants;
 }
 
 void EditorApp::applyEvolutionResults() {
@@ -326,6 +342,54 @@ void EditorApp::applyCompareMetricsResults() {
     if (!result) return;
     renderer_->waitIdle();  // textures are about to change
     showCompareMetrics(*result, *bridge_, view);
+}
+
+void EditorApp::applyVariantsResults() {
+    ui::VariantsView& view = ui_.state().variants;
+    view.running = variantsWorker_->busy();
+    view.progress = variantsWorker_->progress();
+    std::optional<VariantsResult> result = variantsWorker_->takeResult();
+    if (!result) return;
+    renderer_->waitIdle();  // textures are about to change
+    showVariants(*result, *bridge_, view);
+    shownVariants_ = std::move(result);
+}
+
+void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
+    ui::EditorState& state = ui_.state();
+    ui::VariantsView& view = state.variants;
+    VariantRequest request;
+    request.count = view.count;
+    request.band = {double(view.low), double(view.high)};
+    request.minApart = double(view.minApart);
+    request.seed = std::uint64_t(view.seed);
+    if (actions.run) {
+        discardedVariants_.clear();
+        if (variantsWorker_->start({state.preset, state.presetPath, request})) view.running = true;
+    }
+    if (!shownVariants_) return;
+    VariantSet& set = shownVariants_->set;
+    if (actions.discard >= 0 && std::size_t(actions.discard) < set.variants.size()) {
+        discardedVariants_.push_back(set.variants[std::size_t(actions.discard)].genome);
+        removeVariant(set, std::size_t(actions.discard));
+        renderer_->waitIdle();  // textures are about to change
+        showVariants(*shownVariants_, *bridge_, view);
+    }
+    if (actions.refill) {
+        // The same target as the shown set, the variants shown kept, the discarded ones barred.
+        for (const Variant& variant : set.variants) request.keep.push_back(variant.genome);
+        request.exclude = discardedVariants_;
+        if (variantsWorker_->start({shownVariants_->preset, state.presetPath, request}))
+            view.running = true;
+    }
+    if (actions.save) {
+        const VariantsResult& shown = *shownVariants_;
+        const Status saved = writeVariantFiles(view.savePath, shown.preset, set,
+                                               variantReport(shown.preset, shown.run, set));
+        state.statusMessage = saved ? "Saved the set to " + view.savePath
+                                    : "Save set failed: " + saved.error().message;
+        view.summary = state.statusMessage;
+    }
 }
 
 void EditorApp::submitChangesToWorker() {

@@ -14,17 +14,13 @@
 #include "common/Image.h"
 #include "common/Result.h"
 #include "evolve/GaSettings.h"
+#include "evolve/RenderGenomes.h"
 #include "experiment/ExperimentSettings.h"
 #include "experiment/RunRecord.h"
 #include "genome/Genome.h"
 #include "genome/MaterialFamily.h"
 
 namespace matevo {
-
-// Renders genomes of the target's material on the test sphere, one image per genome, in order.
-// The caller binds everything else (family, kappa, textures, scene, image size) and chooses the
-// back end (GPU batch renderer or CPU reference).
-using RenderGenomes = std::function<Result<std::vector<Image>>(std::span<const Genome> genomes)>;
 
 // done of total work items (one per GA run, one per scored run); called on the calling thread.
 using ExperimentProgress = std::function<void(int done, int total)>;
