@@ -1,9 +1,10 @@
 #include "EvolveImages.h"
 
 #include <cstdio>
+#include <stdexcept>
 
 #include "CommandLine.h"
-#include "PopulationEvaluation.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "io/ImageFile.h"
 #include "scene/SceneTextures.h"
 
@@ -38,8 +39,9 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
     for (const auto& individual : ranked)
         candidates.push_back({individual.genome, preset.family, preset.baseKappa});
 
-    const auto evaluation = evaluatePopulation(target, candidates, *textures, preset.scene, size,
-                                               HeatmapSettings{}, backend, "matevo evolve");
+    auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
+    auto evaluation = renderer->evaluate(target, candidates, preset.scene, size);
+    if (!evaluation) throw std::runtime_error("evolve: " + evaluation.error().message);
     std::error_code error;
     for (const char* folder : {"candidates", "heatmaps"}) {
         std::filesystem::create_directories(outDir / folder, error);
@@ -47,13 +49,13 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
             throw UsageError("evolve: --out: cannot create '" + (outDir / folder).string() +
                              "' (" + error.message() + ")");
     }
-    writeOrThrow(evaluation.target, outDir / "target.png");
+    writeOrThrow(evaluation->target, outDir / "target.png");
     std::vector<DeltaEStats> stats;
     for (std::size_t rank = 0; rank < ranked.size(); ++rank) {
-        writeOrThrow(evaluation.candidates[rank],
+        writeOrThrow(evaluation->candidates[rank],
                      outDir / "candidates" / rankedName("candidate", rank));
-        writeOrThrow(evaluation.heatmaps[rank], outDir / "heatmaps" / rankedName("heatmap", rank));
-        stats.push_back(evaluation.deltaE[rank].stats);
+        writeOrThrow(evaluation->heatmaps[rank], outDir / "heatmaps" / rankedName("heatmap", rank));
+        stats.push_back(evaluation->deltaE[rank].stats);
     }
     return stats;
 }

@@ -27,8 +27,8 @@ constexpr const char* kHelp =
     "                     screenshot PATH, save PATH, quit\n"
     "  --frames N         quit after N frames\n"
     "  --size WxH         initial window size (default 1280x800)\n"
-    "  --backend gpu|cpu  where candidate tiles render (default gpu; the CPU reference\n"
-    "                     renderer when no Vulkan device is usable)\n"
+    "  --backend gpu|cpu  where candidate tiles and Compare metrics render (default gpu;\n"
+    "                     the CPU reference renderer when no Vulkan device is usable)\n"
     "  --validate         enable VK_LAYER_KHRONOS_validation; any message makes the exit\n"
     "                     status 1\n"
     "  --report-timings   print median frame times (idle, while evolving) and the time from\n"
@@ -67,7 +67,7 @@ int runEdit(CommandLine& args) {
         options.maxFrames = int(*frames);
     if (auto size = args.option("--size")) parseSize(*size, options);
     if (auto backend = args.option("--backend"))
-        options.gpuTiles = parseRenderBackend(*backend, "edit: --backend") == RenderBackend::Gpu;
+        options.backend = parseRenderBackend(*backend, "edit: --backend");
     options.validation = args.flag("--validate");
     options.reportTimings = args.flag("--report-timings");
     const auto positionals = args.positionals();

@@ -24,7 +24,8 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo experiment [--preset P | --all] [--runs N] [--population N]\n"
     "                         [--generations N] [--sweep] [--metric M|all] [--seed S]\n"
-    "                         [--runs-per-seed N] [--size N] [--backend gpu|cpu] [--out DIR]\n\n"
+    "                         [--runs-per-seed N] [--size N] [--scene paper|ambient]\n"
+    "                         [--backend gpu|cpu] [--out DIR]\n\n"
     "The experiment of Bernardi et al. (2020) section 5: for the target material and each\n"
     "distance metric, N GA runs (default 36) at a population and generation count (default 50\n"
     "and 5); the best individual of each run is rendered and scored by its mean CIEDE2000\n"
@@ -39,6 +40,9 @@ constexpr const char* kHelp =
     "                     (k+1)-th SplitMix64 draw of its block seed as its GA seed (the CSV's\n"
     "                     seed column; replay one run with matevo evolve --seed)\n"
     "  --size N           render size in pixels (default: the preset's scene, 256)\n"
+    "  --scene M          paper (default): the paper's scene, one light and no ambient\n"
+    "                     term, whatever mode the preset names; ambient: the light plus the\n"
+    "                     preset's uniform environment\n"
     "  --backend B        gpu (default): Vulkan, one batch per 64 runs; with no usable\n"
     "                     Vulkan device it says so on stderr and renders on the CPU.\n"
     "                     cpu: the CPU reference renderer\n"
@@ -78,6 +82,7 @@ struct Request {
     ExperimentSettings settings;
     bool sweep = false;
     std::optional<int> imageSize;
+    SceneMode sceneMode = SceneMode::Paper;
     RenderBackend backend = RenderBackend::Gpu;
     std::filesystem::path outDir = "experiment-results";
 };
@@ -101,6 +106,15 @@ Request parseRequest(CommandLine& args) {
     settings.metrics = parseMetrics(args.option("--metric"));
     if (auto seed = args.unsignedOption("--seed")) settings.seed = *seed;
     if (auto size = args.integerOption("--size", 8, 4096)) request.imageSize = int(*size);
+    if (auto text = args.option("--scene")) {
+        auto mode = parseSceneMode(*text);
+        if (!mode)
+            throw UsageError("experiment: --scene: unknown mode '" + *text +
+                             "' (expected paper or ambient)");
+        request.sceneMode = *mode;
+    }
+    // The §5 protocol is defined in its own scene: the option, not the preset, decides.
+    for (auto& choice : request.presets) choice.preset.scene.mode = request.sceneMode;
     if (auto backend = args.option("--backend"))
         request.backend = parseRenderBackend(*backend, "experiment: --backend");
     if (auto out = args.option("--out")) request.outDir = *out;
@@ -211,8 +225,9 @@ int runExperiment(CommandLine& args) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
     printSummaries(allRecords, stdout);
-    std::fprintf(stderr, "matevo experiment: %zu runs in %.1f s; results in %s\n",
-                 allRecords.size(), seconds, request.outDir.string().c_str());
+    std::fprintf(stderr, "matevo experiment: %zu runs in %.1f s in the %s scene; results in %s\n",
+                 allRecords.size(), seconds, std::string(describe(request.sceneMode)).c_str(),
+                 request.outDir.string().c_str());
     return 0;
 }
 

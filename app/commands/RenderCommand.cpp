@@ -5,6 +5,7 @@
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "io/GenomeJson.h"
 #include "io/ImageFile.h"
 
@@ -55,10 +56,13 @@ int runRender(CommandLine& args) {
     auto textures = loadSceneTextures(choice.preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
 
-    const Image image = renderMaterials(std::span(&material, 1), *textures, choice.preset.scene,
-                                        int(size), backend, "matevo render")
-                            .front();
-    if (auto written = writeImage(image, out); !written) {
+    auto renderer = gpu::createPopulationRenderer({backend, "matevo render"}, *textures);
+    auto images = renderer->render(std::span(&material, 1), choice.preset.scene, int(size));
+    if (!images) {
+        std::fprintf(stderr, "matevo render: %s\n", images.error().message.c_str());
+        return 1;
+    }
+    if (auto written = writeImage(images->front(), out); !written) {
         std::fprintf(stderr, "matevo render: %s\n", written.error().message.c_str());
         return 1;
     }

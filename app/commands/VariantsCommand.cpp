@@ -4,11 +4,11 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "ExperimentRenderer.h"
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
-#include "io/ImageFile.h"
+#include "experiment/Experiment.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "variants/VariantFiles.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
@@ -83,10 +83,17 @@ int runVariants(CommandLine& args) {
     args.finish();
 
     const Preset& preset = choice.preset;
-    const RenderGenomesAtSize render = makeGenomeRenderer(choice, backend, "matevo variants");
-    auto search = VariantSearch::start(
-        preset.family, preset.target, request, settings,
-        [&](std::span<const Genome> genomes) { return render(genomes, fitnessSize); });
+    auto textures = loadSceneTextures(preset, choice.file);
+    if (!textures) throw UsageError(textures.error().message);
+    // One renderer for the search and the check, so tables and textures are uploaded once.
+    const std::shared_ptr<PopulationRenderer> renderer =
+        gpu::createPopulationRenderer({backend, "matevo variants"}, *textures);
+    auto renderAt = [&](int side) {
+        return asStoredInPng(
+            renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, side));
+    };
+    auto search =
+        VariantSearch::start(preset.family, preset.target, request, settings, renderAt(fitnessSize));
     if (!search) throw std::runtime_error(search.error().message);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
     while (!(*search)->finished()) {
@@ -100,19 +107,12 @@ int runVariants(CommandLine& args) {
     }
     if (showProgress) std::fputc('\n', stderr);
 
-    // Checked on the images as the PNG files will hold them, so `compare` on the written files
-    // finds the reported figures.
-    auto set = chooseVariantSet((*search)->archive(), request, preset.target,
-                                [&](std::span<const Genome> genomes) -> Result<std::vector<Image>> {
-                                    auto images = render(genomes, size);
-                                    if (!images) return images.error();
-                                    for (Image& image : *images) image = quantizeAsPng(image);
-                                    return images;
-                                });
+    auto set = chooseVariantSet((*search)->archive(), request, preset.target, renderAt(size));
     if (!set) throw std::runtime_error(set.error().message);
 
-    VariantRun run{request, size, fitnessSize, (*search)->progress().evaluations,
-                   (*search)->progress().closestDeltaE, 0.0};
+    const VariantSearchProgress& progress = (*search)->progress();
+    VariantRun run{request,           size, fitnessSize, progress.evaluations, progress.archived,
+                   progress.closestDeltaE, 0.0};
     run.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const nlohmann::json report = variantReport(preset, run, *set);

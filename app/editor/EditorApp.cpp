@@ -200,10 +200,18 @@ EditorApp::EditorApp(const EditorOptions& options)
     imgui_ = std::make_unique<ImGuiSession>(window_.get(), *vulkan_, *renderer_, iniPath_);
     bridge_ = std::make_unique<ImageBridge>(*vulkan_, renderer_->renderPass());
     display_ = std::make_unique<EvolutionDisplay>(*bridge_);
-    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); }, options.gpuTiles,
+    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); }, options.backend,
                                                 options.validation);
-    compareWorker_ = std::make_unique<CompareMetricsWorker>([] { glfwPostEmptyEvent(); });
-    variantsWorker_ = std::make_unique<VariantsWorker>([] { glfwPostEmptyEvent(); });
+    gpu::RendererRequest compareRenderer;
+    compareRenderer.backend = options.backend;
+    compareRenderer.who = "matevo edit: Compare metrics";
+    compareRenderer.headless = {options.validation, true};
+    compareWorker_ =
+        std::make_unique<CompareMetricsWorker>([] { glfwPostEmptyEvent(); }, compareRenderer);
+    gpu::RendererRequest variantsRenderer = compareRenderer;
+    variantsRenderer.who = "matevo edit: Variants";
+    variantsWorker_ =
+        std::make_unique<VariantsWorker>([] { glfwPostEmptyEvent(); }, variantsRenderer);
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }

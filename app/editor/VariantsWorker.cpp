@@ -4,13 +4,15 @@
 #include <chrono>
 #include <utility>
 
-#include "io/ImageFile.h"
+#include "experiment/Experiment.h"
 #include "scene/SceneTextures.h"
-#include "scene/SphereRenderer.h"
 
 namespace matevo::editor {
 
-VariantsWorker::VariantsWorker(std::function<void()> onUpdate) : onUpdate_(std::move(onUpdate)) {}
+VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer)
+    : onUpdate_(std::move(onUpdate)), rendererRequest_(std::move(renderer)) {
+    rendererRequest_.cancelled = [this] { return stopping_.load(); };
+}
 
 VariantsWorker::~VariantsWorker() {
     stopping_.store(true);
@@ -52,16 +54,12 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job) {
         return result;
     }
     const Preset& preset = job.preset;
-    // On the CPU reference renderer, as the editor's other workers (no GPU-or-CPU choice here).
+    std::shared_ptr<PopulationRenderer> renderer =
+        gpu::createPopulationRenderer(rendererRequest_, *textures);
+    // As `matevo variants` measures: on the images as the PNG files of a saved set hold them.
     auto renderAt = [&](int size) {
-        return [&, size](std::span<const Genome> genomes) -> Result<std::vector<Image>> {
-            if (stopping_.load()) return Error{"stopped"};
-            std::vector<Image> images;
-            for (const Genome& genome : genomes)
-                images.push_back(quantizeAsPng(renderSphereCpu(
-                    {genome, preset.family, preset.baseKappa}, *textures, preset.scene, size)));
-            return images;
-        };
+        return asStoredInPng(
+            renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, size));
     };
     VariantSearchSettings settings;
     auto search = VariantSearch::start(preset.family, preset.target, job.request, settings,
@@ -89,6 +87,7 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job) {
     }
     result.set = std::move(set).value();
     result.run.evaluations = (*search)->progress().evaluations;
+    result.run.archived = (*search)->progress().archived;
     result.run.closestDeltaE = (*search)->progress().closestDeltaE;
     result.run.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -11,6 +11,7 @@
 #include <string>
 #include <thread>
 
+#include "gpu/PopulationRendererFactory.h"
 #include "io/Preset.h"
 #include "variants/VariantFiles.h"
 #include "variants/VariantSearch.h"
@@ -36,7 +37,8 @@ public:
     static constexpr int kOutputSize = 256;  // as `matevo variants`, so a saved set matches it
     static constexpr int kFitnessSize = 64;
 
-    explicit VariantsWorker(std::function<void()> onUpdate);
+    // `renderer` says where the search renders (the editor's --backend).
+    VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer);
     ~VariantsWorker();  // stops a running job at its next generation
     VariantsWorker(const VariantsWorker&) = delete;
     VariantsWorker& operator=(const VariantsWorker&) = delete;
@@ -53,6 +55,7 @@ private:
     VariantsResult compute(const VariantsJob& job);
 
     std::function<void()> onUpdate_;
+    gpu::RendererRequest rendererRequest_;
     std::atomic<bool> busy_{false};
     std::atomic<bool> stopping_{false};
     std::atomic<float> progress_{0.0f};

@@ -47,6 +47,16 @@ void placeTile(Image& sheet, const Image& tile, int x, int y) {
 
 }  // namespace
 
+RenderGenomes asStoredInPng(RenderGenomes render) {
+    return [render = std::move(render)](
+               std::span<const Genome> genomes) -> Result<std::vector<Image>> {
+        auto images = render(genomes);
+        if (!images) return images.error();
+        for (Image& image : *images) image = quantizeAsPng(image);
+        return images;
+    };
+}
+
 std::string variantStem(std::size_t index) {
     char name[32];
     std::snprintf(name, sizeof name, "variant_%03zu", index);
@@ -85,6 +95,7 @@ nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const 
             {"pairwise_de00", set.pairwise},
             {"smallest_pairwise_de00", set.smallestPairwise},
             {"evaluations", run.evaluations},
+            {"archived", run.archived},
             {"output_renders", set.outputRenders},
             {"wall_time_s", run.wallSeconds},
             {"seed", request.seed}};

@@ -14,6 +14,7 @@
 
 #include "common/Image.h"
 #include "common/Result.h"
+#include "evolve/RenderGenomes.h"
 #include "io/Preset.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
@@ -26,9 +27,14 @@ struct VariantRun {
     int size = 256;         // output resolution
     int fitnessSize = 64;   // the search's resolution
     std::size_t evaluations = 0;  // fitness-resolution renders
+    std::size_t archived = 0;     // candidates the search held at its end
     double closestDeltaE = 0;     // the render nearest the band the search saw
     double wallSeconds = 0;
 };
+
+// The renders as the written PNG files will hold them (quantizeAsPng), so that a set checked on
+// them reports the figures `matevo compare` finds in its files.
+RenderGenomes asStoredInPng(RenderGenomes render);
 
 // "variant_007"
 std::string variantStem(std::size_t index);

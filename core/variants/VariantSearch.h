@@ -48,8 +48,8 @@ struct VariantSearchSettings {
     int maxEvaluations = 1500;
     // The archive accepts only renders this far inside the band and this much farther apart
     // than asked, so that the set still holds when measured again at the output resolution.
-    double bandMargin = 0.15;
-    double apartMargin = 0.15;
+    double bandMargin = 0.05;
+    double apartMargin = 0.05;
     // Archive members wanted beyond the count, so the final choice can spread the set and
     // replace a variant that fails at the output resolution.
     int spare = 4;
