@@ -10,39 +10,14 @@
 namespace matevo::editor {
 
 VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer)
-    : onUpdate_(std::move(onUpdate)), rendererRequest_(std::move(renderer)) {
-    rendererRequest_.cancelled = [this] { return stopping_.load(); };
+    : rendererRequest_(std::move(renderer)), job_(std::move(onUpdate)) {
+    rendererRequest_.cancelled = [this] { return job_.stopping(); };
 }
 
-VariantsWorker::~VariantsWorker() {
-    stopping_.store(true);
-    if (thread_.joinable()) thread_.join();
-}
+VariantsWorker::~VariantsWorker() = default;
 
 bool VariantsWorker::start(VariantsJob job) {
-    if (busy_.exchange(true)) return false;
-    if (thread_.joinable()) thread_.join();  // the previous job has finished
-    progress_.store(0.0f);
-    thread_ = std::thread([this, job = std::move(job)] {
-        VariantsResult result = compute(job);
-        {
-            std::lock_guard lock(mutex_);
-            result_ = std::move(result);
-        }
-        busy_.store(false);
-        onUpdate_();
-    });
-    return true;
-}
-
-std::optional<VariantsResult> VariantsWorker::takeResult() {
-    std::lock_guard lock(mutex_);
-    return std::exchange(result_, std::nullopt);
-}
-
-bool VariantsWorker::hasResult() {
-    std::lock_guard lock(mutex_);
-    return result_.has_value();
+    return job_.start([this, job = std::move(job)] { return compute(job); });
 }
 
 VariantsResult VariantsWorker::compute(const VariantsJob& job) {
@@ -70,14 +45,17 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job) {
     }
     const double wanted = double(job.request.count + settings.spare);
     while (!(*search)->finished()) {
+        if (job_.stopping()) {
+            result.error = "stopped";
+            return result;
+        }
         if (auto stepped = (*search)->step(); !stepped) {
             result.error = stepped.error().message;
             return result;
         }
         const VariantSearchProgress& progress = (*search)->progress();
-        progress_.store(float(std::max(double(progress.archived) / wanted,
-                                       double(progress.evaluations) / settings.maxEvaluations)));
-        onUpdate_();
+        job_.reportProgress(float(std::max(double(progress.archived) / wanted,
+                                           double(progress.evaluations) / settings.maxEvaluations)));
     }
     auto set = chooseVariantSet((*search)->archive(), job.request, preset.target,
                                 renderAt(kOutputSize));

@@ -1,15 +1,13 @@
 #pragma once
 // Runs the Variants mode's search (core/variants: the quality-diversity search at the fitness
 // resolution, then the set chosen and checked at the output resolution) on a worker thread, so
-// the editor stays responsive. One job at a time; the UI thread polls progress and takes the
-// result, and is woken through `onUpdate` (which must be thread-safe).
-#include <atomic>
+// the editor stays responsive (BackgroundJob: one job at a time, `onUpdate` wakes the UI).
 #include <filesystem>
 #include <functional>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
+
+#include "BackgroundJob.h"
 
 #include "gpu/PopulationRendererFactory.h"
 #include "io/Preset.h"
@@ -45,23 +43,17 @@ public:
 
     // Starts the job unless one is running; returns whether it started.
     bool start(VariantsJob job);
-    bool busy() const { return busy_.load(); }
-    float progress() const { return progress_.load(); }
-    std::optional<VariantsResult> takeResult();
+    bool busy() const { return job_.busy(); }
+    float progress() const { return job_.progress(); }
+    std::optional<VariantsResult> takeResult() { return job_.takeResult(); }
     // A result is waiting to be taken.
-    bool hasResult();
+    bool hasResult() { return job_.hasResult(); }
 
 private:
     VariantsResult compute(const VariantsJob& job);
 
-    std::function<void()> onUpdate_;
     gpu::RendererRequest rendererRequest_;
-    std::atomic<bool> busy_{false};
-    std::atomic<bool> stopping_{false};
-    std::atomic<float> progress_{0.0f};
-    std::mutex mutex_;
-    std::optional<VariantsResult> result_;
-    std::thread thread_;
+    BackgroundJob<VariantsResult> job_;  // last: stopped first
 };
 
 }  // namespace matevo::editor
