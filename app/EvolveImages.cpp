@@ -14,7 +14,7 @@ namespace {
 
 void writeOrThrow(const Image& image, const std::filesystem::path& file) {
     auto status = writeImage(image, file);
-    if (!status) throw UsageError("evolve: " + status.error().message);
+    if (!status) throw UsageError(status.error().message);
 }
 
 std::string rankedName(const char* prefix, std::size_t rank) {
@@ -41,12 +41,12 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
 
     auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
     auto evaluation = renderer->evaluate(target, candidates, preset.scene, size);
-    if (!evaluation) throw std::runtime_error("evolve: " + evaluation.error().message);
+    if (!evaluation) throw std::runtime_error(evaluation.error().message);
     std::error_code error;
     for (const char* folder : {"candidates", "heatmaps"}) {
         std::filesystem::create_directories(outDir / folder, error);
         if (error)
-            throw UsageError("evolve: --out: cannot create '" + (outDir / folder).string() +
+            throw UsageError("--out: cannot create '" + (outDir / folder).string() +
                              "' (" + error.message() + ")");
     }
     writeOrThrow(evaluation->target, outDir / "target.png");
