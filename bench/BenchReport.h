@@ -17,5 +17,7 @@ void benchGeneticAlgorithm(BenchReport& report);
 void benchCpuRender(BenchReport& report);
 void benchDeltaE00(BenchReport& report);
 void benchGpuGrid(BenchReport& report);  // gpu_grid64_ms and cpu_grid64_ms
+// `matevo bench --variants`: the variant search with and without its novelty (a few minutes).
+void benchVariants(BenchReport& report);
 
 }  // namespace matevo::bench

@@ -10,20 +10,27 @@ namespace matevo::cli {
 int runBench(CommandLine& args) {
     if (args.wantsHelp()) {
         std::printf(
-            "usage: matevo bench [--json]\n\n"
+            "usage: matevo bench [--json] [--variants]\n\n"
             "Measures medians of the genetic algorithm (pop 100 x 10 generations, genotype\n"
             "fitness), CIEDE2000 throughput and the renderers. Prints a table, or one JSON object\n"
-            "with --json. scripts/bench.sh runs the Python peers beside it and prints ratios.\n");
+            "with --json. scripts/bench.sh runs the Python peers beside it and prints ratios.\n"
+            "--variants measures only the variant search, with and without its novelty, on the\n"
+            "three validation presets (a few minutes).\n");
         return 0;
     }
     const bool asJson = args.flag("--json");
+    const bool variants = args.flag("--variants");
     args.finish();
 
     bench::BenchReport report;
-    bench::benchGeneticAlgorithm(report);
-    bench::benchCpuRender(report);
-    bench::benchDeltaE00(report);
-    bench::benchGpuGrid(report);
+    if (variants) {
+        bench::benchVariants(report);
+    } else {
+        bench::benchGeneticAlgorithm(report);
+        bench::benchCpuRender(report);
+        bench::benchDeltaE00(report);
+        bench::benchGpuGrid(report);
+    }
 
     if (asJson) {
         nlohmann::json out = nlohmann::json::object();

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "Messages.h"
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
@@ -40,15 +41,6 @@ constexpr const char* kHelp =
 
 constexpr int kMaxCount = 1000;
 
-DeltaEBand parseBand(const std::string& text) {
-    const auto values = parseNumberList(text, "variants: --band");
-    if (values.size() != 2)
-        throw UsageError("variants: --band: expected LO,HI (two numbers), got '" + text + "'");
-    const DeltaEBand band{values[0], values[1]};
-    if (auto problem = validateBand(band)) throw UsageError("variants: --band: " + *problem);
-    return band;
-}
-
 }  // namespace
 
 int runVariants(CommandLine& args) {
@@ -60,15 +52,15 @@ int runVariants(CommandLine& args) {
     const PresetChoice choice = loadPresetOption(args);
     VariantRequest request;
     const auto count = args.integerOption("--count", 1, kMaxCount);
-    if (!count) throw UsageError("variants: --count N is required");
+    if (!count) throw UsageError("--count N is required");
     request.count = int(*count);
     const auto band = args.option("--band");
-    if (!band) throw UsageError("variants: --band LO,HI is required");
-    request.band = parseBand(*band);
+    if (!band) throw UsageError("--band LO,HI is required");
+    request.band = parseDeltaEBand(*band, "--band");
     if (auto apart = args.option("--min-apart")) {
-        request.minApart = parseNumber(*apart, "variants: --min-apart");
+        request.minApart = parseNumber(*apart, "--min-apart");
         if (!(request.minApart >= 0 && request.minApart <= 100))
-            throw UsageError("variants: --min-apart: must be in [0, 100], got " + *apart);
+            throw UsageError("--min-apart: must be in [0, 100], got " + *apart);
     }
     if (auto seed = args.unsignedOption("--seed")) request.seed = *seed;
     const int size = int(args.integerOption("--size", 8, 4096).value_or(256));
@@ -77,7 +69,7 @@ int runVariants(CommandLine& args) {
     if (auto budget = args.integerOption("--max-evaluations", 1, 1000000))
         settings.maxEvaluations = int(*budget);
     const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "variants: --backend");
+        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const auto outDir = args.option("--out");
     const bool asJson = args.flag("--json");
     args.finish();
@@ -86,8 +78,11 @@ int runVariants(CommandLine& args) {
     auto textures = loadSceneTextures(preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
     // One renderer for the search and the check, so tables and textures are uploaded once.
+    gpu::RendererRequest rendererRequest;
+    rendererRequest.backend = backend;
+    rendererRequest.who = "matevo variants";
     const std::shared_ptr<PopulationRenderer> renderer =
-        gpu::createPopulationRenderer({backend, "matevo variants"}, *textures);
+        gpu::createPopulationRenderer(rendererRequest, *textures);
     auto renderAt = [&](int side) {
         return asStoredInPng(
             renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, side));
@@ -101,8 +96,8 @@ int runVariants(CommandLine& args) {
             throw std::runtime_error(stepped.error().message);
         if (showProgress) {
             const auto& progress = (*search)->progress();
-            std::fprintf(stderr, "\rmatevo variants: %zu evaluations, %zu in the archive",
-                         progress.evaluations, progress.archived);
+            std::fprintf(stderr, "\r%s%zu evaluations, %zu in the archive",
+                         messagePrefix().c_str(), progress.evaluations, progress.archived);
         }
     }
     if (showProgress) std::fputc('\n', stderr);
@@ -118,13 +113,12 @@ int runVariants(CommandLine& args) {
     const nlohmann::json report = variantReport(preset, run, *set);
     if (outDir)
         if (auto written = writeVariantFiles(*outDir, preset, *set, report); !written)
-            throw UsageError("variants: --out: " + written.error().message);
+            throw UsageError("--out: " + written.error().message);
     if (asJson) std::printf("%s\n", report.dump(2).c_str());
     const std::string summary = variantSummary(run, *set);
     if (!fulfils(*set, request)) {
-        std::fprintf(stderr, "matevo variants: request not met: %s%s\n", summary.c_str(),
-                     outDir ? "; what was found is written" : "");
-        return 3;
+        printMessage("request not met: " + summary + (outDir ? "; what was found is written" : ""));
+        return exitCode(ExitStatus::RequestNotMet);
     }
     if (!asJson) std::printf("%s (%.2f s)\n", summary.c_str(), run.wallSeconds);
     return 0;

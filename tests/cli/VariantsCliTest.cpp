@@ -184,5 +184,28 @@ TEST(VariantsCli, BadUsageExitsTwoWithOneLine) {
     }
 }
 
+// The image-space fitness in `evolve`: beside the paper's metrics, not instead of them.
+TEST(EvolveImageFitness, ScoresRendersAndTheBandAndIsOffByDefault) {
+    auto result = runMatevo("evolve --json --fitness image --band 2,5 --population 12 "
+                            "--generations 2 --seed 3 --backend cpu");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    const auto json = nlohmann::json::parse(result.out);
+    EXPECT_EQ(json["config"]["fitness"], "image");
+    EXPECT_EQ(json["config"]["band"], nlohmann::json::array({2.0, 5.0}));
+    EXPECT_GT(json["config"]["evaluations"].get<int>(), 12);
+    for (const auto& individual : json["population"])
+        EXPECT_GE(individual["fitness"].get<double>(), 0.0);
+
+    auto paper = runMatevo("evolve --json --population 12 --generations 2 --seed 3");
+    ASSERT_EQ(paper.exitCode, 0) << paper.err;
+    EXPECT_EQ(nlohmann::json::parse(paper.out)["config"]["fitness"], "genotype");
+
+    for (const char* arguments : {"--band 2,5", "--fitness-size 32", "--fitness pixels",
+                                  "--fitness image --band 5,2"}) {
+        auto bad = runMatevo(std::string("evolve ") + arguments);
+        EXPECT_EQ(bad.exitCode, 2) << arguments << ": " << bad.err;
+    }
+}
+
 }  // namespace
 }  // namespace matevo
