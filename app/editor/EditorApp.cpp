@@ -124,6 +124,7 @@ private:
     void applyCompareMetricsResults();
     void applyVariantsResults();
     void handleVariantsActions(const ui::VariantsActions& actions);
+    void showShownVariants();
     void submitChangesToWorker();
     void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
     std::filesystem::path nextSnapshotPath() const;
@@ -145,6 +146,7 @@ private:
     std::string failure_;
     bool quitRequested_ = false;
     std::vector<std::shared_ptr<ShownImage>> compareImages_;  // what Compare metrics shows
+    std::vector<std::shared_ptr<ShownImage>> variantsImages_;  // what Variants shows
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
     std::unique_ptr<VariantsWorker> variantsWorker_;
     std::optional<VariantsResult> shownVariants_;  // the set in the Variants window
@@ -370,9 +372,17 @@ void EditorApp::applyVariantsResults() {
     view.progress = variantsWorker_->progress();
     std::optional<VariantsResult> result = variantsWorker_->takeResult();
     if (!result) return;
-    renderer_->waitIdle();  // textures are about to change
-    showVariants(*result, *bridge_, view);
     shownVariants_ = std::move(result);
+    showShownVariants();
+}
+
+void EditorApp::showShownVariants() {
+    auto shown = showVariants(*shownVariants_, *bridge_, ui_.state().variants);
+    if (!shown) {
+        failure_ = shown.error().message;
+        return;
+    }
+    variantsImages_ = std::move(shown).value();
 }
 
 void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
@@ -392,8 +402,7 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
     if (actions.discard >= 0 && std::size_t(actions.discard) < set.variants.size()) {
         discardedVariants_.push_back(set.variants[std::size_t(actions.discard)].genome);
         removeVariant(set, std::size_t(actions.discard));
-        renderer_->waitIdle();  // textures are about to change
-        showVariants(*shownVariants_, *bridge_, view);
+        showShownVariants();
     }
     if (actions.refill) {
         // The same target as the shown set, the variants shown kept, the discarded ones barred.

@@ -1,39 +1,36 @@
 #include "VariantsDisplay.h"
 
-#include "ImageBridge.h"
-#include "Rgba8Image.h"
 #include "variants/VariantFiles.h"
 
 namespace matevo::editor {
-namespace {
 
-// Texture slots after those of the evolution grid and of "Compare metrics".
-constexpr std::size_t kTargetSlot = 3000;
-constexpr std::size_t kFirstVariantSlot = 3001;
-
-}  // namespace
-
-void showVariants(const VariantsResult& result, ImageBridge& bridge, ui::VariantsView& view) {
+Result<std::vector<std::shared_ptr<ShownImage>>> showVariants(const VariantsResult& result,
+                                                              ImageBridge& bridge,
+                                                              ui::VariantsView& view) {
     view.variants.clear();
     view.pairwise.clear();
+    view.target = nullptr;
     if (!result.error.empty()) {
         view.summary = "Failed: " + result.error;
         view.met = false;
-        return;
+        return std::vector<std::shared_ptr<ShownImage>>{};
     }
     const VariantSet& set = result.set;
+    std::vector<Image> images{set.target};  // the target first, then the variants
+    for (const Variant& variant : set.variants) images.push_back(variant.image);
+    auto shown = bridge.upload(images);
+    if (!shown) return shown.error();
     view.summary = variantSummary(result.run, set);
     view.met = fulfils(set, result.run.request);
-    view.target = bridge.setImage(kTargetSlot, toDisplayImage(set.target));
+    view.target = (*shown)[0]->render();
     const std::vector<double> nearest = set.nearestSibling();
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         const Variant& variant = set.variants[i];
-        view.variants.push_back({variant.genome,
-                                 bridge.setImage(kFirstVariantSlot + i,
-                                                 toDisplayImage(variant.image)),
+        view.variants.push_back({variant.genome, (*shown)[i + 1]->render(),
                                  variant.deltaEToTarget, nearest[i], variant.kept});
     }
     view.pairwise = set.pairwise;
+    return shown;
 }
 
 }  // namespace matevo::editor
