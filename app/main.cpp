@@ -1,6 +1,7 @@
 // matevo: evolve variants of a layered material. Dispatches to one subcommand and maps failures
 // to the documented exit statuses (Messages.h): 0 ok, 1 internal failure, 2 bad usage or input,
 // 3 compare --fail-above exceeded. Every message has the form "matevo COMMAND: TEXT".
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -105,6 +106,9 @@ int dispatch(std::vector<std::string> args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Past a file size limit (ulimit -f) a write must fail with EFBIG, reported as an error
+    // (exit 2, no partial file), instead of SIGXFSZ ending the process.
+    std::signal(SIGXFSZ, SIG_IGN);
     try {
         return dispatch(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const UsageError& error) {

@@ -1,11 +1,10 @@
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
 #include "editor/EditorApp.h"
+#include "io/TextFile.h"
 
 namespace matevo::cli {
 namespace {
@@ -35,11 +34,9 @@ constexpr const char* kHelp =
     "imgui.ini is kept in $XDG_CONFIG_HOME/matevo (default ~/.config/matevo).\n";
 
 std::string readScript(const std::string& file) {
-    std::ifstream in(file);
-    if (!in) throw UsageError("--script: cannot read '" + file + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
+    auto text = readTextFile(file);
+    if (!text) throw UsageError("--script: " + text.error().message);
+    return std::move(text).value();
 }
 
 void parseSize(const std::string& text, editor::EditorOptions& options) {

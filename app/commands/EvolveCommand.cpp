@@ -10,11 +10,15 @@
 #include "EvolveReport.h"
 #include "Messages.h"
 #include "PresetOption.h"
+#include "StopSignals.h"
+#include "common/MemoryBudget.h"
+#include "common/StopRequest.h"
 #include "commands/Commands.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "experiment/Experiment.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/AtomicFile.h"
+#include "io/OutputFolder.h"
 #include "scene/SceneTextures.h"
 #include "variants/ImageFitness.h"
 
@@ -26,7 +30,7 @@ constexpr const char* kHelp =
     "usage: matevo evolve [--preset P] [--population N] [--generations N]\n"
     "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
-    "                     [--size N] [--backend gpu|cpu]\n"
+    "                     [--size N] [--backend gpu|cpu] [--force]\n"
     "                     [--fitness genotype|image] [--band LO,HI] [--fitness-size N]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
@@ -43,12 +47,15 @@ constexpr const char* kHelp =
     "  --size N       image side in pixels for --out (default: the preset's scene size)\n"
     "  --backend B    renderer for --out and image fitness: gpu (default; falls back to the\n"
     "                 CPU when no Vulkan device is usable) or cpu\n"
+    "  --force        replace DIR when it holds an earlier matevo output (else a folder with\n"
+    "                 files is refused); DIR always holds one whole run\n"
     "  --fitness F    genotype (default: the paper's distance with --metric and --weights) or\n"
     "                 image: each candidate's rendered mean CIEDE2000 from the target\n"
     "  --band LO,HI   with image fitness: how far outside the band of mean CIEDE2000 a\n"
     "                 candidate lies (0 inside: the objective is met)\n"
     "  --fitness-size N  image side the image fitness renders at (default 64)\n"
-    "Progress goes to stderr.\n";
+    "Progress goes to stderr. Ctrl-C (SIGINT) or SIGTERM stops after the current generation or\n"
+    "batch of images and writes what is complete, marked \"partial\" (exit 130 or 143).\n";
 
 GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     if (auto population = args.integerOption("--population", 2, kMaxPopulation))
@@ -95,6 +102,7 @@ int runEvolve(CommandLine& args) {
     choice.preset.ga = applyOverrides(args, choice.preset.ga);
     const bool asJson = args.flag("--json");
     const auto outDir = args.option("--out");
+    const bool replaceOutput = args.flag("--force");
     const int imageSize = int(
         args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
     const RenderBackend backend =
@@ -113,7 +121,21 @@ int runEvolve(CommandLine& args) {
     // Images are rendered only for --out and image fitness.
     args.onlyWith("--size", "--out");
     if (!imageFitness) args.onlyWith("--backend", "--out");
+    args.onlyWith("--force", "--out");
     args.finish();
+
+    installStopSignalHandlers();
+    // Everything that can be refused is refused before the work starts.
+    std::optional<OutputFolder> output;
+    if (outDir) {
+        if (auto fits = checkMemoryEstimate(evolveImagesMemoryEstimate(imageSize),
+                                            "--out at --size " + std::to_string(imageSize));
+            !fits)
+            throw UsageError(fits.error().message);
+        auto claimed = OutputFolder::claim(*outDir, replaceOutput);
+        if (!claimed) throw UsageError("--out: " + claimed.error().message);
+        output.emplace(std::move(*claimed));
+    }
 
     const Preset& preset = choice.preset;
     std::optional<ImageSpaceFitness> fitness;
@@ -135,7 +157,7 @@ int runEvolve(CommandLine& args) {
                                   : GeneticAlgorithm(preset.family, preset.target, preset.ga);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
     ga.initialize();
-    while (!ga.finished()) {
+    while (!ga.finished() && !stopRequested()) {
         ga.step();
         if (showProgress)
             std::fprintf(stderr, "\r%sgeneration %d/%d", messagePrefix().c_str(),
@@ -152,22 +174,37 @@ int runEvolve(CommandLine& args) {
         report["config"]["fitness_size"] = fitnessSize;
         report["config"]["evaluations"] = fitness->renderCount();
     }
-    if (outDir) {
-        std::error_code error;
-        std::filesystem::create_directories(*outDir, error);
-        if (error)
-            throw UsageError("--out: cannot create folder '" + *outDir + "' (" +
-                             error.message() + ")");
-        addImageStatistics(
-            report, writeEvolveImages(choice, ranked, imageSize, backend, *outDir));
-        auto file = std::filesystem::path(*outDir) / "result.json";
-        auto status = writeFileAtomically(file, report.dump(2) + "\n");
-        if (!status) throw UsageError(status.error().message);
+    if (output) {
+        try {
+            const auto stats =
+                writeEvolveImages(choice, ranked, imageSize, backend, output->staging());
+            addImageStatistics(report, stats);
+            report["candidates_written"] = stats.size();
+        } catch (const UsageError& error) {
+            throw UsageError(output->userFacing(error.what()));
+        }
+    }
+    if (const int signal = stopRequested()) {
+        report["partial"] = true;
+        report["stopped_by"] = signalName(signal);
+    }
+    if (output) {
+        auto status = writeFileAtomically(output->staging() / "result.json", report.dump(2) + "\n");
+        if (!status) throw UsageError(output->userFacing(status.error().message));
+        if (auto committed = output->commit(); !committed)
+            throw UsageError("--out: " + committed.error().message);
     }
     if (asJson)
         std::printf("%s\n", report.dump(2).c_str());
     else
         printEvolveSummary(preset, ga, ranked, stdout);
+    if (const int signal = stopRequested()) {
+        printMessage("stopped by " + signalName(signal) + " after generation " +
+                     std::to_string(ga.generation()) + " of " +
+                     std::to_string(preset.ga.generations) +
+                     (output ? "; what is complete is written, marked partial" : ""));
+        return stoppedExitStatus(signal);
+    }
     return 0;
 }
 

@@ -1,3 +1,4 @@
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -5,6 +6,7 @@
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
+#include "common/MemoryBudget.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/GenomeJson.h"
 #include "io/ImageFile.h"
@@ -46,6 +48,11 @@ int runRender(CommandLine& args) {
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const std::filesystem::path out = outputPath(args);
     args.finish();
+    // The render, its read-back and the encoded file: about three RGBA float images.
+    if (auto fits = checkMemoryEstimate(std::uint64_t(size) * std::uint64_t(size) * 16 * 3,
+                                        "--size " + std::to_string(size));
+        !fits)
+        throw UsageError(fits.error().message);
 
     MaterialInstance material{choice.preset.target, choice.preset.family, choice.preset.baseKappa};
     if (genomeFile) {

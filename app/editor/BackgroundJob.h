@@ -2,11 +2,14 @@
 // One job at a time on a worker thread, for the editor's long tasks ("Compare metrics", the
 // Variants search): the UI thread starts it, polls busy() and progress() and takes the result;
 // `onUpdate` (which must be thread-safe) wakes the UI whenever there is something to show. The
-// job reads stopping() to end early when the editor closes.
+// job reads stopping() to end early when the editor closes. Nothing may escape the thread: an
+// exception becomes the result's `error` (Result has a std::string `error`), shown in the window.
 #include <atomic>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <thread>
 #include <utility>
 
@@ -23,13 +26,23 @@ public:
     BackgroundJob(const BackgroundJob&) = delete;
     BackgroundJob& operator=(const BackgroundJob&) = delete;
 
-    // Runs work() on the worker unless a job is running; returns whether it started.
-    bool start(std::function<Result()> work) {
+    // Runs work() on the worker unless a job is running; returns whether it started. `what`
+    // names the job in a failure ("the comparison" failed: ...).
+    bool start(std::function<Result()> work, std::string what) {
         if (busy_.exchange(true)) return false;
         if (thread_.joinable()) thread_.join();  // the previous job has finished
         progress_.store(0.0f);
-        thread_ = std::thread([this, work = std::move(work)] {
-            Result result = work();
+        thread_ = std::thread([this, work = std::move(work), what = std::move(what)] {
+            Result result;
+            try {
+                result = work();
+            } catch (const std::exception& error) {
+                result = Result{};
+                result.error = what + " failed: " + error.what();
+            } catch (...) {
+                result = Result{};
+                result.error = what + " failed";
+            }
             {
                 std::lock_guard lock(mutex_);
                 result_ = std::move(result);

@@ -1,5 +1,7 @@
 #include "CompareMetricsWorker.h"
 
+#include <exception>
+#include <string>
 #include <utility>
 
 #include "experiment/Experiment.h"
@@ -16,7 +18,7 @@ CompareMetricsWorker::CompareMetricsWorker(std::function<void()> onUpdate,
 CompareMetricsWorker::~CompareMetricsWorker() = default;
 
 bool CompareMetricsWorker::start(CompareMetricsJob job) {
-    return job_.start([this, job = std::move(job)] { return compute(job); });
+    return job_.start([this, job = std::move(job)] { return compute(job); }, "the comparison");
 }
 
 CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job) {
@@ -48,7 +50,7 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
         job_.reportProgress(0.5f * float(done) / float(total));
     });
     result.renders.resize(result.records.size());
-    const Status scored = scoreRuns(
+    const auto scored = scoreRuns(
         result.records, target->front(), render, 16,
         [&](int done, int total) {
             job_.reportProgress(0.5f + 0.5f * float(done) / float(total));

@@ -39,6 +39,11 @@ std::atomic<bool> terminationRequested{false};
 
 void onTerminationSignal(int) { terminationRequested.store(true); }
 
+// No window, or no Vulkan device to present it with: a property of the machine, exit 2.
+struct WindowUnavailable : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 class GlfwSession {
 public:
     GlfwSession() {
@@ -197,9 +202,9 @@ EditorApp::EditorApp(const EditorOptions& options)
       script_(options.script) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     window_.reset(glfwCreateWindow(options.width, options.height, "matevo", nullptr, nullptr));
-    if (!window_) throw std::runtime_error("cannot open a window on this display");
+    if (!window_) throw WindowUnavailable("cannot open a window on this display");
     auto vulkan = VulkanContext::create(window_.get(), options.validation);
-    if (!vulkan) throw std::runtime_error(vulkan.error().message);
+    if (!vulkan) throw WindowUnavailable(vulkan.error().message);
     vulkan_ = std::move(*vulkan);
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
@@ -458,8 +463,18 @@ int runEditor(const EditorOptions& options) {
                      "experiment\n");
         return 2;
     }
-    EditorApp app(options);
-    return app.run();
+    try {
+        EditorApp app(options);
+        return app.run();
+    } catch (const WindowUnavailable& error) {
+        // The window itself needs a Vulkan device that can present; the headless commands
+        // do not, and fall back to the CPU renderer.
+        std::fprintf(stderr,
+                     "matevo edit: cannot show the editor: %s; the headless commands render on "
+                     "the CPU without Vulkan: matevo evolve, render, compare, experiment\n",
+                     error.what());
+        return 2;
+    }
 }
 
 }  // namespace matevo::editor

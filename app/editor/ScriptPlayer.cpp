@@ -64,11 +64,11 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
             effects.variants.save = true;
             return true;
         case Kind::Population:
-            ga.population = int(std::clamp<long long>(action.first, 2, kMaxPopulation));
+            ga.population = int(action.first);  // the script parser checked the range
             ga.elitism = std::min(ga.elitism, ga.population / 2);
             return true;
         case Kind::Generations:
-            ga.generations = int(std::clamp<long long>(action.first, 1, kMaxGenerations));
+            ga.generations = int(action.first);
             return true;
         case Kind::Seed:
             ga.seed = std::uint64_t(action.first);

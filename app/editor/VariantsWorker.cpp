@@ -17,7 +17,7 @@ VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequ
 VariantsWorker::~VariantsWorker() = default;
 
 bool VariantsWorker::start(VariantsJob job) {
-    return job_.start([this, job = std::move(job)] { return compute(job); });
+    return job_.start([this, job = std::move(job)] { return compute(job); }, "the variant search");
 }
 
 VariantsResult VariantsWorker::compute(const VariantsJob& job) {

@@ -5,6 +5,7 @@
 #include <array>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -24,6 +25,8 @@ nlohmann::json familyToJson(const MaterialFamily& family);
 nlohmann::json materialToJson(const Genome& genome, const MaterialFamily& family,
                               const std::array<double, 3>& baseKappa);
 Genome readGenome(JsonReader& reader);  // throws JsonFieldError naming the field
+// The genome JSON in `text`; errors name `sourceName` and the field.
+Result<Genome> parseGenome(std::string_view text, const std::string& sourceName);
 Result<Genome> loadGenome(const std::filesystem::path& file);
 
 }  // namespace matevo

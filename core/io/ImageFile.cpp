@@ -1,11 +1,10 @@
 #include "io/ImageFile.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <string>
@@ -13,6 +12,9 @@
 #include <vector>
 
 #include "color/Srgb.h"
+#include "common/MemoryBudget.h"
+#include "io/AtomicFile.h"
+#include "io/InputFile.h"
 
 namespace matevo {
 namespace {
@@ -48,7 +50,7 @@ std::string oneLine(std::string text) {
 }
 
 Error fileError(const std::filesystem::path& file, const std::string& what) {
-    return Error{file.string() + ": " + what};
+    return Error{displayPath(file) + ": " + what};
 }
 
 // Maps an interleaved file pixel of 1-4 channels onto RGBA; grey is replicated.
@@ -61,40 +63,63 @@ void expandToRgba(const float* source, int channels, bool hasAlpha, float* rgba)
 }  // namespace
 
 Result<ImageFileContents> readImageFile(const std::filesystem::path& file) {
+    if (kindOf(file) == FileKind::kUnsupported)
+        return fileError(file, "unsupported image type (expected .png or .exr)");
+    // Read through the one safe reader (regular files of bounded size only); OpenImageIO then
+    // decodes from memory, so it never opens the path itself.
+    auto bytes = readInputFile(file, kMaxImageFileBytes);
+    if (!bytes) return bytes.error();
+    return decodeImageFile(*bytes, file);
+}
+
+Result<ImageFileContents> decodeImageFile(std::string_view bytes,
+                                          const std::filesystem::path& file) {
     const FileKind kind = kindOf(file);
     if (kind == FileKind::kUnsupported)
         return fileError(file, "unsupported image type (expected .png or .exr)");
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec))
-        return fileError(file, "cannot read: no such file");
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
 
     // PNG stores straight alpha; without this hint OpenImageIO would premultiply on read.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    auto input = OIIO::ImageInput::open(file.string(), &config);
-    if (!input) return fileError(file, "not a readable image: " + oneLine(OIIO::geterror()));
-    const std::string expectedFormat = kind == FileKind::kPng ? "png" : "openexr";
-    if (input->format_name() != expectedFormat)
-        return fileError(file, std::string("contents are ") + input->format_name() +
-                                   ", not what the extension says");
+    auto input = OIIO::ImageInput::create(kind == FileKind::kPng ? "png" : "openexr");
+    if (!input || !input->set_ioproxy(&memory))
+        return fileError(file, "cannot decode: " + oneLine(OIIO::geterror()));
+    OIIO::ImageSpec spec;
+    if (!input->open(file.string(), spec, config))
+        return fileError(file, std::string("not a readable ") +
+                                   (kind == FileKind::kPng ? "PNG" : "OpenEXR") +
+                                   " image: " + oneLine(input->geterror()));
 
-    const OIIO::ImageSpec& spec = input->spec();
     const int channels = spec.nchannels;
     if (channels < 1 || channels > 4)
         return fileError(file, "unsupported channel count " + std::to_string(channels));
     if (spec.width <= 0 || spec.height <= 0) return fileError(file, "empty image");
     const bool hasAlpha = channels == 2 || channels == 4;
+    // The decoded file pixels plus the RGBA image: checked before anything is allocated.
+    const std::uint64_t pixelCount = std::uint64_t(spec.width) * std::uint64_t(spec.height);
+    if (auto fits =
+            checkMemoryEstimate(pixelCount * (std::uint64_t(channels) + 4) * sizeof(float),
+                                displayPath(file) + ": decoding " + std::to_string(spec.width) +
+                                    "x" + std::to_string(spec.height) + " pixels");
+        !fits)
+        return fits.error();
 
-    std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) *
-                              std::size_t(channels));
+    std::vector<float> pixels(std::size_t(pixelCount) * std::size_t(channels));
     if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
         return fileError(file, "cannot decode: " + oneLine(input->geterror()));
+    input->close();
 
     ImageFileContents contents{Image(spec.width, spec.height), hasAlpha};
     const bool srgbEncoded = kind == FileKind::kPng;
     for (std::size_t i = 0; i < contents.image.pixelCount(); ++i) {
         float* rgba = &contents.image.rgba[i * 4];
         expandToRgba(&pixels[i * std::size_t(channels)], channels, hasAlpha, rgba);
+        for (int c = 0; c < 4; ++c)
+            if (!std::isfinite(rgba[c]))
+                return fileError(file, "pixel (" + std::to_string(i % std::size_t(spec.width)) +
+                                           ", " + std::to_string(i / std::size_t(spec.width)) +
+                                           ") is not a finite number");
         if (srgbEncoded)
             for (int c = 0; c < 3; ++c) rgba[c] = decodeSrgb(rgba[c]);
     }
@@ -119,18 +144,11 @@ Image quantizeAsPng(const Image& image) {
 
 namespace {
 
-// Unique per process and call, so concurrent writers never share a temporary file.
-std::filesystem::path temporaryPathBeside(const std::filesystem::path& file) {
-    static std::atomic<unsigned> counter{0};
-    std::filesystem::path temporary = file;
-    temporary += ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-    return temporary;
-}
-
+// Encodes in memory; the one atomic writer puts the bytes on disk.
 Status writeWith(const Image& image, const std::filesystem::path& target, FileKind kind) {
     const bool png = kind == FileKind::kPng;
     auto output = OIIO::ImageOutput::create(png ? "png" : "openexr");
-    if (!output) return fileError(target, "cannot write: " + oneLine(OIIO::geterror()));
+    if (!output) return fileError(target, "cannot encode: " + oneLine(OIIO::geterror()));
     OIIO::ImageSpec spec(image.width, image.height, 4,
                          png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
     spec.alpha_channel = 3;
@@ -138,24 +156,18 @@ Status writeWith(const Image& image, const std::filesystem::path& target, FileKi
         spec.attribute("oiio:UnassociatedAlpha", 1);
         spec.attribute("oiio:ColorSpace", "sRGB");
     }
-    const std::filesystem::path temporary = temporaryPathBeside(target);
-    bool written = output->open(temporary.string(), spec);
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    output->set_ioproxy(&memory);
+    bool written = output->open(target.string(), spec);
     if (written) {
         written = png ? output->write_image(OIIO::TypeDesc::UINT8, encodeSrgb8(image).data())
                       : output->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data());
         written = output->close() && written;
     }
-    std::error_code ec;
-    if (!written) {
-        std::filesystem::remove(temporary, ec);
-        return fileError(target, "cannot write: " + oneLine(output->geterror()));
-    }
-    std::filesystem::rename(temporary, target, ec);
-    if (ec) {
-        std::filesystem::remove(temporary, ec);
-        return fileError(target, "cannot write: " + ec.message());
-    }
-    return Ok{};
+    if (!written) return fileError(target, "cannot encode: " + oneLine(output->geterror()));
+    return writeFileAtomically(
+        target, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
 }  // namespace
@@ -169,7 +181,7 @@ Status writeImage(const Image& image, const std::filesystem::path& file) {
     std::error_code ec;
     const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : ".";
     if (!std::filesystem::is_directory(folder, ec))
-        return fileError(file, "cannot write: folder " + folder.string() + " does not exist");
+        return fileError(file, "cannot write: folder " + displayPath(folder) + " does not exist");
     return writeWith(image, file, kind);
 }
 

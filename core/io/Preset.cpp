@@ -2,9 +2,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <system_error>
+
 #include "genome/FamilyRules.h"
 #include "io/AtomicFile.h"
 #include "io/GenomeJson.h"
+#include "io/InputFile.h"
 #include "io/JsonReader.h"
 #include "io/TextFile.h"
 
@@ -146,9 +149,11 @@ Result<LoadedPreset> loadPreset(const std::filesystem::path& file) {
     for (const auto& [field, name] :
          {std::pair{"textures.roughness", loaded->preset.roughnessTexture},
           std::pair{"textures.base_color", loaded->preset.baseColorTexture}}) {
-        if (!name.empty() && !std::filesystem::is_regular_file(file.parent_path() / name))
+        // The error_code overload: a symlink loop or an over-long name is an answer, not a throw.
+        std::error_code error;
+        if (!name.empty() && !std::filesystem::is_regular_file(file.parent_path() / name, error))
             return Error{file.string() + ": " + field + ": no such file '" +
-                         (file.parent_path() / name).string() + "'"};
+                         displayPath(file.parent_path() / name) + "'"};
     }
     return loaded;
 }
@@ -183,6 +188,8 @@ std::string serializePreset(const Preset& preset) {
 }
 
 Status savePreset(const Preset& preset, const std::filesystem::path& file) {
+    // A save killed earlier (kill -9, power loss) may have left its temporary file here.
+    removeStaleTemporaryFiles(file.has_parent_path() ? file.parent_path() : ".");
     return writeFileAtomically(file, serializePreset(preset));
 }
 

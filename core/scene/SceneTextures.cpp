@@ -14,6 +14,17 @@ Result<Image> loadTexture(const std::filesystem::path& presetFile, const std::st
     if (name.empty()) return Image();
     auto image = readImage(presetFile.parent_path() / name);
     if (!image) return Error{presetFile.string() + ": " + field + ": " + image.error().message};
+    // Texels scale roughness or colour: an EXR may hold anything, the model needs [0, 1].
+    for (std::size_t i = 0; i < image->rgba.size(); ++i) {
+        const float value = image->rgba[i];
+        if (value < 0.0f || value > 1.0f) {
+            const std::size_t pixel = i / 4;
+            return Error{presetFile.string() + ": " + field + ": texel (" +
+                         std::to_string(pixel % std::size_t(image->width)) + ", " +
+                         std::to_string(pixel / std::size_t(image->width)) + ") value " +
+                         std::to_string(value) + " outside [0, 1]"};
+        }
+    }
     return image;
 }
 

@@ -217,7 +217,7 @@ TEST(Preset, MissingTextureFileIsAnError) {
 TEST(Preset, UnreadableFileNamesTheFile) {
     auto loaded = loadPreset("/nonexistent/preset.json");
     ASSERT_FALSE(loaded.ok());
-    EXPECT_EQ(loaded.error().message, "/nonexistent/preset.json: cannot open for reading");
+    EXPECT_EQ(loaded.error().message, "/nonexistent/preset.json: cannot read: no such file");
 }
 
 TEST(GenomeJson, ReadsAResultFileOrABareGenome) {
