@@ -6,6 +6,7 @@ find_package(Vulkan REQUIRED COMPONENTS glslangValidator)
 find_package(glfw3 3.3 REQUIRED)
 find_package(GTest REQUIRED)
 find_package(benchmark REQUIRED)
+find_package(TinyGLTF REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 

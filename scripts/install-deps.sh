@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
     build-essential cmake ninja-build pkg-config
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools glslang-dev
-    libglfw3-dev libimgui-dev libglm-dev libopenimageio-dev nlohmann-json3-dev
+    libglfw3-dev libimgui-dev libglm-dev libopenimageio-dev nlohmann-json3-dev libtinygltf-dev
     libgtest-dev libbenchmark-dev clang libclang-rt-14-dev
     xvfb xauth imagemagick xdotool
     python3-skimage python3-deap python3-numpy

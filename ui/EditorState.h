@@ -10,6 +10,7 @@
 
 #include "CompareMetricsPanel.h"
 #include "VariantsPanel.h"
+#include "ScenePanel.h"
 #include "genome/Genome.h"
 #include "io/Preset.h"
 
@@ -57,6 +58,7 @@ struct EditorState {
     EvolutionView evolution;
     CompareMetricsView compareMetrics;  // the "Compare metrics" window
     VariantsView variants;              // the "Variants" window
+    SceneView sceneView;                // the "Scene" window
     std::filesystem::path presetPath;  // empty until opened or saved
     Preset savedPreset;                // as last opened or saved, for the unsaved mark
     int selectedCandidate = -1;        // index into evolution.candidates; -1 = none

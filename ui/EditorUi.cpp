@@ -4,6 +4,7 @@
 
 #include "CandidateGrid.h"
 #include "CompareMetricsPanel.h"
+#include "ScenePanel.h"
 #include "ControlPanel.h"
 #include "FitnessPlot.h"
 #include "InspectPanel.h"
@@ -46,6 +47,7 @@ FrameRequests EditorUi::draw() {
 
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
     requests.variants = drawVariantsWindow(state_.variants);
+    drawSceneWindow(state_);
     drawPathDialogs();
     handleShortcuts(requests);
     // One undo step per finished edit: a slider drag is recorded when it is released.

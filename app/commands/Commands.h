@@ -12,5 +12,6 @@ int runExperiment(CommandLine& args);
 int runPresets(CommandLine& args);
 int runBench(CommandLine& args);
 int runVariants(CommandLine& args);
+int runScene(CommandLine& args);
 
 }  // namespace matevo::cli

@@ -39,13 +39,6 @@ std::string readScript(const std::string& file) {
     return std::move(text).value();
 }
 
-void parseSize(const std::string& text, editor::EditorOptions& options) {
-    const auto x = text.find('x');
-    if (x == std::string::npos) throw UsageError("--size: expected WxH, got '" + text + "'");
-    options.width = int(parseInteger(text.substr(0, x), "--size width", 320, 16384));
-    options.height = int(parseInteger(text.substr(x + 1), "--size height", 240, 16384));
-}
-
 }  // namespace
 
 int runEdit(CommandLine& args) {
@@ -61,7 +54,11 @@ int runEdit(CommandLine& args) {
     }
     if (auto frames = args.integerOption("--frames", 1, 100000000))
         options.maxFrames = int(*frames);
-    if (auto size = args.option("--size")) parseSize(*size, options);
+    if (auto size = args.option("--size")) {
+        const ImageSize window = parseImageSize(*size, "--size", {320, 240}, 16384);
+        options.width = window.width;
+        options.height = window.height;
+    }
     if (auto backend = args.option("--backend"))
         options.backend = parseRenderBackend(*backend, "--backend");
     options.validation = args.flag("--validate");

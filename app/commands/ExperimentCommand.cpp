@@ -121,7 +121,7 @@ Request parseRequest(CommandLine& args) {
     if (auto size = args.integerOption("--size", 8, 4096)) request.imageSize = int(*size);
     if (auto text = args.option("--scene")) {
         auto mode = parseSceneMode(*text);
-        if (!mode)
+        if (!mode || *mode == SceneMode::Environment)
             throw UsageError("--scene: unknown mode '" + *text +
                              "' (expected paper or ambient)");
         request.sceneMode = *mode;

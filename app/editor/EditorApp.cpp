@@ -22,6 +22,7 @@
 #include "EvolutionDisplay.h"
 #include "EvolutionWorker.h"
 #include "ImageBridge.h"
+#include "SceneViewWorker.h"
 #include "ScriptPlayer.h"
 #include "VariantsDisplay.h"
 #include "VariantsWorker.h"
@@ -130,6 +131,7 @@ private:
     void applyVariantsResults();
     void handleVariantsActions(const ui::VariantsActions& actions);
     void showShownVariants();
+    void applySceneView();
     void submitChangesToWorker();
     void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
     std::filesystem::path nextSnapshotPath() const;
@@ -156,6 +158,9 @@ private:
     std::unique_ptr<VariantsWorker> variantsWorker_;
     std::optional<VariantsResult> shownVariants_;  // the set in the Variants window
     std::vector<Genome> discardedVariants_;        // since its last fresh run
+    std::shared_ptr<ShownImage> sceneImage_;  // what the Scene window shows
+    std::unique_ptr<SceneViewWorker> sceneWorker_;
+    std::optional<SceneViewJob> requestedScene_;
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
 };
 
@@ -230,12 +235,15 @@ EditorApp::EditorApp(const EditorOptions& options)
     variantsRenderer.who = "matevo edit: Variants";
     variantsWorker_ =
         std::make_unique<VariantsWorker>([] { glfwPostEmptyEvent(); }, variantsRenderer);
+    sceneWorker_ = std::make_unique<SceneViewWorker>([] { glfwPostEmptyEvent(); },
+                                                     vulkan_->device());
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
 
 EditorApp::~EditorApp() {
     variantsWorker_.reset();
+    sceneWorker_.reset();
     compareWorker_.reset();
     worker_.reset();
     (void)renderer_->waitIdle();  // frames in flight use the images released below
@@ -299,6 +307,7 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     applyEvolutionResults();
     applyCompareMetricsResults();
     applyVariantsResults();
+    applySceneView();
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -424,6 +433,37 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
                                     : "Save set failed: " + saved.error().message;
         view.summary = state.statusMessage;
     }
+}
+
+// Shows a finished render of the Scene window, and asks for a new one when the window is open
+// and its controls, the candidates or the preset changed.
+void EditorApp::applySceneView() {
+    ui::EditorState& state = ui_.state();
+    ui::SceneView& view = state.sceneView;
+    if (std::optional<SceneViewResult> result = sceneWorker_->takeResult()) {
+        view.status = result->status;
+        if (result->image.width > 0) {
+            auto shown = bridge_->upload(std::span(&result->image, 1));
+            if (!shown) {
+                view.status = shown.error().message;
+                return;
+            }
+            sceneImage_ = shown->front();
+            view.image = sceneImage_->render();
+            view.imageWidth = result->image.width;
+            view.imageHeight = result->image.height;
+            view.camera = result->camera;
+            view.instances = std::move(result->instances);
+        }
+    }
+    if (!view.open || view.controls.width == 0) return;
+    SceneViewJob job{view.controls, state.preset, state.presetPath, {}};
+    for (const ui::CandidateView& candidate : state.evolution.candidates)
+        job.materials.push_back({candidate.genome, state.preset.family, state.preset.baseKappa});
+    // Orbiting asks for a frame per mouse move; the worker keeps only the newest.
+    if (requestedScene_ == job) return;
+    requestedScene_ = job;
+    sceneWorker_->request(std::move(job));
 }
 
 void EditorApp::submitChangesToWorker() {

@@ -35,6 +35,8 @@ const std::map<std::string, Grammar>& grammar() {
         {"metric", {Kind::Metric, 0, true}},
         {"heatmap", {Kind::Heatmap, 0, true}},
         {"select", {Kind::Select, 1, false, 0, kMaxPopulation - 1}},
+        {"scene", {Kind::Scene, 0, true}},
+        {"wait-scene", {Kind::WaitScene, 0, false}},
         {"undo", {Kind::Undo, 0, false}},
         {"redo", {Kind::Redo, 0, false}},
         {"resize", {Kind::Resize, 2, false, 64, kMaxWindowSide}},
@@ -68,6 +70,8 @@ std::string validateText(const ScriptAction& action) {
     if (action.kind == Kind::Heatmap && action.text != "on" && action.text != "off" &&
         action.text != "toggle")
         return "expected on, off or toggle, got '" + shortText(action.text, 40) + "'";
+    if (action.kind == Kind::Scene && action.text != "open" && action.text != "close")
+        return "expected open or close, got '" + shortText(action.text, 40) + "'";
     return {};
 }
 

@@ -8,6 +8,8 @@
 //   metric chebyshev|euclidean|manhattan
 //   heatmap on|off|toggle
 //   select I                inspect candidate I (0 = best)
+//   scene open|close        the Scene window
+//   wait-scene              draw until the Scene window shows a render (gives up after 120 s)
 //   undo | redo
 //   resize W H              resize the window (pixels)
 //   screenshot PATH         PNG of the window, as F12
@@ -35,6 +37,8 @@ struct ScriptAction {
         Metric,
         Heatmap,
         Select,
+        Scene,
+        WaitScene,
         Undo,
         Redo,
         Resize,

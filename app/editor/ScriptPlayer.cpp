@@ -83,6 +83,18 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::Select:
             state.selectedCandidate = int(action.first);
             return true;
+        case Kind::Scene:
+            state.sceneView.open = action.text == "open";
+            return true;
+        case Kind::WaitScene: {
+            if (!waitingSince_) waitingSince_ = std::chrono::steady_clock::now();
+            if (state.sceneView.image && framesWaited_++ >= 1) return true;
+            if (std::chrono::steady_clock::now() - *waitingSince_ > kEvolutionTimeout)
+                effects.error = "script line " + std::to_string(action.line) +
+                                ": wait-scene: no scene render in 120 s (" +
+                                state.sceneView.status + ")";
+            return false;
+        }
         case Kind::Undo:
             ui.undo();
             return true;

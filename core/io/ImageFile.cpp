@@ -19,7 +19,7 @@
 namespace matevo {
 namespace {
 
-enum class FileKind { kPng, kExr, kUnsupported };
+enum class FileKind { kPng, kExr, kHdr, kUnsupported };
 
 std::vector<unsigned char> encodeSrgb8(const Image& image) {
     std::vector<unsigned char> bytes(image.rgba.size());
@@ -39,6 +39,7 @@ FileKind kindOf(const std::filesystem::path& file) {
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension == ".png") return FileKind::kPng;
     if (extension == ".exr") return FileKind::kExr;
+    if (extension == ".hdr") return FileKind::kHdr;  // Radiance RGBE: environments, read only
     return FileKind::kUnsupported;
 }
 
@@ -76,19 +77,24 @@ Result<ImageFileContents> decodeImageFile(std::string_view bytes,
                                           const std::filesystem::path& file) {
     const FileKind kind = kindOf(file);
     if (kind == FileKind::kUnsupported)
-        return fileError(file, "unsupported image type (expected .png or .exr)");
+        return fileError(file, "unsupported image type (expected .png, .exr or .hdr)");
     OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
 
     // PNG stores straight alpha; without this hint OpenImageIO would premultiply on read.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    auto input = OIIO::ImageInput::create(kind == FileKind::kPng ? "png" : "openexr");
+    const char* format = kind == FileKind::kPng   ? "png"
+                         : kind == FileKind::kHdr ? "hdr"
+                                                  : "openexr";
+    auto input = OIIO::ImageInput::create(format);
     if (!input || !input->set_ioproxy(&memory))
         return fileError(file, "cannot decode: " + oneLine(OIIO::geterror()));
     OIIO::ImageSpec spec;
     if (!input->open(file.string(), spec, config))
         return fileError(file, std::string("not a readable ") +
-                                   (kind == FileKind::kPng ? "PNG" : "OpenEXR") +
+                                   (kind == FileKind::kPng   ? "PNG"
+                                    : kind == FileKind::kHdr ? "Radiance HDR"
+                                                             : "OpenEXR") +
                                    " image: " + oneLine(input->geterror()));
 
     const int channels = spec.nchannels;
@@ -174,7 +180,7 @@ Status writeWith(const Image& image, const std::filesystem::path& target, FileKi
 
 Status writeImage(const Image& image, const std::filesystem::path& file) {
     const FileKind kind = kindOf(file);
-    if (kind == FileKind::kUnsupported)
+    if (kind != FileKind::kPng && kind != FileKind::kExr)
         return fileError(file, "unsupported image type (expected .png or .exr)");
     if (image.width <= 0 || image.height <= 0 || image.rgba.size() != image.pixelCount() * 4)
         return fileError(file, "cannot write an empty or malformed image");

@@ -17,8 +17,9 @@ struct ImageFileContents {
     bool hasAlpha = false;
 };
 
-// Errors are one line naming the file: unsupported extension, unreadable, not an image, or an
-// unsupported channel layout. Grey files are expanded to RGB.
+// Reads .png, .exr and Radiance .hdr (linear; for environments). Errors are one line naming the
+// file: unsupported extension, unreadable, not an image, or an unsupported channel layout.
+// Grey files are expanded to RGB.
 // Files are read through readInputFile (regular files up to kMaxImageFileBytes); the decoded
 // size is checked against the memory limit (common/MemoryBudget.h) before it is allocated, and
 // non-finite pixel values are refused.

@@ -55,7 +55,9 @@ GaSettings readGaSettings(JsonReader reader) {
 SceneSettings readScene(JsonReader reader) {
     SceneSettings scene;
     if (reader.has("mode"))
-        scene.mode = readEnum(reader, "mode", parseSceneMode, "paper or ambient");
+        scene.mode =
+            readEnum(reader, "mode", parseSceneMode, "paper, ambient or environment");
+    if (reader.has("environment")) scene.environment = reader.string("environment");
     if (reader.has("image_size")) scene.imageSize = int(reader.integer("image_size", 8, 4096));
     if (reader.has("camera_position"))
         scene.cameraPosition = reader.numbers<3>("camera_position", -100.0, 100.0);
@@ -181,7 +183,8 @@ std::string serializePreset(const Preset& preset) {
           {"field_of_view_degrees", preset.scene.fieldOfViewDegrees},
           {"light_direction", preset.scene.lightDirection},
           {"light_radiance", preset.scene.lightRadiance},
-          {"environment_radiance", preset.scene.environmentRadiance}}},
+          {"environment_radiance", preset.scene.environmentRadiance},
+          {"environment", preset.scene.environment}}},
     };
     if (preset.family.base == Base::Conductor) json["base_kappa"] = preset.baseKappa;
     return json.dump(2) + "\n";

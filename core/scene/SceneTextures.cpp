@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "io/ImageFile.h"
+#include "scene/StudioEnvironment.h"
 
 namespace matevo {
 
@@ -36,7 +37,20 @@ Result<SceneTextures> loadSceneTextures(const Preset& preset,
     if (!roughness) return roughness.error();
     auto baseColor = loadTexture(presetFile, "textures.base_color", preset.baseColorTexture);
     if (!baseColor) return baseColor.error();
-    return SceneTextures{std::move(roughness).value(), std::move(baseColor).value()};
+    SceneTextures textures{std::move(roughness).value(), std::move(baseColor).value(), {}};
+    if (preset.scene.mode == SceneMode::Environment) {
+        // "studio", or a file relative to the preset's folder.
+        const std::filesystem::path name(preset.scene.environment);
+        const std::string file = preset.scene.environment == "studio" || name.is_absolute()
+                                     ? preset.scene.environment
+                                     : (presetFile.parent_path() / name).string();
+        auto environment = loadEnvironment(file);
+        if (!environment)
+            return Error{presetFile.string() + ": scene.environment: " +
+                         environment.error().message};
+        textures.environment = std::move(environment).value();
+    }
+    return textures;
 }
 
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v) {

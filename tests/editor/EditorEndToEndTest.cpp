@@ -185,6 +185,35 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     const auto tiles = spheres(shot, {0, 0, shot.width(), shot.height()}, 3000);
     // The paper scene leaves much of each sphere dark; the lit ones must still be there.
     EXPECT_GE(tiles.size(), 3u) << "sphere tiles in the Variants window";
+// The Scene window: the population worn by a crowd of shader balls under the studio, drawn by
+// the raster renderer on its worker (validation on: the editor exits 1 on any message).
+TEST(EditorSceneWindow, ShowsTheCandidatesAsInstancesOfAMesh) {
+    const fs::path dir = freshDirectory("scene_window");
+    fs::create_directories(dir / "config");
+    std::ofstream(dir / "script.txt") << "wait 2\n"
+                                         "population 12\n"
+                                         "generations 2\n"
+                                         "wait-evolution\n"
+                                         "scene open\n"
+                                         "wait-scene\n"
+                                         "wait 2\n"
+                                         "screenshot "
+                                      << (dir / "scene.png").string() << "\nquit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+        "/matevo' edit '" + MATEVO_SOURCE_DIR + "/presets/validation_metal.json' --validate " +
+        "--size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --script '" +
+        (dir / "script.txt").string() + "' --frames 100000");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    auto file = readImage(dir / "scene.png");
+    ASSERT_TRUE(file.ok()) << file.error().message;
+    const Screenshot shot(*file);
+    // The window's image area (first shown at (40, 40), 760 x 520, below its title and
+    // two rows of controls): 24 shader balls in a grid, much brighter than the studio's
+    // backdrop (below 130 after the tone map), each a blob of its own.
+    const PixelRect image{50, 140, 790, 550};
+    const auto instances = shot.litBlobs(image, 40, 170);
+    EXPECT_GE(instances.size(), 12u) << "lit instances in the Scene window";
     fs::remove_all(dir);
 }
 
