@@ -185,6 +185,9 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     const auto tiles = spheres(shot, {0, 0, shot.width(), shot.height()}, 3000);
     // The paper scene leaves much of each sphere dark; the lit ones must still be there.
     EXPECT_GE(tiles.size(), 3u) << "sphere tiles in the Variants window";
+    fs::remove_all(dir);
+}
+
 // The Scene window: the population worn by a crowd of shader balls under the studio, drawn by
 // the raster renderer on its worker (validation on: the editor exits 1 on any message).
 TEST(EditorSceneWindow, ShowsTheCandidatesAsInstancesOfAMesh) {
