@@ -22,6 +22,20 @@ nlohmann::json genomeToJson(const Genome& genome) {
             {"sigma_a", genome.sigmaA()},  {"g", genome.g()}};
 }
 
+nlohmann::json familyToJson(const MaterialFamily& family) {
+    return {{"coat", toString(family.coat)},
+            {"base", toString(family.base)},
+            {"medium", family.hasMedium},
+            {"textured_layer", toString(family.texturedLayer)}};
+}
+
+nlohmann::json materialToJson(const Genome& genome, const MaterialFamily& family,
+                              const std::array<double, 3>& baseKappa) {
+    nlohmann::json json = {{"family", familyToJson(family)}, {"genome", genomeToJson(genome)}};
+    if (family.base == Base::Conductor) json["base_kappa"] = baseKappa;
+    return json;
+}
+
 Genome readGenome(JsonReader& reader) {
     Genome genome;
     genome[kEta1] = reader.number("eta1", 0.0, kMaxChromosomeValue);

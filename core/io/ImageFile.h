@@ -33,4 +33,9 @@ Result<Image> readImage(const std::filesystem::path& file);
 // Atomic: written to a temporary file beside the target, then renamed over it.
 Status writeImage(const Image& image, const std::filesystem::path& file);
 
+// The image as writeImage stores it in a PNG and readImage returns it (colour through 8-bit sRGB,
+// alpha through 8 bits), without the file: figures measured on it are the ones `matevo compare`
+// finds in the written files.
+Image quantizeAsPng(const Image& image);
+
 }  // namespace matevo

@@ -164,11 +164,7 @@ std::string serializePreset(const Preset& preset) {
     nlohmann::json json = {
         {"name", preset.name},
         {"description", preset.description},
-        {"family",
-         {{"coat", toString(preset.family.coat)},
-          {"base", toString(preset.family.base)},
-          {"medium", preset.family.hasMedium},
-          {"textured_layer", toString(preset.family.texturedLayer)}}},
+        {"family", familyToJson(preset.family)},
         {"target", genomeToJson(preset.target)},
         {"textures",
          {{"roughness", preset.roughnessTexture}, {"base_color", preset.baseColorTexture}}},
