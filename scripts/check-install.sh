@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# The install, as a new user would do it: an out-of-tree build with the tests switched off,
-# `cmake --install` into a temporary prefix, then every command of the installed matevo run from
-# an unrelated working directory. Also: the build tree's own matevo runs from anywhere, a lone
-# copy of the executable says where it looked for its resources (exit 2), and MATEVO_DATA_DIR
-# points it at them. ctest runs this (install_from_out_of_tree_build); exits non-zero on the
-# first failure, naming it.
+# The install, as a new user would do it: `cmake --install` into a temporary prefix, then every
+# command of the installed matevo run from an unrelated working directory. Also: the build
+# tree's own matevo runs from anywhere, a lone copy of the executable says where it looked for
+# its resources (exit 2), and MATEVO_DATA_DIR points it at them. Exits non-zero on the first
+# failure, naming it.
+#   scripts/check-install.sh            first builds matevo out of the source tree, tests off
+#                                       (a full second build: minutes)
+#   scripts/check-install.sh BUILD_DIR  installs from an existing build folder (what ctest's
+#                                       install_and_run_from_anywhere does)
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/matevo-install-check.XXXXXX")
@@ -13,10 +16,15 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "check-install: $*" >&2; exit 1; }
 expect_file() { [[ -s "$1" ]] || fail "$2 did not write $1"; }
 
-cmake -S "$source_dir" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-      -DMATEVO_BUILD_TESTS=OFF >/dev/null
-cmake --build "$work/build" --target matevo -j"$(nproc)" >/dev/null
-cmake --install "$work/build" --prefix "$work/prefix" >/dev/null
+if [[ $# -ge 1 ]]; then
+    build_dir=$(cd "$1" && pwd)
+else
+    build_dir="$work/build"
+    cmake -S "$source_dir" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+          -DMATEVO_BUILD_TESTS=OFF >/dev/null
+    cmake --build "$build_dir" --target matevo -j"$(nproc)" >/dev/null
+fi
+cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
 [[ -f "$work/prefix/share/doc/matevo/LICENSE" ]] || fail "LICENSE not installed"
 
 matevo="$work/prefix/bin/matevo"
@@ -44,8 +52,8 @@ if command -v xvfb-run >/dev/null; then
     xvfb-run -a "$matevo" edit mine --frames 3 --backend cpu || fail "edit under Xvfb"
 fi
 
-# The build tree's executable (an out-of-source build) finds the source tree's resources.
-"$work/build/matevo" presets | grep -q '^validation_metal ' || fail "build-tree presets"
+# The build tree's executable finds the source tree's resources.
+"$build_dir/matevo" presets | grep -q '^validation_metal ' || fail "build-tree presets"
 
 # A lone copy finds nothing, says where it looked, exits 2; MATEVO_DATA_DIR rescues it.
 mkdir -p "$work/lone/bin"
