@@ -37,9 +37,3 @@ if [[ ${#missing[@]} -gt 0 ]]; then
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends \
         "${missing[@]}"
 fi
-
-validator="$(dirname "$0")/../tests/export/gltf-validator"
-if [[ ! -d "$validator/node_modules/gltf-validator" ]]; then
-    echo "matevo: installing the glTF validator (npm) into tests/export/gltf-validator" >&2
-    npm ci --prefix "$validator" --no-audit --no-fund --loglevel=error
-fi
