@@ -213,9 +213,11 @@ TEST_F(ReliabilityCli, TheEditorWithoutAVulkanDriverSaysSoAndExits2) {
         // its Xvfb at the same moment.
         "VK_DRIVER_FILES=/nonexistent/icd.json VK_ICD_FILENAMES=/nonexistent/icd.json "
         "xvfb-run -a -n " +
-        std::to_string(200 + ::getpid() % 500) + " -s '-screen 0 1280x800x24' " + kMatevo +
-        " edit --frames 2");
-    EXPECT_EQ(run.exitCode, 2) << run.err;
+        std::to_string(200 + ::getpid() % 500) + " -s '-screen 0 1280x800x24' sh -c \"" +
+        kMatevo + " edit --frames 2; echo editor-status=\\$? >&2\"");
+    // The editor's own status: xvfb-run's exit status also reflects its clean-up of its
+    // temporary folder, which can fail on a loaded machine.
+    EXPECT_NE(run.err.find("editor-status=2"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("matevo edit: cannot show the editor"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("evolve"), std::string::npos) << run.err;
 }
