@@ -36,7 +36,7 @@ int runBench(CommandLine& args) {
     }
 
     if (asJson) {
-        nlohmann::json out = nlohmann::json::object();
+        nlohmann::ordered_json out = nlohmann::ordered_json::object();
         for (const auto& figure : report) out[figure.key] = figure.value;
         std::printf("%s\n", out.dump(2).c_str());
     } else {

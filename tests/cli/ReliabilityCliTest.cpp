@@ -175,10 +175,11 @@ CommandOutput interruptedRun(const std::string& arguments, const fs::path& out,
 
 TEST_F(ReliabilityCli, SigintStopsAnExperimentAndKeepsTheCompletedRunsMarkedPartial) {
     const CommandOutput run = interruptedRun(
-        "experiment --runs 10000 --population 50 --generations 5 --size 16 --backend cpu "
+        // Enough work (about 15 s on a quiet machine) that the signal always arrives mid-run.
+        "experiment --runs 10000 --population 200 --generations 10 --size 16 --backend cpu "
         "--metric euclidean --out \"" +
             (folder_ / "exp").string() + "\"",
-        folder_ / "exp", "INT", 3);
+        folder_ / "exp", "INT", 1);
     ASSERT_EQ(run.exitCode, 130) << run.err;
     std::ifstream reportFile(folder_ / "exp" / "report.json");
     const auto report = nlohmann::json::parse(reportFile);
