@@ -137,6 +137,15 @@ std::vector<double> parseNumberList(const std::string& text, const std::string& 
     return values;
 }
 
+DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what) {
+    const auto values = parseNumberList(text, what);
+    if (values.size() != 2)
+        throw UsageError(what + ": expected LO,HI (two numbers), got '" + text + "'");
+    const DeltaEBand band{values[0], values[1]};
+    if (auto problem = validateBand(band)) throw UsageError(what + ": " + *problem);
+    return band;
+}
+
 std::string imageOutputPath(CommandLine& args) {
     const auto out = args.option("--out");
     if (!out) throw UsageError("--out FILE.png|FILE.exr is required");

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "variants/DeltaEBand.h"
+
 namespace matevo::cli {
 
 struct UsageError : std::runtime_error {
@@ -57,6 +59,8 @@ long long parseInteger(const std::string& text, const std::string& what, long lo
                        long long max);
 double parseNumber(const std::string& text, const std::string& what);
 std::vector<double> parseNumberList(const std::string& text, const std::string& what);
+// "LO,HI": a band of mean ΔE00 (0 <= LO <= HI).
+DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what);
 
 // The required `--out FILE.png|FILE.exr` of the commands that write one image.
 std::string imageOutputPath(CommandLine& args);

@@ -1,18 +1,35 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages matevo needs, only those missing. Uses sudo when not root.
+#   scripts/install-deps.sh          what building and running matevo needs
+#   scripts/install-deps.sh --tests  that, plus the test stack (scripts/test.sh asks for it)
 set -euo pipefail
 
 packages=(
     build-essential cmake ninja-build pkg-config
-    libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools glslang-dev
-    libglfw3-dev libimgui-dev libglm-dev libopenimageio-dev nlohmann-json3-dev libtinygltf-dev
-    libgtest-dev libbenchmark-dev libxml2-dev clang libclang-rt-14-dev
+    libvulkan-dev mesa-vulkan-drivers glslang-tools glslang-dev
+    libglfw3-dev libimgui-dev libglm-dev libopenimageio-dev nlohmann-json3-dev
+    libtinygltf-dev
+)
+# GoogleTest, the validation layer every GPU test runs under, a virtual display and input for
+# the editor test, screenshots, the Python peers the tests and benchmarks compare with, clang
+# with its sanitizer runtimes for scripts/fuzz.sh, and libxml2 to re-read exported MaterialX.
+test_packages=(
+    libgtest-dev vulkan-validationlayers clang libclang-rt-14-dev
     xvfb xauth imagemagick xdotool
     python3-skimage python3-deap python3-numpy
+    libxml2-dev
 )
-
-# The Khronos glTF validator (tests/export) comes from npm; Debian's npm only when none is there.
-command -v npm >/dev/null || packages+=(nodejs npm)
+tests=0
+case "${1:-}" in
+    "") ;;
+    --tests)
+        tests=1
+        packages+=("${test_packages[@]}")
+        # The Khronos glTF validator (tests/export) comes from npm; Debian's only when none is there.
+        command -v npm >/dev/null || packages+=(nodejs npm)
+        ;;
+    *) echo "usage: scripts/install-deps.sh [--tests]" >&2; exit 2 ;;
+esac
 
 missing=()
 for package in "${packages[@]}"; do
@@ -29,7 +46,7 @@ if [[ ${#missing[@]} -gt 0 ]]; then
 fi
 
 validator="$(dirname "$0")/../tests/export/gltf-validator"
-if [[ ! -d "$validator/node_modules/gltf-validator" ]]; then
+if [[ $tests == 1 && ! -d "$validator/node_modules/gltf-validator" ]]; then
     echo "matevo: installing the glTF validator (npm) into tests/export/gltf-validator" >&2
     npm ci --prefix "$validator" --no-audit --no-fund --loglevel=error
 fi

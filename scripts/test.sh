@@ -4,7 +4,7 @@
 # fuzzes each parser briefly (scripts/fuzz.sh, MATEVO_FUZZ_SECONDS each, default 10).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh --tests
 test_environment=()
 if [[ "${MATEVO_SANITIZE:-0}" == 1 ]]; then
     export BUILD_DIR=build-sanitize BUILD_TYPE=RelWithDebInfo CMAKE_ARGS="-DMATEVO_SANITIZE=ON"

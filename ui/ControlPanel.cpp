@@ -46,6 +46,8 @@ ControlPanelActions drawControlPanel(EditorState& state, bool canUndo, bool canR
     if (ImGui::Button("Compare metrics")) state.compareMetrics.open = true;
     hoverHint("The paper's section 5 experiment: the three metrics side by side");
     ImGui::SameLine();
+    if (ImGui::Button("Variants")) state.variants.open = true;
+    hoverHint("A set of variants a chosen perceptible difference from the target");
     if (ImGui::Button("Scene")) state.sceneView.open = true;
     hoverHint("The paper's section 6 application: many instances of a mesh, one candidate each");
     return actions;

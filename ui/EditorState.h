@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "CompareMetricsPanel.h"
+#include "VariantsPanel.h"
 #include "ScenePanel.h"
 #include "genome/Genome.h"
 #include "io/Preset.h"
@@ -56,6 +57,7 @@ struct EditorState {
     HeatmapView heatmap;
     EvolutionView evolution;
     CompareMetricsView compareMetrics;  // the "Compare metrics" window
+    VariantsView variants;              // the "Variants" window
     SceneView sceneView;                // the "Scene" window
     std::filesystem::path presetPath;  // empty until opened or saved
     Preset savedPreset;                // as last opened or saved, for the unsaved mark

@@ -10,6 +10,7 @@
 #include "InspectPanel.h"
 #include "PanelLayout.h"
 #include "TargetPanel.h"
+#include "VariantsPanel.h"
 
 namespace matevo::ui {
 
@@ -45,6 +46,7 @@ FrameRequests EditorUi::draw() {
     ImGui::End();
 
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
+    requests.variants = drawVariantsWindow(state_.variants);
     drawSceneWindow(state_);
     drawPathDialogs();
     handleShortcuts(requests);

@@ -23,6 +23,7 @@ struct FrameRequests {
     bool quit = false;
     bool snapshot = false;
     bool runCompareMetrics = false;  // the "Compare metrics" window asked for a run
+    VariantsActions variants;        // what the "Variants" window asked for
 };
 
 class EditorUi {

@@ -12,6 +12,7 @@ int runExperiment(CommandLine& args);
 int runPresets(CommandLine& args);
 int runBench(CommandLine& args);
 int runExport(CommandLine& args);
+int runVariants(CommandLine& args);
 int runScene(CommandLine& args);
 
 }  // namespace matevo::cli

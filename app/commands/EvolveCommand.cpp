@@ -15,9 +15,13 @@
 #include "common/StopRequest.h"
 #include "commands/Commands.h"
 #include "evolve/GeneticAlgorithm.h"
+#include "experiment/Experiment.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "io/AtomicFile.h"
 #include "io/GaCheckpoint.h"
 #include "io/OutputFolder.h"
+#include "scene/SceneTextures.h"
+#include "variants/ImageFitness.h"
 
 namespace matevo::cli {
 
@@ -27,8 +31,9 @@ constexpr const char* kHelp =
     "usage: matevo evolve [--preset P] [--population N] [--generations N]\n"
     "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
-    "                     [--size N] [--backend gpu|cpu] [--force] [--checkpoint FILE]\n"
-    "                     [--resume FILE]\n\n"
+    "                     [--size N] [--backend gpu|cpu] [--force]\n"
+    "                     [--fitness genotype|image] [--band LO,HI] [--fitness-size N]\n"
+    "                     [--checkpoint FILE] [--resume FILE]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
     "override the preset's GA settings.\n"
@@ -42,14 +47,20 @@ constexpr const char* kHelp =
     "                 (per-pixel CIEDE2000 against the target, 0-10 through viridis); adds each\n"
     "                 candidate's mean_de00 (and max, p95) to the JSON\n"
     "  --size N       image side in pixels for --out (default: the preset's scene size)\n"
-    "  --backend B    renderer for --out: gpu (default; falls back to the CPU when no Vulkan\n"
-    "                 device is usable) or cpu\n"
+    "  --backend B    renderer for --out and image fitness: gpu (default; falls back to the\n"
+    "                 CPU when no Vulkan device is usable) or cpu\n"
     "  --force        replace DIR when it holds an earlier matevo output (else a folder with\n"
     "                 files is refused); DIR always holds one whole run\n"
     "  --checkpoint FILE  after every generation, save the run's state (population, history,\n"
     "                 random generator) to FILE, atomically\n"
     "  --resume FILE  continue the run saved in FILE (same preset and settings; --generations\n"
-    "                 may be larger): the result equals the uninterrupted run's, bit for bit\n"
+    "                 may be larger): the result equals the uninterrupted run's, bit for bit.\n"
+    "                 Both work with genotype fitness only\n"
+    "  --fitness F    genotype (default: the paper's distance with --metric and --weights) or\n"
+    "                 image: each candidate's rendered mean CIEDE2000 from the target\n"
+    "  --band LO,HI   with image fitness: how far outside the band of mean CIEDE2000 a\n"
+    "                 candidate lies (0 inside: the objective is met)\n"
+    "  --fitness-size N  image side the image fitness renders at (default 64)\n"
     "Progress goes to stderr. Ctrl-C (SIGINT) or SIGTERM stops after the current generation or\n"
     "batch of images and writes what is complete, marked \"partial\" (exit 130 or 143).\n";
 
@@ -114,12 +125,27 @@ int runEvolve(CommandLine& args) {
         args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
-    // Images are rendered only for --out.
+    const std::string fitnessName = args.option("--fitness").value_or("genotype");
+    if (fitnessName != "genotype" && fitnessName != "image")
+        throw UsageError("--fitness: expected genotype or image, got '" + fitnessName + "'");
+    const bool imageFitness = fitnessName == "image";
+    const auto bandText = args.option("--band");
+    const auto fitnessSizeOption = args.integerOption("--fitness-size", 8, 1024);
+    if (!imageFitness && (bandText || fitnessSizeOption))
+        throw UsageError(std::string(bandText ? "--band" : "--fitness-size") +
+                         " does nothing without --fitness image");
+    const DeltaEBand band = parseDeltaEBand(bandText.value_or("0,0"), "--band");
+    const int fitnessSize = int(fitnessSizeOption.value_or(64));
+    // Images are rendered only for --out and image fitness.
     args.onlyWith("--size", "--out");
-    args.onlyWith("--backend", "--out");
+    if (!imageFitness) args.onlyWith("--backend", "--out");
     args.onlyWith("--force", "--out");
     const auto checkpointFile = args.option("--checkpoint");
     const auto resumeFile = args.option("--resume");
+    // The image fitness is rebuilt from the options on resume, which a checkpoint does not hold.
+    if (imageFitness && (checkpointFile || resumeFile))
+        throw UsageError(std::string(checkpointFile ? "--checkpoint" : "--resume") +
+                         " works with genotype fitness only");
     args.finish();
 
     installStopSignalHandlers();
@@ -136,7 +162,23 @@ int runEvolve(CommandLine& args) {
     }
 
     const Preset& preset = choice.preset;
-    GeneticAlgorithm ga(preset.family, preset.target, preset.ga);
+    std::optional<ImageSpaceFitness> fitness;
+    if (imageFitness) {
+        auto textures = loadSceneTextures(preset, choice.file);
+        if (!textures) throw UsageError(textures.error().message);
+        gpu::RendererRequest rendererRequest;
+        rendererRequest.backend = backend;
+        rendererRequest.who = "matevo evolve";
+        auto cache = GenomeRenderCache::create(
+            renderGenomesWith(gpu::createPopulationRenderer(rendererRequest, *textures),
+                              preset.family, preset.baseKappa, preset.scene, fitnessSize),
+            preset.target);
+        if (!cache) throw std::runtime_error(cache.error().message);
+        fitness.emplace(std::move(cache).value(), band);
+    }
+    GeneticAlgorithm ga = fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga,
+                                                     fitness->evaluator())
+                                  : GeneticAlgorithm(preset.family, preset.target, preset.ga);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
     if (resumeFile)
         resume(ga, preset, *resumeFile);
@@ -158,9 +200,16 @@ int runEvolve(CommandLine& args) {
                          ga.generation(), preset.ga.generations);
     }
     if (showProgress) std::fputc('\n', stderr);
+    if (fitness && fitness->failure()) throw std::runtime_error(fitness->failure()->message);
 
     const auto ranked = ga.rankedPopulation();
     nlohmann::json report = evolveReport(preset, choice.file, ga, ranked);
+    report["config"]["fitness"] = fitnessName;
+    if (imageFitness) {
+        report["config"]["band"] = {band.low, band.high};
+        report["config"]["fitness_size"] = fitnessSize;
+        report["config"]["evaluations"] = fitness->renderCount();
+    }
     if (output) {
         try {
             const auto stats =

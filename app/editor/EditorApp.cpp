@@ -24,6 +24,8 @@
 #include "ImageBridge.h"
 #include "SceneViewWorker.h"
 #include "ScriptPlayer.h"
+#include "VariantsDisplay.h"
+#include "VariantsWorker.h"
 #include "VulkanContext.h"
 #include "WindowRenderer.h"
 #include "io/ImageFile.h"
@@ -123,9 +125,12 @@ private:
     };
 
     bool frame(std::optional<std::filesystem::path>& screenshotPath);
-    void playScript(std::optional<std::filesystem::path>& screenshotPath);
+    ui::VariantsActions playScript(std::optional<std::filesystem::path>& screenshotPath);
     void applyEvolutionResults();
     void applyCompareMetricsResults();
+    void applyVariantsResults();
+    void handleVariantsActions(const ui::VariantsActions& actions);
+    void showShownVariants();
     void applySceneView();
     void submitChangesToWorker();
     void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
@@ -148,7 +153,11 @@ private:
     std::string failure_;
     bool quitRequested_ = false;
     std::vector<std::shared_ptr<ShownImage>> compareImages_;  // what Compare metrics shows
+    std::vector<std::shared_ptr<ShownImage>> variantsImages_;  // what Variants shows
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
+    std::unique_ptr<VariantsWorker> variantsWorker_;
+    std::optional<VariantsResult> shownVariants_;  // the set in the Variants window
+    std::vector<Genome> discardedVariants_;        // since its last fresh run
     std::shared_ptr<ShownImage> sceneImage_;  // what the Scene window shows
     std::unique_ptr<SceneViewWorker> sceneWorker_;
     std::optional<SceneViewJob> requestedScene_;
@@ -222,6 +231,10 @@ EditorApp::EditorApp(const EditorOptions& options)
     compareRenderer.device = &vulkan_->device();
     compareWorker_ =
         std::make_unique<CompareMetricsWorker>([] { glfwPostEmptyEvent(); }, compareRenderer);
+    gpu::RendererRequest variantsRenderer = compareRenderer;
+    variantsRenderer.who = "matevo edit: Variants";
+    variantsWorker_ =
+        std::make_unique<VariantsWorker>([] { glfwPostEmptyEvent(); }, variantsRenderer);
     sceneWorker_ = std::make_unique<SceneViewWorker>([] { glfwPostEmptyEvent(); },
                                                      vulkan_->device());
     std::signal(SIGTERM, onTerminationSignal);
@@ -229,6 +242,7 @@ EditorApp::EditorApp(const EditorOptions& options)
 }
 
 EditorApp::~EditorApp() {
+    variantsWorker_.reset();
     sceneWorker_.reset();
     compareWorker_.reset();
     worker_.reset();
@@ -251,7 +265,8 @@ int EditorApp::run() {
         if (due)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(worker_->busy() || compareWorker_->busy() ? 0.1 : 0.25);
+            glfwWaitEventsTimeout(
+                worker_->busy() || compareWorker_->busy() || variantsWorker_->busy() ? 0.1 : 0.25);
         if (shouldQuit()) break;
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_.get(), &width, &height);
@@ -286,10 +301,12 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     // A screenshot shows the frame after the one that asked, so the request has settled; the
     // script waits for it.
     const std::optional<std::filesystem::path> captureNow = std::exchange(screenshotPath, {});
-    if (!captureNow) playScript(screenshotPath);
+    ui::VariantsActions scriptedVariants;
+    if (!captureNow) scriptedVariants = playScript(screenshotPath);
 
     applyEvolutionResults();
     applyCompareMetricsResults();
+    applyVariantsResults();
     applySceneView();
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -301,6 +318,8 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     if (requests.runCompareMetrics)
         compareWorker_->start({ui_.state().preset, ui_.state().presetPath,
                                ui_.state().compareMetrics.runs});
+    handleVariantsActions(requests.variants);
+    handleVariantsActions(scriptedVariants);
     submitChangesToWorker();
     if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
         glfwSetWindowTitle(window_.get(), title.c_str());
@@ -326,14 +345,16 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     return drawn;
 }
 
-void EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
-    const bool settled = !worker_->busy() && display_->shownFinished();
+ui::VariantsActions EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
+    const ScriptPlayer::Settled settled{!worker_->busy() && display_->shownFinished(),
+                                        !variantsWorker_->busy() && !variantsWorker_->hasResult()};
     const ScriptEffects effects = script_.step(ui_, settled);
     if (!effects.error.empty()) failure_ = effects.error;
     if (effects.quit) quitRequested_ = true;
     if (effects.resize)
         glfwSetWindowSize(window_.get(), effects.resize->first, effects.resize->second);
     screenshotPath = effects.screenshot;
+    return effects.variants;
 }
 
 void EditorApp::applyEvolutionResults() {
@@ -357,6 +378,64 @@ void EditorApp::applyCompareMetricsResults() {
         return;
     }
     compareImages_ = std::move(shown).value();
+}
+
+void EditorApp::applyVariantsResults() {
+    ui::VariantsView& view = ui_.state().variants;
+    view.running = variantsWorker_->busy();
+    view.progress = variantsWorker_->progress();
+    std::optional<VariantsResult> result = variantsWorker_->takeResult();
+    if (!result) return;
+    shownVariants_ = std::move(result);
+    showShownVariants();
+}
+
+void EditorApp::showShownVariants() {
+    auto shown = showVariants(*shownVariants_, *bridge_, ui_.state().variants);
+    if (!shown) {
+        failure_ = shown.error().message;
+        return;
+    }
+    variantsImages_ = std::move(shown).value();
+}
+
+void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
+    ui::EditorState& state = ui_.state();
+    ui::VariantsView& view = state.variants;
+    VariantRequest request;
+    request.count = view.count;
+    request.band = {double(view.low), double(view.high)};
+    request.minApart = double(view.minApart);
+    request.seed = std::uint64_t(view.seed);
+    if (actions.run) {
+        discardedVariants_.clear();
+        if (variantsWorker_->start({state.preset, state.presetPath, request})) view.running = true;
+    }
+    if (!shownVariants_) return;
+    VariantSet& set = shownVariants_->set;
+    if (actions.discard >= 0 && std::size_t(actions.discard) < set.variants.size()) {
+        discardedVariants_.push_back(set.variants[std::size_t(actions.discard)].genome);
+        removeVariant(set, std::size_t(actions.discard));
+        showShownVariants();
+    }
+    if (actions.refill) {
+        // The same target as the shown set, the variants shown kept, the discarded ones barred.
+        for (const Variant& variant : set.variants) request.keep.push_back(variant.genome);
+        request.exclude = discardedVariants_;
+        if (variantsWorker_->start({shownVariants_->preset, state.presetPath, request}))
+            view.running = true;
+    }
+    if (actions.save) {
+        const VariantsResult& shown = *shownVariants_;
+        const Status saved = writeVariantFiles(
+            view.savePath,
+            materialFromPreset(shown.preset, shown.presetFile, shown.preset.target,
+                               shown.preset.name),
+            set, variantReport(shown.preset, shown.run, set));
+        state.statusMessage = saved ? "Saved the set to " + view.savePath
+                                    : "Save set failed: " + saved.error().message;
+        view.summary = state.statusMessage;
+    }
 }
 
 // Shows a finished render of the Scene window, and asks for a new one when the window is open

@@ -42,6 +42,11 @@ const std::map<std::string, Grammar>& grammar() {
         {"resize", {Kind::Resize, 2, false, 64, kMaxWindowSide}},
         {"screenshot", {Kind::Screenshot, 0, true}},
         {"save", {Kind::Save, 0, true}},
+        {"variants", {Kind::Variants, 1, false, 1, 48}},
+        {"wait-variants", {Kind::WaitVariants, 0, false}},
+        {"discard-variant", {Kind::DiscardVariant, 1, false, 0, 47}},
+        {"refill-variants", {Kind::RefillVariants, 0, false}},
+        {"save-variants", {Kind::SaveVariants, 0, true}},
         {"quit", {Kind::Quit, 0, false}},
     };
     return table;

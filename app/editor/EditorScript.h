@@ -14,6 +14,11 @@
 //   resize W H              resize the window (pixels)
 //   screenshot PATH         PNG of the window, as F12
 //   save PATH               save the preset
+//   variants N              open the Variants window and find N variants (its band and spacing)
+//   wait-variants           draw until the variant search is finished and shown (120 s at most)
+//   discard-variant I       drop variant I from the set
+//   refill-variants         keep the set and find the missing variants
+//   save-variants PATH      save the set into the folder PATH, as `matevo variants --out`
 //   quit
 #include <string>
 #include <vector>
@@ -39,6 +44,11 @@ struct ScriptAction {
         Resize,
         Screenshot,
         Save,
+        Variants,
+        WaitVariants,
+        DiscardVariant,
+        RefillVariants,
+        SaveVariants,
         Quit
     };
     Kind kind = Kind::Wait;

@@ -15,6 +15,7 @@
 #include "common/Image.h"
 #include "common/Result.h"
 #include "evolve/GaSettings.h"
+#include "evolve/RenderGenomes.h"
 #include "experiment/ExperimentSettings.h"
 #include "experiment/RunRecord.h"
 #include "genome/Genome.h"
@@ -22,11 +23,6 @@
 #include "render/PopulationRenderer.h"
 
 namespace matevo {
-
-// Renders genomes of the target's material on the test sphere, one image per genome, in order.
-// The caller binds everything else (family, kappa, textures, scene, image size) and chooses the
-// back end (GPU batch renderer or CPU reference).
-using RenderGenomes = std::function<Result<std::vector<Image>>(std::span<const Genome> genomes)>;
 
 // RenderGenomes on `renderer` for genomes of `family` with the base's `kappa`, at size x size.
 RenderGenomes renderGenomesWith(std::shared_ptr<PopulationRenderer> renderer,

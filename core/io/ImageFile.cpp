@@ -21,6 +21,19 @@ namespace {
 
 enum class FileKind { kPng, kExr, kHdr, kUnsupported };
 
+std::vector<unsigned char> encode8(const Image& image, PngValues values) {
+    std::vector<unsigned char> bytes(image.rgba.size());
+    for (std::size_t i = 0; i < image.rgba.size(); ++i) {
+        double value = std::clamp(double(image.rgba[i]), 0.0, 1.0);
+        // Alpha is coverage, not light.
+        if (i % 4 != 3 && values == PngValues::Srgb) value = linearToSrgb(value);
+        bytes[i] = static_cast<unsigned char>(std::lround(value * 255.0));
+    }
+    return bytes;
+}
+
+float decodeSrgb(float encoded) { return float(srgbToLinear(encoded)); }
+
 FileKind kindOf(const std::filesystem::path& file) {
     std::string extension = file.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -115,7 +128,7 @@ Result<ImageFileContents> decodeImageFile(std::string_view bytes,
                                            ", " + std::to_string(i / std::size_t(spec.width)) +
                                            ") is not a finite number");
         if (srgbEncoded)
-            for (int c = 0; c < 3; ++c) rgba[c] = float(srgbToLinear(rgba[c]));
+            for (int c = 0; c < 3; ++c) rgba[c] = decodeSrgb(rgba[c]);
     }
     return contents;
 }
@@ -126,18 +139,17 @@ Result<Image> readImage(const std::filesystem::path& file) {
     return std::move(contents->image);
 }
 
-namespace {
-
-std::vector<unsigned char> encode8(const Image& image, PngValues values) {
-    std::vector<unsigned char> bytes(image.rgba.size());
-    for (std::size_t i = 0; i < image.rgba.size(); ++i) {
-        double value = std::clamp(double(image.rgba[i]), 0.0, 1.0);
-        // Alpha is coverage, not light.
-        if (i % 4 != 3 && values == PngValues::Srgb) value = linearToSrgb(value);
-        bytes[i] = static_cast<unsigned char>(std::lround(value * 255.0));
+Image quantizeAsPng(const Image& image) {
+    const std::vector<unsigned char> bytes = encode8(image, PngValues::Srgb);
+    Image quantized(image.width, image.height);
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const float stored = float(bytes[i]) / 255.0f;  // what the PNG reader gives
+        quantized.rgba[i] = i % 4 == 3 ? stored : decodeSrgb(stored);
     }
-    return bytes;
+    return quantized;
 }
+
+namespace {
 
 // Encodes in memory; the one atomic writer puts the bytes on disk.
 Status writeWith(const Image& image, const std::filesystem::path& target, FileKind kind) {
@@ -156,7 +168,8 @@ Status writeWith(const Image& image, const std::filesystem::path& target, FileKi
     output->set_ioproxy(&memory);
     bool written = output->open(target.string(), spec);
     if (written) {
-        written = png ? output->write_image(OIIO::TypeDesc::UINT8, encode8(image, PngValues::Srgb).data())
+        written = png ? output->write_image(OIIO::TypeDesc::UINT8,
+                                            encode8(image, PngValues::Srgb).data())
                       : output->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data());
         written = output->close() && written;
     }

@@ -39,4 +39,9 @@ Status writeImage(const Image& image, const std::filesystem::path& file);
 enum class PngValues { Srgb, Linear };
 Result<std::vector<unsigned char>> encodePng(const Image& image, PngValues values);
 
+// The image as writeImage stores it in a PNG and readImage returns it (colour through 8-bit sRGB,
+// alpha through 8 bits), without the file: figures measured on it are the ones `matevo compare`
+// finds in the written files.
+Image quantizeAsPng(const Image& image);
+
 }  // namespace matevo

@@ -175,10 +175,11 @@ CommandOutput interruptedRun(const std::string& arguments, const fs::path& out,
 
 TEST_F(ReliabilityCli, SigintStopsAnExperimentAndKeepsTheCompletedRunsMarkedPartial) {
     const CommandOutput run = interruptedRun(
-        "experiment --runs 10000 --population 50 --generations 5 --size 16 --backend cpu "
+        // Enough work (about 15 s on a quiet machine) that the signal always arrives mid-run.
+        "experiment --runs 10000 --population 200 --generations 10 --size 16 --backend cpu "
         "--metric euclidean --out \"" +
             (folder_ / "exp").string() + "\"",
-        folder_ / "exp", "INT", 3);
+        folder_ / "exp", "INT", 1);
     ASSERT_EQ(run.exitCode, 130) << run.err;
     std::ifstream reportFile(folder_ / "exp" / "report.json");
     const auto report = nlohmann::json::parse(reportFile);
@@ -213,9 +214,11 @@ TEST_F(ReliabilityCli, TheEditorWithoutAVulkanDriverSaysSoAndExits2) {
         // its Xvfb at the same moment.
         "VK_DRIVER_FILES=/nonexistent/icd.json VK_ICD_FILENAMES=/nonexistent/icd.json "
         "xvfb-run -a -n " +
-        std::to_string(200 + ::getpid() % 500) + " -s '-screen 0 1280x800x24' " + kMatevo +
-        " edit --frames 2");
-    EXPECT_EQ(run.exitCode, 2) << run.err;
+        std::to_string(200 + ::getpid() % 500) + " -s '-screen 0 1280x800x24' sh -c \"" +
+        kMatevo + " edit --frames 2; echo editor-status=\\$? >&2\"");
+    // The editor's own status: xvfb-run's exit status also reflects its clean-up of its
+    // temporary folder, which can fail on a loaded machine.
+    EXPECT_NE(run.err.find("editor-status=2"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("matevo edit: cannot show the editor"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("evolve"), std::string::npos) << run.err;
 }

@@ -1,4 +1,4 @@
-// FGD/TIR integrals against belcour-model.md §8, the tables against direct integration, and the
+// FGD/TIR integrals against docs/bsdf.md §8, the tables against direct integration, and the
 // on-disk cache (version, settings and checksum checks).
 #include <algorithm>
 #include <cmath>
