@@ -1,5 +1,6 @@
 #include "EditorApp.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -17,15 +18,20 @@
 
 #include "CompareMetricsDisplay.h"
 #include "CompareMetricsWorker.h"
+#include "EditorStyle.h"
 #include "EditorTimings.h"
 #include "EditorUi.h"
 #include "EvolutionDisplay.h"
 #include "EvolutionWorker.h"
 #include "ImageBridge.h"
 #include "ScriptPlayer.h"
+#include "ViewSettings.h"
 #include "VulkanContext.h"
+#include "WindowInput.h"
 #include "WindowRenderer.h"
 #include "io/ImageFile.h"
+#include "io/ResourcePaths.h"
+#include "material/FgdTableCache.h"
 
 namespace matevo::editor {
 namespace {
@@ -56,41 +62,19 @@ private:
 
 // $XDG_CONFIG_HOME/matevo/imgui.ini, else ~/.config/matevo/imgui.ini; empty if neither exists.
 std::string imguiIniPath() {
-    std::filesystem::path base;
-    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config)
-        base = config;
-    else if (const char* home = std::getenv("HOME"); home && *home)
-        base = std::filesystem::path(home) / ".config";
-    else
-        return {};
+    auto folder = userConfigDirectory();
+    if (!folder) return {};
     std::error_code error;
-    std::filesystem::create_directories(base / "matevo", error);
-    return error ? std::string() : (base / "matevo" / "imgui.ini").string();
+    std::filesystem::create_directories(*folder, error);
+    return error ? std::string() : (*folder / "imgui.ini").string();
 }
 
-void applyStyle() {
-    ImGui::StyleColorsDark();
-    ImGuiStyle& style = ImGui::GetStyle();
-    style.WindowRounding = 0.0f;
-    style.FrameRounding = 3.0f;
-    style.GrabRounding = 3.0f;
-    style.WindowBorderSize = 1.0f;
-    style.FramePadding = ImVec2(6, 3);
-    style.ItemSpacing = ImVec2(7, 4);
-    style.Colors[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.11f, 0.12f, 1.0f);
-    style.Colors[ImGuiCol_TitleBgActive] = ImVec4(0.16f, 0.20f, 0.27f, 1.0f);
-    style.Colors[ImGuiCol_TitleBg] = ImVec4(0.13f, 0.15f, 0.19f, 1.0f);
-}
-
-// DejaVu Sans (a Debian default font) has the Greek ΔE; ImGui's built-in font is the fallback.
-void loadFont() {
-    static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x206F, 0};
-    const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-    ImGuiIO& io = ImGui::GetIO();
-    if (std::filesystem::exists(path) &&
-        io.Fonts->AddFontFromFileTTF(path, 14.0f, nullptr, kRanges))
-        return;
-    io.Fonts->AddFontDefault();
+// Shipped presets are read-only; the user's own go to their data folder.
+ui::PresetFolders presetFolders() {
+    ui::PresetFolders folders;
+    if (auto shipped = findResourceDirectory("presets")) folders.shipped = *shipped;
+    if (auto user = userPresetDirectory()) folders.user = *user;
+    return folders;
 }
 
 class EditorApp {
@@ -128,6 +112,7 @@ private:
     EditorOptions options_;
     std::string iniPath_;
     std::unique_ptr<GLFWwindow, WindowDeleter> window_;
+    std::unique_ptr<WindowInput> input_;
     std::unique_ptr<VulkanContext> vulkan_;
     std::unique_ptr<WindowRenderer> renderer_;
     std::unique_ptr<ImGuiSession> imgui_;
@@ -140,6 +125,9 @@ private:
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
+    // Frames drawn after a change, so that hover states and popups settle before waiting.
+    static constexpr int kSettleFrames = 3;
+    std::atomic<bool> workerPosted_{false};  // a worker has a result or progress to show
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
 };
@@ -150,9 +138,9 @@ EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, const VulkanContext& v
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = iniPath.empty() ? nullptr : iniPath.c_str();
-    applyStyle();
-    loadFont();
-    ImGui_ImplGlfw_InitForVulkan(window, true);
+    ui::applyEditorStyle();
+    ui::loadEditorFont();
+    ImGui_ImplGlfw_InitForVulkan(window, false);  // WindowInput owns the callbacks
     ImGui_ImplVulkan_InitInfo info{};
     info.Instance = vulkan.instance();
     info.PhysicalDevice = vulkan.physicalDevice();
@@ -177,12 +165,13 @@ EditorApp::ImGuiSession::~ImGuiSession() {
 EditorApp::EditorApp(const EditorOptions& options)
     : options_(options),
       iniPath_(imguiIniPath()),
-      ui_(options.preset, options.presetFile,
-          ui::ShortcutKeys{GLFW_KEY_O, GLFW_KEY_S, GLFW_KEY_Q, GLFW_KEY_F12}),
+      ui_(options.preset, options.presetFile, presetFolders(),
+          ui::ShortcutKeys{GLFW_KEY_O, GLFW_KEY_S, GLFW_KEY_Q, GLFW_KEY_F12, GLFW_KEY_K}),
       script_(options.script) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     window_.reset(glfwCreateWindow(options.width, options.height, "matevo", nullptr, nullptr));
     if (!window_) throw std::runtime_error("cannot open a window on this display");
+    input_ = std::make_unique<WindowInput>(window_.get());
     auto vulkan = VulkanContext::create(window_.get(), options.validation);
     if (!vulkan) throw std::runtime_error(vulkan.error().message);
     vulkan_ = std::move(*vulkan);
@@ -191,16 +180,25 @@ EditorApp::EditorApp(const EditorOptions& options)
     renderer_ = std::make_unique<WindowRenderer>(
         *vulkan_, VkExtent2D{std::uint32_t(width), std::uint32_t(height)});
     imgui_ = std::make_unique<ImGuiSession>(window_.get(), *vulkan_, *renderer_, iniPath_);
+    ui::rememberViewSettings(ui_.state());
     bridge_ = std::make_unique<ImageBridge>(*vulkan_, renderer_->renderPass());
     display_ = std::make_unique<EvolutionDisplay>(*bridge_);
-    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); }, options.gpuTiles,
-                                                options.validation);
-    compareWorker_ = std::make_unique<CompareMetricsWorker>([] { glfwPostEmptyEvent(); });
+    const auto wake = [this] {
+        workerPosted_.store(true);
+        glfwPostEmptyEvent();
+    };
+    worker_ = std::make_unique<EvolutionWorker>(wake, options.gpuTiles, options.validation);
+    compareWorker_ = std::make_unique<CompareMetricsWorker>(wake);
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
 
 EditorApp::~EditorApp() {
+    // imgui.ini holds the view settings, read from ui_: write it now, while ui_ is alive, and
+    // not again when the ImGui context goes after it.
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.IniFilename) ImGui::SaveIniSettingsToDisk(io.IniFilename);
+    io.IniFilename = nullptr;
     compareWorker_.reset();
     worker_.reset();
     renderer_->waitIdle();
@@ -214,16 +212,30 @@ bool EditorApp::shouldQuit() const {
 int EditorApp::run() {
     int frames = 0;
     std::optional<std::filesystem::path> screenshotPath;
+    int framesToSettle = 0;
     while (!shouldQuit()) {
-        // Draw only when something changed: input, a new generation (the worker posts an empty
-        // event), a due script step or snapshot. Spinning would take a core from the GA on a
-        // two-core machine. The timeout keeps the progress line and SIGTERM responsive.
-        const bool due = screenshotPath || (!script_.finished() && !script_.waitingForEvolution());
+        // Draw only when something changed: input (and a few frames after it, for ImGui's
+        // hover and popups to settle), a worker's result (it posts an empty event), a due script
+        // step or snapshot, or the progress of a running job. An idle editor draws nothing: on
+        // a two-core machine every frame is time taken from the GA. The timeout keeps SIGTERM
+        // and the progress line responsive.
+        const bool scriptDue = !script_.finished() && !script_.waitingForEvolution() &&
+                               (!script_.idling() || script_.idleOver());
+        const bool due = screenshotPath || scriptDue || input_->hasPending() || framesToSettle > 0;
+        const bool busy = worker_->busy() || compareWorker_->busy();
         if (due)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(worker_->busy() || compareWorker_->busy() ? 0.1 : 0.25);
+            glfwWaitEventsTimeout(busy ? 0.1 : 0.25);
         if (shouldQuit()) break;
+        if (input_->takeCloseRequest()) ui_.requestQuit();
+        if (auto dropped = input_->takeDroppedFiles(); !dropped.empty())
+            ui_.dropFile(dropped.front());
+        const bool woken = workerPosted_.exchange(false);
+        if (input_->takeChanged() || woken) framesToSettle = kSettleFrames;
+        if (!due && !busy && framesToSettle == 0) continue;  // nothing changed: draw nothing
+        framesToSettle = std::max(0, framesToSettle - 1);
+        if (script_.idling()) timings_.frameWhileScriptIdle();
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_.get(), &width, &height);
         if (width == 0 || height == 0) {  // minimised: nothing to draw into until restored
@@ -261,16 +273,18 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
 
     applyEvolutionResults();
     applyCompareMetricsResults();
+    ui_.state().evolution.tableBuildProgress = tableBuildProgress();
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    input_->applyFrame();  // after the backend's pointer polling, which it overrides
     ImGui::NewFrame();
     const ui::FrameRequests requests = ui_.draw();
     ImGui::Render();
     if (requests.quit) quitRequested_ = true;
     if (requests.snapshot) screenshotPath = nextSnapshotPath();
     if (requests.runCompareMetrics)
-        compareWorker_->start({ui_.state().preset, ui_.state().presetPath,
-                               ui_.state().compareMetrics.runs});
+        compareWorker_->start(
+            {ui_.state().preset, ui_.state().presetPath, ui_.state().compareMetrics.runs});
     submitChangesToWorker();
     if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
         glfwSetWindowTitle(window_.get(), title.c_str());
@@ -311,7 +325,7 @@ void EditorApp::applyEvolutionResults() {
     if (!update && !recolour) return;
     renderer_->waitIdle();  // textures are about to change
     if (update) {
-        if (!update->error.empty()) state.statusMessage = update->error;
+        if (!update->error.empty()) state.status.post(update->error, ui::StatusKind::Error);
         display_->show(std::move(*update), state.heatmap, state.evolution);
     } else {
         display_->recolour(state.heatmap, state.evolution);
@@ -332,7 +346,12 @@ void EditorApp::submitChangesToWorker() {
     const Preset& preset = ui_.state().preset;
     // Wait for the end of a drag: every intermediate value would cancel the one before.
     if (ImGui::IsAnyItemActive() && submittedPreset_) return;
-    if (submittedPreset_ == preset) return;
+    // Keeping, naming or removing a kept material changes nothing the GA does.
+    const auto withoutKept = [](Preset p) {
+        p.kept.clear();
+        return p;
+    };
+    if (submittedPreset_ && withoutKept(*submittedPreset_) == withoutKept(preset)) return;
     submittedPreset_ = preset;
     const std::uint64_t jobId = worker_->submit({preset, ui_.state().presetPath});
     ui_.state().evolution.running = true;
@@ -349,8 +368,11 @@ std::filesystem::path EditorApp::nextSnapshotPath() const {
 
 void EditorApp::saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path) {
     const Status written = writeImage(toLinearImage(frame), path);
-    ui_.state().statusMessage =
-        written ? "Snapshot " + path.string() : "Snapshot failed: " + written.error().message;
+    if (written)
+        ui_.state().status.post("Snapshot " + path.string());
+    else
+        ui_.state().status.post("Snapshot failed: " + written.error().message,
+                                ui::StatusKind::Error);
     if (!written && !options_.script.empty()) failure_ = written.error().message;
 }
 

@@ -21,6 +21,7 @@ const std::map<std::string, Grammar>& grammar() {
     static const std::map<std::string, Grammar> table = {
         {"wait", {Kind::Wait, 1, false}},
         {"wait-evolution", {Kind::WaitEvolution, 0, false}},
+        {"idle", {Kind::Idle, 1, false}},
         {"population", {Kind::Population, 1, false}},
         {"generations", {Kind::Generations, 1, false}},
         {"seed", {Kind::Seed, 1, false}},
@@ -30,6 +31,7 @@ const std::map<std::string, Grammar>& grammar() {
         {"undo", {Kind::Undo, 0, false}},
         {"redo", {Kind::Redo, 0, false}},
         {"resize", {Kind::Resize, 2, false}},
+        {"check-layout", {Kind::CheckLayout, 0, false}},
         {"screenshot", {Kind::Screenshot, 0, true}},
         {"save", {Kind::Save, 0, true}},
         {"quit", {Kind::Quit, 0, false}},

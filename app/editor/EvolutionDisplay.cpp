@@ -29,9 +29,21 @@ void EvolutionDisplay::show(EvolutionUpdate update, const ui::HeatmapView& heatm
         candidate.fitness = result.individual.fitness;
         candidate.meanDeltaE00 = result.deltaE.stats.mean;
         candidate.genome = result.individual.genome;
+        candidate.copies = result.copies;
         candidate.image = bridge_.setImage(imageSlot(i), toDisplayImage(result.image));
         candidate.heatmap = uploadHeatmap(i, heatmap);
         view.candidates.push_back(candidate);
+    }
+    // Kept materials: image and ΔE00 (no heatmap), in the slots after the grid's.
+    view.kept.clear();
+    for (std::size_t i = 0; i < shown_.kept.size(); ++i) {
+        const CandidateResult& result = shown_.kept[i];
+        ui::CandidateView kept;
+        kept.meanDeltaE00 = result.deltaE.stats.mean;
+        kept.genome = result.individual.genome;
+        kept.image = bridge_.setImage(imageSlot(EvolutionWorker::kGridTiles + i),
+                                      toDisplayImage(result.image));
+        view.kept.push_back(kept);
     }
     view.history = shown_.history;
     view.totalGenerations = shown_.totalGenerations;

@@ -33,6 +33,7 @@ struct CandidateResult {
     Individual individual;
     Image image;
     DeltaEMap deltaE;  // against the target at the tile size
+    int copies = 1;    // individuals in the population with this genome
 };
 
 struct EvolutionUpdate {
@@ -42,6 +43,7 @@ struct EvolutionUpdate {
     Image target;                             // large, for the target panel
     std::string backend;                      // what rendered the tiles: "GPU (name)" or "CPU"
     std::vector<CandidateResult> candidates;  // best first
+    std::vector<CandidateResult> kept;        // the preset's kept materials of its family
     std::vector<ui::GenerationPoint> history;
     std::string error;  // the job could not run (e.g. a missing texture)
 };
@@ -49,6 +51,7 @@ struct EvolutionUpdate {
 class EvolutionWorker {
 public:
     static constexpr int kGridTiles = 24;
+    static constexpr std::size_t kKeptTiles = 48;  // kept materials drawn, at most
     static constexpr int kTileSize = 128;
     static constexpr int kTargetSize = 320;
     static constexpr std::size_t kRenderCacheSize = 128;  // tiles (~50 MB)

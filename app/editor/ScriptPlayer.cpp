@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "LayoutCheck.h"
+
 namespace matevo::editor {
 namespace {
 
@@ -41,6 +43,15 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, bool evol
                                 ": wait-evolution: the GA run did not finish in 120 s";
             return false;
         }
+        case Kind::Idle:
+            if (!idleUntil_) {
+                idleUntil_ =
+                    std::chrono::steady_clock::now() + std::chrono::milliseconds(action.first);
+                return false;
+            }
+            if (!idleOver()) return false;
+            idleUntil_.reset();
+            return true;
         case Kind::Population:
             ga.population = int(std::clamp<long long>(action.first, 2, kMaxPopulation));
             ga.elitism = std::min(ga.elitism, ga.population / 2);
@@ -59,7 +70,8 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, bool evol
                 action.text == "toggle" ? !state.heatmap.enabled : action.text == "on";
             return true;
         case Kind::Select:
-            state.selectedCandidate = int(action.first);
+            if (action.first >= 0 && std::size_t(action.first) < state.evolution.candidates.size())
+                state.selected = state.evolution.candidates[std::size_t(action.first)].genome;
             return true;
         case Kind::Undo:
             ui.undo();
@@ -70,11 +82,19 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, bool evol
         case Kind::Resize:
             effects.resize = {int(action.first), int(action.second)};
             return true;
+        case Kind::CheckLayout:
+            for (const std::string& problem : ui::findCutOffContent())
+                effects.error +=
+                    (effects.error.empty() ? "script line " + std::to_string(action.line) +
+                                                 ": check-layout: cut off: "
+                                           : "; ") +
+                    problem;
+            return true;
         case Kind::Screenshot:
             effects.screenshot = action.text;
             return true;
         case Kind::Save:
-            if (!ui.savePreset(action.text)) effects.error = state.statusMessage;
+            if (!ui.savePreset(action.text)) effects.error = state.status.latest().text;
             return true;
         case Kind::Quit:
             effects.quit = true;

@@ -28,6 +28,10 @@ public:
     bool waitingForEvolution() const {
         return !finished() && actions_[next_].kind == ScriptAction::Kind::WaitEvolution;
     }
+    // An `idle` action is under way: the app draws only what something else asks for, and
+    // polls idleOver() to resume the script.
+    bool idling() const { return idleUntil_.has_value(); }
+    bool idleOver() const { return idleUntil_ && std::chrono::steady_clock::now() >= *idleUntil_; }
     // Runs the actions due this frame; `evolutionSettled` says the GA run is done and shown.
     ScriptEffects step(ui::EditorUi& ui, bool evolutionSettled);
 
@@ -40,6 +44,7 @@ private:
     std::size_t next_ = 0;
     long long framesWaited_ = 0;
     std::optional<std::chrono::steady_clock::time_point> waitingSince_;
+    std::optional<std::chrono::steady_clock::time_point> idleUntil_;
 };
 
 }  // namespace matevo::editor

@@ -80,6 +80,19 @@ void readTextures(JsonReader reader, Preset& preset) {
     reader.warnAboutUnknownFields();
 }
 
+KeptMaterial readKept(JsonReader& reader) {
+    KeptMaterial kept;
+    kept.name = reader.string("name");
+    kept.family = readFamily(reader.object("family"));
+    if (auto problem = validateFamily(kept.family)) reader.fail("family", *problem);
+    JsonReader genome = reader.object("genome");
+    kept.genome = readGenome(genome);
+    genome.warnAboutUnknownFields();
+    if (auto problem = validateGenome(kept.genome, kept.family)) reader.fail("genome", *problem);
+    reader.warnAboutUnknownFields();
+    return kept;
+}
+
 Preset readPreset(JsonReader& root) {
     Preset preset;
     preset.name = root.string("name");
@@ -103,12 +116,20 @@ Preset readPreset(JsonReader& root) {
     }
     if (root.has("textures")) readTextures(root.object("textures"), preset);
     if (preset.family.texturedLayer != TexturedLayer::None && preset.roughnessTexture.empty())
-        root.fail("textures.roughness",
-                  "a family with a textured layer needs a roughness texture");
+        root.fail("textures.roughness", "a family with a textured layer needs a roughness texture");
     preset.ga = readGaSettings(root.object("ga"));
     if (root.has("scene")) preset.scene = readScene(root.object("scene"));
+    if (root.has("kept"))
+        for (JsonReader entry : root.objects("kept")) preset.kept.push_back(readKept(entry));
     root.warnAboutUnknownFields();
     return preset;
+}
+
+nlohmann::json familyToJson(const MaterialFamily& family) {
+    return {{"coat", toString(family.coat)},
+            {"base", toString(family.base)},
+            {"medium", family.hasMedium},
+            {"textured_layer", toString(family.texturedLayer)}};
 }
 
 }  // namespace
@@ -148,11 +169,7 @@ std::string serializePreset(const Preset& preset) {
     nlohmann::json json = {
         {"name", preset.name},
         {"description", preset.description},
-        {"family",
-         {{"coat", toString(preset.family.coat)},
-          {"base", toString(preset.family.base)},
-          {"medium", preset.family.hasMedium},
-          {"textured_layer", toString(preset.family.texturedLayer)}}},
+        {"family", familyToJson(preset.family)},
         {"target", genomeToJson(preset.target)},
         {"textures",
          {{"roughness", preset.roughnessTexture}, {"base_color", preset.baseColorTexture}}},
@@ -173,6 +190,14 @@ std::string serializePreset(const Preset& preset) {
           {"environment_radiance", preset.scene.environmentRadiance}}},
     };
     if (preset.family.base == Base::Conductor) json["base_kappa"] = preset.baseKappa;
+    if (!preset.kept.empty()) {
+        nlohmann::json kept = nlohmann::json::array();
+        for (const KeptMaterial& material : preset.kept)
+            kept.push_back({{"name", material.name},
+                            {"family", familyToJson(material.family)},
+                            {"genome", genomeToJson(material.genome)}});
+        json["kept"] = kept;
+    }
     return json.dump(2) + "\n";
 }
 
