@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "Suggestion.h"
+
 namespace matevo::cli {
 
 CommandLine::CommandLine(std::string command, std::vector<std::string> args)
@@ -16,6 +18,7 @@ bool CommandLine::wantsHelp() const {
 }
 
 bool CommandLine::flag(const std::string& name) {
+    known_.insert(name);
     bool found = false;
     for (std::size_t i = 0; i < args_.size(); ++i) {
         if (!used_[i] && args_[i] == name) {
@@ -23,16 +26,17 @@ bool CommandLine::flag(const std::string& name) {
             found = true;
         }
     }
+    if (found) given_.insert(name);
     return found;
 }
 
 std::optional<std::string> CommandLine::option(const std::string& name) {
+    known_.insert(name);
     std::optional<std::string> value;
     for (std::size_t i = 0; i < args_.size(); ++i) {
         if (used_[i]) continue;
         if (args_[i] == name) {
-            if (i + 1 >= args_.size())
-                throw UsageError(command_ + ": " + name + " needs a value");
+            if (i + 1 >= args_.size()) throw UsageError(name + " needs a value");
             used_[i] = used_[i + 1] = true;
             value = args_[i + 1];
             ++i;
@@ -41,6 +45,7 @@ std::optional<std::string> CommandLine::option(const std::string& name) {
             value = args_[i].substr(name.size() + 1);
         }
     }
+    if (value) given_.insert(name);
     return value;
 }
 
@@ -48,7 +53,7 @@ std::optional<long long> CommandLine::integerOption(const std::string& name, lon
                                                     long long max) {
     auto text = option(name);
     if (!text) return std::nullopt;
-    return parseInteger(*text, command_ + ": " + name, min, max);
+    return parseInteger(*text, name, min, max);
 }
 
 std::optional<std::uint64_t> CommandLine::unsignedOption(const std::string& name) {
@@ -57,9 +62,21 @@ std::optional<std::uint64_t> CommandLine::unsignedOption(const std::string& name
     std::uint64_t value = 0;
     auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), value);
     if (ec != std::errc() || end != text->data() + text->size())
-        throw UsageError(command_ + ": " + name + ": expected a non-negative integer, got '" +
-                         *text + "'");
+        throw UsageError(name + ": expected a non-negative integer, got '" + *text + "'");
     return value;
+}
+
+std::optional<double> CommandLine::numberOption(const std::string& name) {
+    auto text = option(name);
+    if (!text) return std::nullopt;
+    return parseNumber(*text, name);
+}
+
+bool CommandLine::given(const std::string& name) const { return given_.count(name) != 0; }
+
+void CommandLine::onlyWith(const std::string& option, const std::string& other) const {
+    if (given(option) && !given(other))
+        throw UsageError(option + " does nothing without " + other);
 }
 
 std::vector<std::string> CommandLine::positionals() {
@@ -73,10 +90,17 @@ std::vector<std::string> CommandLine::positionals() {
 }
 
 void CommandLine::finish() const {
-    for (std::size_t i = 0; i < args_.size(); ++i)
-        if (!used_[i])
-            throw UsageError(command_ + ": unexpected argument '" + args_[i] +
-                             "' (see matevo " + command_ + " --help)");
+    const std::string seeHelp = "; see matevo " + command_ + " --help";
+    for (std::size_t i = 0; i < args_.size(); ++i) {
+        if (used_[i]) continue;
+        const std::string& arg = args_[i];
+        if (arg.size() > 1 && arg[0] == '-') {
+            const std::string name = arg.substr(0, arg.find('='));
+            const std::vector<std::string> known(known_.begin(), known_.end());
+            throw UsageError("unknown option '" + name + "'" + didYouMean(name, known) + seeHelp);
+        }
+        throw UsageError("unexpected argument '" + arg + "'" + seeHelp);
+    }
 }
 
 long long parseInteger(const std::string& text, const std::string& what, long long min,

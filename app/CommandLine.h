@@ -1,8 +1,12 @@
 #pragma once
-// A small command-line reader shared by every subcommand. Bad usage and bad input throw
-// UsageError, which main() turns into a one-line message and exit status 2.
+// The command-line reader every subcommand uses. A command asks for its options by name
+// (flag, option, ...), then for its positionals, then calls finish(): whatever is left is an
+// unknown option (answered with the closest option it asked for) or a stray argument.
+// Bad usage and bad input throw UsageError; main() prints it in the one message format
+// ("matevo COMMAND: TEXT", Messages.h) and exits 2. TEXT does not repeat the command.
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,18 +30,29 @@ public:
     std::optional<std::string> option(const std::string& name);
     std::optional<long long> integerOption(const std::string& name, long long min, long long max);
     std::optional<std::uint64_t> unsignedOption(const std::string& name);
+    std::optional<double> numberOption(const std::string& name);
+
+    // True when an option already asked for was on the command line.
+    bool given(const std::string& name) const;
+    // Options that do nothing in a context are refused: throws "OPTION does nothing without
+    // OTHER" when OPTION was given and OTHER was not (ask for both first).
+    void onlyWith(const std::string& option, const std::string& other) const;
+
     // Remaining non-option arguments, in order; call after every option was consumed.
     std::vector<std::string> positionals();
-    // Throws if anything was left unconsumed (an unknown option, say).
+    // Throws if anything was left unconsumed: an unknown option (with "did you mean") or an
+    // unexpected argument.
     void finish() const;
 
 private:
     std::string command_;
     std::vector<std::string> args_;
     std::vector<bool> used_;
+    std::set<std::string> known_;  // every option the command asked for
+    std::set<std::string> given_;  // those that were present
 };
 
-// Parse helpers that throw UsageError naming what was being parsed.
+// Parse helpers that throw UsageError naming what was being parsed ("--size", "--range").
 long long parseInteger(const std::string& text, const std::string& what, long long min,
                        long long max);
 double parseNumber(const std::string& text, const std::string& what);

@@ -1,9 +1,10 @@
 #include "EvolveImages.h"
 
 #include <cstdio>
+#include <stdexcept>
 
 #include "CommandLine.h"
-#include "PopulationEvaluation.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "io/ImageFile.h"
 #include "scene/SceneTextures.h"
 
@@ -13,7 +14,7 @@ namespace {
 
 void writeOrThrow(const Image& image, const std::filesystem::path& file) {
     auto status = writeImage(image, file);
-    if (!status) throw UsageError("evolve: " + status.error().message);
+    if (!status) throw UsageError(status.error().message);
 }
 
 std::string rankedName(const char* prefix, std::size_t rank) {
@@ -38,22 +39,23 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
     for (const auto& individual : ranked)
         candidates.push_back({individual.genome, preset.family, preset.baseKappa});
 
-    const auto evaluation = evaluatePopulation(target, candidates, *textures, preset.scene, size,
-                                               HeatmapSettings{}, backend, "matevo evolve");
+    auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
+    auto evaluation = renderer->evaluate(target, candidates, preset.scene, size);
+    if (!evaluation) throw std::runtime_error(evaluation.error().message);
     std::error_code error;
     for (const char* folder : {"candidates", "heatmaps"}) {
         std::filesystem::create_directories(outDir / folder, error);
         if (error)
-            throw UsageError("evolve: --out: cannot create '" + (outDir / folder).string() +
+            throw UsageError("--out: cannot create '" + (outDir / folder).string() +
                              "' (" + error.message() + ")");
     }
-    writeOrThrow(evaluation.target, outDir / "target.png");
+    writeOrThrow(evaluation->target, outDir / "target.png");
     std::vector<DeltaEStats> stats;
     for (std::size_t rank = 0; rank < ranked.size(); ++rank) {
-        writeOrThrow(evaluation.candidates[rank],
+        writeOrThrow(evaluation->candidates[rank],
                      outDir / "candidates" / rankedName("candidate", rank));
-        writeOrThrow(evaluation.heatmaps[rank], outDir / "heatmaps" / rankedName("heatmap", rank));
-        stats.push_back(evaluation.deltaE[rank].stats);
+        writeOrThrow(evaluation->heatmaps[rank], outDir / "heatmaps" / rankedName("heatmap", rank));
+        stats.push_back(evaluation->deltaE[rank].stats);
     }
     return stats;
 }

@@ -1,68 +1,19 @@
 #include "ExperimentRenderer.h"
 
-#include <memory>
-#include <vector>
-
-#include "gpu/GpuContext.h"
-#include "gpu/GpuSphereRenderer.h"
-#include "material/FgdTableCache.h"
-#include "scene/SphereRenderer.h"
+#include "CommandLine.h"
+#include "gpu/PopulationRendererFactory.h"
 
 namespace matevo::cli {
-namespace {
-
-// Kept for the whole experiment, so the tables and textures are uploaded once. Held by pointer:
-// the renderer refers to the context's device.
-struct GpuSession {
-    std::optional<gpu::GpuContext> context;
-    std::optional<gpu::CommandRunner> runner;
-    std::optional<gpu::GpuSphereRenderer> renderer;
-};
-
-Result<std::shared_ptr<GpuSession>> openGpuSession(const SceneTextures& textures) {
-    auto session = std::make_shared<GpuSession>();
-    auto context = gpu::GpuContext::createHeadless();
-    if (!context) return context.error();
-    session->context.emplace(std::move(*context));
-    auto runner = gpu::CommandRunner::create(session->context->device);
-    if (!runner) return runner.error();
-    session->runner.emplace(std::move(*runner));
-    auto renderer = gpu::GpuSphereRenderer::create(session->context->device, *session->runner,
-                                                   defaultFgdTables(), textures);
-    if (!renderer) return renderer.error();
-    session->renderer.emplace(std::move(*renderer));
-    return session;
-}
-
-}  // namespace
 
 RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<int> imageSize,
                                      RenderBackend backend) {
     auto textures = loadSceneTextures(choice.preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
-    // Shared, not copied: the renderer is copied into std::function and the textures are large.
-    auto sharedTextures = std::make_shared<const SceneTextures>(std::move(*textures));
-    std::shared_ptr<GpuSession> gpuSession;
-    if (backend == RenderBackend::Gpu) {
-        auto session = openGpuSession(*sharedTextures);
-        if (session)
-            gpuSession = std::move(*session);
-        else
-            noticeCpuFallback("matevo experiment", session.error().message);
-    }
     const Preset& preset = choice.preset;
-    const int size = imageSize.value_or(preset.scene.imageSize);
-    return [sharedTextures, gpuSession, family = preset.family, kappa = preset.baseKappa,
-            scene = preset.scene, size](std::span<const Genome> genomes) {
-        std::vector<MaterialInstance> materials;
-        for (const Genome& genome : genomes) materials.push_back({genome, family, kappa});
-        if (gpuSession)
-            return gpuSession->renderer->render(*gpuSession->runner, materials, scene, size);
-        std::vector<Image> images;
-        for (const MaterialInstance& material : materials)
-            images.push_back(renderSphereCpu(material, *sharedTextures, scene, size));
-        return Result<std::vector<Image>>(std::move(images));
-    };
+    std::shared_ptr<PopulationRenderer> renderer =
+        gpu::createPopulationRenderer({backend, "matevo experiment"}, *textures);
+    return renderGenomesWith(std::move(renderer), preset.family, preset.baseKappa, preset.scene,
+                             imageSize.value_or(preset.scene.imageSize));
 }
 
 }  // namespace matevo::cli

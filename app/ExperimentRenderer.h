@@ -1,8 +1,7 @@
 #pragma once
 // The renderer `matevo experiment` injects into the core experiment: the preset's material
-// (family, kappa, textures, scene) bound, genomes in, sphere images out. On the GPU, one Vulkan
-// session serves every batch of the experiment; when no Vulkan device is usable it says so once
-// on stderr and renders on the CPU reference.
+// (family, kappa, textures, scene) bound, genomes in, sphere images out, on the chosen back end.
+// One renderer serves every batch of a preset, so tables and textures are uploaded once.
 #include <optional>
 
 #include "PresetOption.h"

@@ -1,24 +1,44 @@
 #include "PresetOption.h"
 
-#include <cstdio>
-
+#include "Messages.h"
+#include "Suggestion.h"
+#include "io/PresetCatalog.h"
 #include "io/ResourcePaths.h"
 
 namespace matevo::cli {
 
+std::filesystem::path resolvePreset(const std::string& pathOrName) {
+    if (looksLikePresetPath(pathOrName)) return pathOrName;
+    auto presets = listPresets();
+    if (!presets) throw UsageError(presets.error().message);
+    std::vector<std::string> names;
+    for (const PresetEntry& entry : *presets) {
+        if (entry.name == pathOrName) return entry.file;
+        names.push_back(entry.name);
+    }
+    std::string folders = userPresetDirectory().string();
+    if (auto shipped = findResourceDirectory("presets"))
+        folders += (folders.empty() ? "" : " or ") + shipped->string();
+    throw UsageError("no preset named '" + pathOrName + "' in " + folders +
+                     didYouMean(pathOrName, names) + "; matevo presets lists them");
+}
+
 PresetChoice loadPresetFile(const std::filesystem::path& file) {
     auto loaded = loadPreset(file);
     if (!loaded) throw UsageError(loaded.error().message);
-    for (const auto& warning : loaded->warnings)
-        std::fprintf(stderr, "matevo: warning: %s\n", warning.c_str());
+    for (const auto& warning : loaded->warnings) printWarning(warning);
     return {std::move(loaded->preset), file};
 }
 
-PresetChoice loadPresetOption(CommandLine& args) {
-    if (auto file = args.option("--preset")) return loadPresetFile(*file);
+PresetChoice loadDefaultPreset() {
     auto defaultFile = defaultPresetPath();
-    if (!defaultFile) throw std::runtime_error(defaultFile.error().message);
+    if (!defaultFile) throw UsageError(defaultFile.error().message);
     return loadPresetFile(*defaultFile);
+}
+
+PresetChoice loadPresetOption(CommandLine& args) {
+    if (auto preset = args.option("--preset")) return loadPresetFile(resolvePreset(*preset));
+    return loadDefaultPreset();
 }
 
 }  // namespace matevo::cli

@@ -1,13 +1,19 @@
-// matevo: evolve variants of a layered material. Dispatches to one subcommand; maps failures to
-// the exit statuses of the command-line contract (0 ok, 2 bad usage or input, 1 internal).
+// matevo: evolve variants of a layered material. Dispatches to one subcommand and maps failures
+// to the documented exit statuses (Messages.h): 0 ok, 1 internal failure, 2 bad usage or input,
+// 3 compare --fail-above exceeded. Every message has the form "matevo COMMAND: TEXT".
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 #include "CommandLine.h"
+#include "Messages.h"
+#include "Suggestion.h"
 #include "commands/Commands.h"
+#include "io/PresetCatalog.h"
 
 namespace {
 
@@ -19,12 +25,14 @@ struct Subcommand {
     std::string_view summary;
 };
 
+// One line per subcommand; `matevo --help` lists them in this order.
 constexpr Subcommand kSubcommands[] = {
     {"edit", runEdit, "open the editor (default; PRESET defaults to validation metal)"},
     {"evolve", runEvolve, "run the genetic algorithm on a preset's target material"},
     {"render", runRender, "render one material on the test sphere to PNG or EXR"},
     {"compare", runCompare, "per-pixel CIEDE2000 between two images"},
     {"experiment", runExperiment, "the paper's section 5 experiment: metrics x runs"},
+    {"presets", runPresets, "list the presets --preset NAME accepts (shipped and your own)"},
     {"bench", runBench, "measure the GA, CIEDE2000 and renderers; medians"},
 };
 
@@ -32,7 +40,8 @@ void printHelp() {
     std::printf(
         "matevo - evolve many variants of a layered material (Belcour 2018 BSDF, genetic\n"
         "algorithm of Bernardi et al. 2020).\n\n"
-        "usage: matevo [COMMAND] [ARGS...]\n\n"
+        "usage: matevo [COMMAND] [ARGS...]\n"
+        "       matevo --version | --help | help COMMAND\n\n"
         "commands:\n");
     for (const auto& sub : kSubcommands)
         std::printf("  %-11.*s %.*s\n", int(sub.name.size()), sub.name.data(),
@@ -40,35 +49,68 @@ void printHelp() {
     std::printf(
         "\n'matevo COMMAND --help' describes a command. With no command, or with a preset file\n"
         "as the only argument, matevo opens the editor.\n"
-        "exit status: 0 success, 2 bad usage or input, 1 internal failure.\n");
+        "messages: 'matevo COMMAND: TEXT' on stderr, one line each.\n"
+        "exit status: 0 success, 1 internal failure, 2 bad usage or input,\n"
+        "             3 compare --fail-above: the difference is above the threshold.\n");
+}
+
+const Subcommand* findSubcommand(std::string_view name) {
+    for (const auto& sub : kSubcommands)
+        if (sub.name == name) return &sub;
+    return nullptr;
+}
+
+[[noreturn]] void unknownCommand(const std::string& word) {
+    std::vector<std::string> names;
+    for (const auto& sub : kSubcommands) names.emplace_back(sub.name);
+    throw UsageError("unknown command '" + word + "'" + didYouMean(word, names) +
+                     "; see matevo --help");
+}
+
+// A first argument that is not a command opens the editor when it is an option or names a
+// preset file; anything else is a mistyped command, not a preset.
+bool opensEditor(const std::string& first) {
+    std::error_code error;
+    return first.rfind('-', 0) == 0 || matevo::looksLikePresetPath(first) ||
+           std::filesystem::is_regular_file(first, error);
+}
+
+int dispatch(std::vector<std::string> args) {
+    if (!args.empty() && args[0] == "--version") {
+        std::printf("matevo %s\n", MATEVO_VERSION);
+        return exitCode(ExitStatus::Success);
+    }
+    if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
+        if (args.size() == 1 || args[0] != "help") {
+            printHelp();
+            return exitCode(ExitStatus::Success);
+        }
+        args = {args[1], "--help"};  // "matevo help COMMAND"
+    }
+    const Subcommand* chosen = findSubcommand("edit");
+    if (!args.empty()) {
+        if (const Subcommand* named = findSubcommand(args[0])) {
+            chosen = named;
+            args.erase(args.begin());
+        } else if (!opensEditor(args[0])) {
+            unknownCommand(args[0]);
+        }
+    }
+    setMessageCommand(chosen->name);
+    CommandLine commandLine(std::string(chosen->name), std::move(args));
+    return chosen->run(commandLine);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::vector<std::string> args(argv + 1, argv + argc);
-    if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
-        printHelp();
-        return 0;
-    }
-    const Subcommand* chosen = &kSubcommands[0];  // editor by default
-    if (!args.empty()) {
-        for (const auto& sub : kSubcommands) {
-            if (args[0] == sub.name) {
-                chosen = &sub;
-                args.erase(args.begin());
-                break;
-            }
-        }
-    }
     try {
-        CommandLine commandLine(std::string(chosen->name), std::move(args));
-        return chosen->run(commandLine);
+        return dispatch(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const UsageError& error) {
-        std::fprintf(stderr, "matevo: %s\n", error.what());
-        return 2;
+        printMessage(error.what());
+        return exitCode(ExitStatus::BadUsage);
     } catch (const std::exception& error) {
-        std::fprintf(stderr, "matevo: internal error: %s\n", error.what());
-        return 1;
+        printMessage(std::string("internal error: ") + error.what());
+        return exitCode(ExitStatus::InternalFailure);
     }
 }

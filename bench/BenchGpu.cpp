@@ -1,16 +1,14 @@
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "BenchReport.h"
 #include "Timing.h"
-#include "color/Colormap.h"
-#include "color/ImageDifference.h"
 #include "evolve/GenomeSampling.h"
-#include "gpu/GpuContext.h"
-#include "gpu/GpuPopulationEvaluator.h"
+#include "gpu/GpuPopulationRenderer.h"
 #include "gpu/HeatmapColormap.h"
 #include "material/FgdTableCache.h"
-#include "scene/SphereRenderer.h"
+#include "render/CpuPopulationRenderer.h"
 
 namespace matevo::bench {
 namespace {
@@ -35,52 +33,41 @@ Grid makeGrid() {
     return grid;
 }
 
-// The same work on the CPU: render everything, ΔE00 of each candidate against the target, and
-// the heatmap colouring.
-double cpuGridMilliseconds(const Grid& grid) {
-    const SceneTextures textures;
-    const SceneSettings scene;
-    return medianMilliseconds(3, [&] {
-        const Image target = renderSphereCpu(grid.target, textures, scene, kImageSize);
-        for (const MaterialInstance& candidate : grid.candidates) {
-            const Image image = renderSphereCpu(candidate, textures, scene, kImageSize);
-            auto map = compareImages(target, image);
-            const Image heatmap = heatmapImage(*map, HeatmapSettings{});
-        }
-    });
+// Median of the grid's evaluation (render + ΔE00 + heatmaps + read-back) after one warm-up
+// call (lavapipe compiles the shaders on first use); nullopt when an evaluation failed.
+std::optional<double> gridMilliseconds(PopulationRenderer& renderer, const Grid& grid,
+                                       int repetitions) {
+    bool failed = false;
+    auto evaluateGrid = [&] {
+        failed |= !renderer.evaluate(grid.target, grid.candidates, SceneSettings{}, kImageSize)
+                       .ok();
+    };
+    evaluateGrid();
+    const double milliseconds = medianMilliseconds(repetitions, evaluateGrid);
+    if (failed) return std::nullopt;
+    return milliseconds;
 }
 
 }  // namespace
 
 void benchGpuGrid(BenchReport& report) {
     const Grid grid = makeGrid();
-    const auto colormap = gpu::heatmapColormap();
     (void)defaultFgdTables();  // table generation or loading is not part of the figure
-    auto context = gpu::GpuContext::createHeadless();
-    if (!context) {
+    auto gpuRenderer = gpu::GpuPopulationRenderer::createHeadless({}, defaultFgdTables(),
+                                                                  SceneTextures{},
+                                                                  gpu::heatmapColormap());
+    if (!gpuRenderer) {
         std::fprintf(stderr, "matevo bench: no usable Vulkan device (%s); gpu_grid64_ms skipped\n",
-                     context.error().message.c_str());
-    } else {
-        auto evaluator = gpu::GpuPopulationEvaluator::create(context->device, defaultFgdTables(),
-                                                             SceneTextures{}, colormap);
-        if (!evaluator) {
-            std::fprintf(stderr, "matevo bench: %s\n", evaluator.error().message.c_str());
-        } else {
-            bool failed = false;
-            auto evaluateGrid = [&] {
-                failed |= !evaluator->evaluate(grid.target, grid.candidates, SceneSettings{},
-                                               kImageSize).ok();
-            };
-            evaluateGrid();  // lavapipe compiles the shaders on first use
-            const double milliseconds = medianMilliseconds(kRepetitions, evaluateGrid);
-            if (!failed)
-                report.push_back({"gpu_grid64_ms", milliseconds,
-                                  "64 candidates at 128^2 on " + context->device.name() +
-                                      ": render + ΔE00 + heatmaps + read-back"});
-        }
+                     gpuRenderer.error().message.c_str());
+    } else if (auto milliseconds = gridMilliseconds(**gpuRenderer, grid, kRepetitions)) {
+        report.push_back({"gpu_grid64_ms", *milliseconds,
+                          "64 candidates at 128^2 on " + (*gpuRenderer)->name() +
+                              ": render + ΔE00 + heatmaps + read-back"});
     }
-    report.push_back({"cpu_grid64_ms", cpuGridMilliseconds(grid),
-                      "the same grid on the CPU reference renderer and core/color"});
+    CpuPopulationRenderer cpuRenderer{SceneTextures{}};
+    if (auto milliseconds = gridMilliseconds(cpuRenderer, grid, 3))
+        report.push_back({"cpu_grid64_ms", *milliseconds,
+                          "the same grid on the CPU reference renderer and core/color"});
 }
 
 }  // namespace matevo::bench

@@ -13,6 +13,8 @@ void drawTargetPanel(const EditorState& state) {
     const std::string family = describe(preset.family);
     sameLineIfFits(ImGui::CalcTextSize(family.c_str()).x);
     mutedText(family);
+    // The scene decides what the target and every tile look like (and so the distances).
+    mutedText("scene: " + std::string(describe(preset.scene.mode)));
     drawImageFitted(state.evolution.targetImage);
 }
 

@@ -9,6 +9,7 @@ int runEvolve(CommandLine& args);
 int runRender(CommandLine& args);
 int runCompare(CommandLine& args);
 int runExperiment(CommandLine& args);
+int runPresets(CommandLine& args);
 int runBench(CommandLine& args);
 
 }  // namespace matevo::cli

@@ -6,7 +6,6 @@
 #include "RenderBackend.h"
 #include "commands/Commands.h"
 #include "editor/EditorApp.h"
-#include "io/ResourcePaths.h"
 
 namespace matevo::cli {
 namespace {
@@ -14,10 +13,10 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo [edit] [PRESET] [--script FILE] [--frames N] [--size WxH]\n"
     "                     [--backend gpu|cpu] [--validate] [--report-timings]\n\n"
-    "Opens the editor on PRESET (default: presets/validation_metal.json beside the\n"
-    "executable): the target sphere, a live grid of GA candidates with a CIEDE2000 heatmap,\n"
-    "the GA controls and per-generation fitness. Needs a display; without one it says so and\n"
-    "exits 2 (use evolve, render, compare or experiment instead).\n\n"
+    "Opens the editor on PRESET, a file or a name from matevo presets (default:\n"
+    "validation_metal): the target sphere, a live grid of GA candidates with a CIEDE2000\n"
+    "heatmap, the GA controls and per-generation fitness. Needs a display; without one it says\n"
+    "so and exits 2 (use evolve, render, compare or experiment instead).\n\n"
     "keys: Ctrl+O open, Ctrl+S save, Ctrl+Shift+S save as, Ctrl+Z undo, Ctrl+Y or\n"
     "      Ctrl+Shift+Z redo, F12 PNG snapshot of the window (matevo-snapshot-NNN.png),\n"
     "      Ctrl+Q quit; dropping a preset on the window opens it. Anything that would\n"
@@ -31,8 +30,8 @@ constexpr const char* kHelp =
     "                     check-layout, screenshot PATH, save PATH, quit\n"
     "  --frames N         quit after N frames\n"
     "  --size WxH         initial window size (default 1280x800)\n"
-    "  --backend gpu|cpu  where candidate tiles render (default gpu; the CPU reference\n"
-    "                     renderer when no Vulkan device is usable)\n"
+    "  --backend gpu|cpu  where candidate tiles and Compare metrics render (default gpu;\n"
+    "                     the CPU reference renderer when no Vulkan device is usable)\n"
     "  --validate         enable VK_LAYER_KHRONOS_validation; any message makes the exit\n"
     "                     status 1\n"
     "  --report-timings   print median frame times (idle, while evolving) and the time from\n"
@@ -41,7 +40,7 @@ constexpr const char* kHelp =
 
 std::string readScript(const std::string& file) {
     std::ifstream in(file);
-    if (!in) throw UsageError("edit: --script: cannot read '" + file + "'");
+    if (!in) throw UsageError("--script: cannot read '" + file + "'");
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
@@ -49,9 +48,9 @@ std::string readScript(const std::string& file) {
 
 void parseSize(const std::string& text, editor::EditorOptions& options) {
     const auto x = text.find('x');
-    if (x == std::string::npos) throw UsageError("edit: --size: expected WxH, got '" + text + "'");
-    options.width = int(parseInteger(text.substr(0, x), "edit: --size width", 320, 16384));
-    options.height = int(parseInteger(text.substr(x + 1), "edit: --size height", 240, 16384));
+    if (x == std::string::npos) throw UsageError("--size: expected WxH, got '" + text + "'");
+    options.width = int(parseInteger(text.substr(0, x), "--size width", 320, 16384));
+    options.height = int(parseInteger(text.substr(x + 1), "--size height", 240, 16384));
 }
 
 }  // namespace
@@ -64,28 +63,22 @@ int runEdit(CommandLine& args) {
     editor::EditorOptions options;
     if (auto file = args.option("--script")) {
         auto script = editor::parseEditorScript(readScript(*file), *file);
-        if (!script) throw UsageError("edit: --script: " + script.error().message);
+        if (!script) throw UsageError("--script: " + script.error().message);
         options.script = std::move(*script);
     }
     if (auto frames = args.integerOption("--frames", 1, 100000000))
         options.maxFrames = int(*frames);
     if (auto size = args.option("--size")) parseSize(*size, options);
     if (auto backend = args.option("--backend"))
-        options.gpuTiles = parseRenderBackend(*backend, "edit: --backend") == RenderBackend::Gpu;
+        options.backend = parseRenderBackend(*backend, "--backend");
     options.validation = args.flag("--validate");
     options.reportTimings = args.flag("--report-timings");
     const auto positionals = args.positionals();
-    if (positionals.size() > 1) throw UsageError("edit: expected at most one PRESET");
+    if (positionals.size() > 1) throw UsageError("expected at most one PRESET");
     args.finish();
 
-    PresetChoice choice;
-    if (positionals.empty()) {
-        auto defaultFile = defaultPresetPath();
-        if (!defaultFile) throw std::runtime_error(defaultFile.error().message);
-        choice = loadPresetFile(*defaultFile);
-    } else {
-        choice = loadPresetFile(positionals.front());
-    }
+    PresetChoice choice = positionals.empty() ? loadDefaultPreset()
+                                              : loadPresetFile(resolvePreset(positionals.front()));
     options.preset = std::move(choice.preset);
     options.presetFile = std::move(choice.file);
     return editor::runEditor(options);

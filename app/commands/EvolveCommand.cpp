@@ -7,6 +7,7 @@
 
 #include "EvolveImages.h"
 #include "EvolveReport.h"
+#include "Messages.h"
 #include "PresetOption.h"
 #include "commands/Commands.h"
 #include "evolve/GeneticAlgorithm.h"
@@ -22,7 +23,8 @@ constexpr const char* kHelp =
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
     "                     [--size N] [--backend gpu|cpu]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
-    "(default: presets/validation_metal.json). Options override the preset's GA settings.\n"
+    "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
+    "override the preset's GA settings.\n"
     "  --weights      12 per-chromosome weights, in the order eta1 eta2 alpha1 alpha2 depth\n"
     "                 sigma_s(r,g,b) sigma_a(r,g,b) g\n"
     "  --normalize    divide each chromosome's difference by its family range\n"
@@ -33,7 +35,8 @@ constexpr const char* kHelp =
     "                 (per-pixel CIEDE2000 against the target, 0-10 through viridis); adds each\n"
     "                 candidate's mean_de00 (and max, p95) to the JSON\n"
     "  --size N       image side in pixels for --out (default: the preset's scene size)\n"
-    "  --backend B    gpu (default; falls back to the CPU when no Vulkan device is usable) or cpu\n"
+    "  --backend B    renderer for --out: gpu (default; falls back to the CPU when no Vulkan\n"
+    "                 device is usable) or cpu\n"
     "Progress goes to stderr.\n";
 
 GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
@@ -44,18 +47,18 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     if (auto metric = args.option("--metric")) {
         auto parsed = parseDistanceMetric(*metric);
         if (!parsed)
-            throw UsageError("evolve: --metric: unknown metric '" + *metric +
+            throw UsageError("--metric: unknown metric '" + *metric +
                              "' (expected chebyshev, euclidean or manhattan)");
         ga.metric = *parsed;
     }
     if (auto weights = args.option("--weights")) {
-        auto values = parseNumberList(*weights, "evolve: --weights");
+        auto values = parseNumberList(*weights, "--weights");
         if (values.size() != kChromosomeCount)
-            throw UsageError("evolve: --weights: expected 12 comma-separated numbers, got " +
+            throw UsageError("--weights: expected 12 comma-separated numbers, got " +
                              std::to_string(values.size()));
         for (std::size_t i = 0; i < kChromosomeCount; ++i) {
             if (values[i] < 0)
-                throw UsageError("evolve: --weights: weight of " +
+                throw UsageError("--weights: weight of " +
                                  std::string(chromosomeName(i)) + " must not be negative");
             ga.weights[i] = values[i];
         }
@@ -64,7 +67,7 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     if (auto elitism = args.integerOption("--elitism", 0, kMaxPopulation))
         ga.elitism = int(*elitism);
     if (ga.elitism >= ga.population)
-        throw UsageError("evolve: --elitism must be smaller than the population (" +
+        throw UsageError("--elitism must be smaller than the population (" +
                          std::to_string(ga.population) + ")");
     if (auto seed = args.unsignedOption("--seed")) ga.seed = *seed;
     return ga;
@@ -84,7 +87,10 @@ int runEvolve(CommandLine& args) {
     const int imageSize = int(
         args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
     const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "evolve: --backend");
+        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    // Images are rendered only for --out.
+    args.onlyWith("--size", "--out");
+    args.onlyWith("--backend", "--out");
     args.finish();
 
     const Preset& preset = choice.preset;
@@ -94,8 +100,8 @@ int runEvolve(CommandLine& args) {
     while (!ga.finished()) {
         ga.step();
         if (showProgress)
-            std::fprintf(stderr, "\rmatevo evolve: generation %d/%d", ga.generation(),
-                         preset.ga.generations);
+            std::fprintf(stderr, "\r%sgeneration %d/%d", messagePrefix().c_str(),
+                         ga.generation(), preset.ga.generations);
     }
     if (showProgress) std::fputc('\n', stderr);
 
@@ -105,13 +111,13 @@ int runEvolve(CommandLine& args) {
         std::error_code error;
         std::filesystem::create_directories(*outDir, error);
         if (error)
-            throw UsageError("evolve: --out: cannot create folder '" + *outDir + "' (" +
+            throw UsageError("--out: cannot create folder '" + *outDir + "' (" +
                              error.message() + ")");
         addImageStatistics(
             report, writeEvolveImages(choice, ranked, imageSize, backend, *outDir));
         auto file = std::filesystem::path(*outDir) / "result.json";
         auto status = writeFileAtomically(file, report.dump(2) + "\n");
-        if (!status) throw UsageError("evolve: " + status.error().message);
+        if (!status) throw UsageError(status.error().message);
     }
     if (asJson)
         std::printf("%s\n", report.dump(2).c_str());

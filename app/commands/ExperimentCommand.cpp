@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ExperimentRenderer.h"
+#include "Messages.h"
 #include "PresetOption.h"
 #include "ProgressBar.h"
 #include "commands/Commands.h"
@@ -24,12 +25,14 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo experiment [--preset P | --all] [--runs N] [--population N]\n"
     "                         [--generations N] [--sweep] [--metric M|all] [--seed S]\n"
-    "                         [--runs-per-seed N] [--size N] [--backend gpu|cpu] [--out DIR]\n\n"
+    "                         [--runs-per-seed N] [--size N] [--scene paper|ambient]\n"
+    "                         [--backend gpu|cpu] [--out DIR]\n\n"
     "The experiment of Bernardi et al. (2020) section 5: for the target material and each\n"
     "distance metric, N GA runs (default 36) at a population and generation count (default 50\n"
     "and 5); the best individual of each run is rendered and scored by its mean CIEDE2000\n"
     "against the target's render.\n"
-    "  --preset P         target preset (default presets/validation_metal.json)\n"
+    "  --preset P         target preset, a file or a name from matevo presets\n"
+    "                     (default validation_metal)\n"
     "  --all              the three validation presets (metal, painted metal, metal depth)\n"
     "  --sweep            the paper's sizes instead of --population/--generations: (50,5),\n"
     "                     (100,10), (300,20), and (500,50) for a material with a medium\n"
@@ -39,6 +42,9 @@ constexpr const char* kHelp =
     "                     (k+1)-th SplitMix64 draw of its block seed as its GA seed (the CSV's\n"
     "                     seed column; replay one run with matevo evolve --seed)\n"
     "  --size N           render size in pixels (default: the preset's scene, 256)\n"
+    "  --scene M          paper (default): the paper's scene, one light and no ambient\n"
+    "                     term, whatever mode the preset names; ambient: the light plus the\n"
+    "                     preset's uniform environment\n"
     "  --backend B        gpu (default): Vulkan, one batch per 64 runs; with no usable\n"
     "                     Vulkan device it says so on stderr and renders on the CPU.\n"
     "                     cpu: the CPU reference renderer\n"
@@ -57,7 +63,7 @@ std::vector<DistanceMetric> parseMetrics(const std::optional<std::string>& text)
         return {DistanceMetric::Chebyshev, DistanceMetric::Euclidean, DistanceMetric::Manhattan};
     auto metric = parseDistanceMetric(*text);
     if (!metric)
-        throw UsageError("experiment: --metric: unknown metric '" + *text +
+        throw UsageError("--metric: unknown metric '" + *text +
                          "' (expected chebyshev, euclidean, manhattan or all)");
     return {*metric};
 }
@@ -65,9 +71,9 @@ std::vector<DistanceMetric> parseMetrics(const std::optional<std::string>& text)
 std::vector<PresetChoice> choosePresets(CommandLine& args) {
     if (!args.flag("--all")) return {loadPresetOption(args)};
     if (args.option("--preset"))
-        throw UsageError("experiment: --preset and --all exclude each other");
+        throw UsageError("--preset and --all exclude each other");
     auto folder = findResourceDirectory("presets");
-    if (!folder) throw std::runtime_error(folder.error().message);
+    if (!folder) throw UsageError(folder.error().message);
     std::vector<PresetChoice> presets;
     for (const char* file : kValidationPresets) presets.push_back(loadPresetFile(*folder / file));
     return presets;
@@ -78,6 +84,7 @@ struct Request {
     ExperimentSettings settings;
     bool sweep = false;
     std::optional<int> imageSize;
+    SceneMode sceneMode = SceneMode::Paper;
     RenderBackend backend = RenderBackend::Gpu;
     std::filesystem::path outDir = "experiment-results";
 };
@@ -91,7 +98,7 @@ Request parseRequest(CommandLine& args) {
     const auto generations = args.integerOption("--generations", 0, kMaxGenerations);
     if (request.sweep && (population || generations))
         throw UsageError(
-            "experiment: --sweep sets the population and generations itself; "
+            "--sweep sets the population and generations itself; "
             "leave out --population and --generations");
     if (population) settings.size.population = int(*population);
     if (generations) settings.size.generations = int(*generations);
@@ -101,8 +108,17 @@ Request parseRequest(CommandLine& args) {
     settings.metrics = parseMetrics(args.option("--metric"));
     if (auto seed = args.unsignedOption("--seed")) settings.seed = *seed;
     if (auto size = args.integerOption("--size", 8, 4096)) request.imageSize = int(*size);
+    if (auto text = args.option("--scene")) {
+        auto mode = parseSceneMode(*text);
+        if (!mode)
+            throw UsageError("--scene: unknown mode '" + *text +
+                             "' (expected paper or ambient)");
+        request.sceneMode = *mode;
+    }
+    // The §5 protocol is defined in its own scene: the option, not the preset, decides.
+    for (auto& choice : request.presets) choice.preset.scene.mode = request.sceneMode;
     if (auto backend = args.option("--backend"))
-        request.backend = parseRenderBackend(*backend, "experiment: --backend");
+        request.backend = parseRenderBackend(*backend, "--backend");
     if (auto out = args.option("--out")) request.outDir = *out;
     args.finish();
     return request;
@@ -125,8 +141,9 @@ std::string sizeLabel(const GaSize& size) {
     return label;
 }
 
+// A file that cannot be written is the output folder's fault: bad input, exit 2.
 void writeOrThrow(const Status& status) {
-    if (!status) throw std::runtime_error(status.error().message);
+    if (!status) throw UsageError(status.error().message);
 }
 
 // One chart per metric for one preset and size, sharing their axes.
@@ -174,7 +191,7 @@ int runExperiment(CommandLine& args) {
     std::error_code error;
     std::filesystem::create_directories(request.outDir, error);
     if (error)
-        throw UsageError("experiment: --out: cannot create folder '" + request.outDir.string() +
+        throw UsageError("--out: cannot create folder '" + request.outDir.string() +
                          "' (" + error.message() + ")");
 
     const auto started = std::chrono::steady_clock::now();
@@ -211,8 +228,10 @@ int runExperiment(CommandLine& args) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
     printSummaries(allRecords, stdout);
-    std::fprintf(stderr, "matevo experiment: %zu runs in %.1f s; results in %s\n",
-                 allRecords.size(), seconds, request.outDir.string().c_str());
+    char done[64];
+    std::snprintf(done, sizeof done, "%zu runs in %.1f s in the ", allRecords.size(), seconds);
+    printMessage(done + std::string(describe(request.sceneMode)) + " scene; results in " +
+                 request.outDir.string());
     return 0;
 }
 

@@ -5,6 +5,7 @@
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "io/GenomeJson.h"
 #include "io/ImageFile.h"
 
@@ -14,10 +15,10 @@ namespace {
 
 std::filesystem::path outputPath(CommandLine& args) {
     const auto out = args.option("--out");
-    if (!out) throw UsageError("render: --out FILE.png|FILE.exr is required");
+    if (!out) throw UsageError("--out FILE.png|FILE.exr is required");
     const std::string extension = std::filesystem::path(*out).extension().string();
     if (extension != ".png" && extension != ".exr")
-        throw UsageError("render: --out: " + *out + ": the extension must be .png or .exr");
+        throw UsageError("--out: " + *out + ": the extension must be .png or .exr");
     return *out;
 }
 
@@ -34,7 +35,7 @@ int runRender(CommandLine& args) {
             "EXR linear float. --size is the image side in pixels (default: the preset's).\n"
             "--backend gpu (default) renders with Vulkan; with no usable Vulkan device it says\n"
             "so on stderr and renders on the CPU. --backend cpu is the reference renderer.\n"
-            "The default preset is presets/validation_metal.json beside the executable.\n");
+            "--preset is a file or a name from matevo presets (default validation_metal).\n");
         return 0;
     }
     const PresetChoice choice = loadPresetOption(args);
@@ -42,7 +43,7 @@ int runRender(CommandLine& args) {
     const long long size =
         args.integerOption("--size", 1, 8192).value_or(choice.preset.scene.imageSize);
     const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "render: --backend");
+        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const std::filesystem::path out = outputPath(args);
     args.finish();
 
@@ -55,13 +56,11 @@ int runRender(CommandLine& args) {
     auto textures = loadSceneTextures(choice.preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
 
-    const Image image = renderMaterials(std::span(&material, 1), *textures, choice.preset.scene,
-                                        int(size), backend, "matevo render")
-                            .front();
-    if (auto written = writeImage(image, out); !written) {
-        std::fprintf(stderr, "matevo render: %s\n", written.error().message.c_str());
-        return 1;
-    }
+    auto renderer = gpu::createPopulationRenderer({backend, "matevo render"}, *textures);
+    auto images = renderer->render(std::span(&material, 1), choice.preset.scene, int(size));
+    if (!images) throw std::runtime_error(images.error().message);
+    if (auto written = writeImage(images->front(), out); !written)
+        throw UsageError("--out: " + written.error().message);
     return 0;
 }
 

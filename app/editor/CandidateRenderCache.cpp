@@ -2,45 +2,14 @@
 
 #include <algorithm>
 
-#include "color/Colormap.h"
-#include "material/FgdTableCache.h"
-#include "scene/SphereRenderer.h"
-
 namespace matevo::editor {
-namespace {
-
-// The GPU pass also colours heatmaps; the editor re-colours from the ΔE00 maps when the range
-// changes, so it only needs the same colour map as core/color.
-gpu::DeltaE00Pass::Colormap viridis() {
-    gpu::DeltaE00Pass::Colormap colormap{};
-    for (std::size_t i = 0; i < colormap.size(); ++i) {
-        const auto rgb = colormapLinear(double(i) / double(colormap.size() - 1));
-        colormap[i] = {rgb[0], rgb[1], rgb[2], 1.0f};
-    }
-    return colormap;
-}
-
-}  // namespace
 
 CandidateRenderCache::CandidateRenderCache(int tileSize, int targetSize, std::size_t capacity,
-                                           bool useGpu, bool validation)
-    : tileSize_(tileSize), targetSize_(targetSize), capacity_(capacity) {
-    if (!useGpu) return;
-    auto context = gpu::GpuContext::createHeadless({validation, true});
-    if (context) gpu_ = std::make_unique<gpu::GpuContext>(std::move(*context));
-}
-
-CandidateRenderCache::~CandidateRenderCache() = default;
-
-std::string CandidateRenderCache::backendName() const {
-    return evaluator_ ? "GPU (" + gpu_->device.name() + ")" : "CPU";
-}
-
-int CandidateRenderCache::validationMessages() const {
-    if (!gpu_) return 0;
-    const gpu::ValidationLog& log = gpu_->instance.validationLog();
-    return log.errorCount() + log.warningCount();
-}
+                                           gpu::RendererRequest request)
+    : tileSize_(tileSize),
+      targetSize_(targetSize),
+      capacity_(capacity),
+      request_(std::move(request)) {}
 
 bool CandidateRenderCache::drawsTheSame(const Preset& preset,
                                         const std::filesystem::path& presetFile) const {
@@ -50,12 +19,8 @@ bool CandidateRenderCache::drawsTheSame(const Preset& preset,
            preset.baseColorTexture == preset_->baseColorTexture;
 }
 
-void CandidateRenderCache::createGpuEvaluator() {
-    evaluator_.reset();
-    if (!gpu_) return;
-    auto evaluator =
-        gpu::GpuPopulationEvaluator::create(gpu_->device, defaultFgdTables(), textures_, viridis());
-    if (evaluator) evaluator_.emplace(std::move(*evaluator));
+MaterialInstance CandidateRenderCache::material(const Genome& genome) const {
+    return {genome, preset_->family, preset_->baseKappa};
 }
 
 Status CandidateRenderCache::prepare(const Preset& preset,
@@ -63,24 +28,19 @@ Status CandidateRenderCache::prepare(const Preset& preset,
     if (drawsTheSame(preset, presetFile)) return Ok{};
     auto textures = loadSceneTextures(preset, presetFile);
     if (!textures) return textures.error();
+    if (!renderer_)
+        renderer_ = gpu::createPopulationRenderer(request_, *textures);
+    else if (auto set = renderer_->setTextures(*textures); !set)
+        return set.error();
+    entries_.clear();
+    preset_.reset();  // nothing is cached for a half-prepared preset
+    const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
+    auto large = renderer_->render(std::span(&target, 1), preset.scene, targetSize_);
+    if (!large) return large.error();
+    target_ = std::move(large->front());
     preset_ = preset;
     presetFile_ = presetFile;
-    textures_ = std::move(*textures);
-    entries_.clear();
-    createGpuEvaluator();
-    target_ = renderOne(preset.target, targetSize_);
-    targetTile_ = renderOne(preset.target, tileSize_);
     return Ok{};
-}
-
-Image CandidateRenderCache::renderOne(const Genome& genome, int size) {
-    const MaterialInstance material{genome, preset_->family, preset_->baseKappa};
-    if (evaluator_) {
-        auto images = evaluator_->render(std::span(&material, 1), preset_->scene, size);
-        if (images) return std::move(images->front());
-        evaluator_.reset();  // the device failed: the CPU draws from now on
-    }
-    return renderSphereCpu(material, textures_, preset_->scene, size);
 }
 
 CandidateRenderCache::Entry* CandidateRenderCache::find(const Genome& genome) {
@@ -89,33 +49,20 @@ CandidateRenderCache::Entry* CandidateRenderCache::find(const Genome& genome) {
     return nullptr;
 }
 
-bool CandidateRenderCache::drawOnGpu(const std::vector<Genome>& genomes) {
-    const MaterialInstance target{preset_->target, preset_->family, preset_->baseKappa};
+Status CandidateRenderCache::draw(const std::vector<Genome>& genomes) {
     std::vector<MaterialInstance> materials;
-    for (const Genome& genome : genomes)
-        materials.push_back({genome, preset_->family, preset_->baseKappa});
-    auto evaluation = evaluator_->evaluate(target, materials, preset_->scene, tileSize_);
-    if (!evaluation) {
-        evaluator_.reset();
-        return false;
-    }
+    for (const Genome& genome : genomes) materials.push_back(material(genome));
+    EvaluationOptions options;
+    options.heatmaps = false;  // the editor colours the ΔE00 maps itself, in the user's range
+    auto evaluation = renderer_->evaluate(material(preset_->target), materials, preset_->scene,
+                                          tileSize_, options);
+    if (!evaluation) return evaluation.error();
     for (std::size_t i = 0; i < genomes.size(); ++i)
         entries_.push_back(
             {genomes[i],
              {std::move(evaluation->candidates[i]), std::move(evaluation->deltaE[i])},
              useCounter_});
-    return true;
-}
-
-bool CandidateRenderCache::drawOnCpu(const std::vector<Genome>& genomes,
-                                     const std::function<bool()>& cancelled) {
-    for (const Genome& genome : genomes) {
-        if (cancelled()) return false;
-        CandidateTile tile{renderOne(genome, tileSize_), {}};
-        if (auto deltaE = compareImages(targetTile_, tile.image)) tile.deltaE = std::move(*deltaE);
-        entries_.push_back({genome, std::move(tile), useCounter_});
-    }
-    return true;
+    return Ok{};
 }
 
 void CandidateRenderCache::evictBeyondCapacity() {
@@ -127,8 +74,8 @@ void CandidateRenderCache::evictBeyondCapacity() {
     if (entries_.size() > keep) entries_.resize(keep);
 }
 
-std::optional<std::vector<CandidateTile>> CandidateRenderCache::tiles(
-    std::span<const Genome> genomes, const std::function<bool()>& cancelled) {
+Result<std::vector<CandidateTile>> CandidateRenderCache::tiles(std::span<const Genome> genomes) {
+    if (!preset_) return Error{"no preset prepared"};
     ++useCounter_;
     std::vector<Genome> missing;
     for (const Genome& genome : genomes) {
@@ -137,8 +84,8 @@ std::optional<std::vector<CandidateTile>> CandidateRenderCache::tiles(
         else if (std::find(missing.begin(), missing.end(), genome) == missing.end())
             missing.push_back(genome);
     }
-    if (!missing.empty() && !(evaluator_ && drawOnGpu(missing)) && !drawOnCpu(missing, cancelled))
-        return std::nullopt;
+    if (!missing.empty())
+        if (auto drawn = draw(missing); !drawn) return drawn.error();
     evictBeyondCapacity();
     std::vector<CandidateTile> result;
     for (const Genome& genome : genomes) result.push_back(find(genome)->tile);

@@ -3,11 +3,10 @@
 // generations and across GA re-runs while the picture's inputs (target, family, kappa, scene,
 // textures) stay the same. The best candidates mostly survive from one generation to the next,
 // and a re-run with the same seed starts from much the same population, so most tiles of an
-// update are already drawn. New tiles are drawn in one batch on the GPU (render + ΔE00 in one
-// submission); without a usable Vulkan device, on the CPU reference renderer.
+// update are already drawn. New tiles are drawn in one batch by the render interface (on the
+// GPU: render + ΔE00 in one submission).
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -17,10 +16,8 @@
 #include "color/ImageDifference.h"
 #include "common/Image.h"
 #include "common/Result.h"
-#include "gpu/GpuContext.h"
-#include "gpu/GpuPopulationEvaluator.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "io/Preset.h"
-#include "scene/SceneTextures.h"
 
 namespace matevo::editor {
 
@@ -31,22 +28,17 @@ struct CandidateTile {
 
 class CandidateRenderCache {
 public:
-    // `useGpu` false keeps every render on the CPU (for comparison and machines whose Vulkan
-    // driver misbehaves); `validation` runs the GPU context under the validation layer.
-    CandidateRenderCache(int tileSize, int targetSize, std::size_t capacity, bool useGpu,
-                         bool validation);
-    ~CandidateRenderCache();
+    // `request` chooses the renderer, which is made at the first prepare (it needs textures).
+    CandidateRenderCache(int tileSize, int targetSize, std::size_t capacity,
+                         gpu::RendererRequest request);
 
     // Serves `preset` from now on; forgets everything if the picture's inputs changed.
     Status prepare(const Preset& preset, const std::filesystem::path& presetFile);
     const Image& target() const { return target_; }
-    // The tiles of `genomes`, in order; nullopt when `cancelled` said so between CPU renders.
-    std::optional<std::vector<CandidateTile>> tiles(std::span<const Genome> genomes,
-                                                    const std::function<bool()>& cancelled);
-    // "GPU (llvmpipe)" or "CPU", for the status line.
-    std::string backendName() const;
-    // Validation warnings and errors from the GPU context (0 without validation or GPU).
-    int validationMessages() const;
+    // The tiles of `genomes`, in order (an Error too when the request's `cancelled` said so).
+    Result<std::vector<CandidateTile>> tiles(std::span<const Genome> genomes);
+    // "GPU (llvmpipe)" or "CPU", for the status line; empty before the first prepare.
+    std::string backendName() const { return renderer_ ? renderer_->name() : std::string(); }
 
 private:
     struct Entry {
@@ -55,26 +47,21 @@ private:
         std::uint64_t lastUse = 0;
     };
     bool drawsTheSame(const Preset& preset, const std::filesystem::path& presetFile) const;
-    void createGpuEvaluator();
-    Image renderOne(const Genome& genome, int size);
-    bool drawOnGpu(const std::vector<Genome>& genomes);
-    bool drawOnCpu(const std::vector<Genome>& genomes, const std::function<bool()>& cancelled);
+    MaterialInstance material(const Genome& genome) const;
+    Status draw(const std::vector<Genome>& genomes);
     Entry* find(const Genome& genome);
     void evictBeyondCapacity();
 
     int tileSize_;
     int targetSize_;
     std::size_t capacity_;
+    gpu::RendererRequest request_;
+    std::unique_ptr<PopulationRenderer> renderer_;
     std::optional<Preset> preset_;  // what the cached pictures were drawn from
     std::filesystem::path presetFile_;
-    SceneTextures textures_;
     Image target_;
-    Image targetTile_;
     std::vector<Entry> entries_;
     std::uint64_t useCounter_ = 0;
-    // The device must outlive the evaluator that renders on it.
-    std::unique_ptr<gpu::GpuContext> gpu_;
-    std::optional<gpu::GpuPopulationEvaluator> evaluator_;
 };
 
 }  // namespace matevo::editor

@@ -4,12 +4,14 @@
 
 #include "experiment/Experiment.h"
 #include "scene/SceneTextures.h"
-#include "scene/SphereRenderer.h"
 
 namespace matevo::editor {
 
-CompareMetricsWorker::CompareMetricsWorker(std::function<void()> onUpdate)
-    : onUpdate_(std::move(onUpdate)) {}
+CompareMetricsWorker::CompareMetricsWorker(std::function<void()> onUpdate,
+                                           gpu::RendererRequest renderer)
+    : onUpdate_(std::move(onUpdate)), rendererRequest_(std::move(renderer)) {
+    rendererRequest_.cancelled = [this] { return stopping_.load(); };
+}
 
 CompareMetricsWorker::~CompareMetricsWorker() {
     stopping_.store(true);
@@ -45,15 +47,11 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
         return result;
     }
     const Preset& preset = job.preset;
-    const RenderGenomes render = [&](std::span<const Genome> genomes) {
-        std::vector<Image> images;
-        for (const Genome& genome : genomes) {
-            if (stopping_.load()) return Result<std::vector<Image>>(Error{"stopped"});
-            images.push_back(renderSphereCpu({genome, preset.family, preset.baseKappa}, *textures,
-                                             preset.scene, kRenderSize));
-        }
-        return Result<std::vector<Image>>(std::move(images));
-    };
+    std::shared_ptr<PopulationRenderer> renderer =
+        gpu::createPopulationRenderer(rendererRequest_, *textures);
+    result.backend = renderer->name();
+    const RenderGenomes render = renderGenomesWith(std::move(renderer), preset.family,
+                                                   preset.baseKappa, preset.scene, kRenderSize);
     auto target = render(std::span<const Genome>(&preset.target, 1));
     if (!target) {
         result.error = target.error().message;
@@ -78,7 +76,7 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
             onUpdate_();
         },
         [&](std::size_t index, const Image& image) { result.renders[index] = image; });
-    if (!scored) result = {{}, {}, scored.error().message};
+    if (!scored) result = {{}, {}, result.backend, scored.error().message};
     return result;
 }
 

@@ -14,6 +14,7 @@
 
 #include "common/Image.h"
 #include "experiment/RunRecord.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "io/Preset.h"
 
 namespace matevo::editor {
@@ -27,6 +28,7 @@ struct CompareMetricsJob {
 struct CompareMetricsResult {
     std::vector<RunRecord> records;  // metric by metric, run by run
     std::vector<Image> renders;      // one per record
+    std::string backend;             // what rendered them: "GPU (name)" or "CPU"
     std::string error;               // the job could not run (e.g. a missing texture)
 };
 
@@ -34,7 +36,8 @@ class CompareMetricsWorker {
 public:
     static constexpr int kRenderSize = 64;
 
-    explicit CompareMetricsWorker(std::function<void()> onUpdate);
+    // `renderer` says where the runs' best materials render (the editor's --backend).
+    CompareMetricsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer);
     ~CompareMetricsWorker();  // stops a running job at its next render
     CompareMetricsWorker(const CompareMetricsWorker&) = delete;
     CompareMetricsWorker& operator=(const CompareMetricsWorker&) = delete;
@@ -49,6 +52,7 @@ private:
     CompareMetricsResult compute(const CompareMetricsJob& job);
 
     std::function<void()> onUpdate_;
+    gpu::RendererRequest rendererRequest_;
     std::atomic<bool> busy_{false};
     std::atomic<bool> stopping_{false};
     std::atomic<float> progress_{0.0f};

@@ -187,8 +187,12 @@ EditorApp::EditorApp(const EditorOptions& options)
         workerPosted_.store(true);
         glfwPostEmptyEvent();
     };
-    worker_ = std::make_unique<EvolutionWorker>(wake, options.gpuTiles, options.validation);
-    compareWorker_ = std::make_unique<CompareMetricsWorker>(wake);
+    worker_ = std::make_unique<EvolutionWorker>(wake, options.backend, options.validation);
+    gpu::RendererRequest compareRenderer;
+    compareRenderer.backend = options.backend;
+    compareRenderer.who = "matevo edit: Compare metrics";
+    compareRenderer.headless = {options.validation, true};
+    compareWorker_ = std::make_unique<CompareMetricsWorker>(wake, compareRenderer);
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }

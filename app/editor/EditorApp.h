@@ -7,6 +7,7 @@
 
 #include "EditorScript.h"
 #include "io/Preset.h"
+#include "render/PopulationRenderer.h"
 
 namespace matevo::editor {
 
@@ -15,7 +16,8 @@ struct EditorOptions {
     std::filesystem::path presetFile;
     std::vector<ScriptAction> script;
     int maxFrames = 0;     // 0: until the window closes
-    bool gpuTiles = true;  // render candidate tiles on the GPU when a device is usable
+    // Where candidate tiles and Compare metrics render (the CPU when no device is usable).
+    RenderBackend backend = RenderBackend::Gpu;
     bool validation = false;
     bool reportTimings = false;
     int width = 1280;

@@ -20,9 +20,10 @@ double meanOf(const std::vector<CandidateResult>& candidates) {
 
 }  // namespace
 
-EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate, bool useGpu, bool validation)
+EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate, RenderBackend backend,
+                                 bool validation)
     : onUpdate_(std::move(onUpdate)),
-      thread_([this, useGpu, validation] { run(useGpu, validation); }) {}
+      thread_([this, backend, validation] { run(backend, validation); }) {}
 
 EvolutionWorker::~EvolutionWorker() {
     {
@@ -69,11 +70,21 @@ void EvolutionWorker::publish(EvolutionUpdate update) {
     onUpdate_();
 }
 
-void EvolutionWorker::run(bool useGpu, bool validation) {
+void EvolutionWorker::run(RenderBackend backend, bool validation) {
     // Below the UI thread, so frames stay smooth while the GA runs. Render and ΔE00 helper
     // threads, and the worker's own lavapipe threads, inherit the niceness from this thread.
     setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), kWorkerNiceness);
-    CandidateRenderCache renderCache(kTileSize, kTargetSize, kRenderCacheSize, useGpu, validation);
+    // The worker's own device, so that its validation messages can be counted.
+    std::optional<gpu::GpuContext> context;
+    if (backend == RenderBackend::Gpu)
+        if (auto created = gpu::GpuContext::createHeadless({validation, true}))
+            context.emplace(std::move(created).value());
+    gpu::RendererRequest request;
+    request.backend = backend;
+    request.who = "matevo edit";
+    request.device = context ? &context->device : nullptr;
+    request.cancelled = [this] { return cancelled(runningJobId_.load()); };
+    CandidateRenderCache renderCache(kTileSize, kTargetSize, kRenderCacheSize, std::move(request));
     for (;;) {
         EvolutionJob job;
         std::uint64_t jobId = 0;
@@ -84,10 +95,14 @@ void EvolutionWorker::run(bool useGpu, bool validation) {
             job = std::move(*pending_);
             pending_.reset();
             jobId = latestJobId_.load();
+            runningJobId_.store(jobId);
             working_ = true;
         }
         evolve(job, jobId, renderCache);
-        validationMessages_.store(renderCache.validationMessages());
+        if (context) {
+            const gpu::ValidationLog& log = context->instance.validationLog();
+            validationMessages_.store(log.errorCount() + log.warningCount());
+        }
         {
             std::lock_guard lock(mutex_);
             working_ = false;
@@ -135,8 +150,14 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
         for (const KeptMaterial& kept : preset.kept)
             if (kept.family == preset.family && shown.size() < firstOf.size() + kKeptTiles)
                 shown.push_back(kept.genome);
-        auto tiles = renderCache.tiles(shown, [&] { return cancelled(jobId); });
-        if (!tiles || cancelled(jobId)) return;
+        auto tiles = renderCache.tiles(shown);
+        if (cancelled(jobId)) return;
+        if (!tiles) {
+            update.finished = true;
+            update.error = tiles.error().message;
+            publish(std::move(update));
+            return;
+        }
         update.candidates.clear();
         update.kept.clear();
         for (std::size_t i = 0; i < shown.size(); ++i) {

@@ -57,9 +57,9 @@ public:
     static constexpr std::size_t kRenderCacheSize = 128;  // tiles (~50 MB)
     static constexpr int kWorkerNiceness = 5;
 
-    // Tiles render on the GPU when `useGpu` and a device is usable; with `validation` the
+    // Tiles render on `backend` (the CPU when no Vulkan device is usable); with `validation` the
     // worker's GPU context runs under the Vulkan validation layer.
-    EvolutionWorker(std::function<void()> onUpdate, bool useGpu, bool validation);
+    EvolutionWorker(std::function<void()> onUpdate, RenderBackend backend, bool validation);
     ~EvolutionWorker();
     EvolutionWorker(const EvolutionWorker&) = delete;
     EvolutionWorker& operator=(const EvolutionWorker&) = delete;
@@ -74,7 +74,7 @@ public:
     int validationMessages() const { return validationMessages_.load(); }
 
 private:
-    void run(bool useGpu, bool validation);
+    void run(RenderBackend backend, bool validation);
     void evolve(const EvolutionJob& job, std::uint64_t jobId, CandidateRenderCache& renderCache);
     bool cancelled(std::uint64_t jobId) const;
     void publish(EvolutionUpdate update);
@@ -87,6 +87,7 @@ private:
     bool working_ = false;
     bool stopping_ = false;
     std::atomic<std::uint64_t> latestJobId_{0};
+    std::atomic<std::uint64_t> runningJobId_{0};
     std::atomic<int> validationMessages_{0};
     std::thread thread_;  // last: starts after everything it uses exists
 };

@@ -7,6 +7,7 @@
 // the image comparison does not depend on the thread count.
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "experiment/RunRecord.h"
 #include "genome/Genome.h"
 #include "genome/MaterialFamily.h"
+#include "render/PopulationRenderer.h"
 
 namespace matevo {
 
@@ -25,6 +27,11 @@ namespace matevo {
 // The caller binds everything else (family, kappa, textures, scene, image size) and chooses the
 // back end (GPU batch renderer or CPU reference).
 using RenderGenomes = std::function<Result<std::vector<Image>>(std::span<const Genome> genomes)>;
+
+// RenderGenomes on `renderer` for genomes of `family` with the base's `kappa`, at size x size.
+RenderGenomes renderGenomesWith(std::shared_ptr<PopulationRenderer> renderer,
+                                const MaterialFamily& family, const std::array<double, 3>& kappa,
+                                const SceneSettings& scene, int size);
 
 // done of total work items (one per GA run, one per scored run); called on the calling thread.
 using ExperimentProgress = std::function<void(int done, int total)>;

@@ -62,7 +62,7 @@ GpuScene toGpu(const SceneSettings& scene, int size, bool textured) {
     store(gpu.cameraUp, up, 0.0);
     store(gpu.toLight, glm::normalize(toVector(scene.lightDirection)), 0.0);
     store(gpu.lightRadiance, toVector(scene.lightRadiance), 0.0);
-    store(gpu.environmentRadiance, toVector(scene.environmentRadiance), 0.0);
+    store(gpu.environmentRadiance, toVector(ambientRadiance(scene)), 0.0);
     store(gpu.textured, {textured ? 1.0 : 0.0, 0.0, 0.0}, 0.0);
     return gpu;
 }

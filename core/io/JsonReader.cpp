@@ -36,6 +36,10 @@ std::string JsonReader::fieldPath(const std::string& key) const {
     return path_.empty() ? key : path_ + "." + key;
 }
 
+void JsonReader::warn(const std::string& key, const std::string& problem) {
+    warnings_.push_back(fieldPath(key) + ": " + problem);
+}
+
 void JsonReader::fail(const std::string& key, const std::string& problem) const {
     throw JsonFieldError(fieldPath(key) + ": " + problem);
 }
@@ -111,7 +115,7 @@ std::vector<JsonReader> JsonReader::objects(const std::string& key) {
 
 void JsonReader::warnAboutUnknownFields() {
     for (const auto& [key, value] : object_.items())
-        if (!read_.count(key)) warnings_.push_back(fieldPath(key) + ": unknown field, ignored");
+        if (!read_.count(key)) warn(key, "unknown field, ignored");
 }
 
 }  // namespace matevo

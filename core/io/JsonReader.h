@@ -38,6 +38,7 @@ public:
     // Call once every known field was read: warns about the others.
     void warnAboutUnknownFields();
 
+    void warn(const std::string& key, const std::string& problem);
     [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
 
 private:

@@ -51,6 +51,8 @@ GaSettings readGaSettings(JsonReader reader) {
 
 SceneSettings readScene(JsonReader reader) {
     SceneSettings scene;
+    if (reader.has("mode"))
+        scene.mode = readEnum(reader, "mode", parseSceneMode, "paper or ambient");
     if (reader.has("image_size")) scene.imageSize = int(reader.integer("image_size", 8, 4096));
     if (reader.has("camera_position"))
         scene.cameraPosition = reader.numbers<3>("camera_position", -100.0, 100.0);
@@ -64,8 +66,15 @@ SceneSettings readScene(JsonReader reader) {
     }
     if (reader.has("light_radiance"))
         scene.lightRadiance = reader.numbers<3>("light_radiance", 0.0, 1e4);
-    if (reader.has("environment_radiance"))
+    if (reader.has("environment_radiance")) {
         scene.environmentRadiance = reader.numbers<3>("environment_radiance", 0.0, 1e4);
+        // Presets from before the modes had no mode and meant the ambient look: say that it
+        // changed rather than switch silently.
+        if (!reader.has("mode"))
+            reader.warn("environment_radiance",
+                        "ignored: with no scene.mode the scene is the paper's (one light, no "
+                        "ambient); set scene.mode to \"ambient\" to use it");
+    }
     // The camera must sit outside the unit sphere it looks at.
     const auto& c = scene.cameraPosition;
     if (c[0] * c[0] + c[1] * c[1] + c[2] * c[2] <= 1.0 + 1e-6)
@@ -182,7 +191,8 @@ std::string serializePreset(const Preset& preset) {
           {"elitism", preset.ga.elitism},
           {"seed", preset.ga.seed}}},
         {"scene",
-         {{"image_size", preset.scene.imageSize},
+         {{"mode", toString(preset.scene.mode)},
+          {"image_size", preset.scene.imageSize},
           {"camera_position", preset.scene.cameraPosition},
           {"field_of_view_degrees", preset.scene.fieldOfViewDegrees},
           {"light_direction", preset.scene.lightDirection},

@@ -12,15 +12,27 @@ std::filesystem::path executableDirectory() {
     return error ? std::filesystem::current_path() : exe.parent_path();
 }
 
-Result<std::filesystem::path> findResourceDirectory(std::string_view name) {
+std::vector<std::filesystem::path> resourceSearchPath() {
+    std::vector<std::filesystem::path> folders;
+    if (const char* dataDir = std::getenv("MATEVO_DATA_DIR"); dataDir && *dataDir)
+        folders.emplace_back(dataDir);
     const auto exeDir = executableDirectory();
-    for (const auto& candidate : {exeDir / name, exeDir.parent_path() / name,
-                                  exeDir.parent_path() / "share" / "matevo" / name}) {
+    folders.push_back(exeDir / "share" / "matevo");
+    // CMake passes the install's data folder relative to its bin folder ("../share/matevo").
+    folders.push_back((exeDir / MATEVO_INSTALL_DATA_FROM_BIN).lexically_normal());
+    return folders;
+}
+
+Result<std::filesystem::path> findResourceDirectory(std::string_view name) {
+    std::string lookedIn;
+    for (const auto& folder : resourceSearchPath()) {
+        const auto candidate = folder / name;
         std::error_code error;
         if (std::filesystem::is_directory(candidate, error)) return candidate;
+        lookedIn += (lookedIn.empty() ? "" : ", ") + candidate.string();
     }
-    return Error{"cannot find the '" + std::string(name) + "' folder near the executable (" +
-                 exeDir.string() + ")"};
+    return Error{"cannot find the '" + std::string(name) + "' folder; looked in " + lookedIn +
+                 " (set MATEVO_DATA_DIR to the folder that holds it)"};
 }
 
 Result<std::filesystem::path> defaultPresetPath() {

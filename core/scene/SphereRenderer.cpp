@@ -102,7 +102,7 @@ Image renderSphere(const LobesAt& lobesAt, const SceneTextures& textures,
     const Camera camera(scene);
     const Shader<LobesAt> shader{lobesAt, textures, glm::normalize(toVector(scene.lightDirection)),
                                  toVector(scene.lightRadiance),
-                                 toVector(scene.environmentRadiance)};
+                                 toVector(ambientRadiance(scene))};
     constexpr int subsamples = kSubsamplesPerAxis * kSubsamplesPerAxis;
 
     auto renderRows = [&](int chunk) {

@@ -133,11 +133,44 @@ TEST_F(ExperimentCommand, GpuBackendScoresTheSameRunsAsTheCpuReference) {
     }
 }
 
+// §5 is defined in the paper's scene: experiment renders in it even when the preset names the
+// ambient look, unless --scene says otherwise.
+TEST_F(ExperimentCommand, RunsInThePapersSceneUnlessToldOtherwise) {
+    fs::create_directories(out_);
+    std::string ambientPreset = readFile(fs::path(MATEVO_SOURCE_DIR) / "presets" /
+                                         "validation_metal.json");
+    const std::string paperMode = R"("mode": "paper")";
+    ASSERT_NE(ambientPreset.find(paperMode), std::string::npos);
+    ambientPreset.replace(ambientPreset.find(paperMode), paperMode.size(), R"("mode": "ambient")");
+    const fs::path ambientFile = out_ / "ambient_metal.json";
+    std::ofstream(ambientFile) << ambientPreset;
+    auto runOn = [&](const std::string& preset, const std::string& folder,
+                     const std::string& extra) {
+        return runMatevo("experiment --preset " + preset +
+                         " --runs 3 --runs-per-seed 2 --population 6 --generations 2 --size 24"
+                         " --backend cpu --out '" + (out_ / folder).string() + "' " + extra);
+    };
+    std::string ambientArgument = "'";
+    ambientArgument += ambientFile.string();
+    ambientArgument += '\'';
+    const auto byDefault = runOn(ambientArgument, "default", "");
+    ASSERT_EQ(byDefault.exitCode, 0) << byDefault.err;
+    EXPECT_NE(byDefault.err.find("paper (one light, no ambient)"), std::string::npos)
+        << byDefault.err;
+    ASSERT_EQ(runOn(presetFile("validation_metal.json"), "paper", "").exitCode, 0);
+    const auto ambient = runOn(ambientArgument, "ambient", "--scene ambient");
+    ASSERT_EQ(ambient.exitCode, 0) << ambient.err;
+
+    const std::string defaultCsv = readFile(out_ / "default" / "results.csv");
+    EXPECT_EQ(defaultCsv, readFile(out_ / "paper" / "results.csv"));
+    EXPECT_NE(defaultCsv, readFile(out_ / "ambient" / "results.csv"));
+}
+
 TEST_F(ExperimentCommand, BadInputExitsWithStatusTwoAndOneLineNamingTheProblem) {
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"--runs 0", "--runs"}, {"--metric cosine", "--metric"}, {"--backend abacus", "--backend"},
         {"--sweep", "--sweep"},  // with --population from runSmall
-        {"--bogus", "--bogus"},
+        {"--bogus", "--bogus"}, {"--scene studio", "--scene"},
     };
     for (const auto& [arguments, named] : cases) {
         const auto result = runSmall(out_, arguments);
@@ -155,7 +188,7 @@ TEST_F(ExperimentCommand, HelpDescribesTheProtocolOptions) {
     const auto result = runMatevo("experiment --help");
     EXPECT_EQ(result.exitCode, 0);
     for (const char* option : {"--preset", "--all", "--runs", "--population", "--generations",
-                               "--metric", "--sweep", "--seed", "--out"})
+                               "--metric", "--sweep", "--seed", "--scene", "--out"})
         EXPECT_NE(result.out.find(option), std::string::npos) << option;
 }
 

@@ -1,4 +1,4 @@
-#include "gpu/GpuPopulationEvaluator.h"
+#include "gpu/GpuPopulationRenderer.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -90,12 +90,18 @@ TEST(GpuRender, MatchesCpuOnValidationPresets) {
         presets.push_back(loaded->preset);
         textures.push_back(std::move(sceneTextures).value());
     }
+    // Both scene modes: the ambient term is part of what the back ends must share.
     std::vector<RenderCase> cases;
-    for (std::size_t i = 0; i < presets.size(); ++i)
-        cases.push_back({files[i].filename().string(),
-                         {presets[i].target, presets[i].family, presets[i].baseKappa},
-                         &textures[i],
-                         presets[i].scene});
+    for (std::size_t i = 0; i < presets.size(); ++i) {
+        for (SceneMode mode : {SceneMode::Paper, SceneMode::Ambient}) {
+            SceneSettings scene = presets[i].scene;
+            scene.mode = mode;
+            cases.push_back({files[i].filename().string() + " " + std::string(toString(mode)),
+                             {presets[i].target, presets[i].family, presets[i].baseKappa},
+                             &textures[i],
+                             scene});
+        }
+    }
     expectBackEndsAgree(cases);
 }
 
@@ -122,9 +128,9 @@ TEST(GpuPopulation, DeltaEMatchesCoreColorOnRenderedPairs) {
     ASSERT_NE(context, nullptr);
     SceneTextures textures;
     textures.roughness = makePaintRoughnessTexture(64, 32);
-    auto evaluator = gpu::GpuPopulationEvaluator::create(context->device, defaultFgdTables(),
-                                                         textures, test::rampColormap());
-    ASSERT_TRUE(evaluator.ok()) << evaluator.error().message;
+    auto renderer = gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(),
+                                                       textures, test::rampColormap());
+    ASSERT_TRUE(renderer.ok()) << renderer.error().message;
 
     const MaterialFamily family = supportedFamilies().front();
     Random random(5);
@@ -132,7 +138,7 @@ TEST(GpuPopulation, DeltaEMatchesCoreColorOnRenderedPairs) {
     std::vector<MaterialInstance> candidates;
     for (int i = 0; i < 8; ++i)
         candidates.push_back({randomGenome(family, random), family, target.baseKappa});
-    auto evaluation = evaluator->evaluate(target, candidates, SceneSettings{}, kImageSize);
+    auto evaluation = (*renderer)->evaluate(target, candidates, SceneSettings{}, kImageSize);
     ASSERT_TRUE(evaluation.ok()) << evaluation.error().message;
     ASSERT_EQ(evaluation->deltaE.size(), candidates.size());
 

@@ -65,6 +65,7 @@ TEST(Preset, RoundTripsThroughText) {
     preset.ga.elitism = 2;
     preset.ga.seed = 18446744073709551615ull;  // the whole 64-bit range survives
     preset.scene.imageSize = 128;
+    preset.scene.mode = SceneMode::Ambient;
     preset.scene.environmentRadiance = {0.1, 0.2, 0.3};
     auto reparsed = parsePreset(serializePreset(preset), "again.json");
     ASSERT_TRUE(reparsed.ok()) << reparsed.error().message;
@@ -163,6 +164,43 @@ TEST(Preset, UnknownFieldsWarnButLoad) {
     ASSERT_TRUE(result.ok());
     ASSERT_EQ(result->warnings.size(), 1u);
     EXPECT_EQ(result->warnings[0], "p.json: colour: unknown field, ignored");
+}
+
+TEST(Preset, SceneModeIsReadAndDefaultsToThePapersScene) {
+    const std::string withScene = replaced(kValidPreset, R"("ga")", R"("scene": {}, "ga")");
+    auto plain = parsePreset(withScene, "p.json");
+    ASSERT_TRUE(plain.ok()) << plain.error().message;
+    EXPECT_EQ(plain->preset.scene.mode, SceneMode::Paper);
+
+    auto ambient = parsePreset(
+        replaced(withScene, R"("scene": {})",
+                 R"("scene": {"mode": "ambient", "environment_radiance": [0.5, 0.5, 0.5]})"),
+        "p.json");
+    ASSERT_TRUE(ambient.ok()) << ambient.error().message;
+    EXPECT_EQ(ambient->preset.scene.mode, SceneMode::Ambient);
+    EXPECT_EQ(ambientRadiance(ambient->preset.scene), (std::array{0.5, 0.5, 0.5}));
+    EXPECT_TRUE(ambient->warnings.empty());
+
+    const std::string message =
+        errorOf(replaced(withScene, R"("scene": {})", R"("scene": {"mode": "studio"})"));
+    EXPECT_NE(message.find("p.json: scene.mode: unknown value 'studio' (expected paper or ambient)"),
+              std::string::npos)
+        << message;
+}
+
+// A preset saved before the modes existed names an environment but no mode: it loads in the
+// paper's scene and says that its environment is not used.
+TEST(Preset, EnvironmentWithoutAModeWarnsThatThePaperSceneIgnoresIt) {
+    auto old = parsePreset(replaced(kValidPreset, R"("ga")",
+                                    R"("scene": {"environment_radiance": [0.25, 0.25, 0.25]}, "ga")"),
+                           "p.json");
+    ASSERT_TRUE(old.ok()) << old.error().message;
+    EXPECT_EQ(old->preset.scene.mode, SceneMode::Paper);
+    EXPECT_EQ(ambientRadiance(old->preset.scene), (std::array{0.0, 0.0, 0.0}));
+    ASSERT_EQ(old->warnings.size(), 1u);
+    EXPECT_NE(old->warnings[0].find("p.json: scene.environment_radiance: ignored"),
+              std::string::npos)
+        << old->warnings[0];
 }
 
 TEST(Preset, MissingTextureFileIsAnError) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "genome/FamilyRules.h"
@@ -26,7 +27,8 @@ double luminance(const float* pixel) {
 }
 
 TEST(SphereRenderer, AlphaIsTheSphereDiscAndTheBackgroundIsTransparent) {
-    const SceneSettings scene;
+    SceneSettings scene;
+    scene.mode = SceneMode::Ambient;  // every covered pixel then receives some light
     const int size = 64;
     const Image image = renderSphereCpu(validationMetal(), {}, scene, size);
     ASSERT_EQ(image.width, size);
@@ -53,6 +55,46 @@ TEST(SphereRenderer, AlphaIsTheSphereDiscAndTheBackgroundIsTransparent) {
         }
     }
     EXPECT_NEAR(coverage, std::numbers::pi * radius * radius, 0.01 * coverage);
+}
+
+// The paper's scene has one light and nothing else: where the surface faces away from the
+// light, a pixel is exactly black; the ambient mode lights the same pixel.
+TEST(SphereRenderer, PaperSceneLeavesPixelsFacingAwayFromTheLightBlack) {
+    SceneSettings scene;
+    ASSERT_EQ(scene.mode, SceneMode::Paper);  // the default
+    const int size = 64;
+    const Image paper = renderSphereCpu(validationMetal(), {}, scene, size);
+    scene.mode = SceneMode::Ambient;
+    const Image ambient = renderSphereCpu(validationMetal(), {}, scene, size);
+
+    // The camera of SphereRenderer.h at the pixel centre; the hit's normal against the light.
+    const glm::dvec3 camera(scene.cameraPosition[0], scene.cameraPosition[1],
+                            scene.cameraPosition[2]);
+    const glm::dvec3 forward = glm::normalize(-camera);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 up = glm::cross(right, forward);
+    const glm::dvec3 toLight = glm::normalize(
+        glm::dvec3(scene.lightDirection[0], scene.lightDirection[1], scene.lightDirection[2]));
+    const double halfHeight = std::tan(scene.fieldOfViewDegrees * std::numbers::pi / 360.0);
+    int facingAway = 0;
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            if (paper.pixel(x, y)[3] < 1.0f) continue;  // interior pixels: shaded at the centre
+            const double ndcX = 2.0 * (x + 0.5) / size - 1.0;
+            const double ndcY = 1.0 - 2.0 * (y + 0.5) / size;
+            const glm::dvec3 direction = glm::normalize(
+                forward + ndcX * halfHeight * right + ndcY * halfHeight * up);
+            const double b = glm::dot(camera, direction);
+            const double discriminant = b * b - (glm::dot(camera, camera) - 1.0);
+            ASSERT_GE(discriminant, 0.0) << x << "," << y;
+            const glm::dvec3 normal = camera + (-b - std::sqrt(discriminant)) * direction;
+            if (glm::dot(normal, toLight) > -0.05) continue;  // clear of the terminator
+            ++facingAway;
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(paper.pixel(x, y)[c], 0.0f) << x << "," << y;
+            EXPECT_GT(luminance(ambient.pixel(x, y)), 0.0) << x << "," << y;
+        }
+    }
+    EXPECT_GT(facingAway, size * size / 20);  // the light comes from the upper left: a crescent
 }
 
 // Pixels brighter than half the brightest: the area of the highlight.

@@ -1,0 +1,119 @@
+#include "gpu/GpuPopulationRenderer.h"
+
+namespace matevo::gpu {
+
+Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
+    const Device& device, const FgdTables& tables, const SceneTextures& textures,
+    const DeltaE00Pass::Colormap& colormap) {
+    auto runner = CommandRunner::create(device);
+    if (!runner) return runner.error();
+    auto renderer = GpuSphereRenderer::create(device, *runner, tables, textures);
+    if (!renderer) return renderer.error();
+    auto pass = DeltaE00Pass::create(device, colormap);
+    if (!pass) return pass.error();
+    std::unique_ptr<GpuPopulationRenderer> result(new GpuPopulationRenderer);
+    result->device_ = &device;
+    result->tables_ = &tables;
+    result->runner_ = std::move(runner).value();
+    result->renderer_ = std::move(renderer).value();
+    result->deltaEPass_ = std::move(pass).value();
+    return result;
+}
+
+Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::createHeadless(
+    const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures,
+    const DeltaE00Pass::Colormap& colormap) {
+    auto context = GpuContext::createHeadless(options);
+    if (!context) return context.error();
+    auto ownContext = std::make_unique<GpuContext>(std::move(context).value());
+    auto result = create(ownContext->device, tables, textures, colormap);
+    if (!result) return result.error();
+    (*result)->ownContext_ = std::move(ownContext);
+    return result;
+}
+
+std::string GpuPopulationRenderer::name() const { return "GPU (" + device_->name() + ")"; }
+
+Status GpuPopulationRenderer::setTextures(const SceneTextures& textures) {
+    auto renderer = GpuSphereRenderer::create(*device_, runner_, *tables_, textures);
+    if (!renderer) return renderer.error();
+    renderer_ = std::move(renderer).value();
+    targetKey_.reset();
+    return Ok{};
+}
+
+Status GpuPopulationRenderer::ensureBuffers(const ImageBatchShape& shape) {
+    if (shape.width == bufferShape_.width && shape.height == bufferShape_.height &&
+        shape.count == bufferShape_.count)
+        return Ok{};
+    auto renders = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
+    auto deltaE = createBatchBuffer(*device_, shape, 1, MemoryUse::Readback);
+    auto heatmaps = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
+    for (const auto* buffer : {&renders, &deltaE, &heatmaps})
+        if (!*buffer) return buffer->error();
+    renders_ = std::move(renders).value();
+    deltaE_ = std::move(deltaE).value();
+    heatmaps_ = std::move(heatmaps).value();
+    bufferShape_ = shape;
+    return Ok{};
+}
+
+Status GpuPopulationRenderer::renderTarget(const TargetKey& key) {
+    const ImageBatchShape shape{key.size, key.size, 1};
+    auto buffer = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
+    if (!buffer) return buffer.error();
+    auto commands = runner_.begin();
+    if (!commands) return commands.error();
+    if (auto recorded = renderer_.record(*commands, std::span(&key.material, 1), key.scene,
+                                         key.size, *buffer);
+        !recorded)
+        return recorded.error();
+    computeWriteToHostReadBarrier(*commands);
+    if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
+    targetRender_ = std::move(buffer).value();
+    target_ = downloadImage(targetRender_, shape, 0);
+    targetKey_ = key;
+    return Ok{};
+}
+
+Result<PopulationEvaluation> GpuPopulationRenderer::evaluate(
+    const MaterialInstance& target, std::span<const MaterialInstance> candidates,
+    const SceneSettings& scene, int size, const EvaluationOptions& options) {
+    if (size <= 0) return Error{"GPU render: image size must be positive"};
+    const TargetKey key{target, scene, size};
+    if (targetKey_ != key)
+        if (auto rendered = renderTarget(key); !rendered) return rendered.error();
+    PopulationEvaluation evaluation;
+    evaluation.target = target_;
+    if (candidates.empty()) return evaluation;
+
+    const ImageBatchShape shape{size, size, uint32_t(candidates.size())};
+    if (auto ready = ensureBuffers(shape); !ready) return ready.error();
+    auto commands = runner_.begin();
+    if (!commands) return commands.error();
+    if (auto recorded = renderer_.record(*commands, candidates, scene, size, renders_); !recorded)
+        return recorded.error();
+    // Also orders the target's render of an earlier submission before the pass reads it.
+    computeWriteToComputeReadBarrier(*commands);
+    deltaEPass_.record(*commands, {&targetRender_, &renders_, &deltaE_, &heatmaps_,
+                                   shape.pixelCount(), shape.count, 0, 0,
+                                   float(options.heatmap.minDeltaE),
+                                   float(options.heatmap.maxDeltaE)});
+    computeWriteToHostReadBarrier(*commands);
+    if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
+
+    for (uint32_t i = 0; i < shape.count; ++i) {
+        if (options.candidateImages) evaluation.candidates.push_back(downloadImage(renders_, shape, i));
+        evaluation.deltaE.push_back(downloadDeltaEMap(deltaE_, shape, i));
+        if (options.heatmaps) evaluation.heatmaps.push_back(downloadImage(heatmaps_, shape, i));
+    }
+    return evaluation;
+}
+
+Result<std::vector<Image>> GpuPopulationRenderer::render(
+    std::span<const MaterialInstance> materials, const SceneSettings& scene, int size) {
+    if (size <= 0) return Error{"GPU render: image size must be positive"};
+    return renderer_.render(runner_, materials, scene, size);
+}
+
+}  // namespace matevo::gpu

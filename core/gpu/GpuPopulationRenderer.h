@@ -1,0 +1,61 @@
+#pragma once
+// The render interface on Vulkan: the target and every candidate are rendered by
+// GpuSphereRenderer, the ΔE00 pass compares each candidate with the target's render and colours
+// the heatmaps, and everything is read back, in one submission. The target's render stays in
+// its own buffer until the target changes. Buffers are kept between calls of the same shape.
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "common/Result.h"
+#include "gpu/DeltaE00Pass.h"
+#include "gpu/GpuContext.h"
+#include "gpu/GpuSphereRenderer.h"
+#include "render/PopulationRenderer.h"
+
+namespace matevo::gpu {
+
+class GpuPopulationRenderer final : public PopulationRenderer {
+public:
+    // Renders on `device`, which must outlive the renderer. `tables` too (the process-wide
+    // defaultFgdTables() does).
+    static Result<std::unique_ptr<GpuPopulationRenderer>> create(
+        const Device& device, const FgdTables& tables, const SceneTextures& textures,
+        const DeltaE00Pass::Colormap& colormap);
+    // Renders on a headless device of its own.
+    static Result<std::unique_ptr<GpuPopulationRenderer>> createHeadless(
+        const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures,
+        const DeltaE00Pass::Colormap& colormap);
+
+    std::string name() const override;
+    Status setTextures(const SceneTextures& textures) override;
+    Result<std::vector<Image>> render(std::span<const MaterialInstance> materials,
+                                      const SceneSettings& scene, int size) override;
+    Result<PopulationEvaluation> evaluate(const MaterialInstance& target,
+                                          std::span<const MaterialInstance> candidates,
+                                          const SceneSettings& scene, int size,
+                                          const EvaluationOptions& options = {}) override;
+
+private:
+    GpuPopulationRenderer() = default;
+    Status ensureBuffers(const ImageBatchShape& shape);
+    Status renderTarget(const TargetKey& key);
+
+    // Declared first, destroyed last: everything below lives on its device.
+    std::unique_ptr<GpuContext> ownContext_;
+    const Device* device_ = nullptr;
+    const FgdTables* tables_ = nullptr;
+    CommandRunner runner_;
+    GpuSphereRenderer renderer_;
+    DeltaE00Pass deltaEPass_;
+    std::optional<TargetKey> targetKey_;
+    Image target_;        // the host copy of targetRender_
+    Buffer targetRender_;
+    ImageBatchShape bufferShape_;
+    Buffer renders_;
+    Buffer deltaE_;
+    Buffer heatmaps_;
+};
+
+}  // namespace matevo::gpu

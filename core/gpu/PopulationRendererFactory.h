@@ -1,0 +1,30 @@
+#pragma once
+// The one place that chooses between the GPU and the CPU renderer. Asked for the GPU, it renders
+// on the given device, or on a headless device of its own; when that is not possible it prints
+// the one-line fallback notice on stderr and hands back the CPU reference renderer, which draws
+// the same pictures (to within the cross-check of tests/gpu).
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "gpu/GpuContext.h"
+#include "render/PopulationRenderer.h"
+
+namespace matevo::gpu {
+
+struct RendererRequest {
+    RenderBackend backend = RenderBackend::Gpu;
+    // Prefixes the fallback notice, e.g. "matevo render".
+    std::string who;
+    // The GPU renderer works on this device (e.g. the editor window's), which must outlive it;
+    // null: on a headless device of its own, created with `headless`.
+    const Device* device = nullptr;
+    GpuContextOptions headless;
+    // The CPU renderer asks this between images and stops when it answers true.
+    std::function<bool()> cancelled;
+};
+
+std::unique_ptr<PopulationRenderer> createPopulationRenderer(const RendererRequest& request,
+                                                             const SceneTextures& textures);
+
+}  // namespace matevo::gpu

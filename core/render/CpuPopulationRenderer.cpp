@@ -1,0 +1,57 @@
+#include "render/CpuPopulationRenderer.h"
+
+#include "scene/SphereRenderer.h"
+
+namespace matevo {
+namespace {
+
+const Error kCancelled{"rendering cancelled"};
+
+}  // namespace
+
+CpuPopulationRenderer::CpuPopulationRenderer(SceneTextures textures,
+                                             std::function<bool()> cancelled)
+    : textures_(std::move(textures)), cancelled_(std::move(cancelled)) {}
+
+Status CpuPopulationRenderer::setTextures(const SceneTextures& textures) {
+    textures_ = textures;
+    targetKey_.reset();
+    return Ok{};
+}
+
+Result<std::vector<Image>> CpuPopulationRenderer::render(
+    std::span<const MaterialInstance> materials, const SceneSettings& scene, int size) {
+    if (size <= 0) return Error{"CPU render: image size must be positive"};
+    std::vector<Image> images;
+    images.reserve(materials.size());
+    for (const MaterialInstance& material : materials) {
+        if (cancelled()) return kCancelled;
+        images.push_back(renderSphereCpu(material, textures_, scene, size));
+    }
+    return images;
+}
+
+Result<PopulationEvaluation> CpuPopulationRenderer::evaluate(
+    const MaterialInstance& target, std::span<const MaterialInstance> candidates,
+    const SceneSettings& scene, int size, const EvaluationOptions& options) {
+    if (size <= 0) return Error{"CPU render: image size must be positive"};
+    const TargetKey key{target, scene, size};
+    if (targetKey_ != key) {
+        target_ = renderSphereCpu(target, textures_, scene, size);
+        targetKey_ = key;
+    }
+    PopulationEvaluation evaluation;
+    evaluation.target = target_;
+    for (const MaterialInstance& candidate : candidates) {
+        if (cancelled()) return kCancelled;
+        Image image = renderSphereCpu(candidate, textures_, scene, size);
+        auto map = compareImages(target_, image);
+        if (!map) return map.error();  // cannot happen: both are size x size
+        if (options.heatmaps) evaluation.heatmaps.push_back(heatmapImage(*map, options.heatmap));
+        if (options.candidateImages) evaluation.candidates.push_back(std::move(image));
+        evaluation.deltaE.push_back(std::move(map).value());
+    }
+    return evaluation;
+}
+
+}  // namespace matevo

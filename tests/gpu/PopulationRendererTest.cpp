@@ -1,0 +1,129 @@
+// The render interface: both implementations evaluate a population alike, keep the target's
+// render only while the target is the same, and hand back only what was asked for.
+#include "render/PopulationRenderer.h"
+
+#include <memory>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "GpuTestContext.h"
+#include "evolve/GenomeSampling.h"
+#include "genome/FamilyRules.h"
+#include "gpu/GpuPopulationRenderer.h"
+#include "gpu/HeatmapColormap.h"
+#include "material/FgdTableCache.h"
+#include "render/CpuPopulationRenderer.h"
+
+namespace matevo {
+namespace {
+
+constexpr int kSize = 40;
+
+struct Population {
+    MaterialInstance target;
+    MaterialInstance otherTarget;
+    std::vector<MaterialInstance> candidates;
+};
+
+Population makePopulation() {
+    const MaterialFamily family = supportedFamilies().front();
+    Random random(11);
+    const std::array<double, 3> kappa = {3.1, 2.9, 2.8};
+    Population population{{randomGenome(family, random), family, kappa},
+                          {randomGenome(family, random), family, kappa},
+                          {}};
+    for (int i = 0; i < 5; ++i)
+        population.candidates.push_back({randomGenome(family, random), family, kappa});
+    return population;
+}
+
+std::unique_ptr<PopulationRenderer> gpuRenderer() {
+    gpu::GpuContext* context = test::validatedContext();
+    if (!context) return nullptr;
+    auto renderer = gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(), {},
+                                                       gpu::heatmapColormap());
+    EXPECT_TRUE(renderer.ok()) << renderer.error().message;
+    return renderer.ok() ? std::move(renderer).value() : nullptr;
+}
+
+TEST(PopulationRenderer, GpuAndCpuEvaluateAlike) {
+    const Population population = makePopulation();
+    auto gpu = gpuRenderer();
+    ASSERT_NE(gpu, nullptr);
+    CpuPopulationRenderer cpu{SceneTextures{}};
+    EXPECT_EQ(cpu.name(), "CPU");
+    EXPECT_EQ(gpu->name().rfind("GPU (", 0), 0u) << gpu->name();
+
+    auto onGpu = gpu->evaluate(population.target, population.candidates, {}, kSize);
+    auto onCpu = cpu.evaluate(population.target, population.candidates, {}, kSize);
+    ASSERT_TRUE(onGpu.ok()) << onGpu.error().message;
+    ASSERT_TRUE(onCpu.ok()) << onCpu.error().message;
+    for (const PopulationEvaluation* evaluation : {&*onGpu, &*onCpu}) {
+        EXPECT_EQ(evaluation->candidates.size(), population.candidates.size());
+        EXPECT_EQ(evaluation->deltaE.size(), population.candidates.size());
+        EXPECT_EQ(evaluation->heatmaps.size(), population.candidates.size());
+        EXPECT_EQ(evaluation->target.width, kSize);
+    }
+    for (std::size_t i = 0; i < population.candidates.size(); ++i) {
+        EXPECT_GT(onCpu->deltaE[i].stats.mean, 0.0) << "distinct genomes should differ";
+        EXPECT_NEAR(onGpu->deltaE[i].stats.mean, onCpu->deltaE[i].stats.mean, 0.5) << i;
+    }
+    test::expectNoValidationMessages(*test::validatedContext());
+}
+
+// A new target is rendered again (the kept render is not reused), and the result is what a
+// fresh renderer gives for that target.
+TEST(PopulationRenderer, TargetChangeIsRenderedAgain) {
+    const Population population = makePopulation();
+    auto gpu = gpuRenderer();
+    ASSERT_NE(gpu, nullptr);
+    CpuPopulationRenderer cpu{SceneTextures{}};
+    for (PopulationRenderer* renderer : {gpu.get(), static_cast<PopulationRenderer*>(&cpu)}) {
+        auto first = renderer->evaluate(population.target, population.candidates, {}, kSize);
+        auto second =
+            renderer->evaluate(population.otherTarget, population.candidates, {}, kSize);
+        auto alone = renderer->render(std::span(&population.otherTarget, 1), {}, kSize);
+        ASSERT_TRUE(first.ok() && second.ok() && alone.ok()) << renderer->name();
+        EXPECT_EQ(second->target.rgba, alone->front().rgba) << renderer->name();
+        EXPECT_NE(first->target.rgba, second->target.rgba) << renderer->name();
+        EXPECT_NE(first->deltaE[0].stats.mean, second->deltaE[0].stats.mean) << renderer->name();
+        // Back to the first target at another size: drawn at that size.
+        auto smaller = renderer->evaluate(population.target, population.candidates, {}, kSize / 2);
+        ASSERT_TRUE(smaller.ok()) << renderer->name();
+        EXPECT_EQ(smaller->target.width, kSize / 2) << renderer->name();
+    }
+    test::expectNoValidationMessages(*test::validatedContext());
+}
+
+TEST(PopulationRenderer, HandsBackOnlyWhatWasAskedFor) {
+    const Population population = makePopulation();
+    auto gpu = gpuRenderer();
+    ASSERT_NE(gpu, nullptr);
+    CpuPopulationRenderer cpu{SceneTextures{}};
+    EvaluationOptions scoresOnly;
+    scoresOnly.candidateImages = false;
+    scoresOnly.heatmaps = false;
+    for (PopulationRenderer* renderer : {gpu.get(), static_cast<PopulationRenderer*>(&cpu)}) {
+        auto evaluation =
+            renderer->evaluate(population.target, population.candidates, {}, kSize, scoresOnly);
+        ASSERT_TRUE(evaluation.ok()) << renderer->name();
+        EXPECT_TRUE(evaluation->candidates.empty()) << renderer->name();
+        EXPECT_TRUE(evaluation->heatmaps.empty()) << renderer->name();
+        EXPECT_EQ(evaluation->deltaE.size(), population.candidates.size()) << renderer->name();
+        EXPECT_FALSE(renderer->evaluate(population.target, population.candidates, {}, 0).ok());
+    }
+    test::expectNoValidationMessages(*test::validatedContext());
+}
+
+TEST(PopulationRenderer, CpuStopsWhenCancelled) {
+    const Population population = makePopulation();
+    int asked = 0;
+    CpuPopulationRenderer cpu{SceneTextures{}, [&] { return ++asked > 2; }};
+    auto evaluation = cpu.evaluate(population.target, population.candidates, {}, kSize);
+    EXPECT_FALSE(evaluation.ok());
+    EXPECT_EQ(asked, 3) << "asked before each candidate until it said stop";
+}
+
+}  // namespace
+}  // namespace matevo
