@@ -30,6 +30,7 @@
 #include "WindowInput.h"
 #include "WindowRenderer.h"
 #include "io/ImageFile.h"
+#include "io/PresetCatalog.h"
 #include "io/ResourcePaths.h"
 #include "material/FgdTableCache.h"
 
@@ -62,18 +63,18 @@ private:
 
 // $XDG_CONFIG_HOME/matevo/imgui.ini, else ~/.config/matevo/imgui.ini; empty if neither exists.
 std::string imguiIniPath() {
-    auto folder = userConfigDirectory();
-    if (!folder) return {};
+    const std::filesystem::path folder = userConfigDirectory();
+    if (folder.empty()) return {};
     std::error_code error;
-    std::filesystem::create_directories(*folder, error);
-    return error ? std::string() : (*folder / "imgui.ini").string();
+    std::filesystem::create_directories(folder, error);
+    return error ? std::string() : (folder / "imgui.ini").string();
 }
 
 // Shipped presets are read-only; the user's own go to their data folder.
 ui::PresetFolders presetFolders() {
     ui::PresetFolders folders;
     if (auto shipped = findResourceDirectory("presets")) folders.shipped = *shipped;
-    if (auto user = userPresetDirectory()) folders.user = *user;
+    folders.user = userPresetDirectory();
     return folders;
 }
 

@@ -89,15 +89,26 @@ void readTextures(JsonReader reader, Preset& preset) {
     reader.warnAboutUnknownFields();
 }
 
+MaterialFamily readValidFamily(JsonReader& parent, const std::string& key) {
+    MaterialFamily family = readFamily(parent.object(key));
+    if (auto problem = validateFamily(family)) parent.fail(key, *problem);
+    return family;
+}
+
+// The genome under `key`, which must be a member of `family` (Table 2).
+Genome readFamilyGenome(JsonReader& parent, const std::string& key, const MaterialFamily& family) {
+    JsonReader reader = parent.object(key);
+    Genome genome = readGenome(reader);
+    reader.warnAboutUnknownFields();
+    if (auto problem = validateGenome(genome, family)) parent.fail(key, *problem);
+    return genome;
+}
+
 KeptMaterial readKept(JsonReader& reader) {
     KeptMaterial kept;
     kept.name = reader.string("name");
-    kept.family = readFamily(reader.object("family"));
-    if (auto problem = validateFamily(kept.family)) reader.fail("family", *problem);
-    JsonReader genome = reader.object("genome");
-    kept.genome = readGenome(genome);
-    genome.warnAboutUnknownFields();
-    if (auto problem = validateGenome(kept.genome, kept.family)) reader.fail("genome", *problem);
+    kept.family = readValidFamily(reader, "family");
+    kept.genome = readFamilyGenome(reader, "genome", kept.family);
     reader.warnAboutUnknownFields();
     return kept;
 }
@@ -106,15 +117,9 @@ Preset readPreset(JsonReader& root) {
     Preset preset;
     preset.name = root.string("name");
     if (root.has("description")) preset.description = root.string("description");
-    preset.family = readFamily(root.object("family"));
-    if (auto problem = validateFamily(preset.family)) root.fail("family", *problem);
-    {
-        JsonReader target = root.object("target");
-        preset.target = readGenome(target);
-        target.warnAboutUnknownFields();
-    }
+    preset.family = readValidFamily(root, "family");
     // The target must be a member of its own family, or the GA could never approach it.
-    if (auto problem = validateGenome(preset.target, preset.family)) root.fail("target", *problem);
+    preset.target = readFamilyGenome(root, "target", preset.family);
     if (preset.family.base == Base::Conductor) {
         preset.baseKappa = root.numbers<3>("base_kappa", 0.0, 100.0);
         const auto& k = preset.baseKappa;

@@ -1,7 +1,6 @@
 #include "io/ResourcePaths.h"
 
 #include <cstdlib>
-#include <string>
 #include <system_error>
 
 namespace matevo {
@@ -41,29 +40,12 @@ Result<std::filesystem::path> defaultPresetPath() {
     return *presets / "validation_metal.json";
 }
 
-namespace {
-
-// $VARIABLE when set and absolute (the XDG rule), else $HOME/fallback.
-Result<std::filesystem::path> xdgDirectory(const char* variable, const char* fallback) {
-    if (const char* value = std::getenv(variable); value && *value == '/')
-        return std::filesystem::path(value);
+std::filesystem::path userConfigDirectory() {
+    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config == '/')
+        return std::filesystem::path(config) / "matevo";
     if (const char* home = std::getenv("HOME"); home && *home)
-        return std::filesystem::path(home) / fallback;
-    return Error{std::string("neither $") + variable + " nor $HOME is set"};
-}
-
-}  // namespace
-
-Result<std::filesystem::path> userPresetDirectory() {
-    auto data = xdgDirectory("XDG_DATA_HOME", ".local/share");
-    if (!data) return data.error();
-    return *data / "matevo" / "presets";
-}
-
-Result<std::filesystem::path> userConfigDirectory() {
-    auto config = xdgDirectory("XDG_CONFIG_HOME", ".config");
-    if (!config) return config.error();
-    return *config / "matevo";
+        return std::filesystem::path(home) / ".config" / "matevo";
+    return {};
 }
 
 }  // namespace matevo
