@@ -3,13 +3,23 @@
 #include <algorithm>
 
 namespace matevo::editor {
+namespace {
+
+// On lavapipe the window's frames wait behind the worker's work on the one queue: submissions
+// of a few tiles keep a frame's wait short.
+constexpr std::size_t kTilesPerSubmission = 8;
+
+}  // namespace
 
 CandidateRenderCache::CandidateRenderCache(int tileSize, int targetSize, std::size_t capacity,
-                                           gpu::RendererRequest request)
+                                           const gpu::Device& device, gpu::RendererRequest request)
     : tileSize_(tileSize),
       targetSize_(targetSize),
       capacity_(capacity),
-      request_(std::move(request)) {}
+      device_(device),
+      request_(std::move(request)) {
+    request_.device = &device;
+}
 
 bool CandidateRenderCache::drawsTheSame(const Preset& preset,
                                         const std::filesystem::path& presetFile) const {
@@ -23,23 +33,51 @@ MaterialInstance CandidateRenderCache::material(const Genome& genome) const {
     return {genome, preset_->family, preset_->baseKappa};
 }
 
+Status CandidateRenderCache::createRenderer(const SceneTextures& textures) {
+    renderer_ = gpu::createPopulationRenderer(request_, textures);
+    gpuRenderer_ = dynamic_cast<gpu::GpuPopulationRenderer*>(renderer_.get());
+    if (gpuRenderer_) return Ok{};
+    auto runner = gpu::CommandRunner::create(device_);
+    if (!runner) return runner.error();
+    uploadRunner_ = std::move(runner).value();
+    return Ok{};
+}
+
 Status CandidateRenderCache::prepare(const Preset& preset,
                                      const std::filesystem::path& presetFile) {
     if (drawsTheSame(preset, presetFile)) return Ok{};
     auto textures = loadSceneTextures(preset, presetFile);
     if (!textures) return textures.error();
-    if (!renderer_)
-        renderer_ = gpu::createPopulationRenderer(request_, *textures);
-    else if (auto set = renderer_->setTextures(*textures); !set)
-        return set.error();
+    if (!renderer_) {
+        if (Status created = createRenderer(*textures); !created) return created;
+    } else if (Status set = renderer_->setTextures(*textures); !set) {
+        return set;
+    }
     entries_.clear();
     preset_.reset();  // nothing is cached for a half-prepared preset
-    const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
-    auto large = renderer_->render(std::span(&target, 1), preset.scene, targetSize_);
-    if (!large) return large.error();
-    target_ = std::move(large->front());
+    if (Status drawn = drawTarget(preset); !drawn) return drawn;
     preset_ = preset;
     presetFile_ = presetFile;
+    return Ok{};
+}
+
+Status CandidateRenderCache::drawTarget(const Preset& preset) {
+    auto tile = gpu::DisplayTile::create(device_, targetSize_, targetSize_, false);
+    if (!tile) return tile.error();
+    auto target = std::make_shared<gpu::DisplayTile>(std::move(tile).value());
+    const MaterialInstance material{preset.target, preset.family, preset.baseKappa};
+    if (gpuRenderer_) {
+        if (Status drawn = gpuRenderer_->renderIntoTile(material, preset.scene, *target); !drawn)
+            return drawn;
+    } else {
+        auto image = renderer_->render(std::span(&material, 1), preset.scene, targetSize_);
+        if (!image) return image.error();
+        const gpu::DisplayTile* tiles[] = {target.get()};
+        if (Status uploaded = gpu::uploadToTiles(device_, *uploadRunner_, tiles, *image, {});
+            !uploaded)
+            return uploaded;
+    }
+    target_ = std::move(target);
     return Ok{};
 }
 
@@ -49,24 +87,39 @@ CandidateRenderCache::Entry* CandidateRenderCache::find(const Genome& genome) {
     return nullptr;
 }
 
-Status CandidateRenderCache::draw(const std::vector<Genome>& genomes) {
+Status CandidateRenderCache::draw(std::span<const Genome> genomes) {
     std::vector<MaterialInstance> materials;
-    for (const Genome& genome : genomes) materials.push_back(material(genome));
+    std::vector<std::shared_ptr<gpu::DisplayTile>> tiles;
+    std::vector<const gpu::DisplayTile*> targets;
+    for (const Genome& genome : genomes) {
+        auto tile = gpu::DisplayTile::create(device_, tileSize_, tileSize_, true);
+        if (!tile) return tile.error();
+        tiles.push_back(std::make_shared<gpu::DisplayTile>(std::move(tile).value()));
+        targets.push_back(tiles.back().get());
+        materials.push_back(material(genome));
+    }
     EvaluationOptions options;
-    options.heatmaps = false;  // the editor colours the ΔE00 maps itself, in the user's range
-    auto evaluation = renderer_->evaluate(material(preset_->target), materials, preset_->scene,
-                                          tileSize_, options);
+    options.heatmaps = false;  // the window colours the ΔE00 maps itself, in the user's range
+    options.candidateImages = !gpuRenderer_;
+    const MaterialInstance target = material(preset_->target);
+    auto evaluation =
+        gpuRenderer_ ? gpuRenderer_->evaluateIntoTiles(target, materials, preset_->scene, tileSize_,
+                                                       options, targets)
+                     : renderer_->evaluate(target, materials, preset_->scene, tileSize_, options);
     if (!evaluation) return evaluation.error();
+    if (!gpuRenderer_)
+        if (Status uploaded = gpu::uploadToTiles(device_, *uploadRunner_, targets,
+                                                 evaluation->candidates, evaluation->deltaE);
+            !uploaded)
+            return uploaded;
     for (std::size_t i = 0; i < genomes.size(); ++i)
-        entries_.push_back(
-            {genomes[i],
-             {std::move(evaluation->candidates[i]), std::move(evaluation->deltaE[i])},
-             useCounter_});
+        entries_.push_back({genomes[i], {tiles[i], evaluation->deltaE[i].stats}, useCounter_});
     return Ok{};
 }
 
 void CandidateRenderCache::evictBeyondCapacity() {
-    // The least recently used first; never what the current request uses.
+    // The least recently used first; never what the current request uses. A tile still shown
+    // by the window stays alive there until it is replaced.
     std::sort(entries_.begin(), entries_.end(),
               [](const Entry& a, const Entry& b) { return a.lastUse > b.lastUse; });
     std::size_t keep = capacity_;
@@ -84,8 +137,12 @@ Result<std::vector<CandidateTile>> CandidateRenderCache::tiles(std::span<const G
         else if (std::find(missing.begin(), missing.end(), genome) == missing.end())
             missing.push_back(genome);
     }
-    if (!missing.empty())
-        if (auto drawn = draw(missing); !drawn) return drawn.error();
+    for (std::size_t first = 0; first < missing.size(); first += kTilesPerSubmission) {
+        if (request_.cancelled && request_.cancelled()) return Error{"rendering cancelled"};
+        const std::size_t count = std::min(kTilesPerSubmission, missing.size() - first);
+        if (Status drawn = draw(std::span(missing).subspan(first, count)); !drawn)
+            return drawn.error();
+    }
     evictBeyondCapacity();
     std::vector<CandidateTile> result;
     for (const Genome& genome : genomes) result.push_back(find(genome)->tile);

@@ -1,10 +1,11 @@
 #pragma once
-// Renders candidate tiles and their ΔE00 maps against the target, and remembers them across
-// generations and across GA re-runs while the picture's inputs (target, family, kappa, scene,
-// textures) stay the same. The best candidates mostly survive from one generation to the next,
-// and a re-run with the same seed starts from much the same population, so most tiles of an
-// update are already drawn. New tiles are drawn in one batch by the render interface (on the
-// GPU: render + ΔE00 in one submission).
+// Renders candidate tiles and their ΔE00 maps against the target into DisplayTiles on the
+// window's device, and remembers them across generations and across GA re-runs while the
+// picture's inputs (target, family, kappa, scene, textures) stay the same. The best candidates
+// mostly survive from one generation to the next, and a re-run with the same seed starts from
+// much the same population, so most tiles of an update are already drawn. New tiles are drawn
+// by the render interface; on the GPU straight into the tiles (render + ΔE00 + copies in one
+// submission, nothing read back but the ΔE00 maps for their statistics).
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -14,27 +15,30 @@
 #include <vector>
 
 #include "color/ImageDifference.h"
-#include "common/Image.h"
 #include "common/Result.h"
+#include "gpu/DisplayTile.h"
+#include "gpu/GpuPopulationRenderer.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/Preset.h"
 
 namespace matevo::editor {
 
 struct CandidateTile {
-    Image image;
-    DeltaEMap deltaE;
+    std::shared_ptr<const gpu::DisplayTile> tile;  // render + ΔE00 map, on the window's device
+    DeltaEStats stats;                             // of the ΔE00 map
 };
 
 class CandidateRenderCache {
 public:
-    // `request` chooses the renderer, which is made at the first prepare (it needs textures).
+    // Tiles live on `device` (the window's), which must outlive the cache. `request` chooses
+    // the renderer (its device is set to `device`); it is made at the first prepare.
     CandidateRenderCache(int tileSize, int targetSize, std::size_t capacity,
-                         gpu::RendererRequest request);
+                         const gpu::Device& device, gpu::RendererRequest request);
 
-    // Serves `preset` from now on; forgets everything if the picture's inputs changed.
+    // Serves `preset` from now on; forgets everything if the picture's inputs changed. The
+    // target is rendered here, once per change.
     Status prepare(const Preset& preset, const std::filesystem::path& presetFile);
-    const Image& target() const { return target_; }
+    const std::shared_ptr<const gpu::DisplayTile>& target() const { return target_; }
     // The tiles of `genomes`, in order (an Error too when the request's `cancelled` said so).
     Result<std::vector<CandidateTile>> tiles(std::span<const Genome> genomes);
     // "GPU (llvmpipe)" or "CPU", for the status line; empty before the first prepare.
@@ -48,18 +52,25 @@ private:
     };
     bool drawsTheSame(const Preset& preset, const std::filesystem::path& presetFile) const;
     MaterialInstance material(const Genome& genome) const;
-    Status draw(const std::vector<Genome>& genomes);
+    Status createRenderer(const SceneTextures& textures);
+    Status drawTarget(const Preset& preset);
+    Status draw(std::span<const Genome> genomes);
     Entry* find(const Genome& genome);
     void evictBeyondCapacity();
 
     int tileSize_;
     int targetSize_;
     std::size_t capacity_;
+    const gpu::Device& device_;
     gpu::RendererRequest request_;
     std::unique_ptr<PopulationRenderer> renderer_;
+    // The GPU renderer writes tiles on the device itself; the CPU renderer's pictures are
+    // uploaded with uploadRunner_. Null with the CPU renderer.
+    gpu::GpuPopulationRenderer* gpuRenderer_ = nullptr;
+    std::optional<gpu::CommandRunner> uploadRunner_;
     std::optional<Preset> preset_;  // what the cached pictures were drawn from
     std::filesystem::path presetFile_;
-    Image target_;
+    std::shared_ptr<const gpu::DisplayTile> target_;
     std::vector<Entry> entries_;
     std::uint64_t useCounter_ = 0;
 };

@@ -2,22 +2,16 @@
 
 #include <algorithm>
 
-#include "ImageBridge.h"
-#include "Rgba8Image.h"
 #include "experiment/RunSummary.h"
 
 namespace matevo::editor {
-namespace {
 
-// Texture slots of the renders, after those of the evolution grid (EvolutionDisplay).
-constexpr std::size_t kFirstSlot = 1000;
-
-}  // namespace
-
-void showCompareMetrics(const CompareMetricsResult& result, ImageBridge& bridge,
-                        ui::CompareMetricsView& view) {
+Result<std::vector<std::shared_ptr<ShownImage>>> showCompareMetrics(
+    const CompareMetricsResult& result, ImageBridge& bridge, ui::CompareMetricsView& view) {
     view.error = result.error;
     view.metrics.clear();
+    auto shown = bridge.upload(result.renders);
+    if (!shown) return shown.error();
     for (const RunSummary& summary : summarizeRuns(result.records)) {
         std::vector<std::size_t> runs;
         for (std::size_t i = 0; i < result.records.size(); ++i)
@@ -28,11 +22,11 @@ void showCompareMetrics(const CompareMetricsResult& result, ImageBridge& bridge,
         ui::MetricRunsView metric{summary, {}, {}};
         for (std::size_t index : runs) {
             metric.meanDeltaE00.push_back(result.records[index].meanDeltaE00);
-            metric.renders.push_back(
-                bridge.setImage(kFirstSlot + index, toDisplayImage(result.renders[index])));
+            metric.renders.push_back((*shown)[index]->render());
         }
         view.metrics.push_back(std::move(metric));
     }
+    return shown;
 }
 
 }  // namespace matevo::editor

@@ -94,7 +94,7 @@ private:
     // ImGui's context and its GLFW and Vulkan backends, shut down in reverse.
     class ImGuiSession {
     public:
-        ImGuiSession(GLFWwindow* window, const VulkanContext& vulkan,
+        ImGuiSession(GLFWwindow* window, VulkanContext& vulkan,
                      const WindowRenderer& renderer, const std::string& iniPath);
         ~ImGuiSession();
         ImGuiSession(const ImGuiSession&) = delete;
@@ -129,11 +129,12 @@ private:
     // Frames drawn after a change, so that hover states and popups settle before waiting.
     static constexpr int kSettleFrames = 3;
     std::atomic<bool> workerPosted_{false};  // a worker has a result or progress to show
+    std::vector<std::shared_ptr<ShownImage>> compareImages_;  // what Compare metrics shows
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
 };
 
-EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, const VulkanContext& vulkan,
+EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, VulkanContext& vulkan,
                                       const WindowRenderer& renderer, const std::string& iniPath) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -143,17 +144,22 @@ EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, const VulkanContext& v
     ui::loadEditorFont();
     ImGui_ImplGlfw_InitForVulkan(window, false);  // WindowInput owns the callbacks
     ImGui_ImplVulkan_InitInfo info{};
-    info.Instance = vulkan.instance();
-    info.PhysicalDevice = vulkan.physicalDevice();
-    info.Device = vulkan.device();
-    info.QueueFamily = vulkan.queueFamily();
-    info.Queue = vulkan.queue();
+    info.Instance = vulkan.instance().handle();
+    info.PhysicalDevice = vulkan.device().physicalDevice();
+    info.Device = vulkan.device().handle();
+    info.QueueFamily = vulkan.device().queueFamily();
+    info.Queue = vulkan.device().queue();
     info.DescriptorPool = vulkan.descriptorPool();
     info.MinImageCount = renderer.minImageCount();
     info.ImageCount = renderer.imageCount();
     info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
     ImGui_ImplVulkan_Init(&info, renderer.renderPass());
-    vulkan.runNow([](VkCommandBuffer commands) { ImGui_ImplVulkan_CreateFontsTexture(commands); });
+    gpu::CommandRunner& runner = vulkan.setupRunner();
+    auto commands = runner.begin();
+    if (!commands) throw std::runtime_error(commands.error().message);
+    ImGui_ImplVulkan_CreateFontsTexture(*commands);
+    if (Status uploaded = runner.submitAndWait(); !uploaded)
+        throw std::runtime_error(uploaded.error().message);
     ImGui_ImplVulkan_DestroyFontUploadObjects();
 }
 
@@ -178,21 +184,26 @@ EditorApp::EditorApp(const EditorOptions& options)
     vulkan_ = std::move(*vulkan);
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
-    renderer_ = std::make_unique<WindowRenderer>(
-        *vulkan_, VkExtent2D{std::uint32_t(width), std::uint32_t(height)});
+    auto renderer =
+        WindowRenderer::create(*vulkan_, VkExtent2D{std::uint32_t(width), std::uint32_t(height)});
+    if (!renderer) throw std::runtime_error(renderer.error().message);
+    renderer_ = std::move(renderer).value();
     imgui_ = std::make_unique<ImGuiSession>(window_.get(), *vulkan_, *renderer_, iniPath_);
     ui::rememberViewSettings(ui_.state());
-    bridge_ = std::make_unique<ImageBridge>(*vulkan_, renderer_->renderPass());
+    auto bridge = ImageBridge::create(*vulkan_, renderer_->renderPass());
+    if (!bridge) throw std::runtime_error(bridge.error().message);
+    bridge_ = std::move(bridge).value();
     display_ = std::make_unique<EvolutionDisplay>(*bridge_);
     const auto wake = [this] {
         workerPosted_.store(true);
         glfwPostEmptyEvent();
     };
-    worker_ = std::make_unique<EvolutionWorker>(wake, options.backend, options.validation);
+    // The workers render on the window's device: tiles are shown without leaving the GPU.
+    worker_ = std::make_unique<EvolutionWorker>(wake, vulkan_->device(), options.backend);
     gpu::RendererRequest compareRenderer;
     compareRenderer.backend = options.backend;
     compareRenderer.who = "matevo edit: Compare metrics";
-    compareRenderer.headless = {options.validation, true};
+    compareRenderer.device = &vulkan_->device();
     compareWorker_ = std::make_unique<CompareMetricsWorker>(wake, compareRenderer);
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
@@ -206,7 +217,7 @@ EditorApp::~EditorApp() {
     io.IniFilename = nullptr;
     compareWorker_.reset();
     worker_.reset();
-    renderer_->waitIdle();
+    (void)renderer_->waitIdle();  // frames in flight use the images released below
 }
 
 bool EditorApp::shouldQuit() const {
@@ -262,7 +273,7 @@ int EditorApp::run() {
         std::fprintf(stderr, "matevo edit: %s\n", failure_.c_str());
         return 1;
     }
-    const int validationMessages = vulkan_->validationMessages() + worker_->validationMessages();
+    const int validationMessages = vulkan_->validationMessages();
     if (validationMessages > 0) {
         std::fprintf(stderr, "matevo edit: %d Vulkan validation message(s)\n", validationMessages);
         return 1;
@@ -299,15 +310,17 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
     ImDrawData* drawData = ImGui::GetDrawData();
+    bridge_->setHeatmapRange(ui_.state().heatmap.minDeltaE, ui_.state().heatmap.maxDeltaE);
     FrameRecording recording;
-    recording.beforePass = [this](VkCommandBuffer commands) { bridge_->recordUploads(commands); };
-    recording.inPass = [this, drawData](VkCommandBuffer commands) {
-        bridge_->prepare(*drawData, commands);
+    recording.inPass = [this, drawData](VkCommandBuffer commands, std::size_t frameSlot) {
+        bridge_->prepare(*drawData, commands, frameSlot);
         ImGui_ImplVulkan_RenderDrawData(drawData, commands);
     };
     Rgba8Image captured;
-    const bool drawn = renderer_->drawFrame(VkExtent2D{std::uint32_t(width), std::uint32_t(height)},
-                                            recording, captureNow ? &captured : nullptr);
+    auto drawFrame = renderer_->drawFrame(VkExtent2D{std::uint32_t(width), std::uint32_t(height)},
+                                          recording, captureNow ? &captured : nullptr);
+    if (!drawFrame) failure_ = drawFrame.error().message;
+    const bool drawn = drawFrame && *drawFrame;
     if (drawn && captureNow) saveScreenshot(captured, *captureNow);
     if (!drawn && captureNow) screenshotPath = captureNow;  // try again next frame
     return drawn;
@@ -326,15 +339,10 @@ void EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath)
 void EditorApp::applyEvolutionResults() {
     ui::EditorState& state = ui_.state();
     std::optional<EvolutionUpdate> update = worker_->takeLatest();
-    const bool recolour = display_->needsRecolour(state.heatmap);
-    if (!update && !recolour) return;
-    renderer_->waitIdle();  // textures are about to change
-    if (update) {
-        if (!update->error.empty()) state.status.post(update->error, ui::StatusKind::Error);
-        display_->show(std::move(*update), state.heatmap, state.evolution);
-    } else {
-        display_->recolour(state.heatmap, state.evolution);
-    }
+    if (!update) return;
+    if (!update->error.empty()) state.status.post(update->error, ui::StatusKind::Error);
+    if (Status shown = display_->show(std::move(*update), state.evolution); !shown)
+        failure_ = shown.error().message;
 }
 
 void EditorApp::applyCompareMetricsResults() {
@@ -343,8 +351,12 @@ void EditorApp::applyCompareMetricsResults() {
     view.progress = compareWorker_->progress();
     std::optional<CompareMetricsResult> result = compareWorker_->takeResult();
     if (!result) return;
-    renderer_->waitIdle();  // textures are about to change
-    showCompareMetrics(*result, *bridge_, view);
+    auto shown = showCompareMetrics(*result, *bridge_, view);
+    if (!shown) {
+        failure_ = shown.error().message;
+        return;
+    }
+    compareImages_ = std::move(shown).value();
 }
 
 void EditorApp::submitChangesToWorker() {

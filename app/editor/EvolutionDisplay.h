@@ -1,36 +1,37 @@
 #pragma once
-// Turns the worker's updates into what the panels show: uploads the target, candidates and
-// their heatmaps as textures and fills the UI's EvolutionView. Keeps the last update's ΔE00
-// maps so that a new heatmap range re-colours the tiles without re-running the GA.
+// Turns the worker's updates into what the panels show: the target and candidate tiles (already
+// on the GPU) made drawable by the image bridge, and the UI's EvolutionView filled in. A tile
+// shown in the previous update keeps its descriptor set. The heatmap range is applied by the
+// bridge when drawing, so changing it costs nothing here.
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 #include "EditorState.h"
 #include "EvolutionWorker.h"
+#include "ImageBridge.h"
 
 namespace matevo::editor {
-
-class ImageBridge;
 
 class EvolutionDisplay {
 public:
     explicit EvolutionDisplay(ImageBridge& bridge) : bridge_(bridge) {}
 
-    // Both upload textures: call only while no frame is in flight.
-    void show(EvolutionUpdate update, const ui::HeatmapView& heatmap, ui::EvolutionView& view);
-    void recolour(const ui::HeatmapView& heatmap, ui::EvolutionView& view);
+    Status show(EvolutionUpdate update, ui::EvolutionView& view);
 
-    bool needsRecolour(const ui::HeatmapView& heatmap) const;
-    std::uint64_t shownJob() const { return shown_.jobId; }
-    bool shownFinished() const { return shown_.finished; }
-    const std::string& error() const { return shown_.error; }
+    std::uint64_t shownJob() const { return jobId_; }
+    bool shownFinished() const { return finished_; }
 
 private:
-    ImTextureID uploadHeatmap(std::size_t index, const ui::HeatmapView& heatmap);
+    Result<std::shared_ptr<ShownImage>> showTile(
+        const std::shared_ptr<const gpu::DisplayTile>& tile);
 
     ImageBridge& bridge_;
-    EvolutionUpdate shown_;
-    float colouredMin_ = -1.0f;
-    float colouredMax_ = -1.0f;
+    std::uint64_t jobId_ = 0;
+    bool finished_ = false;
+    std::shared_ptr<ShownImage> target_;
+    std::vector<std::shared_ptr<ShownImage>> candidates_;
+    std::vector<std::shared_ptr<ShownImage>> kept_;
 };
 
 }  // namespace matevo::editor

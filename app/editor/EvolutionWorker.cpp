@@ -14,16 +14,16 @@ double meanOf(const std::vector<CandidateResult>& candidates) {
     if (candidates.empty()) return 0.0;
     return std::accumulate(
                candidates.begin(), candidates.end(), 0.0,
-               [](double sum, const CandidateResult& c) { return sum + c.deltaE.stats.mean; }) /
+               [](double sum, const CandidateResult& c) { return sum + c.deltaE.mean; }) /
            double(candidates.size());
 }
 
 }  // namespace
 
-EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate, RenderBackend backend,
-                                 bool validation)
+EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate, const gpu::Device& device,
+                                 RenderBackend backend)
     : onUpdate_(std::move(onUpdate)),
-      thread_([this, backend, validation] { run(backend, validation); }) {}
+      thread_([this, &device, backend] { run(device, backend); }) {}
 
 EvolutionWorker::~EvolutionWorker() {
     {
@@ -70,21 +70,16 @@ void EvolutionWorker::publish(EvolutionUpdate update) {
     onUpdate_();
 }
 
-void EvolutionWorker::run(RenderBackend backend, bool validation) {
+void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
     // Below the UI thread, so frames stay smooth while the GA runs. Render and ΔE00 helper
-    // threads, and the worker's own lavapipe threads, inherit the niceness from this thread.
+    // threads inherit the niceness from this thread.
     setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), kWorkerNiceness);
-    // The worker's own device, so that its validation messages can be counted.
-    std::optional<gpu::GpuContext> context;
-    if (backend == RenderBackend::Gpu)
-        if (auto created = gpu::GpuContext::createHeadless({validation, true}))
-            context.emplace(std::move(created).value());
     gpu::RendererRequest request;
     request.backend = backend;
     request.who = "matevo edit";
-    request.device = context ? &context->device : nullptr;
     request.cancelled = [this] { return cancelled(runningJobId_.load()); };
-    CandidateRenderCache renderCache(kTileSize, kTargetSize, kRenderCacheSize, std::move(request));
+    CandidateRenderCache renderCache(kTileSize, kTargetSize, kRenderCacheSize, device,
+                                     std::move(request));
     for (;;) {
         EvolutionJob job;
         std::uint64_t jobId = 0;
@@ -99,10 +94,6 @@ void EvolutionWorker::run(RenderBackend backend, bool validation) {
             working_ = true;
         }
         evolve(job, jobId, renderCache);
-        if (context) {
-            const gpu::ValidationLog& log = context->instance.validationLog();
-            validationMessages_.store(log.errorCount() + log.warningCount());
-        }
         {
             std::lock_guard lock(mutex_);
             working_ = false;
@@ -161,14 +152,12 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
         update.candidates.clear();
         update.kept.clear();
         for (std::size_t i = 0; i < shown.size(); ++i) {
-            CandidateTile& tile = (*tiles)[i];
+            auto& tile = (*tiles)[i];
             if (i < firstOf.size())
                 update.candidates.push_back({int(firstOf[i]) + 1, ranked[firstOf[i]],
-                                             std::move(tile.image), std::move(tile.deltaE),
-                                             copies[i]});
+                                             std::move(tile.tile), tile.stats, copies[i]});
             else
-                update.kept.push_back(
-                    {0, {shown[i], 0.0}, std::move(tile.image), std::move(tile.deltaE), 0});
+                update.kept.push_back({0, {shown[i], 0.0}, std::move(tile.tile), tile.stats, 0});
         }
         const GenerationStats& stats = ga.history().back();
         update.history.push_back(

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -31,16 +32,16 @@ struct EvolutionJob {
 struct CandidateResult {
     int rank = 0;  // 1 = best
     Individual individual;
-    Image image;
-    DeltaEMap deltaE;  // against the target at the tile size
-    int copies = 1;    // individuals in the population with this genome
+    std::shared_ptr<const gpu::DisplayTile> tile;  // render + ΔE00 map against the target
+    DeltaEStats deltaE;
+    int copies = 1;  // individuals in the population with this genome
 };
 
 struct EvolutionUpdate {
     std::uint64_t jobId = 0;
     int totalGenerations = 0;
     bool finished = false;
-    Image target;                             // large, for the target panel
+    std::shared_ptr<const gpu::DisplayTile> target;  // large, for the target panel
     std::string backend;                      // what rendered the tiles: "GPU (name)" or "CPU"
     std::vector<CandidateResult> candidates;  // best first
     std::vector<CandidateResult> kept;        // the preset's kept materials of its family
@@ -57,9 +58,10 @@ public:
     static constexpr std::size_t kRenderCacheSize = 128;  // tiles (~50 MB)
     static constexpr int kWorkerNiceness = 5;
 
-    // Tiles render on `backend` (the CPU when no Vulkan device is usable); with `validation` the
-    // worker's GPU context runs under the Vulkan validation layer.
-    EvolutionWorker(std::function<void()> onUpdate, RenderBackend backend, bool validation);
+    // Tiles are images on `device` (the window's, which must outlive the worker), rendered
+    // there on `backend` (with the CPU, uploaded).
+    EvolutionWorker(std::function<void()> onUpdate, const gpu::Device& device,
+                    RenderBackend backend);
     ~EvolutionWorker();
     EvolutionWorker(const EvolutionWorker&) = delete;
     EvolutionWorker& operator=(const EvolutionWorker&) = delete;
@@ -70,11 +72,9 @@ public:
     std::optional<EvolutionUpdate> takeLatest();
     // A job is queued or running.
     bool busy() const;
-    // Validation messages of the worker's GPU context so far.
-    int validationMessages() const { return validationMessages_.load(); }
 
 private:
-    void run(RenderBackend backend, bool validation);
+    void run(const gpu::Device& device, RenderBackend backend);
     void evolve(const EvolutionJob& job, std::uint64_t jobId, CandidateRenderCache& renderCache);
     bool cancelled(std::uint64_t jobId) const;
     void publish(EvolutionUpdate update);
@@ -88,7 +88,6 @@ private:
     bool stopping_ = false;
     std::atomic<std::uint64_t> latestJobId_{0};
     std::atomic<std::uint64_t> runningJobId_{0};
-    std::atomic<int> validationMessages_{0};
     std::thread thread_;  // last: starts after everything it uses exists
 };
 

@@ -5,162 +5,134 @@
 #include <cstring>
 
 #include "VulkanContext.h"
-#include "gpu/GpuImage.h"
-// SPIR-V generated at build time (app/CMakeLists.txt); the arrays need <cstdint> first.
+#include "gpu/HeatmapColormap.h"
+#include "gpu/VulkanError.h"
+// SPIR-V generated at build time (app/editor/CMakeLists.txt); the arrays need <cstdint> first.
 #include "shaders/image.frag.h"
 #include "shaders/image.vert.h"
 
 namespace matevo::editor {
 namespace {
 
-VkShaderModule createShader(VkDevice device, const std::uint32_t* code, std::size_t bytes) {
-    VkShaderModuleCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+// Bindings of the image pipeline's descriptor set (shaders/image.frag).
+enum Binding : std::uint32_t { kRenderBinding = 0, kDeltaEBinding = 1, kColormapBinding = 2 };
+
+// Push constants: the vertex transform, then the fragment shader's heatmap settings.
+struct FragmentSettings {
+    std::uint32_t showHeatmap;
+    float minDeltaE;
+    float maxDeltaE;
+};
+constexpr std::uint32_t kTransformBytes = 4 * sizeof(float);
+
+Result<gpu::UniqueSampler> createSampler(VkDevice device, VkFilter filter) {
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = filter;
+    info.minFilter = filter;
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.addressModeU = info.addressModeV = info.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.maxLod = 0.0f;
+    VkSampler sampler = VK_NULL_HANDLE;
+    if (Status s = gpu::checkVulkan(vkCreateSampler(device, &info, nullptr, &sampler),
+                                    "creating a sampler");
+        !s)
+        return s.error();
+    return gpu::UniqueSampler(device, sampler);
+}
+
+Result<gpu::UniqueShaderModule> createShader(VkDevice device, const std::uint32_t* code,
+                                             std::size_t bytes) {
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = bytes;
     info.pCode = code;
     VkShaderModule module = VK_NULL_HANDLE;
-    check(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule");
-    return module;
+    if (Status s = gpu::checkVulkan(vkCreateShaderModule(device, &info, nullptr, &module),
+                                    "creating a shader module");
+        !s)
+        return s.error();
+    return gpu::UniqueShaderModule(device, module);
 }
 
 }  // namespace
 
-EditorTexture::EditorTexture(const VulkanContext& context, VkDescriptorSetLayout layout,
-                             VkSampler sampler, int width, int height)
-    : device_(context.device()),
-      pool_(context.descriptorPool()),
-      width_(width),
-      height_(height),
-      staging_(context, VkDeviceSize(width) * VkDeviceSize(height) * 4,
-               VK_BUFFER_USAGE_TRANSFER_SRC_BIT) {
-    VkImageCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
-    info.imageType = VK_IMAGE_TYPE_2D;
-    // UNORM holding sRGB-encoded bytes: the window is UNORM too, so values pass through as-is.
-    info.format = VK_FORMAT_R8G8B8A8_UNORM;
-    info.extent = {std::uint32_t(width), std::uint32_t(height), 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    check(vkCreateImage(device_, &info, nullptr, &image_), "vkCreateImage");
-    VkMemoryRequirements needs;
-    vkGetImageMemoryRequirements(device_, image_, &needs);
-    memory_ = context.allocateMemory(needs, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    check(vkBindImageMemory(device_, image_, memory_, 0), "vkBindImageMemory");
+ShownImage::ShownImage(std::shared_ptr<const gpu::DisplayTile> tile, VkDevice device,
+                       VkDescriptorPool pool, VkDescriptorSet set)
+    : tile_(std::move(tile)),
+      device_(device),
+      pool_(pool),
+      set_(set),
+      views_{View{this, false}, View{this, true}} {}
 
-    VkImageViewCreateInfo view{};
-    view.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
-    view.image = image_;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    view.format = info.format;
-    view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    check(vkCreateImageView(device_, &view, nullptr, &view_), "vkCreateImageView");
+ShownImage::~ShownImage() { vkFreeDescriptorSets(device_, pool_, 1, &set_); }
 
-    VkDescriptorSetAllocateInfo allocate{};
-    allocate.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
-    allocate.descriptorPool = pool_;
-    allocate.descriptorSetCount = 1;
-    allocate.pSetLayouts = &layout;
-    check(vkAllocateDescriptorSets(device_, &allocate, &descriptorSet_),
-          "vkAllocateDescriptorSets");
-    VkDescriptorImageInfo imageInfo{sampler, view_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet write{};
-    write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-    write.dstSet = descriptorSet_;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    write.pImageInfo = &imageInfo;
-    vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+Result<std::unique_ptr<ImageBridge>> ImageBridge::create(VulkanContext& context,
+                                                         VkRenderPass renderPass) {
+    std::unique_ptr<ImageBridge> bridge(new ImageBridge(context));
+    bridge->device_ = context.device().handle();
+    if (Status s = bridge->createLayouts(); !s) return s.error();
+    if (Status s = bridge->createPipeline(renderPass); !s) return s.error();
+    if (Status s = bridge->createSharedResources(); !s) return s.error();
+    return bridge;
 }
 
-EditorTexture::~EditorTexture() {
-    vkFreeDescriptorSets(device_, pool_, 1, &descriptorSet_);
-    vkDestroyImageView(device_, view_, nullptr);
-    vkDestroyImage(device_, image_, nullptr);
-    vkFreeMemory(device_, memory_, nullptr);
-}
+Status ImageBridge::createLayouts() {
+    auto renderSampler = createSampler(device_, VK_FILTER_LINEAR);
+    if (!renderSampler) return renderSampler.error();
+    renderSampler_ = std::move(renderSampler).value();
+    auto deltaESampler = createSampler(device_, VK_FILTER_NEAREST);
+    if (!deltaESampler) return deltaESampler.error();
+    deltaESampler_ = std::move(deltaESampler).value();
 
-void EditorTexture::stage(const Rgba8Image& pixels) {
-    std::memcpy(staging_.data(), pixels.rgba.data(),
-                std::min<std::size_t>(pixels.rgba.size(), std::size_t(staging_.size())));
-    staged_ = true;
-}
+    VkDescriptorSetLayoutBinding bindings[3] = {};
+    for (std::uint32_t binding : {kRenderBinding, kDeltaEBinding, kColormapBinding}) {
+        bindings[binding].binding = binding;
+        bindings[binding].descriptorType = binding == kColormapBinding
+                                               ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                               : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        bindings[binding].descriptorCount = 1;
+        bindings[binding].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+    }
+    VkDescriptorSetLayoutCreateInfo setLayout{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    setLayout.bindingCount = 3;
+    setLayout.pBindings = bindings;
+    VkDescriptorSetLayout set = VK_NULL_HANDLE;
+    if (Status s = gpu::checkVulkan(vkCreateDescriptorSetLayout(device_, &setLayout, nullptr, &set),
+                                    "creating a descriptor set layout");
+        !s)
+        return s;
+    setLayout_ = gpu::UniqueDescriptorSetLayout(device_, set);
 
-void EditorTexture::recordUpload(VkCommandBuffer commands) {
-    if (!staged_) return;
-    gpu::transitionImage(
-        commands, image_,
-        initialised_ ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
-        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-        VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {std::uint32_t(width_), std::uint32_t(height_), 1};
-    vkCmdCopyBufferToImage(commands, staging_.buffer(), image_,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    gpu::transitionImage(commands, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                         VK_ACCESS_SHADER_READ_BIT);
-    staged_ = false;
-    initialised_ = true;
-}
-
-ImageBridge::ImageBridge(const VulkanContext& context, VkRenderPass renderPass)
-    : context_(context), device_(context.device()) {
-    VkSamplerCreateInfo sampler{};
-    sampler.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-    sampler.magFilter = VK_FILTER_LINEAR;
-    sampler.minFilter = VK_FILTER_LINEAR;
-    sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
-    sampler.addressModeU = sampler.addressModeV = sampler.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    sampler.maxLod = 0.0f;
-    check(vkCreateSampler(device_, &sampler, nullptr, &sampler_), "vkCreateSampler");
-
-    VkDescriptorSetLayoutBinding binding{};
-    binding.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    binding.descriptorCount = 1;
-    binding.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
-    VkDescriptorSetLayoutCreateInfo setLayout{};
-    setLayout.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-    setLayout.bindingCount = 1;
-    setLayout.pBindings = &binding;
-    check(vkCreateDescriptorSetLayout(device_, &setLayout, nullptr, &setLayout_),
-          "vkCreateDescriptorSetLayout");
-    const VkPushConstantRange transform{VK_SHADER_STAGE_VERTEX_BIT, 0, 4 * sizeof(float)};
-    VkPipelineLayoutCreateInfo layout{};
-    layout.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+    const VkPushConstantRange ranges[2] = {
+        {VK_SHADER_STAGE_VERTEX_BIT, 0, kTransformBytes},
+        {VK_SHADER_STAGE_FRAGMENT_BIT, kTransformBytes, sizeof(FragmentSettings)}};
+    VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layout.setLayoutCount = 1;
-    layout.pSetLayouts = &setLayout_;
-    layout.pushConstantRangeCount = 1;
-    layout.pPushConstantRanges = &transform;
-    check(vkCreatePipelineLayout(device_, &layout, nullptr, &pipelineLayout_),
-          "vkCreatePipelineLayout");
-    createPipeline(renderPass);
+    layout.pSetLayouts = &set;
+    layout.pushConstantRangeCount = 2;
+    layout.pPushConstantRanges = ranges;
+    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+    if (Status s =
+            gpu::checkVulkan(vkCreatePipelineLayout(device_, &layout, nullptr, &pipelineLayout),
+                             "creating a pipeline layout");
+        !s)
+        return s;
+    pipelineLayout_ = gpu::UniquePipelineLayout(device_, pipelineLayout);
+    return Ok{};
 }
 
-ImageBridge::~ImageBridge() {
-    textures_.clear();
-    vkDestroyPipeline(device_, pipeline_, nullptr);
-    vkDestroyPipelineLayout(device_, pipelineLayout_, nullptr);
-    vkDestroyDescriptorSetLayout(device_, setLayout_, nullptr);
-    vkDestroySampler(device_, sampler_, nullptr);
-}
-
-void ImageBridge::createPipeline(VkRenderPass renderPass) {
-    const VkShaderModule vertex = createShader(device_, kImageVertSpirv, sizeof kImageVertSpirv);
-    const VkShaderModule fragment = createShader(device_, kImageFragSpirv, sizeof kImageFragSpirv);
+Status ImageBridge::createPipeline(VkRenderPass renderPass) {
+    auto vertex = createShader(device_, kImageVertSpirv, sizeof kImageVertSpirv);
+    if (!vertex) return vertex.error();
+    auto fragment = createShader(device_, kImageFragSpirv, sizeof kImageFragSpirv);
+    if (!fragment) return fragment.error();
     VkPipelineShaderStageCreateInfo stages[2] = {};
     stages[0].sType = stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = vertex;
+    stages[0].module = vertex->get();
     stages[0].pName = "main";
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = fragment;
+    stages[1].module = fragment->get();
     stages[1].pName = "main";
 
     const VkVertexInputBindingDescription binding{0, sizeof(ImDrawVert),
@@ -169,27 +141,27 @@ void ImageBridge::createPipeline(VkRenderPass renderPass) {
         {0, 0, VK_FORMAT_R32G32_SFLOAT, std::uint32_t(offsetof(ImDrawVert, pos))},
         {1, 0, VK_FORMAT_R32G32_SFLOAT, std::uint32_t(offsetof(ImDrawVert, uv))},
         {2, 0, VK_FORMAT_R8G8B8A8_UNORM, std::uint32_t(offsetof(ImDrawVert, col))}};
-    VkPipelineVertexInputStateCreateInfo vertexInput{};
-    vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+    VkPipelineVertexInputStateCreateInfo vertexInput{
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertexInput.vertexBindingDescriptionCount = 1;
     vertexInput.pVertexBindingDescriptions = &binding;
     vertexInput.vertexAttributeDescriptionCount = 3;
     vertexInput.pVertexAttributeDescriptions = attributes;
-    VkPipelineInputAssemblyStateCreateInfo assembly{};
-    assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+    VkPipelineInputAssemblyStateCreateInfo assembly{
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{};
-    viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+    VkPipelineViewportStateCreateInfo viewport{
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport.viewportCount = 1;
     viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{};
-    raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+    VkPipelineRasterizationStateCreateInfo raster{
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = VK_CULL_MODE_NONE;
     raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo multisample{};
-    multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+    VkPipelineMultisampleStateCreateInfo multisample{
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
     // Straight-alpha "over", as ImGui blends.
     VkPipelineColorBlendAttachmentState blend{};
@@ -202,20 +174,18 @@ void ImageBridge::createPipeline(VkRenderPass renderPass) {
     blend.alphaBlendOp = VK_BLEND_OP_ADD;
     blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                            VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    VkPipelineColorBlendStateCreateInfo blendState{};
-    blendState.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
+    VkPipelineColorBlendStateCreateInfo blendState{
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blendState.attachmentCount = 1;
     blendState.pAttachments = &blend;
-    VkPipelineDepthStencilStateCreateInfo depth{};
-    depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+    VkPipelineDepthStencilStateCreateInfo depth{
+        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     const VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamic{};
-    dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     dynamic.dynamicStateCount = 2;
     dynamic.pDynamicStates = dynamicStates;
 
-    VkGraphicsPipelineCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
     info.stageCount = 2;
     info.pStages = stages;
     info.pVertexInputState = &vertexInput;
@@ -226,30 +196,113 @@ void ImageBridge::createPipeline(VkRenderPass renderPass) {
     info.pDepthStencilState = &depth;
     info.pColorBlendState = &blendState;
     info.pDynamicState = &dynamic;
-    info.layout = pipelineLayout_;
+    info.layout = pipelineLayout_.get();
     info.renderPass = renderPass;
-    check(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
-          "vkCreateGraphicsPipelines");
-    vkDestroyShaderModule(device_, vertex, nullptr);
-    vkDestroyShaderModule(device_, fragment, nullptr);
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    if (Status s = gpu::checkVulkan(
+            vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+            "creating the image pipeline");
+        !s)
+        return s;
+    pipeline_ = gpu::UniquePipeline(device_, pipeline);
+    return Ok{};
 }
 
-ImTextureID ImageBridge::setImage(std::size_t slot, const Rgba8Image& pixels) {
-    if (slot >= textures_.size()) textures_.resize(slot + 1);
-    auto& texture = textures_[slot];
-    if (!texture || texture->width() != pixels.width || texture->height() != pixels.height)
-        texture = std::make_unique<EditorTexture>(context_, setLayout_, sampler_, pixels.width,
-                                                  pixels.height);
-    texture->stage(pixels);
-    return texture->id();
+Status ImageBridge::createSharedResources() {
+    const gpu::DeltaE00Pass::Colormap colors = gpu::heatmapColormap();
+    auto colormap = gpu::Buffer::create(context_.device(), sizeof colors,
+                                        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUse::Upload);
+    if (!colormap) return colormap.error();
+    colormap_ = std::move(colormap).value();
+    std::memcpy(colormap_.bytes().data(), colors.data(), sizeof colors);
+
+    auto tile = gpu::DisplayTile::create(context_.device(), 1, 1, true);
+    if (!tile) return tile.error();
+    noDeltaE_ = std::move(tile).value();
+    const Image render(1, 1);
+    const DeltaEMap notCovered{1, 1, {0.0f}, {0}, {}};
+    const gpu::DisplayTile* tiles[] = {&*noDeltaE_};
+    return gpu::uploadToTiles(context_.device(), context_.setupRunner(), tiles,
+                              std::span(&render, 1), std::span(&notCovered, 1));
 }
 
-void ImageBridge::recordUploads(VkCommandBuffer commands) {
-    for (auto& texture : textures_)
-        if (texture) texture->recordUpload(commands);
+Result<std::shared_ptr<ShownImage>> ImageBridge::show(
+    std::shared_ptr<const gpu::DisplayTile> tile) {
+    const VkDescriptorSetLayout layout = setLayout_.get();
+    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocate.descriptorPool = context_.descriptorPool();
+    allocate.descriptorSetCount = 1;
+    allocate.pSetLayouts = &layout;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    if (Status s = gpu::checkVulkan(vkAllocateDescriptorSets(device_, &allocate, &set),
+                                    "allocating a descriptor set for an image");
+        !s)
+        return s.error();
+    const gpu::GpuImage& deltaE = tile->deltaE ? *tile->deltaE : *noDeltaE_->deltaE;
+    const VkDescriptorImageInfo images[2] = {
+        {renderSampler_.get(), tile->render.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {deltaESampler_.get(), deltaE.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
+    const VkDescriptorBufferInfo colormap{colormap_.handle(), 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet writes[3] = {};
+    for (std::uint32_t binding : {kRenderBinding, kDeltaEBinding, kColormapBinding}) {
+        writes[binding].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        writes[binding].dstSet = set;
+        writes[binding].dstBinding = binding;
+        writes[binding].descriptorCount = 1;
+        writes[binding].descriptorType = binding == kColormapBinding
+                                             ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                             : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        if (binding == kColormapBinding)
+            writes[binding].pBufferInfo = &colormap;
+        else
+            writes[binding].pImageInfo = &images[binding];
+    }
+    vkUpdateDescriptorSets(device_, 3, writes, 0, nullptr);
+    return std::shared_ptr<ShownImage>(
+        new ShownImage(std::move(tile), device_, context_.descriptorPool(), set));
 }
 
-void ImageBridge::prepare(ImDrawData& drawData, VkCommandBuffer commands) {
+Result<std::vector<std::shared_ptr<ShownImage>>> ImageBridge::upload(
+    std::span<const Image> images) {
+    std::vector<std::shared_ptr<gpu::DisplayTile>> tiles;
+    std::vector<const gpu::DisplayTile*> targets;
+    for (const Image& image : images) {
+        auto tile = gpu::DisplayTile::create(context_.device(), image.width, image.height, false);
+        if (!tile) return tile.error();
+        tiles.push_back(std::make_shared<gpu::DisplayTile>(std::move(tile).value()));
+        targets.push_back(tiles.back().get());
+    }
+    // One submission per size: the batch copy takes same-sized pictures.
+    for (std::size_t first = 0; first < images.size();) {
+        std::size_t end = first;
+        while (end < images.size() && images[end].width == images[first].width &&
+               images[end].height == images[first].height)
+            ++end;
+        if (Status s = gpu::uploadToTiles(context_.device(), context_.setupRunner(),
+                                          std::span(targets).subspan(first, end - first),
+                                          images.subspan(first, end - first), {});
+            !s)
+            return s.error();
+        first = end;
+    }
+    std::vector<std::shared_ptr<ShownImage>> shown;
+    for (auto& tile : tiles) {
+        auto image = show(std::move(tile));
+        if (!image) return image.error();
+        shown.push_back(std::move(image).value());
+    }
+    return shown;
+}
+
+void ImageBridge::setHeatmapRange(float minDeltaE, float maxDeltaE) {
+    minDeltaE_ = minDeltaE;
+    maxDeltaE_ = maxDeltaE;
+}
+
+void ImageBridge::prepare(ImDrawData& drawData, VkCommandBuffer commands, std::size_t frameSlot) {
+    // The slot's previous frame has finished (WindowRenderer waited for it).
+    std::vector<std::shared_ptr<ShownImage>>& used = inFlight_[frameSlot];
+    used.clear();
     commands_ = commands;
     displayPosition_ = drawData.DisplayPos;
     displaySize_ = drawData.DisplaySize;
@@ -272,8 +325,10 @@ void ImageBridge::prepare(ImDrawData& drawData, VkCommandBuffer commands) {
                 rewritten.push_back(command);
                 continue;
             }
-            draws_.push_back({this, static_cast<const EditorTexture*>(command.TextureId),
-                              command.ClipRect, command.ElemCount, command.IdxOffset + globalIndex,
+            const auto* view = static_cast<const ShownImage::View*>(command.TextureId);
+            used.push_back(view->owner->shared_from_this());
+            draws_.push_back({this, view, command.ClipRect, command.ElemCount,
+                              command.IdxOffset + globalIndex,
                               int(command.VtxOffset) + globalVertex});
             ImDrawCmd callback = command;
             callback.UserCallback = &ImageBridge::drawCallback;
@@ -307,10 +362,11 @@ void ImageBridge::draw(const ImageDraw& image) const {
         std::min(framebufferHeight, (image.clipRect.w - displayPosition_.y) * framebufferScale_.y);
     if (clipX1 <= clipX0 || clipY1 <= clipY0) return;
 
-    vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-    const VkDescriptorSet set = image.texture->descriptorSet();
-    vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set,
-                            0, nullptr);
+    const VkPipelineLayout layout = pipelineLayout_.get();
+    vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
+    const VkDescriptorSet set = image.view->owner->set_;
+    vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 0,
+                            nullptr);
     const VkViewport viewport{0, 0, framebufferWidth, framebufferHeight, 0, 1};
     vkCmdSetViewport(commands_, 0, 1, &viewport);
     const VkRect2D scissor{{std::int32_t(clipX0), std::int32_t(clipY0)},
@@ -319,8 +375,11 @@ void ImageBridge::draw(const ImageDraw& image) const {
     const float scale[2] = {2.0f / displaySize_.x, 2.0f / displaySize_.y};
     const float transform[4] = {scale[0], scale[1], -1.0f - displayPosition_.x * scale[0],
                                 -1.0f - displayPosition_.y * scale[1]};
-    vkCmdPushConstants(commands_, pipelineLayout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof transform,
+    vkCmdPushConstants(commands_, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, kTransformBytes,
                        transform);
+    const FragmentSettings settings{image.view->heatmap ? 1u : 0u, minDeltaE_, maxDeltaE_};
+    vkCmdPushConstants(commands_, layout, VK_SHADER_STAGE_FRAGMENT_BIT, kTransformBytes,
+                       sizeof settings, &settings);
     vkCmdDrawIndexed(commands_, image.elementCount, 1, image.firstIndex, image.vertexOffset, 0);
 }
 

@@ -1,88 +1,106 @@
 #pragma once
 // Shows our own images in Dear ImGui 1.86, whose Vulkan backend binds only its font texture.
-// The UI draws images with ordinary ImGui calls (their ImTextureID is an EditorTexture*);
-// before the backend renders, prepare() turns each such draw command into a callback that
-// binds our pipeline (same vertex layout and transform as ImGui's) with the image's descriptor
-// set and draws the command's own vertices, followed by a reset of ImGui's render state.
-#include <cstddef>
+// Images are DisplayTiles on the window's device (the worker renders into them, nothing is
+// copied for display). The UI draws them with ordinary ImGui calls whose ImTextureID comes from
+// a ShownImage; before the backend renders, prepare() turns each such draw command into a
+// callback that binds our pipeline (same vertex layout and transform as ImGui's) with the
+// image's descriptor set and draws the command's own vertices, then resets ImGui's state.
+// Used on the UI thread only.
+#include <array>
 #include <memory>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include <imgui.h>
 #include <vulkan/vulkan.h>
 
-#include "HostBuffer.h"
-#include "Rgba8Image.h"
+#include "WindowRenderer.h"
+#include "common/Image.h"
+#include "common/Result.h"
+#include "gpu/Buffer.h"
+#include "gpu/DisplayTile.h"
+#include "gpu/VulkanHandle.h"
 
 namespace matevo::editor {
 
 class VulkanContext;
 
-class EditorTexture {
+// A tile made drawable: its descriptor set, and the ImGui ids that draw its render or its ΔE00
+// map as a heatmap. Whoever shows the ids holds it; frames in flight hold it too, so it (and
+// its tile) is released only when no frame uses it any more.
+class ShownImage : public std::enable_shared_from_this<ShownImage> {
 public:
-    EditorTexture(const VulkanContext& context, VkDescriptorSetLayout layout, VkSampler sampler,
-                  int width, int height);
-    ~EditorTexture();
-    EditorTexture(const EditorTexture&) = delete;
-    EditorTexture& operator=(const EditorTexture&) = delete;
+    ~ShownImage();
+    ShownImage(const ShownImage&) = delete;
+    ShownImage& operator=(const ShownImage&) = delete;
 
-    int width() const { return width_; }
-    int height() const { return height_; }
-    VkDescriptorSet descriptorSet() const { return descriptorSet_; }
-    ImTextureID id() { return static_cast<ImTextureID>(this); }
-
-    void stage(const Rgba8Image& pixels);         // copies into the staging buffer
-    void recordUpload(VkCommandBuffer commands);  // no-op unless something was staged
+    ImTextureID render() { return &views_[0]; }
+    // Null when the tile has no ΔE00 map (e.g. the target).
+    ImTextureID heatmap() { return tile_->deltaE ? &views_[1] : nullptr; }
+    const gpu::DisplayTile& tile() const { return *tile_; }
 
 private:
+    friend class ImageBridge;
+    struct View {
+        ShownImage* owner;
+        bool heatmap;
+    };
+    ShownImage(std::shared_ptr<const gpu::DisplayTile> tile, VkDevice device, VkDescriptorPool pool,
+               VkDescriptorSet set);
+
+    std::shared_ptr<const gpu::DisplayTile> tile_;
     VkDevice device_;
     VkDescriptorPool pool_;
-    int width_;
-    int height_;
-    VkImage image_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
-    VkImageView view_ = VK_NULL_HANDLE;
-    VkDescriptorSet descriptorSet_ = VK_NULL_HANDLE;
-    HostBuffer staging_;
-    bool staged_ = false;
-    bool initialised_ = false;  // layout is SHADER_READ_ONLY after the first upload
+    VkDescriptorSet set_;
+    std::array<View, 2> views_;
 };
 
 class ImageBridge {
 public:
-    ImageBridge(const VulkanContext& context, VkRenderPass renderPass);
-    ~ImageBridge();
-    ImageBridge(const ImageBridge&) = delete;
-    ImageBridge& operator=(const ImageBridge&) = delete;
+    static Result<std::unique_ptr<ImageBridge>> create(VulkanContext& context,
+                                                       VkRenderPass renderPass);
 
-    // Puts pixels into texture `slot` (created or resized as needed) and returns its id. Call
-    // only while no frame is in flight (WindowRenderer::waitIdle).
-    ImTextureID setImage(std::size_t slot, const Rgba8Image& pixels);
-    void recordUploads(VkCommandBuffer commands);
+    Result<std::shared_ptr<ShownImage>> show(std::shared_ptr<const gpu::DisplayTile> tile);
+    // Host pictures (e.g. Compare metrics' renders) copied into tiles and shown; waits for the
+    // upload.
+    Result<std::vector<std::shared_ptr<ShownImage>>> upload(std::span<const Image> images);
+    // The ΔE00 range of the heatmap colours, from the next frame on.
+    void setHeatmapRange(float minDeltaE, float maxDeltaE);
 
-    // Rewrites `drawData` so our images draw through our pipeline into `commands`.
-    void prepare(ImDrawData& drawData, VkCommandBuffer commands);
+    // Rewrites `drawData` so our images draw through our pipeline into `commands`, and keeps
+    // what they use alive until frame slot `frameSlot` is drawn again.
+    void prepare(ImDrawData& drawData, VkCommandBuffer commands, std::size_t frameSlot);
 
 private:
     struct ImageDraw {
         ImageBridge* bridge;
-        const EditorTexture* texture;
+        const ShownImage::View* view;
         ImVec4 clipRect;
         unsigned elementCount;
         unsigned firstIndex;
         int vertexOffset;
     };
+    explicit ImageBridge(VulkanContext& context) : context_(context) {}
+    Status createLayouts();
+    Status createPipeline(VkRenderPass renderPass);
+    Status createSharedResources();
     static void drawCallback(const ImDrawList* list, const ImDrawCmd* command);
     void draw(const ImageDraw& image) const;
-    void createPipeline(VkRenderPass renderPass);
 
-    const VulkanContext& context_;
-    VkDevice device_;
-    VkSampler sampler_ = VK_NULL_HANDLE;
-    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
-    VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
-    std::vector<std::unique_ptr<EditorTexture>> textures_;
+    VulkanContext& context_;
+    VkDevice device_ = VK_NULL_HANDLE;
+    gpu::UniqueSampler renderSampler_;  // bilinear
+    gpu::UniqueSampler deltaESampler_;  // nearest: uncovered pixels must not blend in
+    gpu::UniqueDescriptorSetLayout setLayout_;
+    gpu::UniquePipelineLayout pipelineLayout_;
+    gpu::UniquePipeline pipeline_;
+    gpu::Buffer colormap_;                      // the heatmap colours, a uniform buffer
+    std::optional<gpu::DisplayTile> noDeltaE_;  // 1x1 "not covered", bound for tiles without one
+    float minDeltaE_ = 0.0f;
+    float maxDeltaE_ = 10.0f;
+    // Per frame slot: what its draws use, kept until the slot is drawn again.
+    std::array<std::vector<std::shared_ptr<ShownImage>>, WindowRenderer::kFramesInFlight> inFlight_;
     // Per frame: what the callbacks need (they receive only the draw command).
     std::vector<ImageDraw> draws_;
     VkCommandBuffer commands_ = VK_NULL_HANDLE;

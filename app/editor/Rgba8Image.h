@@ -1,6 +1,6 @@
 #pragma once
-// 8-bit RGBA as shown on screen: sRGB-encoded colour, straight alpha. What the editor uploads
-// to textures and what a window snapshot reads back.
+// 8-bit RGBA as shown on screen: sRGB-encoded colour, straight alpha. What a window snapshot
+// reads back.
 #include <cstdint>
 #include <vector>
 
@@ -14,8 +14,7 @@ struct Rgba8Image {
     std::vector<std::uint8_t> rgba;
 };
 
-// Linear float → display bytes (sRGB encoding, clamped), and back for writing PNG files.
-Rgba8Image toDisplayImage(const Image& linear);
+// Display bytes → linear float, for writing snapshots as PNG files.
 Image toLinearImage(const Rgba8Image& display);
 
 }  // namespace matevo::editor

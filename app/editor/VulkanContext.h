@@ -1,15 +1,18 @@
 #pragma once
-// The editor's Vulkan instance, window surface, device and queue. With validation on, a
-// VK_EXT_debug_utils messenger prints every warning and error and counts them, so a test run
-// can fail on any.
-#include <atomic>
-#include <cstdint>
-#include <functional>
+// The editor window's Vulkan, built by core/gpu: an instance with GLFW's surface extensions
+// (and the validation messenger when asked), the window's surface, and the device that
+// DeviceBuilder picks among those that can present to it. The GA worker renders on this same
+// device, so its tiles are shown without leaving the GPU. Members are declared in creation order
+// and released in reverse.
 #include <memory>
 
 #include <vulkan/vulkan.h>
 
 #include "common/Result.h"
+#include "gpu/CommandRunner.h"
+#include "gpu/Device.h"
+#include "gpu/Instance.h"
+#include "gpu/VulkanHandle.h"
 
 struct GLFWwindow;
 
@@ -18,51 +21,27 @@ namespace matevo::editor {
 class VulkanContext {
 public:
     static Result<std::unique_ptr<VulkanContext>> create(GLFWwindow* window, bool validation);
-    ~VulkanContext();
-    VulkanContext(const VulkanContext&) = delete;
-    VulkanContext& operator=(const VulkanContext&) = delete;
 
-    VkInstance instance() const { return instance_; }
-    VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
-    VkDevice device() const { return device_; }
-    VkQueue queue() const { return queue_; }
-    std::uint32_t queueFamily() const { return queueFamily_; }
-    VkSurfaceKHR surface() const { return surface_; }
-    VkDescriptorPool descriptorPool() const { return descriptorPool_; }
-
-    // Memory for a buffer or image with these needs and properties; throws if no memory type
-    // fits (lavapipe has one type that is everything at once, so this never fails there).
-    VkDeviceMemory allocateMemory(const VkMemoryRequirements& needs,
-                                  VkMemoryPropertyFlags properties) const;
-    // Records commands with `record`, submits them and waits (setup work such as the font).
-    void runNow(const std::function<void(VkCommandBuffer)>& record) const;
-    // Validation warnings and errors seen so far (0 when validation is off).
-    int validationMessages() const { return validationMessages_.load(); }
+    const gpu::Instance& instance() const { return instance_; }
+    const gpu::Device& device() const { return device_; }
+    VkSurfaceKHR surface() const { return surface_.get(); }
+    // ImGui's font and one set per shown image; used on the UI thread only.
+    VkDescriptorPool descriptorPool() const { return descriptorPool_.get(); }
+    // For one-off setup work on the UI thread (the font upload).
+    gpu::CommandRunner& setupRunner() { return setupRunner_; }
+    // Validation warnings and errors seen so far, from any thread using the device.
+    int validationMessages() const;
 
 private:
+    using UniqueSurface = gpu::OwnedHandle<VkInstance, VkSurfaceKHR, vkDestroySurfaceKHR>;
+
     VulkanContext() = default;
-    Status createInstance(bool validation);
-    Status pickDevice();
-    Status createDevice();
 
-    static VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(
-        VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
-        const VkDebugUtilsMessengerCallbackDataEXT* data, void* self);
-
-    VkInstance instance_ = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
-    VkSurfaceKHR surface_ = VK_NULL_HANDLE;
-    VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
-    VkDevice device_ = VK_NULL_HANDLE;
-    VkQueue queue_ = VK_NULL_HANDLE;
-    std::uint32_t queueFamily_ = 0;
-    VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
-    VkCommandPool setupCommandPool_ = VK_NULL_HANDLE;
-    std::atomic<int> validationMessages_{0};
+    gpu::Instance instance_;
+    UniqueSurface surface_;
+    gpu::Device device_;
+    gpu::UniqueDescriptorPool descriptorPool_;
+    gpu::CommandRunner setupRunner_;
 };
-
-// Throws std::runtime_error naming the call when a Vulkan call fails; for calls that fail
-// only when the device or driver is broken (the app's internal-failure path, exit 1).
-void check(VkResult result, const char* what);
 
 }  // namespace matevo::editor

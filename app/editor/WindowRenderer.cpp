@@ -5,74 +5,64 @@
 
 #include "VulkanContext.h"
 #include "gpu/GpuImage.h"
+#include "gpu/VulkanError.h"
 
 namespace matevo::editor {
 namespace {
 
 VkSurfaceFormatKHR chooseSurfaceFormat(const VulkanContext& context) {
+    const VkPhysicalDevice physicalDevice = context.device().physicalDevice();
     std::uint32_t count = 0;
-    vkGetPhysicalDeviceSurfaceFormatsKHR(context.physicalDevice(), context.surface(), &count,
-                                         nullptr);
+    vkGetPhysicalDeviceSurfaceFormatsKHR(physicalDevice, context.surface(), &count, nullptr);
     std::vector<VkSurfaceFormatKHR> formats(count);
-    vkGetPhysicalDeviceSurfaceFormatsKHR(context.physicalDevice(), context.surface(), &count,
-                                         formats.data());
+    vkGetPhysicalDeviceSurfaceFormatsKHR(physicalDevice, context.surface(), &count, formats.data());
     // UNORM: ImGui's colours and our sRGB-encoded images are written as they are.
     for (const auto& format : formats)
         if ((format.format == VK_FORMAT_B8G8R8A8_UNORM ||
              format.format == VK_FORMAT_R8G8B8A8_UNORM) &&
             format.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR)
             return format;
-    return formats.at(0);
+    return formats.empty() ? VkSurfaceFormatKHR{} : formats.front();
+}
+
+Result<gpu::UniqueSemaphore> createSemaphore(VkDevice device) {
+    VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore semaphore = VK_NULL_HANDLE;
+    if (Status s = gpu::checkVulkan(vkCreateSemaphore(device, &info, nullptr, &semaphore),
+                                    "creating a semaphore");
+        !s)
+        return s.error();
+    return gpu::UniqueSemaphore(device, semaphore);
 }
 
 }  // namespace
 
-WindowRenderer::WindowRenderer(const VulkanContext& context, VkExtent2D size)
-    : context_(context), device_(context.device()) {
-    surfaceFormat_ = chooseSurfaceFormat(context);
-    createRenderPass(surfaceFormat_.format);
-    for (Frame& frame : frames_) {
-        VkCommandPoolCreateInfo pool{};
-        pool.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-        pool.queueFamilyIndex = context.queueFamily();
-        check(vkCreateCommandPool(device_, &pool, nullptr, &frame.commandPool),
-              "vkCreateCommandPool");
-        VkCommandBufferAllocateInfo allocate{};
-        allocate.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-        allocate.commandPool = frame.commandPool;
-        allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        allocate.commandBufferCount = 1;
-        check(vkAllocateCommandBuffers(device_, &allocate, &frame.commands),
-              "vkAllocateCommandBuffers");
-        VkFenceCreateInfo fence{};
-        fence.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-        fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;
-        check(vkCreateFence(device_, &fence, nullptr, &frame.done), "vkCreateFence");
-        VkSemaphoreCreateInfo semaphore{};
-        semaphore.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO;
-        check(vkCreateSemaphore(device_, &semaphore, nullptr, &frame.imageAcquired),
-              "vkCreateSemaphore");
-    }
-    createSwapchain(size);
+Result<std::unique_ptr<WindowRenderer>> WindowRenderer::create(const VulkanContext& context,
+                                                               VkExtent2D size) {
+    std::unique_ptr<WindowRenderer> renderer(new WindowRenderer(context));
+    renderer->device_ = context.device().handle();
+    renderer->surfaceFormat_ = chooseSurfaceFormat(context);
+    if (renderer->surfaceFormat_.format == VK_FORMAT_UNDEFINED)
+        return Error{"the window's surface offers no image format"};
+    if (Status s = renderer->createRenderPass(); !s) return s.error();
+    if (Status s = renderer->createFrames(); !s) return s.error();
+    if (Status s = renderer->createSwapchain(size); !s) return s.error();
+    return renderer;
 }
 
 WindowRenderer::~WindowRenderer() {
-    waitIdle();
-    destroySwapchain();
-    vkDestroySwapchainKHR(device_, swapchain_, nullptr);
-    for (Frame& frame : frames_) {
-        vkDestroySemaphore(device_, frame.imageAcquired, nullptr);
-        vkDestroyFence(device_, frame.done, nullptr);
-        vkDestroyCommandPool(device_, frame.commandPool, nullptr);
-    }
-    vkDestroyRenderPass(device_, renderPass_, nullptr);
+    // Nothing to report a failure to at teardown; the handles are released either way.
+    (void)waitIdle();
 }
 
-void WindowRenderer::waitIdle() { check(vkQueueWaitIdle(context_.queue()), "vkQueueWaitIdle"); }
+Status WindowRenderer::waitIdle() {
+    const auto queueLock = context_.device().lockQueue();
+    return gpu::checkVulkan(vkQueueWaitIdle(context_.device().queue()), "waiting for the queue");
+}
 
-void WindowRenderer::createRenderPass(VkFormat format) {
+Status WindowRenderer::createRenderPass() {
     VkAttachmentDescription color{};
-    color.format = format;
+    color.format = surfaceFormat_.format;
     color.samples = VK_SAMPLE_COUNT_1_BIT;
     color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -92,29 +82,70 @@ void WindowRenderer::createRenderPass(VkFormat format) {
     dependency.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
     dependency.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
     dependency.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    VkRenderPassCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
+    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
     info.attachmentCount = 1;
     info.pAttachments = &color;
     info.subpassCount = 1;
     info.pSubpasses = &subpass;
     info.dependencyCount = 1;
     info.pDependencies = &dependency;
-    check(vkCreateRenderPass(device_, &info, nullptr, &renderPass_), "vkCreateRenderPass");
+    VkRenderPass renderPass = VK_NULL_HANDLE;
+    if (Status s = gpu::checkVulkan(vkCreateRenderPass(device_, &info, nullptr, &renderPass),
+                                    "creating the window's render pass");
+        !s)
+        return s;
+    renderPass_ = gpu::UniqueRenderPass(device_, renderPass);
+    return Ok{};
 }
 
-void WindowRenderer::createSwapchain(VkExtent2D size) {
+Status WindowRenderer::createFrames() {
+    for (Frame& frame : frames_) {
+        VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+        pool.queueFamilyIndex = context_.device().queueFamily();
+        VkCommandPool commandPool = VK_NULL_HANDLE;
+        if (Status s = gpu::checkVulkan(vkCreateCommandPool(device_, &pool, nullptr, &commandPool),
+                                        "creating a command pool");
+            !s)
+            return s;
+        frame.commandPool = gpu::UniqueCommandPool(device_, commandPool);
+        VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        allocate.commandPool = commandPool;
+        allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        allocate.commandBufferCount = 1;
+        if (Status s =
+                gpu::checkVulkan(vkAllocateCommandBuffers(device_, &allocate, &frame.commands),
+                                 "allocating a command buffer");
+            !s)
+            return s;
+        VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+        VkFence done = VK_NULL_HANDLE;
+        if (Status s = gpu::checkVulkan(vkCreateFence(device_, &fence, nullptr, &done),
+                                        "creating a fence");
+            !s)
+            return s;
+        frame.done = gpu::UniqueFence(device_, done);
+        auto acquired = createSemaphore(device_);
+        if (!acquired) return acquired.error();
+        frame.imageAcquired = std::move(acquired).value();
+    }
+    return Ok{};
+}
+
+Status WindowRenderer::createSwapchain(VkExtent2D size) {
+    const VkPhysicalDevice physicalDevice = context_.device().physicalDevice();
     VkSurfaceCapabilitiesKHR capabilities;
-    check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_.physicalDevice(), context_.surface(),
-                                                    &capabilities),
-          "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
+    if (Status s = gpu::checkVulkan(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(
+                                        physicalDevice, context_.surface(), &capabilities),
+                                    "reading the surface's capabilities");
+        !s)
+        return s;
     extent_ = capabilities.currentExtent.width != UINT32_MAX ? capabilities.currentExtent : size;
     minImageCount_ = capabilities.minImageCount + 1;
     if (capabilities.maxImageCount > 0)
         minImageCount_ = std::min(minImageCount_, capabilities.maxImageCount);
 
-    VkSwapchainCreateInfoKHR info{};
-    info.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR;
+    VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
     info.surface = context_.surface();
     info.minImageCount = minImageCount_;
     info.imageFormat = surfaceFormat_.format;
@@ -129,161 +160,185 @@ void WindowRenderer::createSwapchain(VkExtent2D size) {
     info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
     info.presentMode = VK_PRESENT_MODE_FIFO_KHR;  // always available; no tearing
     info.clipped = VK_TRUE;
-    info.oldSwapchain = swapchain_;
+    info.oldSwapchain = swapchain_.get();
     VkSwapchainKHR created = VK_NULL_HANDLE;
-    check(vkCreateSwapchainKHR(device_, &info, nullptr, &created), "vkCreateSwapchainKHR");
-    vkDestroySwapchainKHR(device_, swapchain_, nullptr);
-    swapchain_ = created;
+    if (Status s = gpu::checkVulkan(vkCreateSwapchainKHR(device_, &info, nullptr, &created),
+                                    "creating the swapchain");
+        !s)
+        return s;
+    images_.clear();  // the old swapchain's views and framebuffers, before the swapchain
+    swapchain_ = UniqueSwapchain(device_, created);
 
     std::uint32_t count = 0;
-    vkGetSwapchainImagesKHR(device_, swapchain_, &count, nullptr);
-    images_.resize(count);
-    vkGetSwapchainImagesKHR(device_, swapchain_, &count, images_.data());
-    for (VkImage image : images_) {
-        VkImageViewCreateInfo view{};
-        view.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
+    vkGetSwapchainImagesKHR(device_, created, &count, nullptr);
+    std::vector<VkImage> images(count);
+    vkGetSwapchainImagesKHR(device_, created, &count, images.data());
+    for (VkImage image : images) {
+        SwapchainImage& target = images_.emplace_back();
+        target.image = image;
+        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         view.image = image;
         view.viewType = VK_IMAGE_VIEW_TYPE_2D;
         view.format = surfaceFormat_.format;
         view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        check(vkCreateImageView(device_, &view, nullptr, &views_.emplace_back()),
-              "vkCreateImageView");
-        VkFramebufferCreateInfo framebuffer{};
-        framebuffer.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
-        framebuffer.renderPass = renderPass_;
+        VkImageView imageView = VK_NULL_HANDLE;
+        if (Status s = gpu::checkVulkan(vkCreateImageView(device_, &view, nullptr, &imageView),
+                                        "creating a swapchain image view");
+            !s)
+            return s;
+        target.view = gpu::UniqueImageView(device_, imageView);
+        VkFramebufferCreateInfo framebuffer{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+        framebuffer.renderPass = renderPass_.get();
         framebuffer.attachmentCount = 1;
-        framebuffer.pAttachments = &views_.back();
+        framebuffer.pAttachments = &imageView;
         framebuffer.width = extent_.width;
         framebuffer.height = extent_.height;
         framebuffer.layers = 1;
-        check(vkCreateFramebuffer(device_, &framebuffer, nullptr, &framebuffers_.emplace_back()),
-              "vkCreateFramebuffer");
-        VkSemaphoreCreateInfo semaphore{};
-        semaphore.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO;
-        check(vkCreateSemaphore(device_, &semaphore, nullptr, &renderDone_.emplace_back()),
-              "vkCreateSemaphore");
+        VkFramebuffer handle = VK_NULL_HANDLE;
+        if (Status s =
+                gpu::checkVulkan(vkCreateFramebuffer(device_, &framebuffer, nullptr, &handle),
+                                 "creating a framebuffer");
+            !s)
+            return s;
+        target.framebuffer = gpu::UniqueFramebuffer(device_, handle);
+        auto renderDone = createSemaphore(device_);
+        if (!renderDone) return renderDone.error();
+        target.renderDone = std::move(renderDone).value();
     }
     needsRebuild_ = false;
+    return Ok{};
 }
 
-void WindowRenderer::destroySwapchain() {
-    for (VkFramebuffer framebuffer : framebuffers_)
-        vkDestroyFramebuffer(device_, framebuffer, nullptr);
-    for (VkImageView view : views_) vkDestroyImageView(device_, view, nullptr);
-    for (VkSemaphore semaphore : renderDone_) vkDestroySemaphore(device_, semaphore, nullptr);
-    framebuffers_.clear();
-    views_.clear();
-    renderDone_.clear();
-    images_.clear();
-}
-
-bool WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& recording,
-                               Rgba8Image* capture) {
+Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& recording,
+                                       Rgba8Image* capture) {
     if (needsRebuild_ || size.width != extent_.width || size.height != extent_.height) {
-        waitIdle();
-        destroySwapchain();
-        createSwapchain(size);
+        if (Status s = waitIdle(); !s) return s.error();
+        if (Status s = createSwapchain(size); !s) return s.error();
     }
     Frame& frame = frames_[frameIndex_];
-    check(vkWaitForFences(device_, 1, &frame.done, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    VkFence done = frame.done.get();
+    if (Status s = gpu::checkVulkan(vkWaitForFences(device_, 1, &done, VK_TRUE, UINT64_MAX),
+                                    "waiting for a frame");
+        !s)
+        return s.error();
     std::uint32_t imageIndex = 0;
-    const VkResult acquired = vkAcquireNextImageKHR(
-        device_, swapchain_, UINT64_MAX, frame.imageAcquired, VK_NULL_HANDLE, &imageIndex);
+    const VkResult acquired =
+        vkAcquireNextImageKHR(device_, swapchain_.get(), UINT64_MAX, frame.imageAcquired.get(),
+                              VK_NULL_HANDLE, &imageIndex);
     if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
         needsRebuild_ = true;
         return false;
     }
-    if (acquired != VK_SUBOPTIMAL_KHR) check(acquired, "vkAcquireNextImageKHR");
-    check(vkResetFences(device_, 1, &frame.done), "vkResetFences");
-    check(vkResetCommandPool(device_, frame.commandPool, 0), "vkResetCommandPool");
+    if (acquired != VK_SUBOPTIMAL_KHR)
+        if (Status s = gpu::checkVulkan(acquired, "acquiring a swapchain image"); !s)
+            return s.error();
+    vkResetFences(device_, 1, &done);
+    vkResetCommandPool(device_, frame.commandPool.get(), 0);
 
-    VkCommandBufferBeginInfo begin{};
-    begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    check(vkBeginCommandBuffer(frame.commands, &begin), "vkBeginCommandBuffer");
-    if (recording.beforePass) recording.beforePass(frame.commands);
+    if (Status s =
+            gpu::checkVulkan(vkBeginCommandBuffer(frame.commands, &begin), "recording a frame");
+        !s)
+        return s.error();
     VkClearValue clear{};
     clear.color = {{0.09f, 0.09f, 0.10f, 1.0f}};
-    VkRenderPassBeginInfo pass{};
-    pass.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
-    pass.renderPass = renderPass_;
-    pass.framebuffer = framebuffers_[imageIndex];
+    VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    pass.renderPass = renderPass_.get();
+    pass.framebuffer = images_[imageIndex].framebuffer.get();
     pass.renderArea.extent = extent_;
     pass.clearValueCount = 1;
     pass.pClearValues = &clear;
     vkCmdBeginRenderPass(frame.commands, &pass, VK_SUBPASS_CONTENTS_INLINE);
-    if (recording.inPass) recording.inPass(frame.commands);
+    if (recording.inPass) recording.inPass(frame.commands, frameIndex_);
     vkCmdEndRenderPass(frame.commands);
-    if (capture) recordCapture(frame.commands, imageIndex);
-    check(vkEndCommandBuffer(frame.commands), "vkEndCommandBuffer");
+    if (capture)
+        if (Status s = recordCapture(frame.commands, imageIndex); !s) return s.error();
+    if (Status s = gpu::checkVulkan(vkEndCommandBuffer(frame.commands), "recording a frame"); !s)
+        return s.error();
 
     const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    VkSubmitInfo submit{};
-    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    const VkSemaphore imageAcquired = frame.imageAcquired.get();
+    const VkSemaphore renderDone = images_[imageIndex].renderDone.get();
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.waitSemaphoreCount = 1;
-    submit.pWaitSemaphores = &frame.imageAcquired;
+    submit.pWaitSemaphores = &imageAcquired;
     submit.pWaitDstStageMask = &waitStage;
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &frame.commands;
     submit.signalSemaphoreCount = 1;
-    submit.pSignalSemaphores = &renderDone_[imageIndex];
-    check(vkQueueSubmit(context_.queue(), 1, &submit, frame.done), "vkQueueSubmit");
-
-    VkPresentInfoKHR present{};
-    present.sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR;
+    submit.pSignalSemaphores = &renderDone;
+    VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     present.waitSemaphoreCount = 1;
-    present.pWaitSemaphores = &renderDone_[imageIndex];
+    present.pWaitSemaphores = &renderDone;
     present.swapchainCount = 1;
-    present.pSwapchains = &swapchain_;
+    const VkSwapchainKHR swapchain = swapchain_.get();
+    present.pSwapchains = &swapchain;
     present.pImageIndices = &imageIndex;
-    const VkResult presented = vkQueuePresentKHR(context_.queue(), &present);
+    VkResult presented = VK_SUCCESS;
+    {
+        const auto queueLock = context_.device().lockQueue();
+        if (Status s = gpu::checkVulkan(vkQueueSubmit(context_.device().queue(), 1, &submit, done),
+                                        "submitting a frame");
+            !s)
+            return s.error();
+        presented = vkQueuePresentKHR(context_.device().queue(), &present);
+    }
     if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
         acquired == VK_SUBOPTIMAL_KHR)
         needsRebuild_ = true;
-    else
-        check(presented, "vkQueuePresentKHR");
+    else if (Status s = gpu::checkVulkan(presented, "presenting a frame"); !s)
+        return s.error();
 
-    if (capture) finishCapture(frame, *capture);
+    if (capture) {
+        if (Status s = gpu::checkVulkan(vkWaitForFences(device_, 1, &done, VK_TRUE, UINT64_MAX),
+                                        "waiting for a frame");
+            !s)
+            return s.error();
+        finishCapture(*capture);
+    }
     frameIndex_ = (frameIndex_ + 1) % kFramesInFlight;
     return true;
 }
 
-void WindowRenderer::recordCapture(VkCommandBuffer commands, std::uint32_t imageIndex) {
+Status WindowRenderer::recordCapture(VkCommandBuffer commands, std::uint32_t imageIndex) {
     const VkDeviceSize bytes = VkDeviceSize(extent_.width) * extent_.height * 4;
-    if (!readback_ || readback_->size() < bytes)
-        readback_ = std::make_unique<HostBuffer>(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    VkImage image = images_[imageIndex];
-    gpu::transitionImage(commands, image, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                         VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_ACCESS_TRANSFER_READ_BIT);
+    if (!readback_ || readback_->size() < bytes) {
+        auto buffer = gpu::Buffer::create(
+            context_.device(), bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback);
+        if (!buffer) return buffer.error();
+        readback_ = std::move(buffer).value();
+    }
+    VkImage image = images_[imageIndex].image;
+    gpu::transitionImage(
+        commands, image, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {extent_.width, extent_.height, 1};
     vkCmdCopyImageToBuffer(commands, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           readback_->buffer(), 1, &region);
+                           readback_->handle(), 1, &region);
     gpu::transitionImage(commands, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                          VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT,
                          VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
-    VkBufferMemoryBarrier toHost{};
-    toHost.sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER;
+    VkBufferMemoryBarrier toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
     toHost.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toHost.buffer = readback_->buffer();
+    toHost.buffer = readback_->handle();
     toHost.size = VK_WHOLE_SIZE;
     vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0,
                          nullptr, 1, &toHost, 0, nullptr);
+    return Ok{};
 }
 
-void WindowRenderer::finishCapture(const Frame& frame, Rgba8Image& capture) {
-    check(vkWaitForFences(device_, 1, &frame.done, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+void WindowRenderer::finishCapture(Rgba8Image& capture) const {
     capture.width = int(extent_.width);
     capture.height = int(extent_.height);
     capture.rgba.resize(std::size_t(extent_.width) * extent_.height * 4);
-    std::memcpy(capture.rgba.data(), readback_->data(), capture.rgba.size());
+    std::memcpy(capture.rgba.data(), readback_->bytes().data(), capture.rgba.size());
     const bool bgra = surfaceFormat_.format == VK_FORMAT_B8G8R8A8_UNORM ||
                       surfaceFormat_.format == VK_FORMAT_B8G8R8A8_SRGB;
     for (std::size_t i = 0; i < capture.rgba.size(); i += 4) {

@@ -1,75 +1,88 @@
 #pragma once
 // The window's swapchain, render pass and frames in flight. An out-of-date or suboptimal
 // swapchain (resize, minimise) is normal control flow: the frame is skipped and the swapchain
-// rebuilt before the next one. Can copy a finished frame back to memory for snapshots.
+// rebuilt before the next one. Can copy a finished frame back to memory for snapshots. Every
+// handle is owned by a core/gpu RAII type; Vulkan failures come back as errors.
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
-#include "HostBuffer.h"
 #include "Rgba8Image.h"
+#include "common/Result.h"
+#include "gpu/Buffer.h"
+#include "gpu/VulkanHandle.h"
 
 namespace matevo::editor {
 
 class VulkanContext;
 
 struct FrameRecording {
-    std::function<void(VkCommandBuffer)> beforePass;  // uploads
-    std::function<void(VkCommandBuffer)> inPass;      // ImGui draws
+    // Records the frame's draws inside the render pass. `frameSlot` (below kFramesInFlight)
+    // names the frame: what it uses must live until that slot is drawn again.
+    std::function<void(VkCommandBuffer commands, std::size_t frameSlot)> inPass;
 };
 
 class WindowRenderer {
 public:
-    WindowRenderer(const VulkanContext& context, VkExtent2D size);
-    ~WindowRenderer();
+    static constexpr std::size_t kFramesInFlight = 2;
+
+    static Result<std::unique_ptr<WindowRenderer>> create(const VulkanContext& context,
+                                                          VkExtent2D size);
+    ~WindowRenderer();  // waits for the frames in flight
     WindowRenderer(const WindowRenderer&) = delete;
     WindowRenderer& operator=(const WindowRenderer&) = delete;
 
-    VkRenderPass renderPass() const { return renderPass_; }
+    VkRenderPass renderPass() const { return renderPass_.get(); }
     std::uint32_t minImageCount() const { return minImageCount_; }
     std::uint32_t imageCount() const { return std::uint32_t(images_.size()); }
 
-    // Draws and presents one frame at the window's framebuffer size. Returns false when the
-    // frame was skipped because the swapchain had to be rebuilt. With `capture`, the frame is
-    // also read back (this waits for it to finish).
-    bool drawFrame(VkExtent2D size, const FrameRecording& recording, Rgba8Image* capture = nullptr);
-    // Waits until no frame is in flight, so resources they use may be changed.
-    void waitIdle();
+    // Draws and presents one frame at the window's framebuffer size. false when the frame was
+    // skipped because the swapchain had to be rebuilt. With `capture`, the frame is also read
+    // back (this waits for it to finish).
+    Result<bool> drawFrame(VkExtent2D size, const FrameRecording& recording,
+                           Rgba8Image* capture = nullptr);
+    // Waits until no frame is in flight (before releasing what frames use, at shutdown).
+    Status waitIdle();
 
 private:
+    using UniqueSwapchain = gpu::OwnedHandle<VkDevice, VkSwapchainKHR, vkDestroySwapchainKHR>;
     struct Frame {
-        VkCommandPool commandPool = VK_NULL_HANDLE;
-        VkCommandBuffer commands = VK_NULL_HANDLE;
-        VkFence done = VK_NULL_HANDLE;
-        VkSemaphore imageAcquired = VK_NULL_HANDLE;
+        gpu::UniqueCommandPool commandPool;
+        VkCommandBuffer commands = VK_NULL_HANDLE;  // freed with the pool
+        gpu::UniqueFence done;
+        gpu::UniqueSemaphore imageAcquired;
     };
-    static constexpr std::size_t kFramesInFlight = 2;
+    struct SwapchainImage {
+        VkImage image = VK_NULL_HANDLE;  // owned by the swapchain
+        gpu::UniqueImageView view;
+        gpu::UniqueFramebuffer framebuffer;
+        gpu::UniqueSemaphore renderDone;  // presentation waits on it
+    };
 
-    void createRenderPass(VkFormat format);
-    void createSwapchain(VkExtent2D size);
-    void destroySwapchain();
-    void recordCapture(VkCommandBuffer commands, std::uint32_t imageIndex);
-    void finishCapture(const Frame& frame, Rgba8Image& capture);
+    explicit WindowRenderer(const VulkanContext& context) : context_(context) {}
+    Status createRenderPass();
+    Status createFrames();
+    Status createSwapchain(VkExtent2D size);
+    Status recordCapture(VkCommandBuffer commands, std::uint32_t imageIndex);
+    void finishCapture(Rgba8Image& capture) const;
 
     const VulkanContext& context_;
-    VkDevice device_;
+    VkDevice device_ = VK_NULL_HANDLE;
     VkSurfaceFormatKHR surfaceFormat_{};
-    VkRenderPass renderPass_ = VK_NULL_HANDLE;
-    VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
+    gpu::UniqueRenderPass renderPass_;
+    std::array<Frame, kFramesInFlight> frames_;
+    std::size_t frameIndex_ = 0;
+    UniqueSwapchain swapchain_;
     VkExtent2D extent_{};
     std::uint32_t minImageCount_ = 2;
     bool needsRebuild_ = false;
-    std::vector<VkImage> images_;
-    std::vector<VkImageView> views_;
-    std::vector<VkFramebuffer> framebuffers_;
-    std::vector<VkSemaphore> renderDone_;  // per swapchain image: presentation waits on it
-    std::array<Frame, kFramesInFlight> frames_{};
-    std::size_t frameIndex_ = 0;
-    std::unique_ptr<HostBuffer> readback_;
+    std::vector<SwapchainImage> images_;  // after the swapchain: released before it
+    std::optional<gpu::Buffer> readback_;
 };
 
 }  // namespace matevo::editor

@@ -20,33 +20,32 @@ void memoryBarrier(VkCommandBuffer commands, VkPipelineStageFlags destinationSta
 
 Result<CommandRunner> CommandRunner::create(const Device& device) {
     CommandRunner runner;
-    runner.device_ = device.handle();
-    runner.queue_ = device.queue();
+    runner.device_ = &device;
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     poolInfo.queueFamilyIndex = device.queueFamily();
     VkCommandPool pool = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateCommandPool(runner.device_, &poolInfo, nullptr, &pool);
+    if (VkResult result = vkCreateCommandPool(device.handle(), &poolInfo, nullptr, &pool);
         result != VK_SUCCESS)
         return vulkanError("creating a command pool", result);
-    runner.pool_ = UniqueCommandPool(runner.device_, pool);
+    runner.pool_ = UniqueCommandPool(device.handle(), pool);
 
     VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     allocateInfo.commandPool = pool;
     allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     allocateInfo.commandBufferCount = 1;
     if (VkResult result =
-            vkAllocateCommandBuffers(runner.device_, &allocateInfo, &runner.commands_);
+            vkAllocateCommandBuffers(device.handle(), &allocateInfo, &runner.commands_);
         result != VK_SUCCESS)
         return vulkanError("allocating a command buffer", result);
 
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VkFence fence = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateFence(runner.device_, &fenceInfo, nullptr, &fence);
+    if (VkResult result = vkCreateFence(device.handle(), &fenceInfo, nullptr, &fence);
         result != VK_SUCCESS)
         return vulkanError("creating a fence", result);
-    runner.fence_ = UniqueFence(runner.device_, fence);
+    runner.fence_ = UniqueFence(device.handle(), fence);
     return runner;
 }
 
@@ -66,10 +65,14 @@ Status CommandRunner::submitAndWait() {
     submitInfo.commandBufferCount = 1;
     submitInfo.pCommandBuffers = &commands_;
     VkFence fence = fence_.get();
-    if (VkResult result = vkQueueSubmit(queue_, 1, &submitInfo, fence); result != VK_SUCCESS)
-        return vulkanError("submitting commands", result);
-    VkResult waited = vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX);
-    vkResetFences(device_, 1, &fence);
+    {
+        const auto queueLock = device_->lockQueue();
+        if (VkResult result = vkQueueSubmit(device_->queue(), 1, &submitInfo, fence);
+            result != VK_SUCCESS)
+            return vulkanError("submitting commands", result);
+    }
+    VkResult waited = vkWaitForFences(device_->handle(), 1, &fence, VK_TRUE, UINT64_MAX);
+    vkResetFences(device_->handle(), 1, &fence);
     if (waited != VK_SUCCESS) return vulkanError("waiting for the GPU", waited);
     return Ok{};
 }

@@ -1,6 +1,7 @@
 #pragma once
 // One reusable command buffer and a fence: record, submit, wait. Each batch of work is one
-// submission, so results are ready (and buffers reusable) when submitAndWait returns.
+// submission, so results are ready (and buffers reusable) when submitAndWait returns. Runners
+// on several threads may share a device: each submission holds the device's queue lock.
 #include "common/Result.h"
 #include "gpu/Device.h"
 #include "gpu/VulkanHandle.h"
@@ -16,8 +17,7 @@ public:
     Status submitAndWait();
 
 private:
-    VkDevice device_ = VK_NULL_HANDLE;
-    VkQueue queue_ = VK_NULL_HANDLE;
+    const Device* device_ = nullptr;  // outlives the runner
     UniqueCommandPool pool_;
     UniqueFence fence_;
     VkCommandBuffer commands_ = VK_NULL_HANDLE;  // freed with the pool

@@ -3,6 +3,8 @@
 // the most capable physical device that supports Vulkan 1.2 (discrete > integrated > virtual >
 // CPU, so lavapipe is chosen only when nothing else exists; VK_DRIVER_FILES pins a driver).
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,13 @@ public:
     // Index of a memory type allowed by typeBits that suits the use, or an Error.
     Result<uint32_t> memoryTypeFor(uint32_t typeBits, MemoryUse use) const;
 
+    // Held while calling vkQueueSubmit, vkQueuePresentKHR or vkQueueWaitIdle: the editor's
+    // window and its workers share the one queue, which Vulkan requires to be used by one
+    // thread at a time.
+    std::unique_lock<std::mutex> lockQueue() const {
+        return std::unique_lock<std::mutex>(*queueMutex_);
+    }
+
 private:
     friend class DeviceBuilder;
     VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
@@ -42,6 +51,7 @@ private:
     uint32_t queueFamily_ = 0;
     std::string name_;
     bool isCpu_ = false;
+    std::unique_ptr<std::mutex> queueMutex_ = std::make_unique<std::mutex>();
 };
 
 class DeviceBuilder {

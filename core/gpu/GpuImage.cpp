@@ -90,10 +90,8 @@ Result<GpuImage> GpuImage::createFilled(const Device& device, CommandRunner& run
     return image;
 }
 
-void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from,
-                     VkImageLayout to, VkPipelineStageFlags sourceStage,
-                     VkAccessFlags sourceAccess, VkPipelineStageFlags destinationStage,
-                     VkAccessFlags destinationAccess) {
+VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLayout to,
+                                   VkAccessFlags sourceAccess, VkAccessFlags destinationAccess) {
     VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     barrier.srcAccessMask = sourceAccess;
     barrier.dstAccessMask = destinationAccess;
@@ -103,6 +101,15 @@ void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.image = image;
     barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    return barrier;
+}
+
+void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from,
+                     VkImageLayout to, VkPipelineStageFlags sourceStage,
+                     VkAccessFlags sourceAccess, VkPipelineStageFlags destinationStage,
+                     VkAccessFlags destinationAccess) {
+    const VkImageMemoryBarrier barrier =
+        layoutBarrier(image, from, to, sourceAccess, destinationAccess);
     vkCmdPipelineBarrier(commands, sourceStage, destinationStage, 0, 0, nullptr, 0, nullptr, 1,
                          &barrier);
 }

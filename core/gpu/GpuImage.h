@@ -38,6 +38,10 @@ private:
     UniqueImageView view_;
 };
 
+// A layout change of a whole colour image, for batching into one vkCmdPipelineBarrier.
+VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLayout to,
+                                   VkAccessFlags sourceAccess, VkAccessFlags destinationAccess);
+
 // Records a layout transition of a whole colour image with a full barrier between the given
 // stages and accesses.
 void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from,

@@ -64,8 +64,8 @@ Status GpuPopulationRenderer::renderTarget(const TargetKey& key) {
     if (!buffer) return buffer.error();
     auto commands = runner_.begin();
     if (!commands) return commands.error();
-    if (auto recorded = renderer_.record(*commands, std::span(&key.material, 1), key.scene,
-                                         key.size, *buffer);
+    if (auto recorded =
+            renderer_.record(*commands, std::span(&key.material, 1), key.scene, key.size, *buffer);
         !recorded)
         return recorded.error();
     computeWriteToHostReadBarrier(*commands);
@@ -79,6 +79,13 @@ Status GpuPopulationRenderer::renderTarget(const TargetKey& key) {
 Result<PopulationEvaluation> GpuPopulationRenderer::evaluate(
     const MaterialInstance& target, std::span<const MaterialInstance> candidates,
     const SceneSettings& scene, int size, const EvaluationOptions& options) {
+    return evaluateIntoTiles(target, candidates, scene, size, options, {});
+}
+
+Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
+    const MaterialInstance& target, std::span<const MaterialInstance> candidates,
+    const SceneSettings& scene, int size, const EvaluationOptions& options,
+    std::span<const DisplayTile* const> tiles) {
     if (size <= 0) return Error{"GPU render: image size must be positive"};
     const TargetKey key{target, scene, size};
     if (targetKey_ != key)
@@ -87,6 +94,8 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluate(
     evaluation.target = target_;
     if (candidates.empty()) return evaluation;
 
+    if (!tiles.empty() && tiles.size() != candidates.size())
+        return Error{"GPU render: one tile per candidate expected"};
     const ImageBatchShape shape{size, size, uint32_t(candidates.size())};
     if (auto ready = ensureBuffers(shape); !ready) return ready.error();
     auto commands = runner_.begin();
@@ -95,19 +104,37 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluate(
         return recorded.error();
     // Also orders the target's render of an earlier submission before the pass reads it.
     computeWriteToComputeReadBarrier(*commands);
-    deltaEPass_.record(*commands, {&targetRender_, &renders_, &deltaE_, &heatmaps_,
-                                   shape.pixelCount(), shape.count, 0, 0,
-                                   float(options.heatmap.minDeltaE),
-                                   float(options.heatmap.maxDeltaE)});
+    deltaEPass_.record(
+        *commands,
+        {&targetRender_, &renders_, &deltaE_, &heatmaps_, shape.pixelCount(), shape.count, 0, 0,
+         float(options.heatmap.minDeltaE), float(options.heatmap.maxDeltaE)});
+    if (!tiles.empty()) recordCopiesToTiles(*commands, renders_, &deltaE_, shape, tiles);
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
 
     for (uint32_t i = 0; i < shape.count; ++i) {
-        if (options.candidateImages) evaluation.candidates.push_back(downloadImage(renders_, shape, i));
+        if (options.candidateImages)
+            evaluation.candidates.push_back(downloadImage(renders_, shape, i));
         evaluation.deltaE.push_back(downloadDeltaEMap(deltaE_, shape, i));
         if (options.heatmaps) evaluation.heatmaps.push_back(downloadImage(heatmaps_, shape, i));
     }
     return evaluation;
+}
+
+Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
+                                             const SceneSettings& scene, const DisplayTile& tile) {
+    const ImageBatchShape shape{tile.width, tile.height, 1};
+    auto buffer = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
+    if (!buffer) return buffer.error();
+    auto commands = runner_.begin();
+    if (!commands) return commands.error();
+    if (auto recorded =
+            renderer_.record(*commands, std::span(&material, 1), scene, tile.width, *buffer);
+        !recorded)
+        return recorded.error();
+    const DisplayTile* tiles[] = {&tile};
+    recordCopiesToTiles(*commands, *buffer, nullptr, shape, tiles);
+    return runner_.submitAndWait();
 }
 
 Result<std::vector<Image>> GpuPopulationRenderer::render(

@@ -10,6 +10,7 @@
 
 #include "common/Result.h"
 #include "gpu/DeltaE00Pass.h"
+#include "gpu/DisplayTile.h"
 #include "gpu/GpuContext.h"
 #include "gpu/GpuSphereRenderer.h"
 #include "render/PopulationRenderer.h"
@@ -37,6 +38,17 @@ public:
                                           const SceneSettings& scene, int size,
                                           const EvaluationOptions& options = {}) override;
 
+    // For a window on the same device: as evaluate, and in the same submission candidate i's
+    // render and ΔE00 map are copied into tiles[i] (one per candidate, size x size).
+    Result<PopulationEvaluation> evaluateIntoTiles(const MaterialInstance& target,
+                                                   std::span<const MaterialInstance> candidates,
+                                                   const SceneSettings& scene, int size,
+                                                   const EvaluationOptions& options,
+                                                   std::span<const DisplayTile* const> tiles);
+    // Renders one material into the tile's render image (tile size x tile size).
+    Status renderIntoTile(const MaterialInstance& material, const SceneSettings& scene,
+                          const DisplayTile& tile);
+
 private:
     GpuPopulationRenderer() = default;
     Status ensureBuffers(const ImageBatchShape& shape);
@@ -50,7 +62,7 @@ private:
     GpuSphereRenderer renderer_;
     DeltaE00Pass deltaEPass_;
     std::optional<TargetKey> targetKey_;
-    Image target_;        // the host copy of targetRender_
+    Image target_;  // the host copy of targetRender_
     Buffer targetRender_;
     ImageBatchShape bufferShape_;
     Buffer renders_;

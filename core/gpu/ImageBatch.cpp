@@ -35,7 +35,8 @@ Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& sh
     const VkDeviceSize size =
         VkDeviceSize(shape.pixelCount()) * shape.count * VkDeviceSize(channels) * sizeof(float);
     return Buffer::create(device, std::max<VkDeviceSize>(size, 4),
-                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, use);
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                          use);
 }
 
 void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index,

@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "gpu/GpuContext.h"
 #include "render/PopulationRenderer.h"
@@ -13,8 +14,11 @@
 namespace matevo::gpu {
 
 struct RendererRequest {
-    RenderBackend backend = RenderBackend::Gpu;
-    // Prefixes the fallback notice, e.g. "matevo render".
+    // `who` prefixes the fallback notice, e.g. "matevo render".
+    RendererRequest(RenderBackend chosen = RenderBackend::Gpu, std::string noticePrefix = {})
+        : backend(chosen), who(std::move(noticePrefix)) {}
+
+    RenderBackend backend;
     std::string who;
     // The GPU renderer works on this device (e.g. the editor window's), which must outlive it;
     // null: on a headless device of its own, created with `headless`.

@@ -14,4 +14,10 @@ inline Error vulkanError(const std::string& what, VkResult result) {
     return Error{"Vulkan: " + what + " failed (" + describe(result) + ")"};
 }
 
+// Ok for VK_SUCCESS, else vulkanError(what, result).
+inline Status checkVulkan(VkResult result, const char* what) {
+    if (result == VK_SUCCESS) return Ok{};
+    return vulkanError(what, result);
+}
+
 }  // namespace matevo::gpu

@@ -83,5 +83,8 @@ using UniquePipelineLayout = OwnedHandle<VkDevice, VkPipelineLayout, vkDestroyPi
 using UniquePipeline = OwnedHandle<VkDevice, VkPipeline, vkDestroyPipeline>;
 using UniqueCommandPool = OwnedHandle<VkDevice, VkCommandPool, vkDestroyCommandPool>;
 using UniqueFence = OwnedHandle<VkDevice, VkFence, vkDestroyFence>;
+using UniqueSemaphore = OwnedHandle<VkDevice, VkSemaphore, vkDestroySemaphore>;
+using UniqueRenderPass = OwnedHandle<VkDevice, VkRenderPass, vkDestroyRenderPass>;
+using UniqueFramebuffer = OwnedHandle<VkDevice, VkFramebuffer, vkDestroyFramebuffer>;
 
 }  // namespace matevo::gpu

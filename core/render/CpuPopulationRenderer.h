@@ -12,8 +12,7 @@ class CpuPopulationRenderer final : public PopulationRenderer {
 public:
     // `cancelled` is asked between images; when it answers true the call ends with an Error
     // (a newer request superseded this one, e.g. in the editor).
-    explicit CpuPopulationRenderer(SceneTextures textures,
-                                   std::function<bool()> cancelled = {});
+    explicit CpuPopulationRenderer(SceneTextures textures, std::function<bool()> cancelled = {});
 
     std::string name() const override { return "CPU"; }
     Status setTextures(const SceneTextures& textures) override;

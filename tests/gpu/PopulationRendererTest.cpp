@@ -81,8 +81,7 @@ TEST(PopulationRenderer, TargetChangeIsRenderedAgain) {
     CpuPopulationRenderer cpu{SceneTextures{}};
     for (PopulationRenderer* renderer : {gpu.get(), static_cast<PopulationRenderer*>(&cpu)}) {
         auto first = renderer->evaluate(population.target, population.candidates, {}, kSize);
-        auto second =
-            renderer->evaluate(population.otherTarget, population.candidates, {}, kSize);
+        auto second = renderer->evaluate(population.otherTarget, population.candidates, {}, kSize);
         auto alone = renderer->render(std::span(&population.otherTarget, 1), {}, kSize);
         ASSERT_TRUE(first.ok() && second.ok() && alone.ok()) << renderer->name();
         EXPECT_EQ(second->target.rgba, alone->front().rgba) << renderer->name();

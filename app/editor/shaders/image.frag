@@ -1,10 +1,35 @@
 #version 450
-// The editor image tinted by the vertex colour (its alpha carries the overlay opacity).
-layout(set = 0, binding = 0) uniform sampler2D image;
+// An editor image straight from the GPU: a linear render, or a ΔE00 map coloured through the
+// heatmap colour map (core/color's viridis in linear RGB, the same nearest-entry rule), encoded
+// to sRGB for the UNORM window and tinted by the vertex colour (its alpha carries the overlay
+// opacity). The heatmap range is a push constant, so changing it re-colours without any upload.
+layout(set = 0, binding = 0) uniform sampler2D renderImage;  // linear RGBA
+layout(set = 0, binding = 1) uniform sampler2D deltaEImage;  // ΔE00; negative: not covered
+layout(set = 0, binding = 2) uniform Colormap { vec4 colormap[256]; };
+layout(push_constant) uniform Settings {
+    layout(offset = 16) uint showHeatmap;
+    float minDeltaE;  // maps to colormap[0]
+    float maxDeltaE;  // maps to colormap[255]
+} settings;
 layout(location = 0) in vec4 color;
 layout(location = 1) in vec2 uv;
 layout(location = 0) out vec4 outColor;
 
+float encodeSrgb(float linear) {
+    linear = clamp(linear, 0.0, 1.0);
+    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+vec4 heatmapTexel() {
+    float deltaE = texture(deltaEImage, uv).r;
+    if (deltaE < 0.0) return vec4(0.0);
+    float position = (deltaE - settings.minDeltaE) / (settings.maxDeltaE - settings.minDeltaE);
+    uint entry = position > 0.0 ? uint(round(min(position, 1.0) * 255.0)) : 0u;
+    return vec4(colormap[entry].rgb, 1.0);
+}
+
 void main() {
-    outColor = color * texture(image, uv);
+    vec4 linear = settings.showHeatmap != 0u ? heatmapTexel() : texture(renderImage, uv);
+    outColor = color * vec4(encodeSrgb(linear.r), encodeSrgb(linear.g), encodeSrgb(linear.b),
+                            linear.a);
 }

@@ -1,0 +1,67 @@
+// The editor's GA worker renders its tiles on the device it is given (the window's), so the
+// window samples them where they are: no second device, no copy through the host. Run under
+// the validation layer, which reports any use of an image with a device it does not belong to.
+#include "EvolutionWorker.h"
+
+#include <chrono>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "../gpu/GpuTestContext.h"
+
+namespace matevo::editor {
+namespace {
+
+std::optional<EvolutionUpdate> finalUpdate(const gpu::Device& device, RenderBackend backend) {
+    auto loaded = loadPreset(MATEVO_SOURCE_DIR "/presets/validation_metal.json");
+    EXPECT_TRUE(loaded.ok()) << loaded.error().message;
+    if (!loaded) return std::nullopt;
+    EvolutionJob job{loaded->preset, MATEVO_SOURCE_DIR "/presets/validation_metal.json"};
+    job.preset.ga.population = 12;
+    job.preset.ga.generations = 2;
+    EvolutionWorker worker([] {}, device, backend);
+    worker.submit(job);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (auto update = worker.takeLatest(); update && update->finished) return update;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ADD_FAILURE() << "the GA run did not finish in 120 s";
+    return std::nullopt;
+}
+
+// Asks the device about the image: the validation layer reports an image of another device.
+void expectOnDevice(const gpu::Device& device, const gpu::GpuImage& image, int size) {
+    VkMemoryRequirements requirements{};
+    vkGetImageMemoryRequirements(device.handle(), image.handle(), &requirements);
+    EXPECT_GT(requirements.size, 0u);
+    EXPECT_EQ(image.spec().extent.width, std::uint32_t(size));
+}
+
+TEST(EvolutionWorker, TilesAreImagesOnTheGivenDevice) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    for (RenderBackend backend : {RenderBackend::Gpu, RenderBackend::Cpu}) {
+        const auto update = finalUpdate(context->device, backend);
+        ASSERT_TRUE(update.has_value());
+        EXPECT_EQ(update->error, "");
+        EXPECT_EQ(update->backend, backend == RenderBackend::Gpu
+                                       ? "GPU (" + context->device.name() + ")"
+                                       : std::string("CPU"));
+        ASSERT_NE(update->target, nullptr);
+        expectOnDevice(context->device, update->target->render, EvolutionWorker::kTargetSize);
+        ASSERT_EQ(update->candidates.size(), 12u);
+        for (const CandidateResult& candidate : update->candidates) {
+            ASSERT_NE(candidate.tile, nullptr);
+            ASSERT_TRUE(candidate.tile->deltaE.has_value());
+            expectOnDevice(context->device, candidate.tile->render, EvolutionWorker::kTileSize);
+            expectOnDevice(context->device, *candidate.tile->deltaE, EvolutionWorker::kTileSize);
+            EXPECT_GT(candidate.deltaE.pixels, 0u);
+        }
+    }
+    test::expectNoValidationMessages(*context);
+}
+
+}  // namespace
+}  // namespace matevo::editor
