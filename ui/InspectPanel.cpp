@@ -158,15 +158,19 @@ void drawInspectPanel(EditorState& state) {
     sameLineIfFits(buttonWidth("Promote to target"));
     if (drawActions(state, candidate)) return;  // promoted: the grid is about to change
 
-    // The comparison and the chromosome table beside it.
-    constexpr float kTableWidth = 230.0f;
+    // The comparison and the chromosome table beside it; in a narrow panel, the table below.
+    constexpr float kTableWidth = 300.0f;
+    constexpr float kMinImage = 96.0f;
     const ImVec2 available = ImGui::GetContentRegionAvail();
+    const bool stacked = available.x < kTableWidth + 3.0f * (kMinImage + kGap);
     ImGui::BeginGroup();
-    drawComparison(state, candidate, std::max(48.0f, available.x - kTableWidth - kGap),
-                   available.y - 4.0f);
+    if (stacked)
+        drawComparison(state, candidate, available.x, available.y * 0.5f);
+    else
+        drawComparison(state, candidate, available.x - kTableWidth - kGap, available.y - 4.0f);
     ImGui::EndGroup();
-    ImGui::SameLine();
-    ImGui::BeginChild("genes");
+    if (!stacked) ImGui::SameLine();
+    ImGui::BeginChild("genes", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
     drawChromosomeTable(state.preset.family, state.preset.target, candidate.genome);
     ImGui::EndChild();
 }
