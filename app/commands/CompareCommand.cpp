@@ -1,9 +1,11 @@
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "color/Colormap.h"
+#include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "Messages.h"
 #include "commands/Commands.h"
@@ -13,20 +15,32 @@ namespace matevo::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: matevo compare A B [--heatmap OUT.png [--range MIN,MAX]] [--json]\n"
-    "                      [--fail-above DE00]\n\n"
-    "Per-pixel CIEDE2000 (kL = kC = kH = 1) between images A and B of the same size, pooled over\n"
-    "the pixels both images cover (alpha > 0.5), or over all pixels when neither has alpha.\n"
-    "Images are .png (sRGB-encoded) or .exr (linear); colours are clamped to [0, 1] and taken\n"
-    "as linear sRGB -> XYZ (D65) -> L*a*b*.\n\n"
-    "  --heatmap OUT.png  also write the per-pixel dE00 through the viridis colour map,\n"
-    "                     transparent where a pixel is not covered (.png or .exr)\n"
+    "usage: matevo compare A B [--metric de00|flip] [--ppd N] [--heatmap OUT.png\n"
+    "                      [--range MIN,MAX]] [--json] [--fail-above X]\n\n"
+    "The difference between images A and B of the same size, pooled over the pixels both\n"
+    "images cover (alpha > 0.5), or over all pixels when neither has alpha. Images are .png\n"
+    "(sRGB-encoded) or .exr (linear); colours are clamped to [0, 1].\n\n"
+    "  --metric de00      (default) per-pixel CIEDE2000 (kL = kC = kH = 1), linear sRGB ->\n"
+    "                     XYZ (D65) -> L*a*b*\n"
+    "  --metric flip      LDR-FLIP (Andersson et al. 2020): colour after the eye's contrast\n"
+    "                     sensitivity plus edge and point differences, per pixel in [0, 1],\n"
+    "                     on the images composited over black\n"
+    "  --ppd N            FLIP's viewing condition in pixels per degree (default 67.02: a\n"
+    "                     0.7 m wide 3840-pixel monitor at 0.7 m)\n"
+    "  --heatmap OUT.png  also write the per-pixel error through a colour map (dE00: viridis\n"
+    "                     over --range; FLIP: magma over [0, 1]), transparent where a pixel is\n"
+    "                     not covered (.png or .exr)\n"
     "  --range MIN,MAX    dE00 range of the colour map (default 0,10)\n"
-    "  --json             print {\"mean_de00\", \"max_de00\", \"p95_de00\", \"pixels\"}\n"
-    "  --fail-above DE00  exit status 3 when the mean dE00 is above DE00 (for pipelines; the\n"
-    "                     figures are printed either way)\n\n"
-    "p95 is the nearest-rank 95th percentile. Exit status 2 when a file cannot be read or is not\n"
-    "an image, the sizes differ, or no pixel is covered in both images.\n";
+    "  --json             print {\"mean_de00\", \"max_de00\", \"p95_de00\", \"pixels\"}, or with\n"
+    "                     FLIP {\"mean_flip\", \"median_flip\", \"q1_flip\", \"q3_flip\",\n"
+    "                     \"max_flip\", \"pixels\"}\n"
+    "  --fail-above X     exit status 3 when the mean (dE00, or FLIP with --metric flip) is\n"
+    "                     above X (for pipelines; the figures are printed either way)\n\n"
+    "p95 is the nearest-rank 95th percentile. FLIP's median and quartiles are weighted by the\n"
+    "error itself, as its authors pool it. Exit status 2 when a file cannot be read or is not an\n"
+    "image, the sizes differ, or no pixel is covered in both images.\n";
+
+enum class Metric { DeltaE00, Flip };
 
 ImageFileContents readOrThrow(const std::string& file) {
     auto contents = readImageFile(file);
@@ -44,43 +58,38 @@ HeatmapSettings parseRange(const std::string& text) {
     return settings;
 }
 
-}  // namespace
+Metric parseMetric(const std::optional<std::string>& text) {
+    if (!text || *text == "de00") return Metric::DeltaE00;
+    if (*text == "flip") return Metric::Flip;
+    throw UsageError("--metric: unknown metric '" + *text + "' (expected de00 or flip)");
+}
 
-int runCompare(CommandLine& args) {
-    if (args.wantsHelp()) {
-        std::printf("%s", kHelp);
-        return 0;
-    }
-    const bool asJson = args.flag("--json");
-    const auto heatmapFile = args.option("--heatmap");
-    const auto range = args.option("--range");
-    const auto failAbove = args.numberOption("--fail-above");
-    args.onlyWith("--range", "--heatmap");
-    const auto files = args.positionals();
-    args.finish();
-    if (files.size() != 2)
-        throw UsageError("expected two images A B (see matevo compare --help)");
-    const HeatmapSettings settings = range ? parseRange(*range) : HeatmapSettings{};
+// The two images, named for the error when they share no covered pixel.
+struct Inputs {
+    const Image& a;
+    const Image& b;
+    std::string names;  // "A and B"
+};
 
-    const ImageFileContents a = readOrThrow(files[0]);
-    const ImageFileContents b = readOrThrow(files[1]);
-    if (a.image.width != b.image.width || a.image.height != b.image.height)
-        throw UsageError("image sizes differ: " + files[0] + " is " +
-                         std::to_string(a.image.width) + "x" + std::to_string(a.image.height) +
-                         ", " + files[1] + " is " + std::to_string(b.image.width) + "x" +
-                         std::to_string(b.image.height));
+UsageError nothingCovered(const Inputs& inputs) {
+    return UsageError("no pixel is covered in both " + inputs.names + " (alpha > 0.5)");
+}
+
+void writeHeatmap(const Image& heatmap, const std::optional<std::string>& file) {
+    if (!file) return;
+    auto written = writeImage(heatmap, *file);
+    if (!written) throw UsageError("--heatmap: " + written.error().message);
+}
+
+// Prints the figures; returns the pooled mean for --fail-above.
+double reportDeltaE(const Inputs& inputs, const HeatmapSettings& settings,
+                    const std::optional<std::string>& heatmapFile, bool asJson) {
     // An image without alpha reads as fully covered, so coverage always comes from alpha.
-    auto map = compareImages(a.image, b.image);
+    auto map = compareImages(inputs.a, inputs.b);
     if (!map) throw UsageError(map.error().message);
     const DeltaEStats& stats = map->stats;
-    if (stats.pixels == 0)
-        throw UsageError("no pixel is covered in both " + files[0] + " and " + files[1] +
-                         " (alpha > 0.5)");
-
-    if (heatmapFile) {
-        auto written = writeImage(heatmapImage(*map, settings), *heatmapFile);
-        if (!written) throw UsageError("--heatmap: " + written.error().message);
-    }
+    if (stats.pixels == 0) throw nothingCovered(inputs);
+    writeHeatmap(heatmapImage(*map, settings), heatmapFile);
     if (asJson) {
         nlohmann::ordered_json out;
         out["mean_de00"] = stats.mean;
@@ -92,11 +101,82 @@ int runCompare(CommandLine& args) {
         std::printf("mean dE00 %.4f, max %.4f, p95 %.4f over %zu pixels\n", stats.mean, stats.max,
                     stats.p95, stats.pixels);
     }
-    if (failAbove && stats.mean > *failAbove) {
+    return stats.mean;
+}
+
+double reportFlip(const Inputs& inputs, const FlipSettings& settings,
+                  const std::optional<std::string>& heatmapFile, bool asJson) {
+    auto map = computeFlip(inputs.a, inputs.b, true, settings);
+    if (!map) throw UsageError(map.error().message);
+    const FlipStats& stats = map->stats;
+    if (stats.pixels == 0) throw nothingCovered(inputs);
+    writeHeatmap(flipHeatmapImage(*map), heatmapFile);
+    if (asJson) {
+        nlohmann::ordered_json out;
+        out["mean_flip"] = stats.mean;
+        out["median_flip"] = stats.weightedMedian;
+        out["q1_flip"] = stats.firstWeightedQuartile;
+        out["q3_flip"] = stats.thirdWeightedQuartile;
+        out["max_flip"] = stats.max;
+        out["pixels"] = stats.pixels;
+        std::printf("%s\n", out.dump().c_str());
+    } else {
+        std::printf(
+            "mean FLIP %.4f, weighted median %.4f, quartiles %.4f / %.4f, max %.4f over %zu "
+            "pixels\n",
+            stats.mean, stats.weightedMedian, stats.firstWeightedQuartile,
+            stats.thirdWeightedQuartile, stats.max, stats.pixels);
+    }
+    return stats.mean;
+}
+
+}  // namespace
+
+int runCompare(CommandLine& args) {
+    if (args.wantsHelp()) {
+        std::printf("%s", kHelp);
+        return 0;
+    }
+    const bool asJson = args.flag("--json");
+    const auto heatmapFile = args.option("--heatmap");
+    const auto range = args.option("--range");
+    const auto failAbove = args.numberOption("--fail-above");
+    const Metric metric = parseMetric(args.option("--metric"));
+    const auto pixelsPerDegree = args.numberOption("--ppd");
+    args.onlyWith("--range", "--heatmap");
+    const auto files = args.positionals();
+    args.finish();
+    if (files.size() != 2)
+        throw UsageError("expected two images A B (see matevo compare --help)");
+    if (metric == Metric::Flip && range)
+        throw UsageError("--range is for dE00; FLIP's colour map spans its fixed range [0, 1]");
+    if (metric == Metric::DeltaE00 && pixelsPerDegree)
+        throw UsageError("--ppd is FLIP's viewing condition; add --metric flip");
+    const HeatmapSettings settings = range ? parseRange(*range) : HeatmapSettings{};
+    FlipSettings flipSettings;
+    if (pixelsPerDegree) {
+        if (!(*pixelsPerDegree > 0.0 && *pixelsPerDegree <= 1000.0))
+            throw UsageError("--ppd: expected a number in (0, 1000], got " +
+                             std::to_string(*pixelsPerDegree));
+        flipSettings.pixelsPerDegree = *pixelsPerDegree;
+    }
+
+    const ImageFileContents a = readOrThrow(files[0]);
+    const ImageFileContents b = readOrThrow(files[1]);
+    if (a.image.width != b.image.width || a.image.height != b.image.height)
+        throw UsageError("image sizes differ: " + files[0] + " is " +
+                         std::to_string(a.image.width) + "x" + std::to_string(a.image.height) +
+                         ", " + files[1] + " is " + std::to_string(b.image.width) + "x" +
+                         std::to_string(b.image.height));
+    const Inputs inputs{a.image, b.image, files[0] + " and " + files[1]};
+    const double mean = metric == Metric::Flip
+                            ? reportFlip(inputs, flipSettings, heatmapFile, asJson)
+                            : reportDeltaE(inputs, settings, heatmapFile, asJson);
+    if (failAbove && mean > *failAbove) {
         std::fflush(stdout);
         char text[128];
-        std::snprintf(text, sizeof text, "mean dE00 %.4f is above --fail-above %g", stats.mean,
-                      *failAbove);
+        std::snprintf(text, sizeof text, "mean %s %.4f is above --fail-above %g",
+                      metric == Metric::Flip ? "FLIP" : "dE00", mean, *failAbove);
         printMessage(text);
         return exitCode(ExitStatus::AboveThreshold);
     }

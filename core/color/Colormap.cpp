@@ -3,26 +3,67 @@
 #include <algorithm>
 #include <cmath>
 
+#include "color/MagmaTable.h"
 #include "color/Srgb.h"
 #include "color/ViridisTable.h"
 
 namespace matevo {
 namespace {
 
+using ColorTable = std::array<std::array<float, 3>, 256>;
+
 std::size_t entryIndex(double position) {
     if (!(position > 0.0)) return 0;  // also NaN
-    const double last = double(kViridisSrgb.size() - 1);
-    return std::size_t(std::lround(std::min(position, 1.0) * last));
+    return std::size_t(std::lround(std::min(position, 1.0) * 255.0));
 }
 
-const std::array<std::array<float, 3>, 256>& viridisLinear() {
-    static const auto table = [] {
-        std::array<std::array<float, 3>, 256> linear{};
-        for (std::size_t i = 0; i < linear.size(); ++i)
-            for (int c = 0; c < 3; ++c) linear[i][c] = float(srgbToLinear(kViridisSrgb[i][c]));
-        return linear;
-    }();
+ColorTable linearized(const ColorTable& srgb) {
+    ColorTable linear{};
+    for (std::size_t i = 0; i < linear.size(); ++i)
+        for (int c = 0; c < 3; ++c) linear[i][c] = float(srgbToLinear(srgb[i][c]));
+    return linear;
+}
+
+const ColorTable& viridisLinear() {
+    static const ColorTable table = linearized(kViridisSrgb);
     return table;
+}
+
+const ColorTable& magmaLinear() {
+    static const ColorTable table = linearized(kMagmaSrgb);
+    return table;
+}
+
+// Paints color(values[i]) where covered[i], leaving the other pixels transparent.
+template <typename Color>
+Image paintCovered(int width, int height, const std::vector<std::uint8_t>& covered,
+                   const std::vector<float>& values, const Color& color) {
+    Image heatmap(width, height);
+    for (std::size_t i = 0; i < heatmap.pixelCount(); ++i) {
+        if (!covered[i]) continue;  // stays (0, 0, 0, 0)
+        const auto rgb = color(values[i]);
+        float* pixel = &heatmap.rgba[4 * i];
+        std::copy(rgb.begin(), rgb.end(), pixel);
+        pixel[3] = 1.0f;
+    }
+    return heatmap;
+}
+
+// Blends color(values[i]) over the candidate where covered[i].
+template <typename Color>
+Image blendCovered(const Image& candidate, int width, int height,
+                   const std::vector<std::uint8_t>& covered, const std::vector<float>& values,
+                   double opacity, const Color& color) {
+    if (candidate.width != width || candidate.height != height) return Image();
+    Image overlay = candidate;
+    const auto weight = float(std::clamp(opacity, 0.0, 1.0));
+    for (std::size_t i = 0; i < overlay.pixelCount(); ++i) {
+        if (!covered[i]) continue;
+        const auto rgb = color(values[i]);
+        float* pixel = &overlay.rgba[4 * i];
+        for (int c = 0; c < 3; ++c) pixel[c] = (1.0f - weight) * pixel[c] + weight * rgb[c];
+    }
+    return overlay;
 }
 
 }  // namespace
@@ -42,29 +83,29 @@ std::array<float, 3> heatmapColorLinear(double deltaE, const HeatmapSettings& se
 }
 
 Image heatmapImage(const DeltaEMap& map, const HeatmapSettings& settings) {
-    Image heatmap(map.width, map.height);
-    for (std::size_t i = 0; i < heatmap.pixelCount(); ++i) {
-        if (!map.covered[i]) continue;  // stays (0, 0, 0, 0)
-        const auto color = heatmapColorLinear(map.deltaE[i], settings);
-        float* pixel = &heatmap.rgba[4 * i];
-        std::copy(color.begin(), color.end(), pixel);
-        pixel[3] = 1.0f;
-    }
-    return heatmap;
+    return paintCovered(map.width, map.height, map.covered, map.deltaE,
+                        [&](float deltaE) { return heatmapColorLinear(deltaE, settings); });
 }
 
 Image overlayHeatmap(const Image& candidate, const DeltaEMap& map,
                      const HeatmapSettings& settings) {
-    if (candidate.width != map.width || candidate.height != map.height) return Image();
-    Image overlay = candidate;
-    const auto opacity = float(std::clamp(settings.opacity, 0.0, 1.0));
-    for (std::size_t i = 0; i < overlay.pixelCount(); ++i) {
-        if (!map.covered[i]) continue;
-        const auto color = heatmapColorLinear(map.deltaE[i], settings);
-        float* pixel = &overlay.rgba[4 * i];
-        for (int c = 0; c < 3; ++c) pixel[c] = (1.0f - opacity) * pixel[c] + opacity * color[c];
-    }
-    return overlay;
+    return blendCovered(candidate, map.width, map.height, map.covered, map.deltaE,
+                        settings.opacity,
+                        [&](float deltaE) { return heatmapColorLinear(deltaE, settings); });
+}
+
+std::array<float, 3> magmaSrgb(double error) { return kMagmaSrgb[entryIndex(error)]; }
+
+std::array<float, 3> flipColorLinear(double error) { return magmaLinear()[entryIndex(error)]; }
+
+Image flipHeatmapImage(const FlipMap& map) {
+    return paintCovered(map.width, map.height, map.pooled, map.error, flipColorLinear);
+}
+
+Image overlayFlipHeatmap(const Image& candidate, const FlipMap& map,
+                         const HeatmapSettings& settings) {
+    return blendCovered(candidate, map.width, map.height, map.pooled, map.error,
+                        settings.opacity, flipColorLinear);
 }
 
 }  // namespace matevo

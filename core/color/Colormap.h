@@ -1,9 +1,12 @@
 #pragma once
-// ΔE00 maps as pictures: a fixed, user-settable ΔE00 range through the 256-entry viridis colour
-// map (ViridisTable.h), alone or blended over the candidate render. Images are linear RGBA like
-// every Image; write them with writeImage to get the published sRGB colours in a PNG.
+// Error maps as pictures, alone or blended over the candidate render: ΔE00 through a fixed,
+// user-settable range and the 256-entry viridis colour map (ViridisTable.h); ꟻLIP, which lies
+// in [0, 1] by construction, through magma over that fixed range (MagmaTable.h), as its authors
+// show it. Images are linear RGBA like every Image; write them with writeImage to get the
+// published sRGB colours in a PNG.
 #include <array>
 
+#include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/PerceptualBand.h"
 #include "common/Image.h"
@@ -27,9 +30,18 @@ std::array<float, 3> heatmapColorLinear(double deltaE, const HeatmapSettings& se
 // The heatmap alone: opaque where the map covers a pixel, fully transparent elsewhere.
 Image heatmapImage(const DeltaEMap& map, const HeatmapSettings& settings);
 
+// ꟻLIP error (clamped to [0, 1]) → the nearest magma entry.
+std::array<float, 3> magmaSrgb(double error);
+std::array<float, 3> flipColorLinear(double error);
+// Opaque magma where the ꟻLIP map pools a pixel, fully transparent elsewhere.
+Image flipHeatmapImage(const FlipMap& map);
+
 // The candidate with the heatmap blended over it at settings.opacity where the map covers a
 // pixel; elsewhere the candidate unchanged, so it stays transparent outside its sphere. The
 // candidate must have the map's size; otherwise the result is an empty image.
 Image overlayHeatmap(const Image& candidate, const DeltaEMap& map, const HeatmapSettings& settings);
+// The same with the ꟻLIP map (its fixed range; settings.opacity only).
+Image overlayFlipHeatmap(const Image& candidate, const FlipMap& map,
+                         const HeatmapSettings& settings);
 
 }  // namespace matevo

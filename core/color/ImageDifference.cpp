@@ -1,15 +1,14 @@
 #include "color/ImageDifference.h"
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <string>
-#include <thread>
 
 #include "color/detail/ColorFormulas.h"
 #include "color/detail/FastFloatMath.h"
+#include "color/detail/ForEachChunk.h"
 
 namespace matevo {
 namespace {
@@ -84,21 +83,6 @@ ChunkSummary compareChunk(const Image& a, const Image& b, bool useAlpha, std::si
     return summary;
 }
 
-// Runs work(chunk) for every chunk on up to workerCount threads; chunks are claimed in any
-// order, so work must write only to its own chunk's outputs.
-template <typename Work>
-void forEachChunk(std::size_t chunkCount, unsigned workerCount, const Work& work) {
-    unsigned workers = workerCount != 0 ? workerCount : std::thread::hardware_concurrency();
-    workers = unsigned(std::clamp<std::size_t>(workers, 1, chunkCount));
-    std::atomic<std::size_t> next{0};
-    auto drain = [&] {
-        for (std::size_t chunk = next++; chunk < chunkCount; chunk = next++) work(chunk);
-    };
-    std::vector<std::jthread> helpers;
-    for (unsigned i = 1; i < workers; ++i) helpers.emplace_back(drain);
-    drain();
-}
-
 double nearestRankPercentile95(const DeltaEMap& map, const std::vector<ChunkSummary>& summaries,
                                std::size_t coveredPixels) {
     // ceil(0.95 N) computed in integers: the 1-based rank.
@@ -125,15 +109,20 @@ double nearestRankPercentile95(const DeltaEMap& map, const std::vector<ChunkSumm
 
 }  // namespace
 
-Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
-                                unsigned workerCount) {
+Status requireComparable(const Image& a, const Image& b) {
     if (a.width != b.width || a.height != b.height)
         return Error{"image sizes differ: " + std::to_string(a.width) + "x" +
                      std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
                      std::to_string(b.height)};
-    const std::size_t pixelCount = a.pixelCount();
-    if (a.rgba.size() != pixelCount * 4 || b.rgba.size() != pixelCount * 4)
+    if (a.rgba.size() != a.pixelCount() * 4 || b.rgba.size() != b.pixelCount() * 4)
         return Error{"malformed image: pixel data does not match its size"};
+    return Ok{};
+}
+
+Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
+                                unsigned workerCount) {
+    if (auto comparable = requireComparable(a, b); !comparable) return comparable.error();
+    const std::size_t pixelCount = a.pixelCount();
 
     DeltaEMap map;
     map.width = a.width;
@@ -142,7 +131,7 @@ Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
     map.covered.resize(pixelCount);
     const std::size_t chunkCount = (pixelCount + kChunkPixels - 1) / kChunkPixels;
     std::vector<ChunkSummary> summaries(chunkCount);
-    forEachChunk(chunkCount, workerCount, [&](std::size_t chunk) {
+    detail::forEachChunk(chunkCount, workerCount, [&](std::size_t chunk) {
         const std::size_t begin = chunk * kChunkPixels;
         summaries[chunk] =
             compareChunk(a, b, useAlpha, begin, std::min(begin + kChunkPixels, pixelCount), map);

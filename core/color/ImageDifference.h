@@ -28,6 +28,10 @@ struct DeltaEMap {
     DeltaEStats stats;
 };
 
+// Ok when the two images have the same size and well-formed pixel data; otherwise an Error
+// saying which sizes differ. Every image comparison checks this first.
+Status requireComparable(const Image& a, const Image& b);
+
 // Linear RGBA in, clamped to [0, 1] before conversion to L*a*b*. With useAlpha false (images that
 // had no alpha channel) every pixel counts. Differing sizes give an Error. Work is split in fixed
 // chunks over at most workerCount threads (0: all hardware threads); the result, down to the

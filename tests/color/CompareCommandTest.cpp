@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "color/Colormap.h"
+#include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/Srgb.h"
 #include "io/ImageFile.h"
@@ -58,6 +59,57 @@ TEST_F(CompareCommandTest, JsonReportsTheLibraryStatistics) {
     EXPECT_LT(map->stats.pixels, a.pixelCount());  // alpha masked some pixels out
 }
 
+TEST_F(CompareCommandTest, FlipJsonReportsTheLibraryStatisticsOverTheSamePixels) {
+    const Image a = testdata::randomImage(50, 40, 21, true);
+    const Image b = testdata::randomImage(50, 40, 22, true);
+    const std::string files = write(a, "a.exr") + " " + write(b, "b.exr");
+    const auto run = runMatevo("compare " + files + " --metric flip --json");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto json = nlohmann::json::parse(run.out);
+    auto map = computeFlip(a, b);
+    ASSERT_TRUE(map.ok());
+    EXPECT_DOUBLE_EQ(json.at("mean_flip").get<double>(), map->stats.mean);
+    EXPECT_DOUBLE_EQ(json.at("median_flip").get<double>(), map->stats.weightedMedian);
+    EXPECT_DOUBLE_EQ(json.at("q1_flip").get<double>(), map->stats.firstWeightedQuartile);
+    EXPECT_DOUBLE_EQ(json.at("q3_flip").get<double>(), map->stats.thirdWeightedQuartile);
+    EXPECT_DOUBLE_EQ(json.at("max_flip").get<double>(), map->stats.max);
+    // The same pixels as ΔE00.
+    const auto deltaE = nlohmann::json::parse(runMatevo("compare " + files + " --json").out);
+    EXPECT_EQ(json.at("pixels").get<std::size_t>(), deltaE.at("pixels").get<std::size_t>());
+    // Another viewing condition changes the result.
+    const auto far = nlohmann::json::parse(
+        runMatevo("compare " + files + " --metric flip --ppd 20 --json").out);
+    EXPECT_NE(far.at("mean_flip").get<double>(), map->stats.mean);
+    // --fail-above judges the chosen metric's mean.
+    EXPECT_EQ(runMatevo("compare " + files + " --metric flip --fail-above 0.01").exitCode, 3);
+    EXPECT_EQ(runMatevo("compare " + files + " --metric flip --fail-above 0.99").exitCode, 0);
+}
+
+TEST_F(CompareCommandTest, FlipHeatmapIsMagmaOverTheUnitRange) {
+    Image a = testdata::randomImage(16, 8, 23, false);
+    const Image b = testdata::randomImage(16, 8, 24, false);
+    a.pixel(5, 1)[3] = 0.0f;
+    const auto heatmapFile = scratch_ / "flip.png";
+    const auto run = runMatevo("compare " + write(a, "a.exr") + " " + write(b, "b.exr") +
+                               " --metric flip --heatmap " + quoted(heatmapFile));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.out.rfind("mean FLIP ", 0), 0u) << run.out;
+    auto heatmap = readImageFile(heatmapFile);
+    ASSERT_TRUE(heatmap.ok()) << heatmap.error().message;
+    auto map = computeFlip(a, b);
+    ASSERT_TRUE(map.ok());
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 16; ++x) {
+            const float* pixel = heatmap->image.pixel(x, y);
+            EXPECT_EQ(pixel[3], x == 5 && y == 1 ? 0.0f : 1.0f);
+            if (pixel[3] == 0.0f) continue;
+            const auto expected = magmaSrgb(map->error[std::size_t(y * 16 + x)]);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(linearToSrgb(pixel[c]), expected[std::size_t(c)], 0.5 / 255 + 1e-6);
+        }
+    }
+}
+
 TEST_F(CompareCommandTest, IdenticalPngsGiveZeroAndAReadableLine) {
     const std::string file = write(testdata::randomImage(20, 10, 13, false), "a.png");
     const auto run = runMatevo("compare " + file + " " + file);
@@ -106,6 +158,11 @@ TEST_F(CompareCommandTest, BadInputExitsTwoWithOneLine) {
     expectUsageError(runMatevo("compare " + a), "two images");
     expectUsageError(runMatevo("compare " + a + " " + a + " --range 3"), "--range");
     expectUsageError(runMatevo("compare " + a + " " + a + " --bogus"), "--bogus");
+    expectUsageError(runMatevo("compare " + a + " " + a + " --metric ssim"), "--metric");
+    expectUsageError(runMatevo("compare " + a + " " + a + " --metric flip --range 0,1"),
+                     "--range");
+    expectUsageError(runMatevo("compare " + a + " " + a + " --ppd 30"), "--ppd");
+    expectUsageError(runMatevo("compare " + a + " " + a + " --metric flip --ppd -1"), "--ppd");
     expectUsageError(
         runMatevo("compare " + a + " " + a + " --heatmap " + quoted(scratch_ / "no" / "h.png")),
         "h.png");
@@ -117,7 +174,9 @@ TEST_F(CompareCommandTest, BadInputExitsTwoWithOneLine) {
 TEST_F(CompareCommandTest, HelpDescribesEveryOption) {
     const auto run = runMatevo("compare --help");
     EXPECT_EQ(run.exitCode, 0);
-    for (const char* option : {"--heatmap", "--range", "--json", "p95", "alpha > 0.5"})
+    for (const char* option : {"--heatmap", "--range", "--json", "p95", "alpha > 0.5", "--metric",
+                               "--ppd", "mean_flip", "median_flip", "q1_flip", "q3_flip",
+                               "max_flip", "magma"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
 

@@ -1,0 +1,27 @@
+#pragma once
+// Fixed chunks of work on up to workerCount threads (0: all hardware threads), shared by the
+// image comparisons. Chunks are claimed in any order, so work(chunk) must write only to its own
+// chunk's outputs; then results never depend on the thread count.
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace matevo::detail {
+
+template <typename Work>
+void forEachChunk(std::size_t chunkCount, unsigned workerCount, const Work& work) {
+    if (chunkCount == 0) return;
+    unsigned workers = workerCount != 0 ? workerCount : std::thread::hardware_concurrency();
+    workers = unsigned(std::clamp<std::size_t>(workers, 1, chunkCount));
+    std::atomic<std::size_t> next{0};
+    auto drain = [&] {
+        for (std::size_t chunk = next++; chunk < chunkCount; chunk = next++) work(chunk);
+    };
+    std::vector<std::jthread> helpers;
+    for (unsigned i = 1; i < workers; ++i) helpers.emplace_back(drain);
+    drain();
+}
+
+}  // namespace matevo::detail
