@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "Suggestion.h"
@@ -134,6 +135,32 @@ std::vector<double> parseNumberList(const std::string& text, const std::string& 
     std::string item;
     while (std::getline(stream, item, ',')) values.push_back(parseNumber(item, what));
     return values;
+}
+
+DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what) {
+    const auto values = parseNumberList(text, what);
+    if (values.size() != 2)
+        throw UsageError(what + ": expected LO,HI (two numbers), got '" + text + "'");
+    const DeltaEBand band{values[0], values[1]};
+    if (auto problem = validateBand(band)) throw UsageError(what + ": " + *problem);
+    return band;
+}
+
+std::string imageOutputPath(CommandLine& args) {
+    const auto out = args.option("--out");
+    if (!out) throw UsageError("--out FILE.png|FILE.exr is required");
+    const std::string extension = std::filesystem::path(*out).extension().string();
+    if (extension != ".png" && extension != ".exr")
+        throw UsageError("--out: " + *out + ": the extension must be .png or .exr");
+    return *out;
+}
+
+ImageSize parseImageSize(const std::string& text, const std::string& what, ImageSize minimum,
+                         int maximum) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) throw UsageError(what + ": expected WxH, got '" + text + "'");
+    return {int(parseInteger(text.substr(0, x), what + " width", minimum.width, maximum)),
+            int(parseInteger(text.substr(x + 1), what + " height", minimum.height, maximum))};
 }
 
 }  // namespace matevo::cli

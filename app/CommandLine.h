@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "variants/DeltaEBand.h"
+
 namespace matevo::cli {
 
 struct UsageError : std::runtime_error {
@@ -57,5 +59,18 @@ long long parseInteger(const std::string& text, const std::string& what, long lo
                        long long max);
 double parseNumber(const std::string& text, const std::string& what);
 std::vector<double> parseNumberList(const std::string& text, const std::string& what);
+// "LO,HI": a band of mean ΔE00 (0 <= LO <= HI).
+DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what);
+
+// The required `--out FILE.png|FILE.exr` of the commands that write one image.
+std::string imageOutputPath(CommandLine& args);
+
+struct ImageSize {
+    int width = 0;
+    int height = 0;
+};
+// "WxH", each side in [minimum, maximum]; `what` names the option ("edit: --size").
+ImageSize parseImageSize(const std::string& text, const std::string& what, ImageSize minimum,
+                         int maximum);
 
 }  // namespace matevo::cli

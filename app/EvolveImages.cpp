@@ -1,9 +1,11 @@
 #include "EvolveImages.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
 #include "CommandLine.h"
+#include "common/StopRequest.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/ImageFile.h"
 #include "scene/SceneTextures.h"
@@ -25,6 +27,14 @@ std::string rankedName(const char* prefix, std::size_t rank) {
 
 }  // namespace
 
+std::uint64_t evolveImagesMemoryEstimate(int size) {
+    // Per candidate: render and heatmap (RGBA float) and the ΔE00 map (float), held for one
+    // batch twice over (GPU read-back buffers and the images made from them), plus the target.
+    const std::uint64_t pixels = std::uint64_t(size) * std::uint64_t(size);
+    const std::uint64_t perCandidate = pixels * (16 + 16 + 4);
+    return 2 * perCandidate * (kEvolveImageBatch + 1);
+}
+
 std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
                                            const std::vector<Individual>& ranked, int size,
                                            RenderBackend backend,
@@ -33,15 +43,6 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
     auto textures = loadSceneTextures(preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
 
-    const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
-    std::vector<MaterialInstance> candidates;
-    candidates.reserve(ranked.size());
-    for (const auto& individual : ranked)
-        candidates.push_back({individual.genome, preset.family, preset.baseKappa});
-
-    auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
-    auto evaluation = renderer->evaluate(target, candidates, preset.scene, size);
-    if (!evaluation) throw std::runtime_error(evaluation.error().message);
     std::error_code error;
     for (const char* folder : {"candidates", "heatmaps"}) {
         std::filesystem::create_directories(outDir / folder, error);
@@ -49,13 +50,26 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
             throw UsageError("--out: cannot create '" + (outDir / folder).string() +
                              "' (" + error.message() + ")");
     }
-    writeOrThrow(evaluation->target, outDir / "target.png");
+    const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
+    // One renderer for every batch: it keeps the target's render between them.
+    auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
     std::vector<DeltaEStats> stats;
-    for (std::size_t rank = 0; rank < ranked.size(); ++rank) {
-        writeOrThrow(evaluation->candidates[rank],
-                     outDir / "candidates" / rankedName("candidate", rank));
-        writeOrThrow(evaluation->heatmaps[rank], outDir / "heatmaps" / rankedName("heatmap", rank));
-        stats.push_back(evaluation->deltaE[rank].stats);
+    for (std::size_t first = 0; first < ranked.size() && !stopRequested();
+         first += kEvolveImageBatch) {
+        const std::size_t count = std::min<std::size_t>(kEvolveImageBatch, ranked.size() - first);
+        std::vector<MaterialInstance> candidates;
+        for (std::size_t i = first; i < first + count; ++i)
+            candidates.push_back({ranked[i].genome, preset.family, preset.baseKappa});
+        auto evaluation = renderer->evaluate(target, candidates, preset.scene, size);
+        if (!evaluation) throw std::runtime_error(evaluation.error().message);
+        if (first == 0) writeOrThrow(evaluation->target, outDir / "target.png");
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::size_t rank = first + i;
+            writeOrThrow(evaluation->candidates[i],
+                         outDir / "candidates" / rankedName("candidate", rank));
+            writeOrThrow(evaluation->heatmaps[i], outDir / "heatmaps" / rankedName("heatmap", rank));
+            stats.push_back(evaluation->deltaE[i].stats);
+        }
     }
     return stats;
 }

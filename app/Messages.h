@@ -18,6 +18,7 @@ enum class ExitStatus : int {
     InternalFailure = 1,  // a bug or a failure of the machine (Vulkan, memory): not the user's
     BadUsage = 2,         // bad usage or input: a mistyped option, a bad file, a missing folder
     AboveThreshold = 3,   // compare --fail-above: the difference is above the threshold
+    RequestNotMet = 3,    // variants: the set asked for cannot be made (what was found is kept)
 };
 
 inline int exitCode(ExitStatus status) { return int(status); }

@@ -1,6 +1,7 @@
 // matevo: evolve variants of a layered material. Dispatches to one subcommand and maps failures
 // to the documented exit statuses (Messages.h): 0 ok, 1 internal failure, 2 bad usage or input,
 // 3 compare --fail-above exceeded. Every message has the form "matevo COMMAND: TEXT".
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -32,8 +33,10 @@ constexpr Subcommand kSubcommands[] = {
     {"render", runRender, "render one material on the test sphere to PNG or EXR"},
     {"compare", runCompare, "per-pixel CIEDE2000 between two images"},
     {"experiment", runExperiment, "the paper's section 5 experiment: metrics x runs"},
+    {"variants", runVariants, "N variants a chosen perceptible difference from the target"},
     {"presets", runPresets, "list the presets --preset NAME accepts (shipped and your own)"},
     {"bench", runBench, "measure the GA, CIEDE2000 and renderers; medians"},
+    {"scene", runScene, "render many instances of a mesh, one variant each, to PNG or EXR"},
 };
 
 void printHelp() {
@@ -104,6 +107,9 @@ int dispatch(std::vector<std::string> args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Past a file size limit (ulimit -f) a write must fail with EFBIG, reported as an error
+    // (exit 2, no partial file), instead of SIGXFSZ ending the process.
+    std::signal(SIGXFSZ, SIG_IGN);
     try {
         return dispatch(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const UsageError& error) {

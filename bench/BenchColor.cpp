@@ -1,5 +1,6 @@
 #include "BenchReport.h"
 #include "Timing.h"
+#include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/Srgb.h"
 
@@ -35,8 +36,9 @@ Image benchImage(int size, std::uint32_t which) {
 }
 
 // Median Mpixel/s of compareImages on all cores, map and statistics included; also reports the
-// mean ΔE00 so it can be checked against the peer's.
-double measure(BenchReport& report, int size, int repetitions) {
+// mean ΔE00 so it can be checked against the peer's. Then LDR-FLIP on the same pair in the same
+// run, and the ratio of the two per-pixel costs.
+double measure(BenchReport& report, int size, int repetitions, int flipRepetitions) {
     const Image a = benchImage(size, 0);
     const Image b = benchImage(size, 1);
     double meanDeltaE = 0;
@@ -47,17 +49,24 @@ double measure(BenchReport& report, int size, int repetitions) {
     const std::string side = std::to_string(size);
     report.push_back({"de00_mean_" + side, meanDeltaE,
                       "mean dE00 of the " + side + "^2 benchmark pair (check against peer)"});
-    const double rate = double(a.pixelCount()) / 1e6 / (milliseconds / 1000.0);
+    const double megapixels = double(a.pixelCount()) / 1e6;
+    const double rate = megapixels / (milliseconds / 1000.0);
     report.push_back({"de00_mpix_s_" + side, rate,
                       "CPU dE00 image comparison " + side + "^2, all cores (Mpixel/s)"});
+    const double flipMilliseconds =
+        medianMilliseconds(flipRepetitions, [&] { (void)computeFlip(a, b); });
+    report.push_back({"flip_mpix_s_" + side, megapixels / (flipMilliseconds / 1000.0),
+                      "CPU LDR-FLIP image comparison " + side + "^2, all cores (Mpixel/s)"});
+    report.push_back({"flip_over_de00_" + side, flipMilliseconds / milliseconds,
+                      "FLIP / dE00 time per pixel at " + side + "^2, same run (goal <= 3)"});
     return rate;
 }
 
 }  // namespace
 
 void benchDeltaE00(BenchReport& report) {
-    measure(report, 256, 201);
-    const double large = measure(report, 2048, 15);
+    measure(report, 256, 201, 31);
+    const double large = measure(report, 2048, 15, 5);
     report.push_back({"de00_mpix_s", large, "CPU dE00 image comparison, 2048^2 (Mpixel/s)"});
 }
 

@@ -17,5 +17,8 @@ void benchGeneticAlgorithm(BenchReport& report);
 void benchCpuRender(BenchReport& report);
 void benchDeltaE00(BenchReport& report);
 void benchGpuGrid(BenchReport& report);  // gpu_grid64_ms and cpu_grid64_ms
+// `matevo bench --variants`: the variant search with and without its novelty (a few minutes).
+void benchVariants(BenchReport& report);
+void benchScene(BenchReport& report, int instances);  // scene_* frame times, raster renderer
 
 }  // namespace matevo::bench

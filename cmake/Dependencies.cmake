@@ -1,11 +1,13 @@
-# Every third-party package, found once. Names and pitfalls: docs/platform-notes (Debian 12).
+# Every third-party package, found once (Debian 12 names; pitfalls noted where they bite).
 find_package(Threads REQUIRED)
 find_package(glm REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(Vulkan REQUIRED COMPONENTS glslangValidator)
 find_package(glfw3 3.3 REQUIRED)
-find_package(GTest REQUIRED)
-find_package(benchmark REQUIRED)
+if(MATEVO_BUILD_TESTS)
+    find_package(GTest REQUIRED)
+endif()
+find_package(TinyGLTF REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 

@@ -1,25 +1,39 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages matevo needs, only those missing. Uses sudo when not root.
+#   scripts/install-deps.sh          what building and running matevo needs
+#   scripts/install-deps.sh --tests  that, plus the test stack (scripts/test.sh asks for it)
 set -euo pipefail
 
 packages=(
     build-essential cmake ninja-build pkg-config
-    libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools glslang-dev
+    libvulkan-dev mesa-vulkan-drivers glslang-tools glslang-dev
     libglfw3-dev libimgui-dev libglm-dev libopenimageio-dev nlohmann-json3-dev
-    libgtest-dev libbenchmark-dev
+    libtinygltf-dev
+)
+# GoogleTest, the validation layer every GPU test runs under, a virtual display and input for
+# the editor test, screenshots, the Python peers the tests and benchmarks compare with, and
+# clang with its sanitizer runtimes for scripts/fuzz.sh.
+test_packages=(
+    libgtest-dev vulkan-validationlayers clang libclang-rt-14-dev
     xvfb xauth imagemagick xdotool
     python3-skimage python3-deap python3-numpy
 )
+case "${1:-}" in
+    "") ;;
+    --tests) packages+=("${test_packages[@]}") ;;
+    *) echo "usage: scripts/install-deps.sh [--tests]" >&2; exit 2 ;;
+esac
 
 missing=()
 for package in "${packages[@]}"; do
     status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)
     [[ "$status" == "install ok installed" ]] || missing+=("$package")
 done
-[[ ${#missing[@]} -eq 0 ]] && exit 0
-
-echo "matevo: installing ${missing[*]}" >&2
-sudo=""
-[[ $(id -u) -eq 0 ]] || sudo="sudo"
-$sudo apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [[ ${#missing[@]} -gt 0 ]]; then
+    echo "matevo: installing ${missing[*]}" >&2
+    sudo=""
+    [[ $(id -u) -eq 0 ]] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends \
+        "${missing[@]}"
+fi

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Quick start, command 2: install what is missing, build, and run the whole test suite.
-# MATEVO_SANITIZE=1 builds an ASan+UBSan tree in build-sanitize/ and tests that instead.
+# MATEVO_SANITIZE=1 builds an ASan+UBSan tree in build-sanitize/ and tests that instead, then
+# fuzzes each parser briefly (scripts/fuzz.sh, MATEVO_FUZZ_SECONDS each, default 10).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh --tests
 test_environment=()
 if [[ "${MATEVO_SANITIZE:-0}" == 1 ]]; then
     export BUILD_DIR=build-sanitize BUILD_TYPE=RelWithDebInfo CMAKE_ARGS="-DMATEVO_SANITIZE=ON"
@@ -18,3 +19,7 @@ fi
 build_dir=${BUILD_DIR:-build}
 scripts/build.sh
 env "${test_environment[@]}" ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" "$@"
+if [[ "${MATEVO_SANITIZE:-0}" == 1 ]]; then
+    # A short libFuzzer run of every parser (clang, ASan + UBSan), from the seed corpus.
+    scripts/fuzz.sh "${MATEVO_FUZZ_SECONDS:-10}"
+fi

@@ -8,7 +8,7 @@ const float kMinimumLobeAlpha = 1e-3;
 
 float average(vec3 value) { return (value.r + value.g + value.b) / 3.0; }
 
-// belcour-model.md §2.6 (core/material/RoughnessMap.cpp).
+// docs/bsdf.md §2.6 (core/material/RoughnessMap.cpp).
 float varianceToRoughness(float variance) {
     float v = clamp(variance, 0.0, 1e7);
     return pow(v / (1.0 + v), 1.0 / 1.1);

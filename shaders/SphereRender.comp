@@ -7,12 +7,9 @@
 // along y are materials, so the branch on the table's shape does not diverge.
 layout(local_size_x = 64) in;
 
-struct Material {
-    uint firstEntry;   // of its lobe table
-    uint texelNodes;   // 1: no textured-roughness axis
-    uint cosineNodes;
-    uint unused;
-};
+layout(std430, binding = 5) readonly buffer LobeTables { vec4 lobeEntries[]; };
+#include "BelcourBsdf.glsl"
+#include "LobeTable.glsl"
 
 layout(std430, binding = 0) readonly buffer Materials { Material materials[]; };
 layout(std430, binding = 1) writeonly buffer Renders { vec4 renderPixels[]; };
@@ -22,63 +19,18 @@ layout(binding = 3) uniform sampler2D baseColorTexture;  // 1x1 white when absen
 layout(std430, binding = 4) readonly buffer Scene {
     vec4 cameraPosition;       // w image size in pixels
     vec4 cameraForward;        // w tan(fov / 2)
-    vec4 cameraRight;
+    vec4 cameraRight;          // w radius of the sphere's image (a centred disc) in pixels
     vec4 cameraUp;
     vec4 toLight;
     vec4 lightRadiance;
-    vec4 environmentRadiance;
+    vec4 environmentRadiance;  // w: roughness levels of environmentMap (0: none)
     vec4 textured;             // x: 1 when a texture is present (else the UV is not needed)
 } scene;
+layout(binding = 6) uniform sampler3D environmentMap;
 
-// Three vec4 per entry: coat energy + alpha, base throughput + c(variance), base round trip +
-// c(variance + round-trip variance) with c(v) = v / (1 + v); entry (texel t, cosine m) at
-// firstEntry + t * cosineNodes + m.
-layout(std430, binding = 5) readonly buffer LobeTables { vec4 lobeEntries[]; };
-
-#include "BelcourBsdf.glsl"
+#include "SceneLighting.glsl"
 
 const int kSubsamplesPerAxis = 2;
-
-struct Entry {
-    vec4 coat;
-    vec4 base;
-    vec4 roundTrip;
-};
-
-void accumulate(inout Entry sum, uint entry, float weight) {
-    sum.coat += weight * lobeEntries[3 * entry];
-    sum.base += weight * lobeEntries[3 * entry + 1];
-    sum.roundTrip += weight * lobeEntries[3 * entry + 2];
-}
-
-float expandVariance(float compressed) { return compressed / max(1.0 - compressed, 1e-7); }
-
-// LobeTable::lobesAt: linear in cos_view, and in the texel when the table has that axis.
-LobeSet lobesAt(Material material, float cosView, float texel, vec3 tint) {
-    int cosineNodes = int(material.cosineNodes);
-    float cosinePosition = clamp(cosView, 0.0, 1.0) * float(cosineNodes - 1);
-    int m = min(int(cosinePosition), cosineNodes - 2);
-    float wm = cosinePosition - float(m);
-    Entry sum = Entry(vec4(0.0), vec4(0.0), vec4(0.0));
-    uint row = material.firstEntry + uint(m);
-    if (material.texelNodes > 1u) {
-        float texelPosition = clamp(texel, 0.0, 1.0) * float(material.texelNodes - 1u);
-        uint t = min(uint(texelPosition), material.texelNodes - 2u);
-        float wt = texelPosition - float(t);
-        row += t * uint(cosineNodes);
-        accumulate(sum, row, (1.0 - wt) * (1.0 - wm));
-        accumulate(sum, row + 1u, (1.0 - wt) * wm);
-        accumulate(sum, row + uint(cosineNodes), wt * (1.0 - wm));
-        accumulate(sum, row + uint(cosineNodes) + 1u, wt * wm);
-    } else {
-        accumulate(sum, row, 1.0 - wm);
-        accumulate(sum, row + 1u, wm);
-    }
-    float variance = expandVariance(sum.base.a);
-    return LobeSet(Lobe(sum.coat.rgb, sum.coat.a),
-                   tintedLobe(sum.base.rgb, sum.roundTrip.rgb, variance,
-                              expandVariance(sum.roundTrip.a) - variance, tint));
-}
 
 vec3 shade(Material material, vec3 normal, vec3 toViewer) {
     float roughnessTexel = 1.0;
@@ -89,14 +41,10 @@ vec3 shade(Material material, vec3 normal, vec3 toViewer) {
         roughnessTexel = texture(roughnessTexture, uv).r;
         baseColor = texture(baseColorTexture, uv).rgb;
     }
-    float cosView = max(dot(normal, toViewer), 0.0);
-    LobeSet lobes = lobesAt(material, cosView, roughnessTexel, baseColor);
-    vec3 toLight = scene.toLight.xyz;
-    float cosLight = dot(normal, toLight);
-    float cosHalf = dot(normal, normalize(toViewer + toLight));
-    vec3 reflected = evaluateBsdf(lobes, cosView, cosLight, cosHalf) * scene.lightRadiance.rgb *
-                     max(cosLight, 0.0);
-    return reflected + environmentReflectance(lobes) * scene.environmentRadiance.rgb;
+    LobeSet lobes = lobesAt(material, max(dot(normal, toViewer), 0.0), roughnessTexel, baseColor);
+    Lighting lighting = Lighting(scene.toLight.xyz, scene.lightRadiance.rgb,
+                                 scene.environmentRadiance.rgb, scene.environmentRadiance.w);
+    return shadeLobes(lobes, normal, toViewer, lighting);
 }
 
 // Where the ray through image position p (pixels, y down) meets the sphere; false on a miss.
@@ -133,9 +81,17 @@ void main() {
     const int kSubsamples = kSubsamplesPerAxis * kSubsamplesPerAxis;
     vec3 normal;
     vec3 toViewer;
-    int hits = 0;
-    for (int i = 0; i < kSubsamples; ++i) {
-        if (traceSphere(corner + subsampleOffset(i), size, normal, toViewer)) ++hits;
+    // Only pixels near the disc's edge need the subsample test: elsewhere every subsample hits
+    // (or misses), as the test would find. The margin exceeds the subsamples' reach from the
+    // pixel centre (0.36 px) with room for rounding.
+    const float kEdgeMargin = 1.0;
+    float fromCentre = length(corner + 0.5 - 0.5 * float(size));
+    float discRadius = scene.cameraRight.w;
+    int hits = fromCentre < discRadius - kEdgeMargin ? kSubsamples : 0;
+    if (abs(fromCentre - discRadius) <= kEdgeMargin) {
+        for (int i = 0; i < kSubsamples; ++i) {
+            if (traceSphere(corner + subsampleOffset(i), size, normal, toViewer)) ++hits;
+        }
     }
     uint index = gl_GlobalInvocationID.y * pixelCount + pixel;
     if (hits == 0) {

@@ -53,6 +53,12 @@ ControlPanelActions drawControlPanel(EditorState& state, bool canUndo, bool canR
     ImGui::PopItemWidth();
     if (ImGui::Button("Compare metrics")) state.compareMetrics.open = true;
     hoverHint("The paper's section 5 experiment: the three metrics side by side");
+    sameLineIfFits(buttonWidth("Variants"));
+    if (ImGui::Button("Variants")) state.variants.open = true;
+    hoverHint("A set of variants a chosen perceptible difference from the target");
+    sameLineIfFits(buttonWidth("Scene"));
+    if (ImGui::Button("Scene")) state.sceneView.open = true;
+    hoverHint("The paper's section 6 application: many instances of a mesh, one candidate each");
     return actions;
 }
 

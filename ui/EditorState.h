@@ -11,7 +11,9 @@
 
 #include "CompareMetricsPanel.h"
 #include "PanelLayout.h"
+#include "ScenePanel.h"
 #include "StatusLog.h"
+#include "VariantsPanel.h"
 #include "genome/Genome.h"
 #include "io/Preset.h"
 
@@ -84,6 +86,8 @@ struct EditorState {
     bool enlarged = false;     // the inspected candidate shown at the target's size
     EvolutionView evolution;
     CompareMetricsView compareMetrics;  // the "Compare metrics" window
+    VariantsView variants;              // the "Variants" window
+    SceneView sceneView;                // the "Scene" window
     std::filesystem::path presetPath;   // empty until opened or saved
     Preset savedPreset;                 // as last opened or saved, for the unsaved mark
     // The inspected material, by genome: a re-run reorders the grid, and an index would then

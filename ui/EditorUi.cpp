@@ -13,8 +13,10 @@
 #include "InspectPanel.h"
 #include "KeptBin.h"
 #include "PanelLayout.h"
+#include "ScenePanel.h"
 #include "StatusBar.h"
 #include "TargetPanel.h"
+#include "VariantsPanel.h"
 #include "genome/FamilyRules.h"
 #include "io/GenomeJson.h"
 
@@ -68,6 +70,8 @@ FrameRequests EditorUi::draw() {
     drawSplitters(layout, state_.splits);
 
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
+    requests.variants = drawVariantsWindow(state_.variants);
+    drawSceneWindow(state_);
     drawDialogs();
     handleShortcuts(requests);
     // One undo step per finished edit: a slider drag is recorded when it is released.

@@ -29,6 +29,7 @@ struct FrameRequests {
     bool quit = false;  // confirmed: nothing unsaved, or the user chose
     bool snapshot = false;
     bool runCompareMetrics = false;  // the "Compare metrics" window asked for a run
+    VariantsActions variants;        // what the "Variants" window asked for
 };
 
 class EditorUi {

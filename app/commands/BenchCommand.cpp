@@ -10,23 +10,33 @@ namespace matevo::cli {
 int runBench(CommandLine& args) {
     if (args.wantsHelp()) {
         std::printf(
-            "usage: matevo bench [--json]\n\n"
+            "usage: matevo bench [--json] [--scene-instances N] [--variants]\n\n"
             "Measures medians of the genetic algorithm (pop 100 x 10 generations, genotype\n"
             "fitness), CIEDE2000 throughput and the renderers. Prints a table, or one JSON object\n"
-            "with --json. scripts/bench.sh runs the Python peers beside it and prints ratios.\n");
+            "with --json. scripts/bench.sh runs the Python peers beside it and prints ratios.\n"
+            "--scene-instances N sets the instances of the scene figures (default 100).\n"
+            "--variants measures only the variant search, with and without its novelty, on the\n"
+            "three validation presets (a few minutes).\n");
         return 0;
     }
     const bool asJson = args.flag("--json");
+    const int sceneInstances = int(args.integerOption("--scene-instances", 1, 1000000).value_or(100));
+    const bool variants = args.flag("--variants");
     args.finish();
 
     bench::BenchReport report;
-    bench::benchGeneticAlgorithm(report);
-    bench::benchCpuRender(report);
-    bench::benchDeltaE00(report);
-    bench::benchGpuGrid(report);
+    if (variants) {
+        bench::benchVariants(report);
+    } else {
+        bench::benchGeneticAlgorithm(report);
+        bench::benchCpuRender(report);
+        bench::benchDeltaE00(report);
+        bench::benchGpuGrid(report);
+        bench::benchScene(report, sceneInstances);
+    }
 
     if (asJson) {
-        nlohmann::json out = nlohmann::json::object();
+        nlohmann::ordered_json out = nlohmann::ordered_json::object();
         for (const auto& figure : report) out[figure.key] = figure.value;
         std::printf("%s\n", out.dump(2).c_str());
     } else {

@@ -11,5 +11,7 @@ int runCompare(CommandLine& args);
 int runExperiment(CommandLine& args);
 int runPresets(CommandLine& args);
 int runBench(CommandLine& args);
+int runVariants(CommandLine& args);
+int runScene(CommandLine& args);
 
 }  // namespace matevo::cli

@@ -1,11 +1,10 @@
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
 #include "editor/EditorApp.h"
+#include "io/TextFile.h"
 
 namespace matevo::cli {
 namespace {
@@ -39,18 +38,9 @@ constexpr const char* kHelp =
     "imgui.ini is kept in $XDG_CONFIG_HOME/matevo (default ~/.config/matevo).\n";
 
 std::string readScript(const std::string& file) {
-    std::ifstream in(file);
-    if (!in) throw UsageError("--script: cannot read '" + file + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void parseSize(const std::string& text, editor::EditorOptions& options) {
-    const auto x = text.find('x');
-    if (x == std::string::npos) throw UsageError("--size: expected WxH, got '" + text + "'");
-    options.width = int(parseInteger(text.substr(0, x), "--size width", 320, 16384));
-    options.height = int(parseInteger(text.substr(x + 1), "--size height", 240, 16384));
+    auto text = readTextFile(file);
+    if (!text) throw UsageError("--script: " + text.error().message);
+    return std::move(text).value();
 }
 
 }  // namespace
@@ -68,7 +58,11 @@ int runEdit(CommandLine& args) {
     }
     if (auto frames = args.integerOption("--frames", 1, 100000000))
         options.maxFrames = int(*frames);
-    if (auto size = args.option("--size")) parseSize(*size, options);
+    if (auto size = args.option("--size")) {
+        const ImageSize window = parseImageSize(*size, "--size", {320, 240}, 16384);
+        options.width = window.width;
+        options.height = window.height;
+    }
     if (auto backend = args.option("--backend"))
         options.backend = parseRenderBackend(*backend, "--backend");
     options.validation = args.flag("--validate");

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -9,9 +10,17 @@
 #include "EvolveReport.h"
 #include "Messages.h"
 #include "PresetOption.h"
+#include "StopSignals.h"
+#include "common/MemoryBudget.h"
+#include "common/StopRequest.h"
 #include "commands/Commands.h"
 #include "evolve/GeneticAlgorithm.h"
+#include "experiment/Experiment.h"
+#include "gpu/PopulationRendererFactory.h"
 #include "io/AtomicFile.h"
+#include "io/OutputFolder.h"
+#include "scene/SceneTextures.h"
+#include "variants/ImageFitness.h"
 
 namespace matevo::cli {
 
@@ -21,7 +30,8 @@ constexpr const char* kHelp =
     "usage: matevo evolve [--preset P] [--population N] [--generations N]\n"
     "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
-    "                     [--size N] [--backend gpu|cpu]\n\n"
+    "                     [--size N] [--backend gpu|cpu] [--force]\n"
+    "                     [--fitness genotype|image] [--band LO,HI] [--fitness-size N]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
     "override the preset's GA settings.\n"
@@ -35,9 +45,17 @@ constexpr const char* kHelp =
     "                 (per-pixel CIEDE2000 against the target, 0-10 through viridis); adds each\n"
     "                 candidate's mean_de00 (and max, p95) to the JSON\n"
     "  --size N       image side in pixels for --out (default: the preset's scene size)\n"
-    "  --backend B    renderer for --out: gpu (default; falls back to the CPU when no Vulkan\n"
-    "                 device is usable) or cpu\n"
-    "Progress goes to stderr.\n";
+    "  --backend B    renderer for --out and image fitness: gpu (default; falls back to the\n"
+    "                 CPU when no Vulkan device is usable) or cpu\n"
+    "  --force        replace DIR when it holds an earlier matevo output (else a folder with\n"
+    "                 files is refused); DIR always holds one whole run\n"
+    "  --fitness F    genotype (default: the paper's distance with --metric and --weights) or\n"
+    "                 image: each candidate's rendered mean CIEDE2000 from the target\n"
+    "  --band LO,HI   with image fitness: how far outside the band of mean CIEDE2000 a\n"
+    "                 candidate lies (0 inside: the objective is met)\n"
+    "  --fitness-size N  image side the image fitness renders at (default 64)\n"
+    "Progress goes to stderr. Ctrl-C (SIGINT) or SIGTERM stops after the current generation or\n"
+    "batch of images and writes what is complete, marked \"partial\" (exit 130 or 143).\n";
 
 GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     if (auto population = args.integerOption("--population", 2, kMaxPopulation))
@@ -84,45 +102,109 @@ int runEvolve(CommandLine& args) {
     choice.preset.ga = applyOverrides(args, choice.preset.ga);
     const bool asJson = args.flag("--json");
     const auto outDir = args.option("--out");
+    const bool replaceOutput = args.flag("--force");
     const int imageSize = int(
         args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
-    // Images are rendered only for --out.
+    const std::string fitnessName = args.option("--fitness").value_or("genotype");
+    if (fitnessName != "genotype" && fitnessName != "image")
+        throw UsageError("--fitness: expected genotype or image, got '" + fitnessName + "'");
+    const bool imageFitness = fitnessName == "image";
+    const auto bandText = args.option("--band");
+    const auto fitnessSizeOption = args.integerOption("--fitness-size", 8, 1024);
+    if (!imageFitness && (bandText || fitnessSizeOption))
+        throw UsageError(std::string(bandText ? "--band" : "--fitness-size") +
+                         " does nothing without --fitness image");
+    const DeltaEBand band = parseDeltaEBand(bandText.value_or("0,0"), "--band");
+    const int fitnessSize = int(fitnessSizeOption.value_or(64));
+    // Images are rendered only for --out and image fitness.
     args.onlyWith("--size", "--out");
-    args.onlyWith("--backend", "--out");
+    if (!imageFitness) args.onlyWith("--backend", "--out");
+    args.onlyWith("--force", "--out");
     args.finish();
 
+    installStopSignalHandlers();
+    // Everything that can be refused is refused before the work starts.
+    std::optional<OutputFolder> output;
+    if (outDir) {
+        if (auto fits = checkMemoryEstimate(evolveImagesMemoryEstimate(imageSize),
+                                            "--out at --size " + std::to_string(imageSize));
+            !fits)
+            throw UsageError(fits.error().message);
+        auto claimed = OutputFolder::claim(*outDir, replaceOutput);
+        if (!claimed) throw UsageError("--out: " + claimed.error().message);
+        output.emplace(std::move(*claimed));
+    }
+
     const Preset& preset = choice.preset;
-    GeneticAlgorithm ga(preset.family, preset.target, preset.ga);
+    std::optional<ImageSpaceFitness> fitness;
+    if (imageFitness) {
+        auto textures = loadSceneTextures(preset, choice.file);
+        if (!textures) throw UsageError(textures.error().message);
+        gpu::RendererRequest rendererRequest;
+        rendererRequest.backend = backend;
+        rendererRequest.who = "matevo evolve";
+        auto cache = GenomeRenderCache::create(
+            renderGenomesWith(gpu::createPopulationRenderer(rendererRequest, *textures),
+                              preset.family, preset.baseKappa, preset.scene, fitnessSize),
+            preset.target);
+        if (!cache) throw std::runtime_error(cache.error().message);
+        fitness.emplace(std::move(cache).value(), band);
+    }
+    GeneticAlgorithm ga = fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga,
+                                                     fitness->evaluator())
+                                  : GeneticAlgorithm(preset.family, preset.target, preset.ga);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
     ga.initialize();
-    while (!ga.finished()) {
+    while (!ga.finished() && !stopRequested()) {
         ga.step();
         if (showProgress)
             std::fprintf(stderr, "\r%sgeneration %d/%d", messagePrefix().c_str(),
                          ga.generation(), preset.ga.generations);
     }
     if (showProgress) std::fputc('\n', stderr);
+    if (fitness && fitness->failure()) throw std::runtime_error(fitness->failure()->message);
 
     const auto ranked = ga.rankedPopulation();
     nlohmann::json report = evolveReport(preset, ga, ranked);
-    if (outDir) {
-        std::error_code error;
-        std::filesystem::create_directories(*outDir, error);
-        if (error)
-            throw UsageError("--out: cannot create folder '" + *outDir + "' (" +
-                             error.message() + ")");
-        addImageStatistics(
-            report, writeEvolveImages(choice, ranked, imageSize, backend, *outDir));
-        auto file = std::filesystem::path(*outDir) / "result.json";
-        auto status = writeFileAtomically(file, report.dump(2) + "\n");
-        if (!status) throw UsageError(status.error().message);
+    report["config"]["fitness"] = fitnessName;
+    if (imageFitness) {
+        report["config"]["band"] = {band.low, band.high};
+        report["config"]["fitness_size"] = fitnessSize;
+        report["config"]["evaluations"] = fitness->renderCount();
+    }
+    if (output) {
+        try {
+            const auto stats =
+                writeEvolveImages(choice, ranked, imageSize, backend, output->staging());
+            addImageStatistics(report, stats);
+            report["candidates_written"] = stats.size();
+        } catch (const UsageError& error) {
+            throw UsageError(output->userFacing(error.what()));
+        }
+    }
+    if (const int signal = stopRequested()) {
+        report["partial"] = true;
+        report["stopped_by"] = signalName(signal);
+    }
+    if (output) {
+        auto status = writeFileAtomically(output->staging() / "result.json", report.dump(2) + "\n");
+        if (!status) throw UsageError(output->userFacing(status.error().message));
+        if (auto committed = output->commit(); !committed)
+            throw UsageError("--out: " + committed.error().message);
     }
     if (asJson)
         std::printf("%s\n", report.dump(2).c_str());
     else
         printEvolveSummary(preset, ga, ranked, stdout);
+    if (const int signal = stopRequested()) {
+        printMessage("stopped by " + signalName(signal) + " after generation " +
+                     std::to_string(ga.generation()) + " of " +
+                     std::to_string(preset.ga.generations) +
+                     (output ? "; what is complete is written, marked partial" : ""));
+        return stoppedExitStatus(signal);
+    }
     return 0;
 }
 

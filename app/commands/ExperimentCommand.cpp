@@ -5,17 +5,22 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "ExperimentRenderer.h"
 #include "Messages.h"
 #include "PresetOption.h"
 #include "ProgressBar.h"
+#include "StopSignals.h"
 #include "commands/Commands.h"
+#include "common/StopRequest.h"
 #include "experiment/Experiment.h"
 #include "experiment/ExperimentCharts.h"
 #include "experiment/ResultsCsv.h"
 #include "experiment/RunSummary.h"
 #include "io/AtomicFile.h"
 #include "io/ImageFile.h"
+#include "io/OutputFolder.h"
 #include "io/ResourcePaths.h"
 
 namespace matevo::cli {
@@ -26,7 +31,7 @@ constexpr const char* kHelp =
     "usage: matevo experiment [--preset P | --all] [--runs N] [--population N]\n"
     "                         [--generations N] [--sweep] [--metric M|all] [--seed S]\n"
     "                         [--runs-per-seed N] [--size N] [--scene paper|ambient]\n"
-    "                         [--backend gpu|cpu] [--out DIR]\n\n"
+    "                         [--backend gpu|cpu] [--out DIR] [--force]\n\n"
     "The experiment of Bernardi et al. (2020) section 5: for the target material and each\n"
     "distance metric, N GA runs (default 36) at a population and generation count (default 50\n"
     "and 5); the best individual of each run is rendered and scored by its mean CIEDE2000\n"
@@ -53,7 +58,12 @@ constexpr const char* kHelp =
     "                                    generations, seed, run, fitness, mean_de00, 12 genes\n"
     "                       PRESET_pP_gG_METRIC.png  histogram of mean DE00 with the\n"
     "                                    paper's perceptual bands\n"
-    "Prints a summary per metric (median, band counts); a progress bar goes to stderr.\n";
+    "                       report.json  runs completed; \"partial\": true after a stop\n"
+    "  --force            replace DIR when it holds an earlier matevo output (else a folder\n"
+    "                     with files is refused); DIR always holds one whole experiment\n"
+    "Prints a summary per metric (median, band counts); a progress bar goes to stderr.\n"
+    "Ctrl-C (SIGINT) or SIGTERM stops after the runs in progress and writes the completed\n"
+    "runs, marked partial (exit 130 or 143).\n";
 
 const char* const kValidationPresets[] = {"validation_metal.json", "validation_painted_metal.json",
                                           "validation_metal_depth.json"};
@@ -87,6 +97,7 @@ struct Request {
     SceneMode sceneMode = SceneMode::Paper;
     RenderBackend backend = RenderBackend::Gpu;
     std::filesystem::path outDir = "experiment-results";
+    bool replaceOutput = false;
 };
 
 Request parseRequest(CommandLine& args) {
@@ -110,7 +121,7 @@ Request parseRequest(CommandLine& args) {
     if (auto size = args.integerOption("--size", 8, 4096)) request.imageSize = int(*size);
     if (auto text = args.option("--scene")) {
         auto mode = parseSceneMode(*text);
-        if (!mode)
+        if (!mode || *mode == SceneMode::Environment)
             throw UsageError("--scene: unknown mode '" + *text +
                              "' (expected paper or ambient)");
         request.sceneMode = *mode;
@@ -120,6 +131,7 @@ Request parseRequest(CommandLine& args) {
     if (auto backend = args.option("--backend"))
         request.backend = parseRenderBackend(*backend, "--backend");
     if (auto out = args.option("--out")) request.outDir = *out;
+    request.replaceOutput = args.flag("--force");
     args.finish();
     return request;
 }
@@ -180,19 +192,9 @@ void printSummaries(std::span<const RunRecord> records, std::FILE* out) {
     }
 }
 
-}  // namespace
-
-int runExperiment(CommandLine& args) {
-    if (args.wantsHelp()) {
-        std::fputs(kHelp, stdout);
-        return 0;
-    }
-    const Request request = parseRequest(args);
-    std::error_code error;
-    std::filesystem::create_directories(request.outDir, error);
-    if (error)
-        throw UsageError("--out: cannot create folder '" + request.outDir.string() +
-                         "' (" + error.message() + ")");
+// Runs the experiment into the claimed folder and commits it.
+int runInto(const Request& request, OutputFolder& output) {
+    const std::filesystem::path& outDir = output.staging();
 
     const auto started = std::chrono::steady_clock::now();
     std::vector<RunRecord> allRecords;
@@ -200,6 +202,7 @@ int runExperiment(CommandLine& args) {
         ProgressBar progress(totalWork(request));
         int finishedWork = 0;
         for (const auto& choice : request.presets) {
+            if (stopRequested()) break;
             const Preset& preset = choice.preset;
             const RenderGenomes render =
                 makeExperimentRenderer(choice, request.imageSize, request.backend);
@@ -207,6 +210,7 @@ int runExperiment(CommandLine& args) {
             const std::vector<GaSize> sizes =
                 request.sweep ? paperSweep(preset.family) : std::vector{request.settings.size};
             for (const GaSize& size : sizes) {
+                if (stopRequested()) break;
                 ExperimentSettings settings = request.settings;
                 settings.size = size;
                 const std::string label = preset.name + " " + sizeLabel(size);
@@ -216,14 +220,21 @@ int runExperiment(CommandLine& args) {
                 if (!records) throw std::runtime_error(records.error().message);
                 finishedWork += int(records->size()) * 2;
                 allRecords.insert(allRecords.end(), records->begin(), records->end());
-                // Rewritten after every block of runs, atomically: an interrupted sweep keeps
-                // what it finished.
-                writeOrThrow(
-                    writeFileAtomically(request.outDir / "results.csv", resultsCsv(allRecords)));
-                writeHistograms(*records, choice.file.stem().string(), request.outDir);
+                writeOrThrow(writeFileAtomically(outDir / "results.csv", resultsCsv(allRecords)));
+                if (!records->empty())
+                    writeHistograms(*records, choice.file.stem().string(), outDir);
             }
         }
     }
+    nlohmann::json report = {{"runs_completed", allRecords.size()}, {"partial", false}};
+    if (const int signal = stopRequested()) {
+        report["partial"] = true;
+        report["stopped_by"] = signalName(signal);
+        if (allRecords.empty())
+            writeOrThrow(writeFileAtomically(outDir / "results.csv", resultsCsv(allRecords)));
+    }
+    writeOrThrow(writeFileAtomically(outDir / "report.json", report.dump(2) + "\n"));
+    writeOrThrow(output.commit());
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
@@ -232,7 +243,31 @@ int runExperiment(CommandLine& args) {
     std::snprintf(done, sizeof done, "%zu runs in %.1f s in the ", allRecords.size(), seconds);
     printMessage(done + std::string(describe(request.sceneMode)) + " scene; results in " +
                  request.outDir.string());
+    if (const int signal = stopRequested()) {
+        printMessage("stopped by " + signalName(signal) +
+                     "; the completed runs are written, marked partial");
+        return stoppedExitStatus(signal);
+    }
     return 0;
+}
+
+}  // namespace
+
+int runExperiment(CommandLine& args) {
+    if (args.wantsHelp()) {
+        std::fputs(kHelp, stdout);
+        return 0;
+    }
+    const Request request = parseRequest(args);
+    installStopSignalHandlers();
+    // Refused before any run: a folder with other files, or one we cannot write beside.
+    auto output = OutputFolder::claim(request.outDir, request.replaceOutput);
+    if (!output) throw UsageError("--out: " + output.error().message);
+    try {
+        return runInto(request, *output);
+    } catch (const UsageError& error) {
+        throw UsageError(output->userFacing(error.what()));
+    }
 }
 
 }  // namespace matevo::cli

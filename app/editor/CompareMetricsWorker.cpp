@@ -1,5 +1,7 @@
 #include "CompareMetricsWorker.h"
 
+#include <exception>
+#include <string>
 #include <utility>
 
 #include "experiment/Experiment.h"
@@ -9,34 +11,14 @@ namespace matevo::editor {
 
 CompareMetricsWorker::CompareMetricsWorker(std::function<void()> onUpdate,
                                            gpu::RendererRequest renderer)
-    : onUpdate_(std::move(onUpdate)), rendererRequest_(std::move(renderer)) {
-    rendererRequest_.cancelled = [this] { return stopping_.load(); };
+    : rendererRequest_(std::move(renderer)), job_(std::move(onUpdate)) {
+    rendererRequest_.cancelled = [this] { return job_.stopping(); };
 }
 
-CompareMetricsWorker::~CompareMetricsWorker() {
-    stopping_.store(true);
-    if (thread_.joinable()) thread_.join();
-}
+CompareMetricsWorker::~CompareMetricsWorker() = default;
 
 bool CompareMetricsWorker::start(CompareMetricsJob job) {
-    if (busy_.exchange(true)) return false;
-    if (thread_.joinable()) thread_.join();  // the previous job has finished
-    progress_.store(0.0f);
-    thread_ = std::thread([this, job = std::move(job)] {
-        CompareMetricsResult result = compute(job);
-        {
-            std::lock_guard lock(mutex_);
-            result_ = std::move(result);
-        }
-        busy_.store(false);
-        onUpdate_();
-    });
-    return true;
-}
-
-std::optional<CompareMetricsResult> CompareMetricsWorker::takeResult() {
-    std::lock_guard lock(mutex_);
-    return std::exchange(result_, std::nullopt);
+    return job_.start([this, job = std::move(job)] { return compute(job); }, "the comparison");
 }
 
 CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job) {
@@ -65,15 +47,13 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
     const ExperimentTarget experimentTarget{preset.name, preset.family, preset.target, preset.ga};
     // Progress: the GA runs are the first half, the renders the second.
     result.records = evolveRuns(experimentTarget, settings, [&](int done, int total) {
-        progress_.store(0.5f * float(done) / float(total));
-        onUpdate_();
+        job_.reportProgress(0.5f * float(done) / float(total));
     });
     result.renders.resize(result.records.size());
-    const Status scored = scoreRuns(
+    const auto scored = scoreRuns(
         result.records, target->front(), render, 16,
         [&](int done, int total) {
-            progress_.store(0.5f + 0.5f * float(done) / float(total));
-            onUpdate_();
+            job_.reportProgress(0.5f + 0.5f * float(done) / float(total));
         },
         [&](std::size_t index, const Image& image) { result.renders[index] = image; });
     if (!scored) result = {{}, {}, result.backend, scored.error().message};

@@ -1,16 +1,14 @@
 #pragma once
 // Runs the "Compare metrics" experiment (core/experiment: the three metrics on the same seeds
 // and GA settings, each run's best rendered and scored by mean ΔE00) on a worker thread, so
-// that the editor stays responsive. One job at a time; the UI thread polls progress and takes
-// the result, and is woken through `onUpdate` (which must be thread-safe).
-#include <atomic>
+// that the editor stays responsive (BackgroundJob: one job at a time, `onUpdate` wakes the UI).
 #include <filesystem>
 #include <functional>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
+
+#include "BackgroundJob.h"
 
 #include "common/Image.h"
 #include "experiment/RunRecord.h"
@@ -44,21 +42,15 @@ public:
 
     // Starts the job unless one is running; returns whether it started.
     bool start(CompareMetricsJob job);
-    bool busy() const { return busy_.load(); }
-    float progress() const { return progress_.load(); }
-    std::optional<CompareMetricsResult> takeResult();
+    bool busy() const { return job_.busy(); }
+    float progress() const { return job_.progress(); }
+    std::optional<CompareMetricsResult> takeResult() { return job_.takeResult(); }
 
 private:
     CompareMetricsResult compute(const CompareMetricsJob& job);
 
-    std::function<void()> onUpdate_;
     gpu::RendererRequest rendererRequest_;
-    std::atomic<bool> busy_{false};
-    std::atomic<bool> stopping_{false};
-    std::atomic<float> progress_{0.0f};
-    std::mutex mutex_;
-    std::optional<CompareMetricsResult> result_;
-    std::thread thread_;
+    BackgroundJob<CompareMetricsResult> job_;  // last: stopped first
 };
 
 }  // namespace matevo::editor

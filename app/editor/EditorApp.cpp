@@ -24,7 +24,10 @@
 #include "EvolutionDisplay.h"
 #include "EvolutionWorker.h"
 #include "ImageBridge.h"
+#include "SceneViewWorker.h"
 #include "ScriptPlayer.h"
+#include "VariantsDisplay.h"
+#include "VariantsWorker.h"
 #include "ViewSettings.h"
 #include "VulkanContext.h"
 #include "WindowInput.h"
@@ -43,6 +46,11 @@ using Clock = std::chrono::steady_clock;
 std::atomic<bool> terminationRequested{false};
 
 void onTerminationSignal(int) { terminationRequested.store(true); }
+
+// No window, or no Vulkan device to present it with: a property of the machine, exit 2.
+struct WindowUnavailable : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 class GlfwSession {
 public:
@@ -102,9 +110,13 @@ private:
     };
 
     bool frame(std::optional<std::filesystem::path>& screenshotPath);
-    void playScript(std::optional<std::filesystem::path>& screenshotPath);
+    ui::VariantsActions playScript(std::optional<std::filesystem::path>& screenshotPath);
     void applyEvolutionResults();
     void applyCompareMetricsResults();
+    void applyVariantsResults();
+    void handleVariantsActions(const ui::VariantsActions& actions);
+    void showShownVariants();
+    void applySceneView();
     void submitChangesToWorker();
     void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
     std::filesystem::path nextSnapshotPath() const;
@@ -130,7 +142,14 @@ private:
     static constexpr int kSettleFrames = 3;
     std::atomic<bool> workerPosted_{false};  // a worker has a result or progress to show
     std::vector<std::shared_ptr<ShownImage>> compareImages_;  // what Compare metrics shows
+    std::vector<std::shared_ptr<ShownImage>> variantsImages_;  // what Variants shows
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
+    std::unique_ptr<VariantsWorker> variantsWorker_;
+    std::optional<VariantsResult> shownVariants_;  // the set in the Variants window
+    std::vector<Genome> discardedVariants_;        // since its last fresh run
+    std::shared_ptr<ShownImage> sceneImage_;  // what the Scene window shows
+    std::unique_ptr<SceneViewWorker> sceneWorker_;
+    std::optional<SceneViewJob> requestedScene_;
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
 };
 
@@ -177,10 +196,10 @@ EditorApp::EditorApp(const EditorOptions& options)
       script_(options.script) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     window_.reset(glfwCreateWindow(options.width, options.height, "matevo", nullptr, nullptr));
-    if (!window_) throw std::runtime_error("cannot open a window on this display");
+    if (!window_) throw WindowUnavailable("cannot open a window on this display");
     input_ = std::make_unique<WindowInput>(window_.get());
     auto vulkan = VulkanContext::create(window_.get(), options.validation);
-    if (!vulkan) throw std::runtime_error(vulkan.error().message);
+    if (!vulkan) throw WindowUnavailable(vulkan.error().message);
     vulkan_ = std::move(*vulkan);
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
@@ -205,6 +224,10 @@ EditorApp::EditorApp(const EditorOptions& options)
     compareRenderer.who = "matevo edit: Compare metrics";
     compareRenderer.device = &vulkan_->device();
     compareWorker_ = std::make_unique<CompareMetricsWorker>(wake, compareRenderer);
+    gpu::RendererRequest variantsRenderer = compareRenderer;
+    variantsRenderer.who = "matevo edit: Variants";
+    variantsWorker_ = std::make_unique<VariantsWorker>(wake, variantsRenderer);
+    sceneWorker_ = std::make_unique<SceneViewWorker>(wake, vulkan_->device());
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
@@ -215,6 +238,8 @@ EditorApp::~EditorApp() {
     ImGuiIO& io = ImGui::GetIO();
     if (io.IniFilename) ImGui::SaveIniSettingsToDisk(io.IniFilename);
     io.IniFilename = nullptr;
+    variantsWorker_.reset();
+    sceneWorker_.reset();
     compareWorker_.reset();
     worker_.reset();
     (void)renderer_->waitIdle();  // frames in flight use the images released below
@@ -238,7 +263,7 @@ int EditorApp::run() {
         const bool scriptDue = !script_.finished() && !script_.waitingForEvolution() &&
                                (!script_.idling() || script_.idleOver());
         const bool due = screenshotPath || scriptDue || input_->hasPending() || framesToSettle > 0;
-        const bool busy = worker_->busy() || compareWorker_->busy();
+        const bool busy = worker_->busy() || compareWorker_->busy() || variantsWorker_->busy();
         if (due)
             glfwPollEvents();
         else
@@ -285,10 +310,13 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     // A screenshot shows the frame after the one that asked, so the request has settled; the
     // script waits for it.
     const std::optional<std::filesystem::path> captureNow = std::exchange(screenshotPath, {});
-    if (!captureNow) playScript(screenshotPath);
+    ui::VariantsActions scriptedVariants;
+    if (!captureNow) scriptedVariants = playScript(screenshotPath);
 
     applyEvolutionResults();
     applyCompareMetricsResults();
+    applyVariantsResults();
+    applySceneView();
     ui_.state().evolution.tableBuildProgress = tableBuildProgress();
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -301,6 +329,8 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     if (requests.runCompareMetrics)
         compareWorker_->start(
             {ui_.state().preset, ui_.state().presetPath, ui_.state().compareMetrics.runs});
+    handleVariantsActions(requests.variants);
+    handleVariantsActions(scriptedVariants);
     submitChangesToWorker();
     if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
         glfwSetWindowTitle(window_.get(), title.c_str());
@@ -326,14 +356,16 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     return drawn;
 }
 
-void EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
-    const bool settled = !worker_->busy() && display_->shownFinished();
+ui::VariantsActions EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
+    const ScriptPlayer::Settled settled{!worker_->busy() && display_->shownFinished(),
+                                        !variantsWorker_->busy() && !variantsWorker_->hasResult()};
     const ScriptEffects effects = script_.step(ui_, settled);
     if (!effects.error.empty()) failure_ = effects.error;
     if (effects.quit) quitRequested_ = true;
     if (effects.resize)
         glfwSetWindowSize(window_.get(), effects.resize->first, effects.resize->second);
     screenshotPath = effects.screenshot;
+    return effects.variants;
 }
 
 void EditorApp::applyEvolutionResults() {
@@ -357,6 +389,92 @@ void EditorApp::applyCompareMetricsResults() {
         return;
     }
     compareImages_ = std::move(shown).value();
+}
+
+void EditorApp::applyVariantsResults() {
+    ui::VariantsView& view = ui_.state().variants;
+    view.running = variantsWorker_->busy();
+    view.progress = variantsWorker_->progress();
+    std::optional<VariantsResult> result = variantsWorker_->takeResult();
+    if (!result) return;
+    shownVariants_ = std::move(result);
+    showShownVariants();
+}
+
+void EditorApp::showShownVariants() {
+    auto shown = showVariants(*shownVariants_, *bridge_, ui_.state().variants);
+    if (!shown) {
+        failure_ = shown.error().message;
+        return;
+    }
+    variantsImages_ = std::move(shown).value();
+}
+
+void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
+    ui::EditorState& state = ui_.state();
+    ui::VariantsView& view = state.variants;
+    VariantRequest request;
+    request.count = view.count;
+    request.band = {double(view.low), double(view.high)};
+    request.minApart = double(view.minApart);
+    request.seed = std::uint64_t(view.seed);
+    if (actions.run) {
+        discardedVariants_.clear();
+        if (variantsWorker_->start({state.preset, state.presetPath, request})) view.running = true;
+    }
+    if (!shownVariants_) return;
+    VariantSet& set = shownVariants_->set;
+    if (actions.discard >= 0 && std::size_t(actions.discard) < set.variants.size()) {
+        discardedVariants_.push_back(set.variants[std::size_t(actions.discard)].genome);
+        removeVariant(set, std::size_t(actions.discard));
+        showShownVariants();
+    }
+    if (actions.refill) {
+        // The same target as the shown set, the variants shown kept, the discarded ones barred.
+        for (const Variant& variant : set.variants) request.keep.push_back(variant.genome);
+        request.exclude = discardedVariants_;
+        if (variantsWorker_->start({shownVariants_->preset, state.presetPath, request}))
+            view.running = true;
+    }
+    if (actions.save) {
+        const VariantsResult& shown = *shownVariants_;
+        const Status saved = writeVariantFiles(view.savePath, shown.preset, set,
+                                               variantReport(shown.preset, shown.run, set));
+        view.summary = saved ? "Saved the set to " + view.savePath
+                             : "Save set failed: " + saved.error().message;
+        state.status.post(view.summary, saved ? ui::StatusKind::Info : ui::StatusKind::Error);
+    }
+}
+
+// Shows a finished render of the Scene window, and asks for a new one when the window is open
+// and its controls, the candidates or the preset changed.
+void EditorApp::applySceneView() {
+    ui::EditorState& state = ui_.state();
+    ui::SceneView& view = state.sceneView;
+    if (std::optional<SceneViewResult> result = sceneWorker_->takeResult()) {
+        view.status = result->status;
+        if (result->image.width > 0) {
+            auto shown = bridge_->upload(std::span(&result->image, 1));
+            if (!shown) {
+                view.status = shown.error().message;
+                return;
+            }
+            sceneImage_ = shown->front();
+            view.image = sceneImage_->render();
+            view.imageWidth = result->image.width;
+            view.imageHeight = result->image.height;
+            view.camera = result->camera;
+            view.instances = std::move(result->instances);
+        }
+    }
+    if (!view.open || view.controls.width == 0) return;
+    SceneViewJob job{view.controls, state.preset, state.presetPath, {}};
+    for (const ui::CandidateView& candidate : state.evolution.candidates)
+        job.materials.push_back({candidate.genome, state.preset.family, state.preset.baseKappa});
+    // Orbiting asks for a frame per mouse move; the worker keeps only the newest.
+    if (requestedScene_ == job) return;
+    requestedScene_ = job;
+    sceneWorker_->request(std::move(job));
 }
 
 void EditorApp::submitChangesToWorker() {
@@ -404,8 +522,18 @@ int runEditor(const EditorOptions& options) {
                      "experiment\n");
         return 2;
     }
-    EditorApp app(options);
-    return app.run();
+    try {
+        EditorApp app(options);
+        return app.run();
+    } catch (const WindowUnavailable& error) {
+        // The window itself needs a Vulkan device that can present; the headless commands
+        // do not, and fall back to the CPU renderer.
+        std::fprintf(stderr,
+                     "matevo edit: cannot show the editor: %s; the headless commands render on "
+                     "the CPU without Vulkan: matevo evolve, render, compare, experiment\n",
+                     error.what());
+        return 2;
+    }
 }
 
 }  // namespace matevo::editor

@@ -1,9 +1,11 @@
 #include "EditorScript.h"
 
 #include <charconv>
+#include <limits>
 #include <map>
 #include <sstream>
 
+#include "common/ShortText.h"
 #include "evolve/GaSettings.h"
 
 namespace matevo::editor {
@@ -13,45 +15,66 @@ using Kind = ScriptAction::Kind;
 
 struct Grammar {
     Kind kind;
-    int numbers;  // integer arguments
+    int numbers;  // integer arguments, each in [min, max]
     bool text;    // one word argument after the numbers
+    long long min = 0;
+    long long max = 0;
 };
+
+// The largest window GLFW and the swapchain are asked for; far beyond any screen.
+constexpr long long kMaxWindowSide = 16384;
+constexpr long long kMaxWaitFrames = 10'000'000;
+constexpr long long kMaxIdleMilliseconds = 600'000;
 
 const std::map<std::string, Grammar>& grammar() {
     static const std::map<std::string, Grammar> table = {
-        {"wait", {Kind::Wait, 1, false}},
+        {"wait", {Kind::Wait, 1, false, 0, kMaxWaitFrames}},
         {"wait-evolution", {Kind::WaitEvolution, 0, false}},
-        {"idle", {Kind::Idle, 1, false}},
-        {"population", {Kind::Population, 1, false}},
-        {"generations", {Kind::Generations, 1, false}},
-        {"seed", {Kind::Seed, 1, false}},
+        {"idle", {Kind::Idle, 1, false, 0, kMaxIdleMilliseconds}},
+        {"population", {Kind::Population, 1, false, 2, kMaxPopulation}},
+        {"generations", {Kind::Generations, 1, false, 1, kMaxGenerations}},
+        {"seed", {Kind::Seed, 1, false, 0, std::numeric_limits<long long>::max()}},
         {"metric", {Kind::Metric, 0, true}},
         {"heatmap", {Kind::Heatmap, 0, true}},
-        {"select", {Kind::Select, 1, false}},
+        {"select", {Kind::Select, 1, false, 0, kMaxPopulation - 1}},
+        {"scene", {Kind::Scene, 0, true}},
+        {"wait-scene", {Kind::WaitScene, 0, false}},
         {"undo", {Kind::Undo, 0, false}},
         {"redo", {Kind::Redo, 0, false}},
-        {"resize", {Kind::Resize, 2, false}},
+        {"resize", {Kind::Resize, 2, false, 64, kMaxWindowSide}},
         {"check-layout", {Kind::CheckLayout, 0, false}},
         {"screenshot", {Kind::Screenshot, 0, true}},
         {"save", {Kind::Save, 0, true}},
+        {"variants", {Kind::Variants, 1, false, 1, 48}},
+        {"wait-variants", {Kind::WaitVariants, 0, false}},
+        {"discard-variant", {Kind::DiscardVariant, 1, false, 0, 47}},
+        {"refill-variants", {Kind::RefillVariants, 0, false}},
+        {"save-variants", {Kind::SaveVariants, 0, true}},
         {"quit", {Kind::Quit, 0, false}},
     };
     return table;
 }
 
-bool parseNumber(const std::string& word, long long& value) {
+// Empty when `word` is an integer in the rule's range, else what is wrong.
+std::string parseNumber(const std::string& word, const Grammar& rule, long long& value) {
     auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-    return error == std::errc() && end == word.data() + word.size() && value >= 0;
+    if (word.empty() || error == std::errc::invalid_argument || end != word.data() + word.size())
+        return "expected an integer, got '" + shortText(word, 40) + "'";
+    if (error == std::errc::result_out_of_range || value < rule.min || value > rule.max)
+        return "must be in [" + std::to_string(rule.min) + ", " + std::to_string(rule.max) +
+               "], got " + shortText(word, 40);
+    return {};
 }
 
 std::string validateText(const ScriptAction& action) {
     if (action.kind == Kind::Metric && !parseDistanceMetric(action.text))
-        return "expected chebyshev, euclidean or manhattan, got '" + action.text + "'";
+        return "expected chebyshev, euclidean or manhattan, got '" + shortText(action.text, 40) +
+               "'";
     if (action.kind == Kind::Heatmap && action.text != "on" && action.text != "off" &&
         action.text != "toggle")
-        return "expected on, off or toggle, got '" + action.text + "'";
-    if (action.kind == Kind::Resize && (action.first < 64 || action.second < 64))
-        return "the window must be at least 64 x 64";
+        return "expected on, off or toggle, got '" + shortText(action.text, 40) + "'";
+    if (action.kind == Kind::Scene && action.text != "open" && action.text != "close")
+        return "expected open or close, got '" + shortText(action.text, 40) + "'";
     return {};
 }
 
@@ -67,22 +90,24 @@ Result<std::vector<ScriptAction>> parseEditorScript(const std::string& text,
         std::istringstream words(line);
         std::string name;
         if (!(words >> name)) continue;
-        const std::string where = sourceName + ":" + std::to_string(number) + ": " + name + ": ";
+        const std::string where =
+            sourceName + ":" + std::to_string(number) + ": " + shortText(name, 40) + ": ";
         const auto found = grammar().find(name);
         if (found == grammar().end())
-            return Error{sourceName + ":" + std::to_string(number) + ": unknown action '" + name +
-                         "'"};
+            return Error{sourceName + ":" + std::to_string(number) + ": unknown action '" +
+                         shortText(name, 40) + "'"};
         const Grammar& rule = found->second;
         ScriptAction action{rule.kind, 0, 0, {}, number};
         for (int i = 0; i < rule.numbers; ++i) {
             std::string word;
             long long& slot = i == 0 ? action.first : action.second;
-            if (!(words >> word) || !parseNumber(word, slot))
-                return Error{where + "expected a non-negative integer, got '" + word + "'"};
+            words >> word;
+            if (std::string problem = parseNumber(word, rule, slot); !problem.empty())
+                return Error{where + problem};
         }
         if (rule.text && !(words >> action.text)) return Error{where + "missing argument"};
         if (std::string extra; words >> extra)
-            return Error{where + "unexpected argument '" + extra + "'"};
+            return Error{where + "unexpected argument '" + shortText(extra, 40) + "'"};
         if (std::string problem = validateText(action); !problem.empty())
             return Error{where + problem};
         actions.push_back(std::move(action));

@@ -10,11 +10,18 @@
 //   metric chebyshev|euclidean|manhattan
 //   heatmap on|off|toggle
 //   select I                inspect candidate I (0 = best)
+//   scene open|close        the Scene window
+//   wait-scene              draw until the Scene window shows a render (gives up after 120 s)
 //   undo | redo
 //   resize W H              resize the window (pixels)
 //   check-layout            fail (exit 1) if a panel cuts off a control at its right edge
 //   screenshot PATH         PNG of the window, as F12
 //   save PATH               save the preset
+//   variants N              open the Variants window and find N variants (its band and spacing)
+//   wait-variants           draw until the variant search is finished and shown (120 s at most)
+//   discard-variant I       drop variant I from the set
+//   refill-variants         keep the set and find the missing variants
+//   save-variants PATH      save the set into the folder PATH, as `matevo variants --out`
 //   quit
 #include <string>
 #include <vector>
@@ -34,12 +41,19 @@ struct ScriptAction {
         Metric,
         Heatmap,
         Select,
+        Scene,
+        WaitScene,
         Undo,
         Redo,
         Resize,
         CheckLayout,
         Screenshot,
         Save,
+        Variants,
+        WaitVariants,
+        DiscardVariant,
+        RefillVariants,
+        SaveVariants,
         Quit
     };
     Kind kind = Kind::Wait;

@@ -1,6 +1,7 @@
 #include "EvolutionWorker.h"
 
 #include <algorithm>
+#include <exception>
 #include <numeric>
 
 #include <sys/resource.h>
@@ -70,6 +71,14 @@ void EvolutionWorker::publish(EvolutionUpdate update) {
     onUpdate_();
 }
 
+void EvolutionWorker::publishFailure(std::uint64_t jobId, const std::string& what) {
+    EvolutionUpdate update;
+    update.jobId = jobId;
+    update.finished = true;
+    update.error = "the run failed: " + what;
+    publish(std::move(update));
+}
+
 void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
     // Below the UI thread, so frames stay smooth while the GA runs. Render and ΔE00 helper
     // threads inherit the niceness from this thread.
@@ -93,7 +102,15 @@ void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
             runningJobId_.store(jobId);
             working_ = true;
         }
-        evolve(job, jobId, renderCache);
+        // Nothing may escape a thread (std::terminate would end the editor and lose the
+        // user's document): a failure becomes the job's error, shown in the window.
+        try {
+            evolve(job, jobId, renderCache);
+        } catch (const std::exception& error) {
+            publishFailure(jobId, error.what());
+        } catch (...) {
+            publishFailure(jobId, "unknown failure");
+        }
         {
             std::lock_guard lock(mutex_);
             working_ = false;

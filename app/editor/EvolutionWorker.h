@@ -78,6 +78,7 @@ private:
     void evolve(const EvolutionJob& job, std::uint64_t jobId, CandidateRenderCache& renderCache);
     bool cancelled(std::uint64_t jobId) const;
     void publish(EvolutionUpdate update);
+    void publishFailure(std::uint64_t jobId, const std::string& what);
 
     std::function<void()> onUpdate_;
     mutable std::mutex mutex_;

@@ -13,12 +13,12 @@ constexpr auto kEvolutionTimeout = std::chrono::seconds(120);
 
 ScriptPlayer::ScriptPlayer(std::vector<ScriptAction> actions) : actions_(std::move(actions)) {}
 
-ScriptEffects ScriptPlayer::step(ui::EditorUi& ui, bool evolutionSettled) {
+ScriptEffects ScriptPlayer::step(ui::EditorUi& ui, Settled settled) {
     ScriptEffects effects;
     // Window effects take a frame to show, so at most one of them per frame.
     while (!finished() && !effects.quit && !effects.screenshot && !effects.resize &&
            effects.error.empty()) {
-        if (!apply(actions_[next_], ui, evolutionSettled, effects)) break;
+        if (!apply(actions_[next_], ui, settled, effects)) break;
         ++next_;
         framesWaited_ = 0;
         waitingSince_.reset();
@@ -26,7 +26,18 @@ ScriptEffects ScriptPlayer::step(ui::EditorUi& ui, bool evolutionSettled) {
     return effects;
 }
 
-bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, bool evolutionSettled,
+bool ScriptPlayer::waitFor(bool settled, const ScriptAction& action, const char* what,
+                           ScriptEffects& effects) {
+    if (!waitingSince_) waitingSince_ = std::chrono::steady_clock::now();
+    // One extra frame after settling so the final result is on screen.
+    if (settled && framesWaited_++ >= 1) return true;
+    if (std::chrono::steady_clock::now() - *waitingSince_ > kEvolutionTimeout)
+        effects.error = "script line " + std::to_string(action.line) + ": " + what +
+                        " did not finish in 120 s";
+    return false;
+}
+
+bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled settled,
                          ScriptEffects& effects) {
     using Kind = ScriptAction::Kind;
     ui::EditorState& state = ui.state();
@@ -34,15 +45,11 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, bool evol
     switch (action.kind) {
         case Kind::Wait:
             return framesWaited_++ >= action.first;
-        case Kind::WaitEvolution: {
-            if (!waitingSince_) waitingSince_ = std::chrono::steady_clock::now();
-            // One extra frame after settling so the final grid is on screen.
-            if (evolutionSettled && framesWaited_++ >= 1) return true;
-            if (std::chrono::steady_clock::now() - *waitingSince_ > kEvolutionTimeout)
-                effects.error = "script line " + std::to_string(action.line) +
-                                ": wait-evolution: the GA run did not finish in 120 s";
-            return false;
-        }
+        case Kind::WaitEvolution:
+            return waitFor(settled.evolution, action, "wait-evolution: the GA run", effects);
+        case Kind::WaitVariants:
+            return waitFor(settled.variants, action, "wait-variants: the variant search",
+                           effects);
         case Kind::Idle:
             if (!idleUntil_) {
                 idleUntil_ =
@@ -52,12 +59,27 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, bool evol
             if (!idleOver()) return false;
             idleUntil_.reset();
             return true;
+        case Kind::Variants:
+            state.variants.open = true;
+            state.variants.count = int(std::clamp<long long>(action.first, 1, 48));
+            effects.variants.run = true;
+            return true;
+        case Kind::DiscardVariant:
+            effects.variants.discard = int(action.first);
+            return true;
+        case Kind::RefillVariants:
+            effects.variants.refill = true;
+            return true;
+        case Kind::SaveVariants:
+            state.variants.savePath = action.text;
+            effects.variants.save = true;
+            return true;
         case Kind::Population:
-            ga.population = int(std::clamp<long long>(action.first, 2, kMaxPopulation));
+            ga.population = int(action.first);  // the script parser checked the range
             ga.elitism = std::min(ga.elitism, ga.population / 2);
             return true;
         case Kind::Generations:
-            ga.generations = int(std::clamp<long long>(action.first, 1, kMaxGenerations));
+            ga.generations = int(action.first);
             return true;
         case Kind::Seed:
             ga.seed = std::uint64_t(action.first);
@@ -73,6 +95,18 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, bool evol
             if (action.first >= 0 && std::size_t(action.first) < state.evolution.candidates.size())
                 state.selected = state.evolution.candidates[std::size_t(action.first)].genome;
             return true;
+        case Kind::Scene:
+            state.sceneView.open = action.text == "open";
+            return true;
+        case Kind::WaitScene: {
+            if (!waitingSince_) waitingSince_ = std::chrono::steady_clock::now();
+            if (state.sceneView.image && framesWaited_++ >= 1) return true;
+            if (std::chrono::steady_clock::now() - *waitingSince_ > kEvolutionTimeout)
+                effects.error = "script line " + std::to_string(action.line) +
+                                ": wait-scene: no scene render in 120 s (" +
+                                state.sceneView.status + ")";
+            return false;
+        }
         case Kind::Undo:
             ui.undo();
             return true;

@@ -16,6 +16,7 @@ struct ScriptEffects {
     bool quit = false;
     std::optional<std::filesystem::path> screenshot;
     std::optional<std::pair<int, int>> resize;
+    ui::VariantsActions variants;  // as if pressed in the Variants window
     std::string error;  // a failed action (e.g. wait-evolution timed out); the app exits 1
 };
 
@@ -24,21 +25,31 @@ public:
     explicit ScriptPlayer(std::vector<ScriptAction> actions);
 
     bool finished() const { return next_ >= actions_.size(); }
-    // The next action waits for the GA run: frames are needed only when results arrive.
+    // The next action waits for the GA run or the variant search: frames are needed only when
+    // results arrive.
     bool waitingForEvolution() const {
-        return !finished() && actions_[next_].kind == ScriptAction::Kind::WaitEvolution;
+        return !finished() && (actions_[next_].kind == ScriptAction::Kind::WaitEvolution ||
+                               actions_[next_].kind == ScriptAction::Kind::WaitVariants);
     }
     // An `idle` action is under way: the app draws only what something else asks for, and
     // polls idleOver() to resume the script.
     bool idling() const { return idleUntil_.has_value(); }
     bool idleOver() const { return idleUntil_ && std::chrono::steady_clock::now() >= *idleUntil_; }
-    // Runs the actions due this frame; `evolutionSettled` says the GA run is done and shown.
-    ScriptEffects step(ui::EditorUi& ui, bool evolutionSettled);
+    // What the script waits for: the GA run is done and shown; the variant search likewise.
+    struct Settled {
+        bool evolution = false;
+        bool variants = false;
+    };
+    // Runs the actions due this frame.
+    ScriptEffects step(ui::EditorUi& ui, Settled settled);
 
 private:
     // Applies one action; false when it must wait for a later frame.
-    bool apply(const ScriptAction& action, ui::EditorUi& ui, bool evolutionSettled,
+    bool apply(const ScriptAction& action, ui::EditorUi& ui, Settled settled,
                ScriptEffects& effects);
+    // Waits until `settled`, then one frame more so the result is on screen.
+    bool waitFor(bool settled, const ScriptAction& action, const char* what,
+                 ScriptEffects& effects);
 
     std::vector<ScriptAction> actions_;
     std::size_t next_ = 0;

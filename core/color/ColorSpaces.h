@@ -2,7 +2,7 @@
 // Colorimetric conversions for ΔE00: linear sRGB (Rec.709 primaries) ⇄ CIE XYZ (D65) ⇄ CIE
 // L*a*b* with the D65 white at Y = 1. Renders are clamped to [0, 1] on the way in, because
 // L*a*b* of out-of-gamut or negative values means nothing for a displayed image
-// (architecture.md, "Units and colour").
+// (docs/architecture.md, "Decisions").
 namespace matevo {
 
 struct LinearRgb {

@@ -37,8 +37,13 @@ struct ChunkSummary {
 };
 
 // Float math through the shared formulas: flattened, this loop has no calls and no branches, so
-// the compiler vectorises it.
-[[gnu::flatten, gnu::target_clones("avx512f", "avx2", "default")]] void deltaERange(
+// the compiler vectorises it. Clang (the fuzz build) cannot combine flatten with target_clones.
+#if defined(__clang__)
+#define MATEVO_VECTORISED_KERNEL [[gnu::target_clones("avx512f", "avx2", "default")]]
+#else
+#define MATEVO_VECTORISED_KERNEL [[gnu::flatten, gnu::target_clones("avx512f", "avx2", "default")]]
+#endif
+MATEVO_VECTORISED_KERNEL void deltaERange(
     const float* rgbaA, const float* rgbaB, float* deltaE, std::size_t count) {
     using formulas::FastFloatMath;
     for (std::size_t i = 0; i < count; ++i) {

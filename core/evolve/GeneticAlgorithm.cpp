@@ -74,9 +74,21 @@ GeneticAlgorithm::GeneticAlgorithm(const MaterialFamily& family, const Genome& /
 
 void GeneticAlgorithm::initialize() {
     random_ = Random(settings_.seed);
-    const auto count = static_cast<std::size_t>(settings_.population);
-    offspring_.resize(count);
-    for (auto& genome : offspring_) genome = randomGenome(rules_, random_);
+    std::vector<Genome> genomes(static_cast<std::size_t>(settings_.population));
+    for (auto& genome : genomes) genome = randomGenome(rules_, random_);
+    startFrom(std::move(genomes));
+}
+
+void GeneticAlgorithm::initialize(std::vector<Genome> initialPopulation) {
+    random_ = Random(settings_.seed);
+    settings_.population = static_cast<int>(initialPopulation.size());
+    settings_.elitism = std::min(settings_.elitism, settings_.population);
+    startFrom(std::move(initialPopulation));
+}
+
+void GeneticAlgorithm::startFrom(std::vector<Genome> genomes) {
+    const std::size_t count = genomes.size();
+    offspring_ = std::move(genomes);
     evaluateOffspring();
     population_.resize(count);
     for (std::size_t i = 0; i < count; ++i) population_[i] = {offspring_[i], offspringFitness_[i]};
@@ -100,6 +112,7 @@ void GeneticAlgorithm::step() {
         crossoverCouple(offspring_[couple.first], offspring_[couple.second], rules_,
                         couple.swapEtas, rates_, random_);
     for (auto& child : offspring_) mutate(child, rules_, rates_, random_);
+    if (offspringHook_) offspringHook_(offspring_, random_);
     evaluateOffspring();
 
     // Elitism: the best parents replace the worst offspring (the population is then kept
@@ -132,6 +145,14 @@ std::vector<Individual> GeneticAlgorithm::rankedPopulation() const {
 void GeneticAlgorithm::run() {
     initialize();
     while (!finished()) step();
+}
+
+void GeneticAlgorithm::rescore() {
+    offspring_.resize(population_.size());
+    for (std::size_t i = 0; i < population_.size(); ++i) offspring_[i] = population_[i].genome;
+    evaluateOffspring();
+    for (std::size_t i = 0; i < population_.size(); ++i)
+        population_[i].fitness = offspringFitness_[i];
 }
 
 void GeneticAlgorithm::evaluateOffspring() {

@@ -7,6 +7,7 @@
 // Every individual it produces satisfies Table 2 for its family.
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "evolve/GaSettings.h"
@@ -38,6 +39,11 @@ struct GenerationStats {
 using FitnessEvaluator =
     std::function<void(std::span<const Genome> genomes, std::span<double> fitness)>;
 
+// Sees each generation's offspring after crossover and mutation, before they are scored, and
+// may change them (e.g. mutate again the ones already seen). Whatever it makes must still
+// satisfy Table 2; it draws from the GA's own generator, so runs stay reproducible.
+using OffspringHook = std::function<void(std::span<Genome> offspring, Random& random)>;
+
 class GeneticAlgorithm {
 public:
     // Fitness: the genotype distance to the target (Eq. 4-6) with the settings' metric,
@@ -51,6 +57,10 @@ public:
 
     // A fresh random population from settings.seed (calling it again restarts the run).
     void initialize();
+    // A population of the caller's, e.g. variants of the target, in place of random genomes;
+    // settings.seed still seeds the operators. Each genome must satisfy Table 2. The population
+    // size becomes initialPopulation.size(), which must not be zero.
+    void initialize(std::vector<Genome> initialPopulation);
     // One generation; initialises first if needed; does nothing once finished().
     void step();
     bool finished() const;
@@ -62,12 +72,17 @@ public:
     const std::vector<GenerationStats>& history() const { return history_; }
     // initialize() and every generation.
     void run();
+    void setOffspringHook(OffspringHook hook) { offspringHook_ = std::move(hook); }
+    // Scores the current population again, for a fitness that changes while the run goes on
+    // (distance to a growing archive of variants, say). The history is left as recorded.
+    void rescore();
 
     const FamilyRules& rules() const { return rules_; }
     // The settings in use: population >= 1, generations >= 0, elitism in [0, population].
     const GaSettings& settings() const { return settings_; }
 
 private:
+    void startFrom(std::vector<Genome> genomes);
     void evaluateOffspring();
     void recordStats();
 
@@ -75,6 +90,7 @@ private:
     GaSettings settings_;
     OperatorRates rates_;
     FitnessEvaluator evaluate_;
+    OffspringHook offspringHook_;
     Random random_;
     int generation_ = -1;
     std::vector<Individual> population_;

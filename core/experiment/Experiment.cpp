@@ -1,5 +1,7 @@
 #include "experiment/Experiment.h"
 
+#include "common/StopRequest.h"
+
 #include <algorithm>
 
 #include "color/ImageDifference.h"
@@ -24,10 +26,12 @@ std::vector<RunRecord> evolveRuns(const ExperimentTarget& target,
                                   const ExperimentProgress& progress) {
     const int runCount = settings.runs * int(settings.metrics.size());
     std::vector<RunRecord> records(std::size_t(std::max(runCount, 0)));
+    std::vector<char> finished(records.size(), 0);
     // One chunk per run: a run is a whole GA, far heavier than the scheduling.
     parallelForChunks(
         runCount,
         [&](int chunk) {
+            if (stopRequested()) return;  // runs started are finished; the rest are skipped
             const DistanceMetric metric = settings.metrics[std::size_t(chunk / settings.runs)];
             const int run = chunk % settings.runs;
             const GaSettings ga = runGaSettings(target, settings, metric, run);
@@ -36,10 +40,17 @@ std::vector<RunRecord> evolveRuns(const ExperimentTarget& target,
             const Individual best = algorithm.rankedPopulation().front();
             records[std::size_t(chunk)] = {target.name, metric,       settings.size, ga.seed,
                                            run,         best.fitness, 0.0,           best.genome};
+            finished[std::size_t(chunk)] = 1;
         },
         [&](int done) {
             if (progress) progress(done, runCount);
         });
+    if (stopRequested()) {
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < records.size(); ++i)
+            if (finished[i]) records[kept++] = std::move(records[i]);
+        records.resize(kept);
+    }
     return records;
 }
 
@@ -55,9 +66,9 @@ RenderGenomes renderGenomesWith(std::shared_ptr<PopulationRenderer> renderer,
     };
 }
 
-Status scoreRuns(std::span<RunRecord> records, const Image& targetImage,
-                 const RenderGenomes& render, std::size_t batchSize,
-                 const ExperimentProgress& progress, const RenderedRun& onRendered) {
+Result<ScoredRuns> scoreRuns(std::span<RunRecord> records, const Image& targetImage,
+                             const RenderGenomes& render, std::size_t batchSize,
+                             const ExperimentProgress& progress, const RenderedRun& onRendered) {
     batchSize = std::max<std::size_t>(batchSize, 1);
     std::vector<Genome> genomes;
     for (std::size_t first = 0; first < records.size(); first += batchSize) {
@@ -77,8 +88,9 @@ Status scoreRuns(std::span<RunRecord> records, const Image& targetImage,
             if (onRendered) onRendered(first + i, image);
         }
         if (progress) progress(int(first + count), int(records.size()));
+        if (stopRequested()) return ScoredRuns{first + count};
     }
-    return Ok{};
+    return ScoredRuns{records.size()};
 }
 
 Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
@@ -95,10 +107,11 @@ Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
         if (progress) progress(done, total);
     });
     const int evolved = int(records.size());
-    Status scored = scoreRuns(records, targetImages->front(), render, 64, [&](int done, int) {
+    auto scored = scoreRuns(records, targetImages->front(), render, 64, [&](int done, int) {
         if (progress) progress(evolved + done, total);
     });
     if (!scored) return scored.error();
+    records.resize(scored->count);
     return records;
 }
 

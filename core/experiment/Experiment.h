@@ -15,6 +15,7 @@
 #include "common/Image.h"
 #include "common/Result.h"
 #include "evolve/GaSettings.h"
+#include "evolve/RenderGenomes.h"
 #include "experiment/ExperimentSettings.h"
 #include "experiment/RunRecord.h"
 #include "genome/Genome.h"
@@ -22,11 +23,6 @@
 #include "render/PopulationRenderer.h"
 
 namespace matevo {
-
-// Renders genomes of the target's material on the test sphere, one image per genome, in order.
-// The caller binds everything else (family, kappa, textures, scene, image size) and chooses the
-// back end (GPU batch renderer or CPU reference).
-using RenderGenomes = std::function<Result<std::vector<Image>>(std::span<const Genome> genomes)>;
 
 // RenderGenomes on `renderer` for genomes of `family` with the base's `kappa`, at size x size.
 RenderGenomes renderGenomesWith(std::shared_ptr<PopulationRenderer> renderer,
@@ -54,15 +50,23 @@ GaSettings runGaSettings(const ExperimentTarget& target, const ExperimentSetting
 
 // Every metric's runs, metric by metric in settings order, each run's best individual and
 // fitness; meanDeltaE00 is left 0. Runs in parallel on up to hardware_concurrency() threads.
+// After a stop request (SIGINT, SIGTERM) the runs not yet started are left out, and the
+// experiment returns only the runs that were completed and scored.
 std::vector<RunRecord> evolveRuns(const ExperimentTarget& target,
                                   const ExperimentSettings& settings,
                                   const ExperimentProgress& progress = {});
 
+// How many records, from the first, scoreRuns scored: all of them unless a stop was requested.
+struct ScoredRuns {
+    std::size_t count = 0;
+};
+
 // Renders the records' genomes in batches of at most batchSize and stores each one's mean
 // ΔE00 against targetImage. progress counts scored records.
-Status scoreRuns(std::span<RunRecord> records, const Image& targetImage,
-                 const RenderGenomes& render, std::size_t batchSize = 64,
-                 const ExperimentProgress& progress = {}, const RenderedRun& onRendered = {});
+Result<ScoredRuns> scoreRuns(std::span<RunRecord> records, const Image& targetImage,
+                             const RenderGenomes& render, std::size_t batchSize = 64,
+                             const ExperimentProgress& progress = {},
+                             const RenderedRun& onRendered = {});
 
 // Renders the target, evolves and scores every run. progress counts GA runs, then scored runs.
 Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,

@@ -75,7 +75,7 @@ constexpr std::array<CoatBaseRules, 4> kTable2 = {{
 constexpr ChromosomeRange kDepthRange = closed(0.05, 40.0);
 constexpr ChromosomeRange kCrossSectionRange = closed(0.0, 1.0);
 // Henyey-Greenstein g: the model's variance term is valid only for strongly forward scattering
-// (g >~ 0.7, belcour-model.md 2.6); g = 1 is a delta phase function, so stop at 0.99.
+// (g >~ 0.7, docs/bsdf.md 2.6); g = 1 is a delta phase function, so stop at 0.99.
 constexpr ChromosomeRange kAnisotropyRange = closed(0.7, 0.99);
 // Footnote d: with a medium over a conductor, eta2 < 1.
 constexpr ChromosomeRange kConductorEta2WithMedium = closedOpen(kConductorEta2Min, 1.0);

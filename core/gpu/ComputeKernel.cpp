@@ -1,5 +1,6 @@
 #include "gpu/ComputeKernel.h"
 
+#include "gpu/ShaderModule.h"
 #include "gpu/VulkanError.h"
 
 namespace matevo::gpu {
@@ -10,36 +11,16 @@ Result<ComputeKernel> ComputeKernel::create(const Device& device,
                                             uint32_t pushConstantBytes) {
     const VkDevice vkDevice = device.handle();
     ComputeKernel kernel;
-    kernel.device_ = vkDevice;
-    kernel.bindings_ = std::move(bindings);
     kernel.pushConstantBytes_ = pushConstantBytes;
 
-    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    moduleInfo.codeSize = spirv.size_bytes();
-    moduleInfo.pCode = spirv.data();
-    VkShaderModule module = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateShaderModule(vkDevice, &moduleInfo, nullptr, &module);
-        result != VK_SUCCESS)
-        return vulkanError("creating a shader module", result);
-    kernel.module_ = UniqueShaderModule(vkDevice, module);
+    auto module = createShaderModule(vkDevice, spirv);
+    if (!module) return module.error();
+    kernel.module_ = std::move(module).value();
 
-    std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
-    std::vector<VkDescriptorPoolSize> poolSizes;
-    for (uint32_t index = 0; index < kernel.bindings_.size(); ++index) {
-        layoutBindings.push_back({index, kernel.bindings_[index], 1,
-                                  VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-        poolSizes.push_back({kernel.bindings_[index], 1});
-    }
-    VkDescriptorSetLayoutCreateInfo setLayoutInfo{
-        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setLayoutInfo.bindingCount = uint32_t(layoutBindings.size());
-    setLayoutInfo.pBindings = layoutBindings.data();
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    if (VkResult result =
-            vkCreateDescriptorSetLayout(vkDevice, &setLayoutInfo, nullptr, &setLayout);
-        result != VK_SUCCESS)
-        return vulkanError("creating a descriptor set layout", result);
-    kernel.setLayout_ = UniqueDescriptorSetLayout(vkDevice, setLayout);
+    auto set = DescriptorSet::create(device, std::move(bindings), VK_SHADER_STAGE_COMPUTE_BIT);
+    if (!set) return set.error();
+    kernel.set_ = std::move(set).value();
+    const VkDescriptorSetLayout setLayout = kernel.set_.layout();
 
     const VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
     VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -57,7 +38,7 @@ Result<ComputeKernel> ComputeKernel::create(const Device& device,
     VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    pipelineInfo.stage.module = module;
+    pipelineInfo.stage.module = kernel.module_.get();
     pipelineInfo.stage.pName = "main";
     pipelineInfo.layout = pipelineLayout;
     VkPipeline pipeline = VK_NULL_HANDLE;
@@ -67,59 +48,28 @@ Result<ComputeKernel> ComputeKernel::create(const Device& device,
         return vulkanError("creating a compute pipeline", result);
     kernel.pipeline_ = UniquePipeline(vkDevice, pipeline);
 
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = uint32_t(poolSizes.size());
-    poolInfo.pPoolSizes = poolSizes.data();
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateDescriptorPool(vkDevice, &poolInfo, nullptr, &pool);
-        result != VK_SUCCESS)
-        return vulkanError("creating a descriptor pool", result);
-    kernel.pool_ = UniqueDescriptorPool(vkDevice, pool);
-
-    VkDescriptorSetAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocateInfo.descriptorPool = pool;
-    allocateInfo.descriptorSetCount = 1;
-    allocateInfo.pSetLayouts = &setLayout;
-    if (VkResult result = vkAllocateDescriptorSets(vkDevice, &allocateInfo, &kernel.set_);
-        result != VK_SUCCESS)
-        return vulkanError("allocating a descriptor set", result);
     return kernel;
 }
 
-void ComputeKernel::write(uint32_t binding, const VkDescriptorBufferInfo* bufferInfo,
-                          const VkDescriptorImageInfo* imageInfo) const {
-    VkWriteDescriptorSet descriptor{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    descriptor.dstSet = set_;
-    descriptor.dstBinding = binding;
-    descriptor.descriptorCount = 1;
-    descriptor.descriptorType = bindings_.at(binding);
-    descriptor.pBufferInfo = bufferInfo;
-    descriptor.pImageInfo = imageInfo;
-    vkUpdateDescriptorSets(device_, 1, &descriptor, 0, nullptr);
-}
-
 void ComputeKernel::bindBuffer(uint32_t binding, const Buffer& buffer) const {
-    const VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
-    write(binding, &info, nullptr);
+    set_.bindBuffer(binding, buffer);
 }
 
 void ComputeKernel::bindSampledImage(uint32_t binding, VkImageView view,
                                      VkSampler sampler) const {
-    const VkDescriptorImageInfo info{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    write(binding, nullptr, &info);
+    set_.bindSampledImage(binding, view, sampler);
 }
 
 void ComputeKernel::bindStorageImage(uint32_t binding, VkImageView view) const {
-    const VkDescriptorImageInfo info{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
-    write(binding, nullptr, &info);
+    set_.bindStorageImage(binding, view);
 }
 
 void ComputeKernel::record(VkCommandBuffer commands, const void* pushConstants,
                            uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) const {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
+    const VkDescriptorSet set = set_.handle();
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_.get(), 0,
-                            1, &set_, 0, nullptr);
+                            1, &set, 0, nullptr);
     if (pushConstantBytes_ > 0)
         vkCmdPushConstants(commands, pipelineLayout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                            pushConstantBytes_, pushConstants);

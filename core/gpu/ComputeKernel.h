@@ -7,6 +7,7 @@
 
 #include "common/Result.h"
 #include "gpu/Buffer.h"
+#include "gpu/DescriptorSet.h"
 #include "gpu/Device.h"
 #include "gpu/VulkanHandle.h"
 
@@ -21,24 +22,18 @@ public:
     void bindBuffer(uint32_t binding, const Buffer& buffer) const;
     void bindSampledImage(uint32_t binding, VkImageView view, VkSampler sampler) const;
     void bindStorageImage(uint32_t binding, VkImageView view) const;
+    const DescriptorSet& descriptors() const { return set_; }
 
     // Records the dispatch; pushConstants must hold pushConstantBytes bytes.
     void record(VkCommandBuffer commands, const void* pushConstants, uint32_t groupsX,
                 uint32_t groupsY, uint32_t groupsZ) const;
 
 private:
-    void write(uint32_t binding, const VkDescriptorBufferInfo* bufferInfo,
-               const VkDescriptorImageInfo* imageInfo) const;
-
-    VkDevice device_ = VK_NULL_HANDLE;
-    std::vector<VkDescriptorType> bindings_;
     uint32_t pushConstantBytes_ = 0;
     UniqueShaderModule module_;
-    UniqueDescriptorSetLayout setLayout_;
+    DescriptorSet set_;
     UniquePipelineLayout pipelineLayout_;
     UniquePipeline pipeline_;
-    UniqueDescriptorPool pool_;
-    VkDescriptorSet set_ = VK_NULL_HANDLE;  // freed with the pool
 };
 
 }  // namespace matevo::gpu

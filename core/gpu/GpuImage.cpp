@@ -18,7 +18,7 @@ Result<GpuImage> GpuImage::create(const Device& device, const GpuImageSpec& spec
     imageInfo.extent = spec.extent;
     imageInfo.mipLevels = 1;
     imageInfo.arrayLayers = 1;
-    imageInfo.samples = VK_SAMPLE_COUNT_1_BIT;
+    imageInfo.samples = spec.samples;
     imageInfo.tiling = VK_IMAGE_TILING_OPTIMAL;
     imageInfo.usage = spec.usage;
     imageInfo.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
@@ -53,7 +53,7 @@ Result<GpuImage> GpuImage::create(const Device& device, const GpuImageSpec& spec
     viewInfo.viewType = spec.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D
                                                       : VK_IMAGE_VIEW_TYPE_2D;
     viewInfo.format = spec.format;
-    viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    viewInfo.subresourceRange = {spec.aspect, 0, 1, 0, 1};
     VkImageView view = VK_NULL_HANDLE;
     if (VkResult result = vkCreateImageView(vkDevice, &viewInfo, nullptr, &view);
         result != VK_SUCCESS)
@@ -84,7 +84,8 @@ Result<GpuImage> GpuImage::createFilled(const Device& device, CommandRunner& run
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
     transitionImage(*commands, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                    VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_TRANSFER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                     VK_ACCESS_SHADER_READ_BIT);
     if (auto submitted = runner.submitAndWait(); !submitted) return submitted.error();
     return image;

@@ -1,6 +1,7 @@
 #pragma once
 // An image with its own device memory and a view covering it: 2D or 3D, one mip level, one
-// layer. Used for the BSDF tables and textures (sampled) and the editor's display images.
+// layer. Used for the BSDF tables and textures (sampled), the editor's display images and the
+// scene renderer's attachments.
 #include <cstdint>
 #include <span>
 
@@ -16,13 +17,16 @@ struct GpuImageSpec {
     VkFormat format = VK_FORMAT_R32_SFLOAT;
     VkExtent3D extent{1, 1, 1};
     VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // > 1: a multisampled attachment
+    VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;  // DEPTH for a depth buffer
 };
 
 class GpuImage {
 public:
     static Result<GpuImage> create(const Device& device, const GpuImageSpec& spec);
     // Creates a sampled image and fills it with texels (tightly packed, in the image's format),
-    // leaving it in SHADER_READ_ONLY_OPTIMAL. Submits on runner and waits.
+    // leaving it in SHADER_READ_ONLY_OPTIMAL for compute and fragment shaders. Submits on runner
+    // and waits.
     static Result<GpuImage> createFilled(const Device& device, CommandRunner& runner,
                                          const GpuImageSpec& spec,
                                          std::span<const std::byte> texels);

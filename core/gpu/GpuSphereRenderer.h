@@ -11,7 +11,8 @@
 #include "gpu/Buffer.h"
 #include "gpu/CommandRunner.h"
 #include "gpu/ComputeKernel.h"
-#include "gpu/GpuImage.h"
+#include "gpu/GpuMaterialTables.h"
+#include "gpu/GpuSceneTextures.h"
 #include "gpu/ImageBatch.h"
 #include "material/FgdTables.h"
 #include "material/MaterialInstance.h"
@@ -38,17 +39,11 @@ public:
                                       const SceneSettings& scene, int size);
 
 private:
-    Status uploadMaterials(std::span<const MaterialInstance> materials);
-
     const Device* device_ = nullptr;
     const FgdTables* tables_ = nullptr;
-    bool textured_ = false;  // a texture is present: the shader needs the sphere's UV
-    GpuImage roughness_;
-    GpuImage baseColor_;
-    UniqueSampler textureSampler_;  // bilinear, wraps in u and clamps in v like sphereUv
+    GpuSceneTextures textures_;
     Buffer sceneBuffer_;
-    Buffer materialBuffer_;
-    Buffer lobeTableBuffer_;
+    GpuMaterialTables materials_;
     ComputeKernel kernel_;
 };
 

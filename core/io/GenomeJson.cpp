@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/InputFile.h"
 #include "io/JsonReader.h"
 #include "io/TextFile.h"
 
@@ -19,6 +20,20 @@ nlohmann::json genomeToJson(const Genome& genome) {
             {"alpha1", genome.alpha1()},   {"alpha2", genome.alpha2()},
             {"depth", genome.depth()},     {"sigma_s", genome.sigmaS()},
             {"sigma_a", genome.sigmaA()},  {"g", genome.g()}};
+}
+
+nlohmann::json familyToJson(const MaterialFamily& family) {
+    return {{"coat", toString(family.coat)},
+            {"base", toString(family.base)},
+            {"medium", family.hasMedium},
+            {"textured_layer", toString(family.texturedLayer)}};
+}
+
+nlohmann::json materialToJson(const Genome& genome, const MaterialFamily& family,
+                              const std::array<double, 3>& baseKappa) {
+    nlohmann::json json = {{"family", familyToJson(family)}, {"genome", genomeToJson(genome)}};
+    if (family.base == Base::Conductor) json["base_kappa"] = baseKappa;
+    return json;
 }
 
 Genome readGenome(JsonReader& reader) {
@@ -40,22 +55,26 @@ Genome readGenome(JsonReader& reader) {
     return genome;
 }
 
-Result<Genome> loadGenome(const std::filesystem::path& file) {
-    auto text = readTextFile(file);
-    if (!text) return text.error();
+Result<Genome> parseGenome(std::string_view text, const std::string& sourceName) {
     std::vector<std::string> warnings;
     try {
-        auto json = nlohmann::json::parse(*text);
+        auto json = nlohmann::json::parse(text);
         // A result.json or a population entry holds the genome under "genome"; accept both.
         const auto& object = json.is_object() && json.contains("genome") ? json["genome"] : json;
         JsonReader reader(object, "", warnings);
         Genome genome = readGenome(reader);
         return genome;
     } catch (const nlohmann::json::exception& error) {
-        return Error{file.string() + ": not valid JSON (" + error.what() + ")"};
+        return Error{sourceName + ": not valid JSON (" + error.what() + ")"};
     } catch (const JsonFieldError& error) {
-        return Error{file.string() + ": " + error.what()};
+        return Error{sourceName + ": " + error.what()};
     }
+}
+
+Result<Genome> loadGenome(const std::filesystem::path& file) {
+    auto text = readTextFile(file);
+    if (!text) return text.error();
+    return parseGenome(*text, displayPath(file));
 }
 
 }  // namespace matevo

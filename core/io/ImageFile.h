@@ -3,6 +3,7 @@
 // linear float RGBA. In memory an Image is always linear with straight (unassociated) alpha, so
 // colour values are stored as they are and alpha is never multiplied in.
 #include <filesystem>
+#include <string_view>
 
 #include "common/Image.h"
 #include "common/Result.h"
@@ -16,13 +17,25 @@ struct ImageFileContents {
     bool hasAlpha = false;
 };
 
-// Errors are one line naming the file: unsupported extension, unreadable, not an image, or an
-// unsupported channel layout. Grey files are expanded to RGB.
+// Reads .png, .exr and Radiance .hdr (linear; for environments). Errors are one line naming the
+// file: unsupported extension, unreadable, not an image, or an unsupported channel layout.
+// Grey files are expanded to RGB.
+// Files are read through readInputFile (regular files up to kMaxImageFileBytes); the decoded
+// size is checked against the memory limit (common/MemoryBudget.h) before it is allocated, and
+// non-finite pixel values are refused.
 Result<ImageFileContents> readImageFile(const std::filesystem::path& file);
+// The same from bytes already in memory; `file` gives the type (its extension) and the name.
+Result<ImageFileContents> decodeImageFile(std::string_view bytes,
+                                          const std::filesystem::path& file);
 Result<Image> readImage(const std::filesystem::path& file);
 
 // Writes RGBA to .png (sRGB-encoded 8 bit, values clamped to [0, 1]) or .exr (32-bit float).
 // Atomic: written to a temporary file beside the target, then renamed over it.
 Status writeImage(const Image& image, const std::filesystem::path& file);
+
+// The image as writeImage stores it in a PNG and readImage returns it (colour through 8-bit sRGB,
+// alpha through 8 bits), without the file: figures measured on it are the ones `matevo compare`
+// finds in the written files.
+Image quantizeAsPng(const Image& image);
 
 }  // namespace matevo

@@ -2,9 +2,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <system_error>
+
 #include "genome/FamilyRules.h"
 #include "io/AtomicFile.h"
 #include "io/GenomeJson.h"
+#include "io/InputFile.h"
 #include "io/JsonReader.h"
 #include "io/TextFile.h"
 
@@ -52,7 +55,9 @@ GaSettings readGaSettings(JsonReader reader) {
 SceneSettings readScene(JsonReader reader) {
     SceneSettings scene;
     if (reader.has("mode"))
-        scene.mode = readEnum(reader, "mode", parseSceneMode, "paper or ambient");
+        scene.mode =
+            readEnum(reader, "mode", parseSceneMode, "paper, ambient or environment");
+    if (reader.has("environment")) scene.environment = reader.string("environment");
     if (reader.has("image_size")) scene.imageSize = int(reader.integer("image_size", 8, 4096));
     if (reader.has("camera_position"))
         scene.cameraPosition = reader.numbers<3>("camera_position", -100.0, 100.0);
@@ -139,13 +144,6 @@ Preset readPreset(JsonReader& root) {
     return preset;
 }
 
-nlohmann::json familyToJson(const MaterialFamily& family) {
-    return {{"coat", toString(family.coat)},
-            {"base", toString(family.base)},
-            {"medium", family.hasMedium},
-            {"textured_layer", toString(family.texturedLayer)}};
-}
-
 }  // namespace
 
 Result<LoadedPreset> parsePreset(const std::string& jsonText, const std::string& sourceName) {
@@ -172,9 +170,11 @@ Result<LoadedPreset> loadPreset(const std::filesystem::path& file) {
     for (const auto& [field, name] :
          {std::pair{"textures.roughness", loaded->preset.roughnessTexture},
           std::pair{"textures.base_color", loaded->preset.baseColorTexture}}) {
-        if (!name.empty() && !std::filesystem::is_regular_file(file.parent_path() / name))
+        // The error_code overload: a symlink loop or an over-long name is an answer, not a throw.
+        std::error_code error;
+        if (!name.empty() && !std::filesystem::is_regular_file(file.parent_path() / name, error))
             return Error{file.string() + ": " + field + ": no such file '" +
-                         (file.parent_path() / name).string() + "'"};
+                         displayPath(file.parent_path() / name) + "'"};
     }
     return loaded;
 }
@@ -202,7 +202,8 @@ std::string serializePreset(const Preset& preset) {
           {"field_of_view_degrees", preset.scene.fieldOfViewDegrees},
           {"light_direction", preset.scene.lightDirection},
           {"light_radiance", preset.scene.lightRadiance},
-          {"environment_radiance", preset.scene.environmentRadiance}}},
+          {"environment_radiance", preset.scene.environmentRadiance},
+          {"environment", preset.scene.environment}}},
     };
     if (preset.family.base == Base::Conductor) json["base_kappa"] = preset.baseKappa;
     if (!preset.kept.empty()) {
@@ -217,6 +218,8 @@ std::string serializePreset(const Preset& preset) {
 }
 
 Status savePreset(const Preset& preset, const std::filesystem::path& file) {
+    // A save killed earlier (kill -9, power loss) may have left its temporary file here.
+    removeStaleTemporaryFiles(file.has_parent_path() ? file.parent_path() : ".");
     return writeFileAtomically(file, serializePreset(preset));
 }
 

@@ -31,7 +31,7 @@ struct Preset {
     MaterialFamily family;
     Genome target;
     // Extinction coefficient of a conductor base (RGB). The genotype has no kappa, so it is the
-    // metal's fixed identity (architecture.md, "Metals"); ignored for a dielectric base.
+    // metal's fixed identity (docs/architecture.md, "Decisions"); ignored for a dielectric base.
     std::array<double, 3> baseKappa = {0.0, 0.0, 0.0};
     // Texture files relative to the preset's folder; empty when unused.
     std::string roughnessTexture;  // for the textured layer of the family
@@ -48,7 +48,7 @@ struct LoadedPreset {
     std::vector<std::string> warnings;  // e.g. unknown fields, each naming file and field
 };
 
-// Errors name the file and the JSON field ("presets/x.json: ga.population: must be in [2,
+// Errors name the file and the JSON field ("my-preset.json: ga.population: must be in [2,
 // 100000], got 0").
 Result<LoadedPreset> loadPreset(const std::filesystem::path& file);
 Result<LoadedPreset> parsePreset(const std::string& jsonText, const std::string& sourceName);

@@ -1,17 +1,11 @@
 #include "io/TextFile.h"
 
-#include <fstream>
-#include <sstream>
+#include "io/InputFile.h"
 
 namespace matevo {
 
 Result<std::string> readTextFile(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return Error{file.string() + ": cannot open for reading"};
-    std::stringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return Error{file.string() + ": read failed"};
-    return text.str();
+    return readInputFile(file, kMaxTextFileBytes);
 }
 
 }  // namespace matevo

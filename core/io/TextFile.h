@@ -1,5 +1,6 @@
 #pragma once
-// Reads a whole text file; the error names the file.
+// Reads a whole text file (preset, genome, editor script) through readInputFile with the text
+// size limit; the error names the file.
 #include <filesystem>
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Evaluating the lobes (belcour-model.md §5): a sum of GGX reflection lobes around the mirror
+// Evaluating the lobes (docs/bsdf.md §5): a sum of GGX reflection lobes around the mirror
 // direction, no Fresnel inside (the energies hold it), separable Smith shadowing.
 #include <array>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Direct integration of the single-interface statistics behind the tables (belcour-model.md
+// Direct integration of the single-interface statistics behind the tables (docs/bsdf.md
 // §3.3, §3.4): stratified GGX visible-normal samples, separable Smith, exact Fresnel. The table
 // generator uses the same sample stream; tests use these functions as the reference.
 #include <algorithm>

@@ -1,17 +1,18 @@
 #include "material/FgdTableCache.h"
 
-#include <unistd.h>
-
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
+
+#include "io/AtomicFile.h"
+#include "io/InputFile.h"
 
 namespace matevo {
 
@@ -61,61 +62,67 @@ Bytes header(const TableGenerationSettings& settings) {
     return bytes;
 }
 
-std::vector<float> floatsAt(const Bytes& bytes, std::size_t offset, std::size_t count) {
+std::vector<float> floatsAt(const unsigned char* bytes, std::size_t offset, std::size_t count) {
     std::vector<float> values(count);
-    std::memcpy(values.data(), bytes.data() + offset, count * sizeof(float));
+    std::memcpy(values.data(), bytes + offset, count * sizeof(float));
     return values;
 }
 
 }  // namespace
 
-Result<FgdTables> readFgdTables(const std::filesystem::path& file,
-                                const TableGenerationSettings& expected) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return Error{file.string() + ": cannot open"};
-    const Bytes bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+std::size_t fgdTableFileSize(const TableGenerationSettings& settings) {
+    return header(settings).size() +
+           (settings.grid.fgdSize() + settings.grid.tirSize()) * sizeof(float) +
+           sizeof(std::uint64_t);
+}
+
+Result<FgdTables> parseFgdTables(std::string_view text, const TableGenerationSettings& expected,
+                                 const std::string& sourceName) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
     const Bytes expectedHeader = header(expected);
     const std::size_t fgdCount = expected.grid.fgdSize();
     const std::size_t tirCount = expected.grid.tirSize();
-    const std::size_t dataSize = (fgdCount + tirCount) * sizeof(float);
-    if (bytes.size() != expectedHeader.size() + dataSize + sizeof(std::uint64_t))
-        return Error{file.string() + ": unexpected size (stale or truncated)"};
-    if (!std::equal(expectedHeader.begin(), expectedHeader.end(), bytes.begin()))
-        return Error{file.string() + ": header: other version or settings"};
-    const std::size_t checksumOffset = expectedHeader.size() + dataSize;
+    if (text.size() != fgdTableFileSize(expected))
+        return Error{sourceName + ": unexpected size (stale or truncated)"};
+    if (!std::equal(expectedHeader.begin(), expectedHeader.end(), bytes))
+        return Error{sourceName + ": header: other version or settings"};
+    const std::size_t checksumOffset = text.size() - sizeof(std::uint64_t);
     std::uint64_t stored = 0;
-    std::memcpy(&stored, bytes.data() + checksumOffset, sizeof(stored));
-    if (stored != fnv1a(bytes.data(), checksumOffset))
-        return Error{file.string() + ": checksum mismatch"};
-    return FgdTables(expected.grid, floatsAt(bytes, expectedHeader.size(), fgdCount),
-                     floatsAt(bytes, expectedHeader.size() + fgdCount * sizeof(float), tirCount));
+    std::memcpy(&stored, bytes + checksumOffset, sizeof(stored));
+    if (stored != fnv1a(bytes, checksumOffset)) return Error{sourceName + ": checksum mismatch"};
+    auto fgd = floatsAt(bytes, expectedHeader.size(), fgdCount);
+    auto tir = floatsAt(bytes, expectedHeader.size() + fgdCount * sizeof(float), tirCount);
+    // A checksum proves the bytes are what was written, not that what was written is sane (a
+    // forged file, a bug in an old build): every entry is an albedo or a fraction in [0, 1].
+    for (const auto* values : {&fgd, &tir})
+        for (float value : *values)
+            if (!(value >= 0.0f && value <= 1.0f))
+                return Error{sourceName + ": value " + std::to_string(value) + " outside [0, 1]"};
+    return FgdTables(expected.grid, std::move(fgd), std::move(tir));
 }
 
-Status writeFgdTables(const std::filesystem::path& file, const FgdTables& tables,
-                      const TableGenerationSettings& settings) {
+Result<FgdTables> readFgdTables(const std::filesystem::path& file,
+                                const TableGenerationSettings& expected) {
+    // Never more than a valid file's size: a cache path on /dev/zero or a huge file is refused.
+    auto text = readInputFile(file, fgdTableFileSize(expected));
+    if (!text) return text.error();
+    return parseFgdTables(*text, expected, displayPath(file));
+}
+
+std::string serializeFgdTables(const FgdTables& tables, const TableGenerationSettings& settings) {
     Bytes bytes = header(settings);
     appendRaw(bytes, tables.fgdData().data(), tables.fgdData().size() * sizeof(float));
     appendRaw(bytes, tables.tirData().data(), tables.tirData().size() * sizeof(float));
     append(bytes, fnv1a(bytes.data(), bytes.size()));
+    return std::string(bytes.begin(), bytes.end());
+}
 
+Status writeFgdTables(const std::filesystem::path& file, const FgdTables& tables,
+                      const TableGenerationSettings& settings) {
     std::error_code error;
     std::filesystem::create_directories(file.parent_path(), error);
-    std::filesystem::path temporary = file;
-    temporary += ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-        if (!out.flush()) {
-            std::filesystem::remove(temporary, error);
-            return Error{temporary.string() + ": cannot write"};
-        }
-    }
-    std::filesystem::rename(temporary, file, error);
-    if (error) {
-        std::filesystem::remove(temporary, error);
-        return Error{file.string() + ": cannot replace: " + error.message()};
-    }
-    return Ok{};
+    removeStaleTemporaryFiles(file.parent_path());
+    return writeFileAtomically(file, serializeFgdTables(tables, settings));
 }
 
 std::filesystem::path defaultTableCacheDirectory() {
@@ -130,8 +137,15 @@ FgdTables loadOrBuildFgdTables(const std::filesystem::path& cacheDirectory,
                                const TableGenerationSettings& settings) {
     const std::filesystem::path file =
         cacheDirectory / ("fgd_tir_v" + std::to_string(kTableFormatVersion) + ".bin");
-    if (auto cached = readFgdTables(file, settings)) return std::move(cached).value();
+    auto cached = readFgdTables(file, settings);
+    if (cached) return std::move(cached).value();
 
+    // A missing cache is the normal first run; anything else is worth one line.
+    std::error_code error;
+    if (std::filesystem::symlink_status(file, error).type() !=
+        std::filesystem::file_type::not_found)
+        std::fprintf(stderr, "matevo: notice: rebuilding the table cache: %s\n",
+                     cached.error().message.c_str());
     std::fprintf(stderr, "matevo: building the FGD/TIR tables (once; cached in %s)\n",
                  file.string().c_str());
     int shownPercent = -1;

@@ -1,12 +1,15 @@
 #pragma once
 // The FGD/TIR tables on disk: generated on first use, then read back. A file is accepted only
-// if its format version, generation settings and checksum match; otherwise it is rebuilt.
+// if its format version, generation settings and checksum match and its values are sane;
+// otherwise it is rebuilt, with a one-line notice when a file was there.
 //
 // File layout (little-endian): 8-byte magic "MVFGDTIR", uint32 format version, then per axis
 // (mu, alpha, eta, kappa) int32 count and float64 min, max; int32 samplesPerAxis, int32
 // histogramIntervals, the FGD floats, the TIR floats, and a uint64 FNV-1a checksum of all the
 // bytes before it.
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "common/Result.h"
 #include "material/FgdTableGenerator.h"
@@ -16,8 +19,13 @@ namespace matevo {
 // Bump when the generator's mathematics change, so old caches are rebuilt.
 constexpr unsigned kTableFormatVersion = 2;  // 2: no NaN at mu = 0, eta = 1
 
+// A file is accepted only if its size, header and checksum match and every value is finite
+// and in [0, 1]; the error names `sourceName` and what is wrong.
+Result<FgdTables> parseFgdTables(std::string_view bytes, const TableGenerationSettings& expected,
+                                 const std::string& sourceName);
 Result<FgdTables> readFgdTables(const std::filesystem::path& file,
                                 const TableGenerationSettings& expected);
+std::string serializeFgdTables(const FgdTables& tables, const TableGenerationSettings& settings);
 // Atomic: written beside the target, then renamed over it.
 Status writeFgdTables(const std::filesystem::path& file, const FgdTables& tables,
                       const TableGenerationSettings& settings);

@@ -1,5 +1,5 @@
 #pragma once
-// Builds the FGD and TIR tables with our own code (belcour-model.md §3.3): per (mu, alpha) node
+// Builds the FGD and TIR tables with our own code (docs/bsdf.md §3.3): per (mu, alpha) node
 // one stream of stratified visible-normal samples is binned by the Fresnel cosine d (and by the
 // outgoing cosine for TIR) with tent weights, so every (eta, kappa) node costs a short dot
 // product instead of a new integral. Conductor nodes get the Kulla-Conty compensation.

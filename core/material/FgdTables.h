@@ -1,7 +1,7 @@
 #pragma once
 // The FGD and TIR tables and their lookup — the only place that interpolates them.
 //
-// Grid (endpoint-inclusive, belcour-model.md §3.2 [REC]): axis a with N nodes spans [min, max];
+// Grid (endpoint-inclusive, docs/bsdf.md §3.2): axis a with N nodes spans [min, max];
 // node k sits at min + k (max - min) / (N - 1). Ranges: cosine mu in [0, 1], GGX roughness
 // alpha in [0, 1], relative eta in [0, 4], relative kappa in [0, 4]. The nodes at 0 of mu,
 // alpha and eta were evaluated at 1e-4 (see FgdIntegrals.h). Lookups clamp into range and
@@ -36,7 +36,7 @@ struct TableAxis {
 };
 
 struct TableGrid {
-    // 33 nodes: steps of 1/32 and 1/8 put the reference values of belcour-model.md §8
+    // 33 nodes: steps of 1/32 and 1/8 put the reference values of docs/bsdf.md §8
     // (mu = .5, alpha = .5, eta = 1.5, kappa = 1) on nodes; docs/belcour-decisions.md has the
     // measured interpolation error behind the choice.
     TableAxis mu{33, 0.0, 1.0};

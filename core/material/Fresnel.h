@@ -5,7 +5,7 @@
 namespace matevo {
 
 // One threshold decides "conductor" everywhere: in the tables, in the adding loop (which stops
-// at a conductor) and in the Kulla-Conty compensation (belcour-model.md §1.3 [REC]).
+// at a conductor) and in the Kulla-Conty compensation (docs/bsdf.md §1.3).
 inline bool isConductorKappa(double kappa) { return kappa > 1e-6; }
 
 // Dielectric: handles eta < 1, returning 1 past the critical angle (total internal reflection).

@@ -1,6 +1,6 @@
 #pragma once
 // Isotropic GGX (Trowbridge-Reitz) microfacet distribution with separable Smith masking, the
-// lobe shape of every Belcour lobe (belcour-model.md §5) and of the FGD/TIR integrals (§3.3).
+// lobe shape of every Belcour lobe (docs/bsdf.md §5) and of the FGD/TIR integrals (§3.3).
 // Cosines are taken with the macro normal; alpha is the GGX roughness.
 #include <glm/vec3.hpp>
 

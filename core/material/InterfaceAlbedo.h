@@ -1,7 +1,7 @@
 #pragma once
 // What the adding loop needs to know about one rough interface besides its roughness: how much
 // it reflects (FGD) and how much upward light escapes through it (TIR). The tables implement
-// it; tests substitute exact smooth Fresnel ("Fresnel mode" of belcour-model.md §8).
+// it; tests substitute exact smooth Fresnel ("Fresnel mode" of docs/bsdf.md §8).
 namespace matevo {
 
 class InterfaceAlbedo {
@@ -9,7 +9,7 @@ public:
     virtual ~InterfaceAlbedo() = default;
 
     // FGD(mu, alpha, eta, kappa): directional albedo of a rough GGX interface with relative
-    // complex index eta + i kappa, Fresnel included (belcour-model.md §3.1).
+    // complex index eta + i kappa, Fresnel included (docs/bsdf.md §3.1).
     virtual double reflectance(double cosTheta, double alpha, double eta, double kappa) const = 0;
 
     // TIR(mu, alpha, eta): fraction of light reflected towards the interface of relative index

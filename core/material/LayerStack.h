@@ -1,5 +1,5 @@
 #pragma once
-// The real-time stack of belcour-model.md §1.1: coat interface, optional homogeneous medium,
+// The real-time stack of docs/bsdf.md §1.1: coat interface, optional homogeneous medium,
 // base interface. IORs are absolute (the genotype's); the loop forms the relative ones.
 #include <array>
 #include <optional>
@@ -41,7 +41,7 @@ struct SurfaceTexels {
 // The family decides: the textured layer's alpha is its chromosome times the roughness texel
 // (paper §4.2); the base colour tints the base; a conductor base gets the instance's kappa; the
 // medium exists only for families with one, and is dropped when it cannot attenuate (h <= 0 or
-// sigma_t h = 0, belcour-model.md §6.4).
+// sigma_t h = 0, docs/bsdf.md §6.4).
 LayerStack makeLayerStack(const MaterialInstance& material, const SurfaceTexels& texels = {});
 
 }  // namespace matevo

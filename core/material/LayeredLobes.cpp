@@ -18,7 +18,7 @@ constexpr double kMinimumCosine = 1e-4;  // guards divisions at grazing incidenc
 double average(const Rgb& value) { return (value.r + value.g + value.b) / 3.0; }
 double largest(const Rgb& value) { return std::max({value.r, value.g, value.b}); }
 
-// Atomic statistics of one slot for the mean cosine at its top (belcour-model.md §2).
+// Atomic statistics of one slot for the mean cosine at its top (docs/bsdf.md §2).
 struct SlotStatistics {
     Rgb reflectance{0.0};   // R12 before the interface's tint
     Rgb reflectDown{0.0};   // R12
@@ -125,7 +125,8 @@ LoopResult addingLoop(const LayerStack& stack, double cosView, const InterfaceAl
     slotStorage[slotCount++] = {&stack.coat, nullptr, Rgb(1.0), 0.0, &lobes.coat};
     if (stack.medium)
         slotStorage[slotCount++] = {nullptr, &*stack.medium, stack.coat.eta, 0.0, nullptr};
-    // TIR at the base uses the coat seen from below even across a medium (§4.1 [REC]).
+    // TIR at the base uses the coat seen from below even across a medium
+    // (docs/belcour-decisions.md, "n10 with a medium").
     slotStorage[slotCount++] = {&stack.base, nullptr, stack.coat.eta, average(1.0 / stack.coat.eta),
                                 &lobes.base};
     const std::span<const Slot> slots(slotStorage.data(), slotCount);

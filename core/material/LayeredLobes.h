@@ -1,5 +1,5 @@
 #pragma once
-// Belcour's adding loop (belcour-model.md §4): a layer stack seen at one view cosine becomes
+// Belcour's adding loop (docs/bsdf.md §4): a layer stack seen at one view cosine becomes
 // two GGX reflection lobes, the coat's and the base's (the medium emits none). Each lobe's
 // energy already holds Fresnel, transmissions and interreflections (§5).
 #include <array>
@@ -34,7 +34,7 @@ struct LobeSet {
     std::array<double, 3> transmittance = {0.0, 0.0, 0.0};
 };
 
-// How the medium slot adds variance (belcour-model.md §2.5).
+// How the medium slot adds variance (docs/bsdf.md §2.5).
 enum class MediumVariance {
     EnergyWeighted,  // sigma_g weighted by the single-scattered share: continuous as h -> 0
     AnyDepth,        // the reference code: full sigma_g for any depth > 0

@@ -1,6 +1,7 @@
 #pragma once
 // One material to render: a genome, its family (which slots exist, which layer is textured) and
-// the conductor base's fixed extinction kappa (architecture.md, "Metals"; the genotype has none).
+// the conductor base's fixed extinction kappa (docs/architecture.md, "Decisions"; the genotype
+// has none).
 #include <array>
 
 #include "genome/Genome.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Belcour's statistics live in a space where variances add: roughness alpha maps to a linear
-// variance through f (paper Eq. 6, the GGX "1.1" fit; belcour-model.md §2.1), and a
+// variance through f (paper Eq. 6, the GGX "1.1" fit; docs/bsdf.md §2.1), and a
 // Henyey-Greenstein phase function of asymmetry g adds the variance sigma_g (§2.6).
 namespace matevo {
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "io/ImageFile.h"
+#include "scene/StudioEnvironment.h"
 
 namespace matevo {
 
@@ -14,6 +15,17 @@ Result<Image> loadTexture(const std::filesystem::path& presetFile, const std::st
     if (name.empty()) return Image();
     auto image = readImage(presetFile.parent_path() / name);
     if (!image) return Error{presetFile.string() + ": " + field + ": " + image.error().message};
+    // Texels scale roughness or colour: an EXR may hold anything, the model needs [0, 1].
+    for (std::size_t i = 0; i < image->rgba.size(); ++i) {
+        const float value = image->rgba[i];
+        if (value < 0.0f || value > 1.0f) {
+            const std::size_t pixel = i / 4;
+            return Error{presetFile.string() + ": " + field + ": texel (" +
+                         std::to_string(pixel % std::size_t(image->width)) + ", " +
+                         std::to_string(pixel / std::size_t(image->width)) + ") value " +
+                         std::to_string(value) + " outside [0, 1]"};
+        }
+    }
     return image;
 }
 
@@ -25,7 +37,20 @@ Result<SceneTextures> loadSceneTextures(const Preset& preset,
     if (!roughness) return roughness.error();
     auto baseColor = loadTexture(presetFile, "textures.base_color", preset.baseColorTexture);
     if (!baseColor) return baseColor.error();
-    return SceneTextures{std::move(roughness).value(), std::move(baseColor).value()};
+    SceneTextures textures{std::move(roughness).value(), std::move(baseColor).value(), {}};
+    if (preset.scene.mode == SceneMode::Environment) {
+        // "studio", or a file relative to the preset's folder.
+        const std::filesystem::path name(preset.scene.environment);
+        const std::string file = preset.scene.environment == "studio" || name.is_absolute()
+                                     ? preset.scene.environment
+                                     : (presetFile.parent_path() / name).string();
+        auto environment = loadEnvironment(file);
+        if (!environment)
+            return Error{presetFile.string() + ": scene.environment: " +
+                         environment.error().message};
+        textures.environment = std::move(environment).value();
+    }
+    return textures;
 }
 
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v) {

@@ -1,6 +1,7 @@
 #pragma once
 // The textures of the test scene: a roughness texture for the family's textured layer and a
-// base-colour texture tinting the base. An empty image means "no texture" (neutral 1).
+// base-colour texture tinting the base (an empty image means "no texture", neutral 1), and the
+// prefiltered environment that lights it (empty: none).
 #include <array>
 #include <filesystem>
 
@@ -8,16 +9,19 @@
 #include "common/Result.h"
 #include "io/Preset.h"
 #include "material/LayerStack.h"
+#include "scene/PrefilteredEnvironment.h"
 
 namespace matevo {
 
 struct SceneTextures {
     Image roughness;  // red channel, linear value = texel (as readImage returns it)
     Image baseColor;  // linear RGB
+    PrefilteredEnvironment environment;
 };
 
-// Loads the preset's textures; their names are relative to the preset file's folder. Errors
-// name the preset file, the field and the image file.
+// Loads the preset's textures, and its environment in the environment scene mode; their names
+// are relative to the preset file's folder. Errors name the preset file, the field and the
+// image file.
 Result<SceneTextures> loadSceneTextures(const Preset& preset,
                                         const std::filesystem::path& presetFile);
 

@@ -78,7 +78,8 @@ struct Shader {
         const double cosHalf = glm::dot(normal, glm::normalize(toViewer + toLight));
         const glm::dvec3 reflected = toVector(evaluateBsdf(lobes, cosView, cosLight, cosHalf)) *
                                      lightRadiance * std::max(cosLight, 0.0);
-        return reflected + toVector(environmentReflectance(lobes)) * environmentRadiance;
+        return reflected + toVector(environmentReflectance(lobes)) * environmentRadiance +
+               textures.environment.reflected(lobes, normal, toViewer);
     }
 };
 

@@ -9,7 +9,10 @@
 // silhouette pixels take the mean radiance of their hits; the background is (0, 0, 0, 0).
 // Shading at a hit with normal n, view v, light direction l (normalised lightDirection):
 //   L = f_r(v, l) * lightRadiance * max(0, n.l) + (e_coat + e_base) * ambientRadiance(scene)
-// (the ambient term is zero in the paper's scene, SceneSettings.h)
+//       + e_coat * P(r, alpha_coat) + e_base * P(r, alpha_base)
+// (the ambient term is zero unless in the ambient mode, SceneSettings.h) where P is the
+// prefiltered environment of SceneTextures (the environment mode's) around the mirror
+// direction r (core/scene/PrefilteredEnvironment.h),
 // with the lobes at cos_view = n.v (Forward model) from the material's LobeTable (the adding
 // loop interpolated over cos_view and the roughness texel), textures sampled at sphereUv(n).
 // Output is linear RGB: no tone mapping, no exposure.

@@ -18,7 +18,12 @@ using testing::CommandOutput;
 using testing::runCommand;
 using testing::runMatevo;
 
-std::string quoted(const std::filesystem::path& file) { return "'" + file.string() + "'"; }
+std::string quoted(const std::filesystem::path& file) {
+    std::string text = "'";  // built by appending: GCC 12 warns falsely on "'" + std::string
+    text += file.string();
+    text += '\'';
+    return text;
+}
 
 // Exit 2, nothing on stdout, exactly one line on stderr that is `expectedLine`.
 void expectUsageLine(const CommandOutput& run, const std::string& expectedLine) {

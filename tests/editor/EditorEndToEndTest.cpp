@@ -166,6 +166,88 @@ INSTANTIATE_TEST_SUITE_P(WindowSizes, EditorEndToEnd,
                                     std::to_string(suiteParam.param.height);
                          });
 
+// The Variants mode end to end: find a set, discard one, refill, save, and check the saved set
+// as `matevo variants --out` would have written it; the screenshot shows the set's tiles.
+TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
+    const fs::path dir = freshDirectory("variants");
+    fs::create_directories(dir / "config");
+    std::ofstream(dir / "script.txt")
+        << "wait 2\n"
+           "resize " << kWidth << " " << kHeight << "\n"
+           "variants 4\n"
+           "wait-variants\n"
+           "discard-variant 0\n"
+           "refill-variants\n"
+           "wait-variants\n"
+           "wait 2\n"
+           "screenshot " << (dir / "variants.png").string() << "\n"
+           "save-variants " << (dir / "set").string() << "\n"
+           "wait 2\n"
+           "quit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+        "/matevo' edit '" + MATEVO_SOURCE_DIR + "/presets/validation_metal_depth.json' "
+        "--validate --script '" + (dir / "script.txt").string() + "' --frames 100000");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+
+    std::ifstream reportFile(dir / "set/report.json");
+    const std::string report((std::istreambuf_iterator<char>(reportFile)), {});
+    ASSERT_FALSE(report.empty()) << "no report.json in the saved set";
+    EXPECT_NE(report.find("\"met\": true"), std::string::npos) << report;
+    for (int i = 0; i < 4; ++i) {
+        const std::string stem = "set/variants/variant_00" + std::to_string(i);
+        EXPECT_TRUE(fs::is_regular_file(dir / (stem + ".png"))) << stem;
+        EXPECT_TRUE(fs::is_regular_file(dir / (stem + ".json"))) << stem;
+    }
+    EXPECT_TRUE(fs::is_regular_file(dir / "set/contact_sheet.png"));
+    // Two variants were kept through the refill (the first was discarded, three stayed).
+    std::size_t kept = 0;
+    for (std::size_t at = report.find("\"kept\": true"); at != std::string::npos;
+         at = report.find("\"kept\": true", at + 1))
+        ++kept;
+    EXPECT_EQ(kept, 3u) << report;
+
+    auto shotFile = readImage(dir / "variants.png");
+    ASSERT_TRUE(shotFile.ok()) << shotFile.error().message;
+    const Screenshot shot(*shotFile);
+    const auto tiles = spheres(shot, {0, 0, shot.width(), shot.height()}, 3000);
+    // The paper scene leaves much of each sphere dark; the lit ones must still be there.
+    EXPECT_GE(tiles.size(), 3u) << "sphere tiles in the Variants window";
+    fs::remove_all(dir);
+}
+
+// The Scene window: the population worn by a crowd of shader balls under the studio, drawn by
+// the raster renderer on its worker (validation on: the editor exits 1 on any message).
+TEST(EditorSceneWindow, ShowsTheCandidatesAsInstancesOfAMesh) {
+    const fs::path dir = freshDirectory("scene_window");
+    fs::create_directories(dir / "config");
+    std::ofstream(dir / "script.txt") << "wait 2\n"
+                                         "population 12\n"
+                                         "generations 2\n"
+                                         "wait-evolution\n"
+                                         "scene open\n"
+                                         "wait-scene\n"
+                                         "wait 2\n"
+                                         "screenshot "
+                                      << (dir / "scene.png").string() << "\nquit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+        "/matevo' edit '" + MATEVO_SOURCE_DIR + "/presets/validation_metal.json' --validate " +
+        "--size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --script '" +
+        (dir / "script.txt").string() + "' --frames 100000");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    auto file = readImage(dir / "scene.png");
+    ASSERT_TRUE(file.ok()) << file.error().message;
+    const Screenshot shot(*file);
+    // The window's image area (first shown at (40, 40), 760 x 520, below its title and
+    // two rows of controls): 24 shader balls in a grid, much brighter than the studio's
+    // backdrop (below 130 after the tone map), each a blob of its own.
+    const PixelRect image{50, 140, 790, 550};
+    const auto instances = shot.litBlobs(image, 40, 170);
+    EXPECT_GE(instances.size(), 12u) << "lit instances in the Scene window";
+    fs::remove_all(dir);
+}
+
 TEST(EditorWithoutDisplay, SaysSoNamesTheHeadlessCommandsAndExits2) {
     const CommandOutput run = runCommand(std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") +
                                          MATEVO_BINARY_DIR + "/matevo' edit");

@@ -16,19 +16,20 @@ Screenshot::Screenshot(const Image& linear)
         }
 }
 
-bool Screenshot::lit(int x, int y) const {
+bool Screenshot::lit(int x, int y, int threshold) const {
     const std::uint8_t* p = pixel(x, y);
-    return std::max({p[0], p[1], p[2]}) > 70;
+    return std::max({p[0], p[1], p[2]}) > threshold;
 }
 
-std::vector<Blob> Screenshot::litBlobs(const PixelRect& area, int minPixels) const {
+std::vector<Blob> Screenshot::litBlobs(const PixelRect& area, int minPixels,
+                                       int threshold) const {
     std::vector<Blob> blobs;
     std::vector<std::uint8_t> seen(std::size_t(width_) * std::size_t(height_), 0);
     std::vector<std::pair<int, int>> stack;
     for (int y = area.y0; y < area.y1; ++y) {
         for (int x = area.x0; x < area.x1; ++x) {
             const std::size_t index = std::size_t(y) * std::size_t(width_) + std::size_t(x);
-            if (seen[index] || !lit(x, y)) continue;
+            if (seen[index] || !lit(x, y, threshold)) continue;
             Blob blob;
             blob.bounds = {x, y, x + 1, y + 1};
             double sums[3] = {0, 0, 0};
@@ -48,7 +49,7 @@ std::vector<Blob> Screenshot::litBlobs(const PixelRect& area, int minPixels) con
                         continue;
                     const std::size_t next =
                         std::size_t(n[1]) * std::size_t(width_) + std::size_t(n[0]);
-                    if (seen[next] || !lit(n[0], n[1])) continue;
+                    if (seen[next] || !lit(n[0], n[1], threshold)) continue;
                     seen[next] = 1;
                     stack.push_back({n[0], n[1]});
                 }

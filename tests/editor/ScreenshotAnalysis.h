@@ -31,14 +31,14 @@ public:
 
     // Connected regions of "lit" pixels (clearly brighter than the dark UI backgrounds) within
     // `area` with at least `minPixels` pixels: the spheres, whose tiles are separated by
-    // background.
-    std::vector<Blob> litBlobs(const PixelRect& area, int minPixels) const;
+    // background. `threshold`: the brightest channel (sRGB, 0..255) of a lit pixel.
+    std::vector<Blob> litBlobs(const PixelRect& area, int minPixels, int threshold = 70) const;
     // Pixels in `area` whose colour is strongly saturated (the grey metal and the grey UI are
     // not; the viridis heatmap is).
     int saturatedPixels(const PixelRect& area) const;
 
 private:
-    bool lit(int x, int y) const;
+    bool lit(int x, int y, int threshold) const;
     int width_;
     int height_;
     std::vector<std::uint8_t> rgb_;

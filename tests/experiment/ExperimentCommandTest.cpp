@@ -99,7 +99,7 @@ TEST_F(ExperimentCommand, SameSeedGivesTheSameCsvAndAnotherSeedADifferentOne) {
 }
 
 // The GPU batch renderer (lavapipe in CI) against the CPU reference: the same GA runs, and
-// mean ΔE00 scores within the renderers' cross-check tolerance (architecture.md: 0.5).
+// mean ΔE00 scores within the renderers' cross-check tolerance (docs/architecture.md: 0.5).
 TEST_F(ExperimentCommand, GpuBackendScoresTheSameRunsAsTheCpuReference) {
     auto parse = [](const std::string& csv) {
         std::vector<std::vector<std::string>> rows;

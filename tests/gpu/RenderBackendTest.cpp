@@ -66,10 +66,11 @@ TEST(RenderBackend, EveryCommandHonoursTheBackendOption) {
     std::filesystem::create_directories(out);
     const std::string commands[] = {
         "render --size 24 --out '" + (out / "render.png").string() + "'",
-        "evolve --population 4 --generations 1 --size 24 --out '" + (out / "evolve").string() +
-            "'",
+        // --force: each command runs twice into its folder (gpu, then cpu).
+        "evolve --population 4 --generations 1 --size 24 --force --out '" +
+            (out / "evolve").string() + "'",
         "experiment --runs 1 --population 4 --generations 1 --size 24 --metric chebyshev "
-        "--out '" + (out / "experiment").string() + "'",
+        "--force --out '" + (out / "experiment").string() + "'",
     };
     for (const std::string& command : commands) {
         for (const char* backend : {"gpu", "cpu"}) {

@@ -73,6 +73,23 @@ TEST(Preset, RoundTripsThroughText) {
     EXPECT_TRUE(reparsed->warnings.empty());
 }
 
+TEST(Preset, EnvironmentModeNamesItsEnvironment) {
+    auto parsed = parsePreset(
+        replaced(kValidPreset, R"("base_kappa")",
+                 R"("scene": {"mode": "environment", "environment": "hdr/hall.exr"}, "base_kappa")"),
+        "p.json");
+    ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+    EXPECT_EQ(parsed->preset.scene.mode, SceneMode::Environment);
+    EXPECT_EQ(parsed->preset.scene.environment, "hdr/hall.exr");
+    auto reparsed = parsePreset(serializePreset(parsed->preset), "again.json");
+    ASSERT_TRUE(reparsed.ok());
+    EXPECT_EQ(reparsed->preset, parsed->preset);
+    EXPECT_NE(errorOf(replaced(kValidPreset, R"("base_kappa")",
+                               R"("scene": {"mode": "sunset"}, "base_kappa")"))
+                  .find("paper, ambient or environment"),
+              std::string::npos);
+}
+
 TEST(Preset, SavesAtomicallyAndLoadsBack) {
     auto dir = freshDirectory("save");
     Preset preset = parsePreset(kValidPreset, "p.json")->preset;
@@ -183,7 +200,7 @@ TEST(Preset, SceneModeIsReadAndDefaultsToThePapersScene) {
 
     const std::string message =
         errorOf(replaced(withScene, R"("scene": {})", R"("scene": {"mode": "studio"})"));
-    EXPECT_NE(message.find("p.json: scene.mode: unknown value 'studio' (expected paper or ambient)"),
+    EXPECT_NE(message.find("p.json: scene.mode: unknown value 'studio' (expected paper, ambient or environment)"),
               std::string::npos)
         << message;
 }
@@ -217,7 +234,7 @@ TEST(Preset, MissingTextureFileIsAnError) {
 TEST(Preset, UnreadableFileNamesTheFile) {
     auto loaded = loadPreset("/nonexistent/preset.json");
     ASSERT_FALSE(loaded.ok());
-    EXPECT_EQ(loaded.error().message, "/nonexistent/preset.json: cannot open for reading");
+    EXPECT_EQ(loaded.error().message, "/nonexistent/preset.json: cannot read: no such file");
 }
 
 TEST(GenomeJson, ReadsAResultFileOrABareGenome) {

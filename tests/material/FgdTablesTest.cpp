@@ -1,12 +1,14 @@
-// FGD/TIR integrals against belcour-model.md §8, the tables against direct integration, and the
+// FGD/TIR integrals against docs/bsdf.md §8, the tables against direct integration, and the
 // on-disk cache (version, settings and checksum checks).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include <gtest/gtest.h>
 
+#include "io/AtomicFile.h"
 #include "material/FgdIntegrals.h"
 #include "material/FgdTableCache.h"
 #include "material/Fresnel.h"
@@ -147,6 +149,57 @@ TEST_F(FgdTableCacheTest, WritesReadsBackAndRejectsStaleOrCorruptFiles) {
     const FgdTables rebuilt = loadOrBuildFgdTables(directory_, settings_);
     EXPECT_EQ(rebuilt.fgdData(), built.fgdData());
     EXPECT_TRUE(readFgdTables(file, settings_).ok());
+}
+
+TEST_F(FgdTableCacheTest, AForgedFileWithAValidChecksumButNanDataIsRebuilt) {
+    const FgdTables built = loadOrBuildFgdTables(directory_, settings_);
+    std::vector<float> fgd = built.fgdData();
+    fgd[7] = std::numeric_limits<float>::quiet_NaN();
+    const FgdTables forged(settings_.grid, fgd, built.tirData());
+    const std::string bytes = serializeFgdTables(forged, settings_);  // checksum is right
+    auto parsed = parseFgdTables(bytes, settings_, "forged.bin");
+    ASSERT_FALSE(parsed.ok());
+    EXPECT_NE(parsed.error().message.find("outside [0, 1]"), std::string::npos);
+
+    std::vector<float> tir = built.tirData();
+    tir[3] = 5.0f;
+    parsed = parseFgdTables(
+        serializeFgdTables(FgdTables(settings_.grid, built.fgdData(), tir), settings_), settings_,
+        "forged.bin");
+    EXPECT_FALSE(parsed.ok());
+
+    const std::filesystem::path file =
+        directory_ / ("fgd_tir_v" + std::to_string(kTableFormatVersion) + ".bin");
+    ASSERT_TRUE(writeFileAtomically(file, bytes).ok());
+    const FgdTables healed = loadOrBuildFgdTables(directory_, settings_);
+    EXPECT_EQ(healed.fgdData(), built.fgdData());
+    EXPECT_TRUE(readFgdTables(file, settings_).ok());
+}
+
+TEST_F(FgdTableCacheTest, ACachePathThatIsAFolderOrADeviceIsBuiltAroundNotFatal) {
+    const std::filesystem::path file =
+        directory_ / ("fgd_tir_v" + std::to_string(kTableFormatVersion) + ".bin");
+    const FgdTables expected = generateFgdTables(settings_);
+
+    std::filesystem::create_directories(file / "inside");
+    auto read = readFgdTables(file, settings_);
+    ASSERT_FALSE(read.ok());
+    EXPECT_NE(read.error().message.find("folder"), std::string::npos);
+    EXPECT_EQ(loadOrBuildFgdTables(directory_, settings_).fgdData(), expected.fgdData());
+    EXPECT_TRUE(std::filesystem::exists(file / "inside"));  // the user's folder is left alone
+
+    std::filesystem::remove_all(file);
+    std::filesystem::create_symlink("/dev/zero", file);
+    read = readFgdTables(file, settings_);
+    ASSERT_FALSE(read.ok());
+    EXPECT_NE(read.error().message.find("device"), std::string::npos);
+    EXPECT_EQ(loadOrBuildFgdTables(directory_, settings_).fgdData(), expected.fgdData());
+}
+
+TEST_F(FgdTableCacheTest, GeneratedValuesPassTheCacheChecks) {
+    // The checks must never reject what the generator makes (else every start would rebuild).
+    const FgdTables tables = generateFgdTables(settings_);
+    EXPECT_TRUE(parseFgdTables(serializeFgdTables(tables, settings_), settings_, "t").ok());
 }
 
 TEST_F(FgdTableCacheTest, GenerationIsDeterministic) {

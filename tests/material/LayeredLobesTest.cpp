@@ -1,4 +1,4 @@
-// Belcour's adding loop: the "Fresnel mode" regression values of belcour-model.md §8, the
+// Belcour's adding loop: the "Fresnel mode" regression values of docs/bsdf.md §8, the
 // closed form of §4.1, and the invariants (energy, smooth limit, conductor cut-off, h -> 0).
 #include <algorithm>
 #include <cmath>
@@ -58,7 +58,7 @@ TEST(LayeredLobes, FresnelModeRegressionWithMedium) {
 }
 
 TEST(LayeredLobes, BaseLobeMatchesClosedFormWithoutMedium) {
-    // belcour-model.md §4.1 with the tables (TIR off): e_2 = Tc^2 Rb t / (1 - Rc Rb t) for a
+    // docs/bsdf.md §4.1 with the tables (TIR off): e_2 = Tc^2 Rb t / (1 - Rc Rb t) for a
     // base tinted by t, which TintableLobe must reproduce exactly.
     const FgdTables& tables = defaultFgdTables();
     LayerStack stack = fresnelModeStack();

@@ -1,4 +1,4 @@
-// Fresnel, GGX and the roughness/variance maps against belcour-model.md §8 and their limits.
+// Fresnel, GGX and the roughness/variance maps against docs/bsdf.md §8 and their limits.
 #include <cmath>
 #include <numbers>
 

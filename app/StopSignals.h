@@ -1,0 +1,16 @@
+#pragma once
+// SIGINT and SIGTERM during long commands (evolve, experiment): the first asks the work to stop
+// at its next generation or batch (common/StopRequest.h), so what is complete is written whole
+// and marked partial; a second one ends the process at once.
+#include <string>
+
+namespace matevo::cli {
+
+void installStopSignalHandlers();
+
+// 130 for SIGINT, 143 for SIGTERM (128 + signal), as shells report a process the signal ended.
+int stoppedExitStatus(int signal);
+// "SIGINT" or "SIGTERM".
+std::string signalName(int signal);
+
+}  // namespace matevo::cli

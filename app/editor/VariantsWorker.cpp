@@ -1,0 +1,75 @@
+#include "VariantsWorker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <utility>
+
+#include "experiment/Experiment.h"
+#include "scene/SceneTextures.h"
+
+namespace matevo::editor {
+
+VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer)
+    : rendererRequest_(std::move(renderer)), job_(std::move(onUpdate)) {
+    rendererRequest_.cancelled = [this] { return job_.stopping(); };
+}
+
+VariantsWorker::~VariantsWorker() = default;
+
+bool VariantsWorker::start(VariantsJob job) {
+    return job_.start([this, job = std::move(job)] { return compute(job); }, "the variant search");
+}
+
+VariantsResult VariantsWorker::compute(const VariantsJob& job) {
+    const auto started = std::chrono::steady_clock::now();
+    VariantsResult result{job.preset, {job.request, kOutputSize, kFitnessSize}, {}, {}};
+    auto textures = loadSceneTextures(job.preset, job.presetFile);
+    if (!textures) {
+        result.error = textures.error().message;
+        return result;
+    }
+    const Preset& preset = job.preset;
+    std::shared_ptr<PopulationRenderer> renderer =
+        gpu::createPopulationRenderer(rendererRequest_, *textures);
+    // As `matevo variants` measures: on the images as the PNG files of a saved set hold them.
+    auto renderAt = [&](int size) {
+        return asStoredInPng(
+            renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, size));
+    };
+    VariantSearchSettings settings;
+    auto search = VariantSearch::start(preset.family, preset.target, job.request, settings,
+                                       renderAt(kFitnessSize));
+    if (!search) {
+        result.error = search.error().message;
+        return result;
+    }
+    const double wanted = double(job.request.count + settings.spare);
+    while (!(*search)->finished()) {
+        if (job_.stopping()) {
+            result.error = "stopped";
+            return result;
+        }
+        if (auto stepped = (*search)->step(); !stepped) {
+            result.error = stepped.error().message;
+            return result;
+        }
+        const VariantSearchProgress& progress = (*search)->progress();
+        job_.reportProgress(float(std::max(double(progress.archived) / wanted,
+                                           double(progress.evaluations) / settings.maxEvaluations)));
+    }
+    auto set = chooseVariantSet((*search)->archive(), job.request, preset.target,
+                                renderAt(kOutputSize));
+    if (!set) {
+        result.error = set.error().message;
+        return result;
+    }
+    result.set = std::move(set).value();
+    result.run.evaluations = (*search)->progress().evaluations;
+    result.run.archived = (*search)->progress().archived;
+    result.run.closestDeltaE = (*search)->progress().closestDeltaE;
+    result.run.wallSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return result;
+}
+
+}  // namespace matevo::editor

@@ -1,0 +1,95 @@
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "BenchReport.h"
+#include "Timing.h"
+#include "evolve/GenomeSampling.h"
+#include "gpu/GpuContext.h"
+#include "gpu/GpuSceneRenderer.h"
+#include "material/FgdTableCache.h"
+#include "mesh/GeneratedMeshes.h"
+#include "scene/StudioEnvironment.h"
+
+namespace matevo::bench {
+namespace {
+
+constexpr int kRepetitions = 7;
+
+struct SceneCase {
+    std::string key;
+    const Mesh* mesh;
+    int width;
+    int height;
+    std::string what;
+};
+
+}  // namespace
+
+void benchScene(BenchReport& report, int instanceCount) {
+    (void)defaultFgdTables();  // table generation or loading is not part of the figure
+    auto context = gpu::GpuContext::createHeadless();
+    if (!context) {
+        std::fprintf(stderr, "matevo bench: no usable Vulkan device (%s); scene figures skipped\n",
+                     context.error().message.c_str());
+        return;
+    }
+    auto runner = gpu::CommandRunner::create(context->device);
+    if (!runner) return;
+    const MaterialFamily family{Coat::Clearcoat, Base::Conductor, true, TexturedLayer::None};
+    Random random(100);
+    std::vector<MaterialInstance> materials;
+    for (int i = 0; i < instanceCount; ++i)
+        materials.push_back({randomGenome(family, random), family, {3.1, 2.9, 2.8}});
+    SceneTextures textures;
+    textures.environment = *loadEnvironment("studio");
+    SceneSettings scene;
+    scene.mode = SceneMode::Environment;
+    const std::vector<SceneInstance> instances =
+        layoutInstances(instanceCount, InstanceLayout::Grid, instanceCount);
+
+    // The figure, then the same frame with fewer pixels and with fewer triangles: which one
+    // moves the time says what limits it.
+    const Mesh shaderBall = makeShaderBallMesh();
+    const Mesh coarseSphere = makeSphereMesh(32, 16);
+    const std::string count = std::to_string(instanceCount);
+    const SceneCase cases[] = {
+        {"scene_" + count + "x_shaderball_1280x720_ms", &shaderBall, 1280, 720,
+         count + " shader balls"},
+        {"scene_" + count + "x_shaderball_320x180_ms", &shaderBall, 320, 180,
+         "the same at 1/16 of the pixels"},
+        {"scene_" + count + "x_sphere992_1280x720_ms", &coarseSphere, 1280, 720,
+         count + " spheres of 992 triangles"},
+    };
+    for (const SceneCase& sceneCase : cases) {
+        auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner,
+                                                      defaultFgdTables(), textures,
+                                                      *sceneCase.mesh);
+        if (!renderer || !renderer->setMaterials(materials)) {
+            std::fprintf(stderr, "matevo bench: the scene renderer failed\n");
+            return;
+        }
+        const gpu::SceneFrame frame{sceneCase.width, sceneCase.height,
+                                    frameInstances(instances, double(sceneCase.width) /
+                                                                  sceneCase.height),
+                                    instances};
+        bool failed = false;
+        auto drawFrame = [&] {
+            auto commands = runner->begin();
+            failed |= !commands || !renderer->record(*commands, frame, scene) ||
+                      !runner->submitAndWait();
+        };
+        drawFrame();  // lavapipe compiles the pipeline on first use
+        const double milliseconds = medianMilliseconds(kRepetitions, drawFrame);
+        if (!failed)
+            report.push_back(
+                {sceneCase.key, milliseconds,
+                 sceneCase.what + " (" +
+                     std::to_string(sceneCase.mesh->triangleCount()) + " triangles each), " +
+                     count + " materials, studio environment, 4x MSAA, " +
+                     std::to_string(sceneCase.width) + "x" + std::to_string(sceneCase.height) +
+                     " on " + context->device.name() + ": one frame, no read-back"});
+    }
+}
+
+}  // namespace matevo::bench

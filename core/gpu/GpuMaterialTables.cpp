@@ -1,0 +1,55 @@
+#include "gpu/GpuMaterialTables.h"
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "material/LobeTable.h"
+#include "material/ParallelFor.h"
+
+namespace matevo::gpu {
+namespace {
+
+// std430 mirror of shaders/LobeTable.glsl's Material.
+struct GpuMaterial {
+    uint32_t firstEntry;  // of its lobe table, in entries
+    uint32_t texelNodes;
+    uint32_t cosineNodes;
+    uint32_t unused;
+};
+
+}  // namespace
+
+Status GpuMaterialTables::upload(const Device& device, const FgdTables& tables,
+                                 std::span<const MaterialInstance> materials) {
+    // Tables are built first (in parallel, each into its own slot) to learn their sizes.
+    std::vector<LobeTable> lobeTables(materials.size());
+    parallelForChunks(int(materials.size()), [&](int i) {
+        lobeTables[std::size_t(i)] = LobeTable::build(materials[std::size_t(i)], tables);
+    });
+    std::vector<GpuMaterial> gpuMaterials(std::max<std::size_t>(materials.size(), 1));
+    uint32_t entryCount = 0;
+    for (std::size_t i = 0; i < lobeTables.size(); ++i) {
+        gpuMaterials[i] = {entryCount, uint32_t(lobeTables[i].texelNodes()),
+                           uint32_t(lobeTables[i].cosineNodes()), 0};
+        entryCount += uint32_t(lobeTables[i].data().size() / LobeTable::kFloatsPerEntry);
+    }
+    const VkDeviceSize materialBytes = gpuMaterials.size() * sizeof(GpuMaterial);
+    const VkDeviceSize tableBytes =
+        std::max<VkDeviceSize>(entryCount, 1) * LobeTable::kFloatsPerEntry * sizeof(float);
+    for (auto [buffer, bytes] :
+         {std::pair{&materials_, materialBytes}, std::pair{&lobeEntries_, tableBytes}}) {
+        if (buffer->size() >= bytes) continue;
+        auto grown =
+            Buffer::create(device, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+        if (!grown) return grown.error();
+        *buffer = std::move(grown).value();
+    }
+    std::memcpy(materials_.bytes().data(), gpuMaterials.data(), materialBytes);
+    auto entries = lobeEntries_.as<float>().begin();
+    for (const LobeTable& table : lobeTables)
+        entries = std::copy(table.data().begin(), table.data().end(), entries);
+    return Ok{};
+}
+
+}  // namespace matevo::gpu

@@ -1,0 +1,18 @@
+#include "gpu/ShaderModule.h"
+
+#include "gpu/VulkanError.h"
+
+namespace matevo::gpu {
+
+Result<UniqueShaderModule> createShaderModule(VkDevice device, std::span<const uint32_t> spirv) {
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = spirv.size_bytes();
+    info.pCode = spirv.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    if (VkResult result = vkCreateShaderModule(device, &info, nullptr, &module);
+        result != VK_SUCCESS)
+        return vulkanError("creating a shader module", result);
+    return UniqueShaderModule(device, module);
+}
+
+}  // namespace matevo::gpu

@@ -1,0 +1,32 @@
+#include "io/VariantFolder.h"
+
+#include <algorithm>
+
+#include "io/GenomeJson.h"
+
+namespace matevo {
+
+Result<std::vector<VariantFile>> loadVariantFolder(const std::filesystem::path& folder) {
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error))
+        return Error{folder.string() + ": not a folder of variants"};
+    // `matevo variants --out DIR` puts the genomes one level down.
+    const std::filesystem::path variants =
+        std::filesystem::is_directory(folder / "variants", error) ? folder / "variants" : folder;
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(variants, error))
+        if (entry.is_regular_file() && entry.path().extension() == ".json")
+            files.push_back(entry.path());
+    if (error) return Error{variants.string() + ": cannot list: " + error.message()};
+    std::sort(files.begin(), files.end());
+    if (files.empty()) return Error{variants.string() + ": no genome .json files"};
+    std::vector<VariantFile> loaded;
+    for (const auto& file : files) {
+        auto genome = loadGenome(file);
+        if (!genome) return genome.error();
+        loaded.push_back({file, *genome});
+    }
+    return loaded;
+}
+
+}  // namespace matevo

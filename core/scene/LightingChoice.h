@@ -1,0 +1,22 @@
+#pragma once
+// The lighting choices that every view offers (`render`, `scene`, the editor):
+//   paper    the paper's single directional light and nothing else (what `experiment` uses)
+//   ambient  the light plus a uniform environment (SceneSettings::environmentRadiance)
+//   studio   the light plus the studio environment our code generates (StudioEnvironment.h)
+//   FILE     the light plus a lat-long .hdr / .exr environment
+// It sets SceneSettings::mode (and environment); the environment ones are prefiltered here
+// (PrefilteredEnvironment.h) and put into SceneTextures, which both renderers shade from.
+#include <string>
+
+#include "common/Result.h"
+#include "scene/PrefilteredEnvironment.h"
+#include "scene/SceneSettings.h"
+#include "scene/SceneTextures.h"
+
+namespace matevo {
+
+// Errors name the environment file.
+Status applyLightingChoice(const std::string& choice, SceneSettings& scene,
+                           SceneTextures& textures, const PrefilterSettings& prefilter = {});
+
+}  // namespace matevo

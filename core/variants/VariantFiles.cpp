@@ -1,0 +1,180 @@
+#include "variants/VariantFiles.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "color/Colormap.h"
+#include "color/ImageDifference.h"
+#include "experiment/Canvas.h"
+#include "io/AtomicFile.h"
+#include "io/GenomeJson.h"
+#include "io/ImageFile.h"
+
+namespace matevo {
+namespace {
+
+constexpr int kSheetColumns = 5;
+constexpr int kSheetGap = 8;
+constexpr int kLabelScale = 2;
+constexpr Srgb8 kSheetBackground{40, 40, 44};
+constexpr Srgb8 kLabelColour{230, 230, 230};
+
+std::string format(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+Status createFolder(const std::filesystem::path& folder) {
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error)
+        return Error{"cannot create folder '" + folder.string() + "' (" + error.message() + ")"};
+    return Ok{};
+}
+
+// `tile` composited with its alpha over the sheet at (x, y).
+void placeTile(Image& sheet, const Image& tile, int x, int y) {
+    for (int row = 0; row < tile.height; ++row)
+        for (int column = 0; column < tile.width; ++column) {
+            const float* source = tile.pixel(column, row);
+            float* target = sheet.pixel(x + column, y + row);
+            const float alpha = std::clamp(source[3], 0.0f, 1.0f);
+            for (int c = 0; c < 3; ++c)
+                target[c] = alpha * source[c] + (1 - alpha) * target[c];
+        }
+}
+
+}  // namespace
+
+RenderGenomes asStoredInPng(RenderGenomes render) {
+    return [render = std::move(render)](
+               std::span<const Genome> genomes) -> Result<std::vector<Image>> {
+        auto images = render(genomes);
+        if (!images) return images.error();
+        for (Image& image : *images) image = quantizeAsPng(image);
+        return images;
+    };
+}
+
+std::string variantStem(std::size_t index) {
+    char name[32];
+    std::snprintf(name, sizeof name, "variant_%03zu", index);
+    return name;
+}
+
+nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const VariantSet& set) {
+    const std::vector<double> nearest = set.nearestSibling();
+    nlohmann::json variants = nlohmann::json::array();
+    for (std::size_t i = 0; i < set.variants.size(); ++i) {
+        const Variant& variant = set.variants[i];
+        variants.push_back({{"index", i},
+                            {"file", "variants/" + variantStem(i) + ".json"},
+                            {"image", "variants/" + variantStem(i) + ".png"},
+                            {"heatmap", "variants/" + variantStem(i) + "_heatmap.png"},
+                            {"de00_to_target", variant.deltaEToTarget},
+                            {"de00_to_nearest_sibling", nearest[i]},
+                            {"kept", variant.kept},
+                            {"genome", genomeToJson(variant.genome)}});
+    }
+    const VariantRequest& request = run.request;
+    const bool met = fulfils(set, request);
+    return {{"preset", preset.name},
+            {"family", describe(preset.family)},
+            {"target", genomeToJson(preset.target)},
+            {"request",
+             {{"count", request.count},
+              {"band", {request.band.low, request.band.high}},
+              {"min_apart", request.minApart},
+              {"seed", request.seed},
+              {"size", run.size},
+              {"fitness_size", run.fitnessSize}}},
+            {"met", met},
+            {"summary", variantSummary(run, set)},
+            {"variants", std::move(variants)},
+            {"pairwise_de00", set.pairwise},
+            {"smallest_pairwise_de00", set.smallestPairwise},
+            {"evaluations", run.evaluations},
+            {"archived", run.archived},
+            {"output_renders", set.outputRenders},
+            {"wall_time_s", run.wallSeconds},
+            {"seed", request.seed}};
+}
+
+std::string variantSummary(const VariantRun& run, const VariantSet& set) {
+    const VariantRequest& request = run.request;
+    std::string text = std::to_string(set.variants.size()) + " of " +
+                       std::to_string(request.count) + " variants in band " +
+                       describe(request.band) + ", at least " + format("%g", request.minApart) +
+                       " apart";
+    if (set.variants.size() > 1)
+        text += " (smallest pairwise " + format("%.2f", set.smallestPairwise) + ")";
+    text += ", " + std::to_string(run.evaluations) + " evaluations";
+    if (set.variants.empty())
+        text += "; the render nearest the band was " + format("%.2f", run.closestDeltaE) +
+                " from the target";
+    return text;
+}
+
+Image contactSheet(const VariantSet& set) {
+    const int tile = std::max(set.target.width, 1);
+    const int labelHeight = 2 * Canvas::textHeight(kLabelScale) + 3 * kSheetGap / 2;
+    const int cells = int(set.variants.size()) + 1;
+    const int columns = std::min(cells, kSheetColumns);
+    const int rows = (cells + columns - 1) / columns;
+    Canvas canvas(columns * (tile + kSheetGap) + kSheetGap,
+                  rows * (tile + labelHeight + kSheetGap) + kSheetGap, kSheetBackground);
+    const std::vector<double> nearest = set.nearestSibling();
+    auto origin = [&](int cell) {
+        return std::pair{kSheetGap + (cell % columns) * (tile + kSheetGap),
+                         kSheetGap + (cell / columns) * (tile + labelHeight + kSheetGap)};
+    };
+    const int lineHeight = Canvas::textHeight(kLabelScale) + kSheetGap / 2;
+    auto [targetX, targetY] = origin(0);
+    canvas.drawText(targetX, targetY + tile + kSheetGap / 2, "TARGET", kLabelColour, kLabelScale);
+    for (std::size_t i = 0; i < set.variants.size(); ++i) {
+        auto [x, y] = origin(int(i) + 1);
+        const int textY = y + tile + kSheetGap / 2;
+        canvas.drawText(x, textY, variantStem(i).substr(8) + "  DE " +
+                                      format("%.2f", set.variants[i].deltaEToTarget),
+                        kLabelColour, kLabelScale);
+        canvas.drawText(x, textY + lineHeight, "NEAREST " + format("%.2f", nearest[i]),
+                        kLabelColour, kLabelScale);
+    }
+    Image sheet = std::move(canvas).release();
+    placeTile(sheet, set.target, targetX, targetY);
+    for (std::size_t i = 0; i < set.variants.size(); ++i) {
+        auto [x, y] = origin(int(i) + 1);
+        placeTile(sheet, set.variants[i].image, x, y);
+    }
+    return sheet;
+}
+
+Status writeVariantFiles(const std::filesystem::path& dir, const Preset& preset,
+                         const VariantSet& set, const nlohmann::json& report) {
+    const std::filesystem::path folder = dir / "variants";
+    if (auto created = createFolder(folder); !created) return created;
+    if (auto written = writeImage(set.target, dir / "target.png"); !written) return written;
+    for (std::size_t i = 0; i < set.variants.size(); ++i) {
+        const Variant& variant = set.variants[i];
+        const std::string stem = variantStem(i);
+        const nlohmann::json material =
+            materialToJson(variant.genome, preset.family, preset.baseKappa);
+        if (auto written = writeFileAtomically(folder / (stem + ".json"), material.dump(2) + "\n");
+            !written)
+            return written;
+        if (auto written = writeImage(variant.image, folder / (stem + ".png")); !written)
+            return written;
+        auto map = compareImages(set.target, variant.image);
+        if (!map) return map.error();
+        if (auto written =
+                writeImage(heatmapImage(*map, HeatmapSettings{}), folder / (stem + "_heatmap.png"));
+            !written)
+            return written;
+    }
+    if (auto written = writeImage(contactSheet(set), dir / "contact_sheet.png"); !written)
+        return written;
+    return writeFileAtomically(dir / "report.json", report.dump(2) + "\n");
+}
+
+}  // namespace matevo

@@ -1,0 +1,60 @@
+#pragma once
+// What `matevo variants` reports and writes, as functions of their own so that other commands
+// (sharded runs and their merge) and the editor's "Save set" produce the same files:
+//   DIR/report.json                       the report (variantReport)
+//   DIR/target.png                        the target at the output size
+//   DIR/contact_sheet.png                 the target and the set side by side
+//   DIR/variants/variant_NNN.json         one material each, read by `render --genome`
+//   DIR/variants/variant_NNN.png          its render at the output size
+//   DIR/variants/variant_NNN_heatmap.png  its per-pixel ΔE00 against the target, 0-10 viridis
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "common/Image.h"
+#include "common/Result.h"
+#include "evolve/RenderGenomes.h"
+#include "io/Preset.h"
+#include "variants/VariantSearch.h"
+#include "variants/VariantSet.h"
+
+namespace matevo {
+
+// How a set was made, for the report.
+struct VariantRun {
+    VariantRequest request;
+    int size = 256;         // output resolution
+    int fitnessSize = 64;   // the search's resolution
+    std::size_t evaluations = 0;  // fitness-resolution renders
+    std::size_t archived = 0;     // candidates the search held at its end
+    double closestDeltaE = 0;     // the render nearest the band the search saw
+    double wallSeconds = 0;
+};
+
+// The renders as the written PNG files will hold them (quantizeAsPng), so that a set checked on
+// them reports the figures `matevo compare` finds in its files.
+RenderGenomes asStoredInPng(RenderGenomes render);
+
+// "variant_007"
+std::string variantStem(std::size_t index);
+
+// The report: request, per variant (file, ΔE00 to the target, to its nearest sibling, genome),
+// the pairwise ΔE00 matrix, the smallest pairwise distance, evaluations, wall time, seed, and
+// whether the request was met with a one-line summary.
+nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const VariantSet& set);
+
+// "12 of 12 variants in band 2-5, at least 2 apart (smallest pairwise 2.31), 412 evaluations"
+// or, when short, what was achieved.
+std::string variantSummary(const VariantRun& run, const VariantSet& set);
+
+// The target (top left) and the variants in rows, each labelled with its ΔE00 to the target and
+// to its nearest sibling, on a dark background.
+Image contactSheet(const VariantSet& set);
+
+// Writes every file listed above (atomically, each one), creating the folders; an Error names
+// the file that could not be written.
+Status writeVariantFiles(const std::filesystem::path& dir, const Preset& preset,
+                       const VariantSet& set, const nlohmann::json& report);
+
+}  // namespace matevo

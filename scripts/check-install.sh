@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# The install, as a new user would do it: `cmake --install` into a temporary prefix, then every
+# command of the installed matevo run from an unrelated working directory. Also: the build
+# tree's own matevo runs from anywhere, a lone copy of the executable says where it looked for
+# its resources (exit 2), and MATEVO_DATA_DIR points it at them. Exits non-zero on the first
+# failure, naming it.
+#   scripts/check-install.sh            first builds matevo out of the source tree, tests off
+#                                       (a full second build: minutes)
+#   scripts/check-install.sh BUILD_DIR  installs from an existing build folder (what ctest's
+#                                       install_and_run_from_anywhere does)
+set -euo pipefail
+source_dir=$(cd "$(dirname "$0")/.." && pwd)
+work=$(mktemp -d "${TMPDIR:-/tmp}/matevo-install-check.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+fail() { echo "check-install: $*" >&2; exit 1; }
+expect_file() { [[ -s "$1" ]] || fail "$2 did not write $1"; }
+
+if [[ $# -ge 1 ]]; then
+    build_dir=$(cd "$1" && pwd)
+else
+    build_dir="$work/build"
+    cmake -S "$source_dir" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+          -DMATEVO_BUILD_TESTS=OFF >/dev/null
+    cmake --build "$build_dir" --target matevo -j"$(nproc)" >/dev/null
+fi
+cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
+[[ -f "$work/prefix/share/doc/matevo/LICENSE" ]] || fail "LICENSE not installed"
+
+matevo="$work/prefix/bin/matevo"
+mkdir -p "$work/elsewhere" "$work/data/matevo/presets"
+cd "$work/elsewhere"
+export XDG_DATA_HOME="$work/data"  # the user's preset folder, ours alone
+cp "$work/prefix/share/matevo/presets/validation_metal.json" "$work/data/matevo/presets/mine.json"
+
+"$matevo" --version | grep -q '^matevo [0-9]' || fail "--version"
+"$matevo" --help >/dev/null || fail "--help"
+"$matevo" presets | grep -q '^mine ' || fail "presets does not list the user's preset"
+"$matevo" evolve --preset mine --population 6 --generations 1 --size 24 --backend cpu \
+    --out evolved >/dev/null || fail "evolve"
+expect_file evolved/result.json evolve
+"$matevo" render --preset validation_painted_metal --size 24 --backend cpu --out painted.png \
+    || fail "render (a textured preset: its textures come from share/matevo)"
+expect_file painted.png render
+"$matevo" compare evolved/target.png evolved/candidates/candidate_000.png --json >/dev/null \
+    || fail "compare"
+"$matevo" experiment --runs 2 --population 4 --generations 1 --metric euclidean --size 16 \
+    --backend cpu --out experiment >/dev/null 2>&1 || fail "experiment"
+expect_file experiment/results.csv experiment
+"$matevo" bench --help >/dev/null || fail "bench --help"
+if command -v xvfb-run >/dev/null; then
+    xvfb-run -a "$matevo" edit mine --frames 3 --backend cpu || fail "edit under Xvfb"
+fi
+
+# The build tree's executable finds the source tree's resources.
+"$build_dir/matevo" presets | grep -q '^validation_metal ' || fail "build-tree presets"
+
+# A lone copy finds nothing, says where it looked, exits 2; MATEVO_DATA_DIR rescues it.
+mkdir -p "$work/lone/bin"
+cp "$matevo" "$work/lone/bin/matevo"
+status=0
+message=$("$work/lone/bin/matevo" render --out lone.png 2>&1 >/dev/null) || status=$?
+[[ $status -eq 2 ]] || fail "a lone executable exited $status, not 2"
+[[ "$message" == "matevo render: cannot find the 'presets' folder; looked in "*"$work/lone/bin/share/matevo/presets"* ]] \
+    || fail "unexpected message: $message"
+MATEVO_DATA_DIR="$work/prefix/share/matevo" "$work/lone/bin/matevo" render --size 16 \
+    --backend cpu --out lone.png || fail "MATEVO_DATA_DIR"
+expect_file lone.png "render with MATEVO_DATA_DIR"
+echo "check-install: ok"

@@ -1,0 +1,56 @@
+// A material's lobes from its LobeTable (core/material/LobeTable.h), interpolated as
+// LobeTable::lobesAt does; shared by the sphere compute shader and the scene's raster shaders.
+// The including shader declares, before including this file and BelcourBsdf.glsl:
+//   layout(std430, binding = N) readonly buffer LobeTables { vec4 lobeEntries[]; };
+// Three vec4 per entry: coat energy + alpha, base throughput + c(variance), base round trip +
+// c(variance + round-trip variance) with c(v) = v / (1 + v); entry (texel t, cosine m) at
+// firstEntry + t * cosineNodes + m.
+
+struct Material {
+    uint firstEntry;   // of its lobe table
+    uint texelNodes;   // 1: no textured-roughness axis
+    uint cosineNodes;
+    uint unused;
+};
+
+struct Entry {
+    vec4 coat;
+    vec4 base;
+    vec4 roundTrip;
+};
+
+void accumulate(inout Entry sum, uint entry, float weight) {
+    sum.coat += weight * lobeEntries[3 * entry];
+    sum.base += weight * lobeEntries[3 * entry + 1];
+    sum.roundTrip += weight * lobeEntries[3 * entry + 2];
+}
+
+float expandVariance(float compressed) { return compressed / max(1.0 - compressed, 1e-7); }
+
+// LobeTable::lobesAt: linear in cos_view, and in the texel when the table has that axis.
+LobeSet lobesAt(Material material, float cosView, float texel, vec3 tint) {
+    int cosineNodes = int(material.cosineNodes);
+    float cosinePosition = clamp(cosView, 0.0, 1.0) * float(cosineNodes - 1);
+    int m = min(int(cosinePosition), cosineNodes - 2);
+    float wm = cosinePosition - float(m);
+    Entry sum = Entry(vec4(0.0), vec4(0.0), vec4(0.0));
+    uint row = material.firstEntry + uint(m);
+    if (material.texelNodes > 1u) {
+        float texelPosition = clamp(texel, 0.0, 1.0) * float(material.texelNodes - 1u);
+        uint t = min(uint(texelPosition), material.texelNodes - 2u);
+        float wt = texelPosition - float(t);
+        row += t * uint(cosineNodes);
+        accumulate(sum, row, (1.0 - wt) * (1.0 - wm));
+        accumulate(sum, row + 1u, (1.0 - wt) * wm);
+        accumulate(sum, row + uint(cosineNodes), wt * (1.0 - wm));
+        accumulate(sum, row + uint(cosineNodes) + 1u, wt * wm);
+    } else {
+        accumulate(sum, row, 1.0 - wm);
+        accumulate(sum, row + 1u, wm);
+    }
+    float variance = expandVariance(sum.base.a);
+    return LobeSet(Lobe(sum.coat.rgb, sum.coat.a),
+                   tintedLobe(sum.base.rgb, sum.roundTrip.rgb, variance,
+                              expandVariance(sum.roundTrip.a) - variance, tint));
+}
+

@@ -1,0 +1,25 @@
+// libFuzzer target: our image reader (PNG and OpenEXR through OpenImageIO, decoded from memory,
+// with the size and finiteness checks). The first byte chooses the type. A header may claim any
+// size: the memory limit, set low here, is what keeps decoding bounded, as it does for users.
+#include <cmath>
+#include <cstdlib>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "io/ImageFile.h"
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    setenv("MATEVO_MEMORY_LIMIT", "64M", 1);
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size == 0) return 0;
+    const std::string_view bytes(reinterpret_cast<const char*>(data) + 1, size - 1);
+    auto image = matevo::decodeImageFile(bytes, (data[0] & 1) ? "fuzz.exr" : "fuzz.png");
+    if (image)
+        for (float value : image->image.rgba)
+            if (!std::isfinite(value)) __builtin_trap();
+    return 0;
+}

@@ -1,0 +1,176 @@
+#include "gpu/GpuSceneRenderer.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "GpuTestContext.h"
+#include "color/ImageDifference.h"
+#include "gpu/GpuSphereRenderer.h"
+#include "io/Preset.h"
+#include "material/FgdTableCache.h"
+#include "mesh/GeneratedMeshes.h"
+#include "scene/SphereRenderer.h"
+#include "scene/StudioEnvironment.h"
+
+namespace matevo {
+namespace {
+
+constexpr int kImageSize = 96;
+
+// The paper's single light and nothing else.
+SceneSettings paperLight(SceneSettings scene) {
+    scene.mode = SceneMode::Paper;
+    return scene;
+}
+
+struct PresetCase {
+    std::string name;
+    MaterialInstance material;
+    SceneTextures textures;
+    SceneSettings scene;
+};
+
+std::vector<PresetCase> validationPresets() {
+    std::vector<PresetCase> cases;
+    for (const char* name : {"validation_metal.json", "validation_metal_depth.json",
+                             "validation_painted_metal.json"}) {
+        const auto file = std::filesystem::path(MATEVO_SOURCE_DIR) / "presets" / name;
+        auto loaded = loadPreset(file);
+        EXPECT_TRUE(loaded.ok()) << loaded.error().message;
+        if (!loaded) continue;
+        auto textures = loadSceneTextures(loaded->preset, file);
+        EXPECT_TRUE(textures.ok()) << textures.error().message;
+        if (!textures) continue;
+        const Preset& preset = loaded->preset;
+        cases.push_back({name, {preset.target, preset.family, preset.baseKappa},
+                         std::move(textures).value(), preset.scene});
+    }
+    return cases;
+}
+
+// The raster path's tessellated sphere against the compute path's analytic one, same camera,
+// same material, same light: they differ only by tessellation, multisample positions and
+// interpolated texture coordinates.
+TEST(GpuSceneRenderer, SphereMatchesTheComputeSphereRender) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    auto runner = gpu::CommandRunner::create(context->device);
+    ASSERT_TRUE(runner.ok()) << runner.error().message;
+    const Mesh sphere = makeSphereMesh();
+    const SceneInstance instance;  // identity: the unit sphere at the origin
+    for (const PresetCase& preset : validationPresets()) {
+        const SceneSettings scene = paperLight(preset.scene);
+        auto sphereRenderer = gpu::GpuSphereRenderer::create(context->device, *runner,
+                                                             defaultFgdTables(), preset.textures);
+        ASSERT_TRUE(sphereRenderer.ok()) << sphereRenderer.error().message;
+        auto computeImages =
+            sphereRenderer->render(*runner, std::span(&preset.material, 1), scene, kImageSize);
+        ASSERT_TRUE(computeImages.ok()) << computeImages.error().message;
+
+        auto raster = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
+                                                    preset.textures, sphere);
+        ASSERT_TRUE(raster.ok()) << raster.error().message;
+        ASSERT_TRUE(raster->setMaterials(std::span(&preset.material, 1)).ok());
+        const SceneCamera camera{
+            {scene.cameraPosition[0], scene.cameraPosition[1], scene.cameraPosition[2]},
+            glm::dvec3(0.0),
+            scene.fieldOfViewDegrees};
+        auto rasterImage = raster->render(
+            *runner, {kImageSize, kImageSize, camera, std::span(&instance, 1)}, scene);
+        ASSERT_TRUE(rasterImage.ok()) << rasterImage.error().message;
+
+        auto difference = compareImages(computeImages->front(), *rasterImage);
+        ASSERT_TRUE(difference.ok()) << difference.error().message;
+        EXPECT_GT(difference->stats.pixels, std::size_t(kImageSize * kImageSize / 3))
+            << preset.name << ": both spheres cover the middle of the image";
+        EXPECT_LE(difference->stats.mean, 1.0) << preset.name;
+        std::printf("%s: raster vs compute sphere, mean dE00 %.3f, p95 %.3f\n",
+                    preset.name.c_str(), difference->stats.mean, difference->stats.p95);
+    }
+    test::expectNoValidationMessages(*context);
+}
+
+// Instances wear their own materials: rendering the same row of instances with material 1
+// replaced by material 0 changes the middle instance only.
+TEST(GpuSceneRenderer, InstancesWearTheirOwnMaterials) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    auto runner = gpu::CommandRunner::create(context->device);
+    ASSERT_TRUE(runner.ok());
+    const std::vector<PresetCase> presets = validationPresets();
+    ASSERT_EQ(presets.size(), 3u);
+    auto raster = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
+                                                SceneTextures{}, makeSphereMesh(64, 32));
+    ASSERT_TRUE(raster.ok()) << raster.error().message;
+    // Three spheres in a row along x wearing materials 0, 1, 0.
+    std::vector<SceneInstance> instances(3);
+    for (int i = 0; i < 3; ++i) {
+        instances[std::size_t(i)].transform =
+            glm::translate(glm::mat4(1.0f), glm::vec3(2.5f * float(i - 1), 0.0f, 0.0f));
+        instances[std::size_t(i)].material = std::uint32_t(i % 2);
+    }
+    const gpu::SceneFrame frame{192, 64, frameInstances(instances, 3.0), instances};
+    const auto renderWith = [&](const std::vector<MaterialInstance>& materials) {
+        EXPECT_TRUE(raster->setMaterials(materials).ok());
+        auto image = raster->render(*runner, frame, presets[0].scene);
+        EXPECT_TRUE(image.ok()) << image.error().message;
+        return image.ok() ? std::move(image).value() : Image{};
+    };
+    const Image twoMaterials = renderWith({presets[0].material, presets[1].material});
+    const Image oneMaterial = renderWith({presets[0].material, presets[0].material});
+    auto difference = compareImages(twoMaterials, oneMaterial);
+    ASSERT_TRUE(difference.ok()) << difference.error().message;
+
+    // Mean ΔE00 over the covered pixels of each third of the image.
+    std::array<double, 3> sums{}, counts{};
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x) {
+            if (twoMaterials.pixel(x, y)[3] < 0.99f) continue;
+            const std::size_t third = std::size_t(x * 3 / frame.width);
+            sums[third] += difference->deltaE[std::size_t(y * frame.width + x)];
+            counts[third] += 1.0;
+        }
+    for (double count : counts) ASSERT_GT(count, 200.0) << "every instance is in view";
+    EXPECT_EQ(sums[0], 0.0);
+    EXPECT_EQ(sums[2], 0.0);
+    EXPECT_GT(sums[1] / counts[1], 2.0) << "the middle instance wears the other material";
+    test::expectNoValidationMessages(*context);
+}
+
+// The environment reaches the compute sphere exactly as the CPU reference shades it.
+TEST(GpuSceneRenderer, StudioLightingMatchesTheCpuReferenceOnTheSphere) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    auto runner = gpu::CommandRunner::create(context->device);
+    ASSERT_TRUE(runner.ok());
+    auto environment = loadEnvironment("studio", {.width = 64, .levels = 7, .samplesPerTexel = 16});
+    ASSERT_TRUE(environment.ok());
+    for (PresetCase& preset : validationPresets()) {
+        preset.textures.environment = *environment;
+        const SceneSettings scene = paperLight(preset.scene);
+        auto renderer = gpu::GpuSphereRenderer::create(context->device, *runner,
+                                                       defaultFgdTables(), preset.textures);
+        ASSERT_TRUE(renderer.ok()) << renderer.error().message;
+        auto gpuImages = renderer->render(*runner, std::span(&preset.material, 1), scene, 48);
+        ASSERT_TRUE(gpuImages.ok()) << gpuImages.error().message;
+        const Image cpuImage = renderSphereCpu(preset.material, preset.textures, scene, 48);
+        auto difference = compareImages(cpuImage, gpuImages->front());
+        ASSERT_TRUE(difference.ok());
+        EXPECT_LT(difference->stats.mean, 0.5) << preset.name;
+        // And the environment is really there: it changes the picture.
+        SceneTextures unlit = preset.textures;
+        unlit.environment = {};
+        auto withoutEnvironment =
+            compareImages(renderSphereCpu(preset.material, unlit, scene, 48), cpuImage);
+        ASSERT_TRUE(withoutEnvironment.ok());
+        EXPECT_GT(withoutEnvironment->stats.mean, 5.0) << preset.name;
+    }
+    test::expectNoValidationMessages(*context);
+}
+
+}  // namespace
+}  // namespace matevo
