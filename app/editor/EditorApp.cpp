@@ -33,6 +33,7 @@
 #include "WindowInput.h"
 #include "WindowRenderer.h"
 #include "io/ImageFile.h"
+#include "io/OutputFolder.h"
 #include "io/PresetCatalog.h"
 #include "io/ResourcePaths.h"
 #include "material/FgdTableCache.h"
@@ -438,8 +439,18 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
     }
     if (actions.save) {
         const VariantsResult& shown = *shownVariants_;
-        const Status saved = writeVariantFiles(view.savePath, shown.preset, set,
-                                               variantReport(shown.preset, shown.run, set));
+        // One whole set in the folder: an earlier saved set there is replaced as a whole, a
+        // folder holding files matevo did not write is refused.
+        auto saveSet = [&]() -> Status {
+            auto output = OutputFolder::claim(view.savePath, true);
+            if (!output) return output.error();
+            if (auto written = writeVariantFiles(output->staging(), shown.preset, set,
+                                                 variantReport(shown.preset, shown.run, set));
+                !written)
+                return Error{output->userFacing(written.error().message)};
+            return output->commit();
+        };
+        const Status saved = saveSet();
         view.summary = saved ? "Saved the set to " + view.savePath
                              : "Save set failed: " + saved.error().message;
         state.status.post(view.summary, saved ? ui::StatusKind::Info : ui::StatusKind::Error);
