@@ -28,17 +28,18 @@ std::string rankedName(const char* prefix, std::size_t rank) {
 }  // namespace
 
 std::uint64_t evolveImagesMemoryEstimate(int size) {
-    // Per candidate: render and heatmap (RGBA float) and the ΔE00 map (float), held for one
-    // batch twice over (GPU read-back buffers and the images made from them), plus the target.
+    // Per candidate: render and heatmap (RGBA float), the ΔE00 map (float) and maybe the ꟻLIP
+    // map (float, byte), held for one batch twice over (GPU read-back buffers and the images
+    // made from them), plus the target; the ꟻLIP pass's own planes (7 floats per pixel).
     const std::uint64_t pixels = std::uint64_t(size) * std::uint64_t(size);
-    const std::uint64_t perCandidate = pixels * (16 + 16 + 4);
+    const std::uint64_t perCandidate = pixels * (16 + 16 + 4 + 5 + 28);
     return 2 * perCandidate * (kEvolveImageBatch + 1);
 }
 
-std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
-                                           const std::vector<Individual>& ranked, int size,
-                                           RenderBackend backend,
-                                           const std::filesystem::path& outDir) {
+std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
+                                                   const std::vector<Individual>& ranked, int size,
+                                                   RenderBackend backend, ImageMetric heatmapMetric,
+                                                   const std::filesystem::path& outDir) {
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
@@ -53,14 +54,16 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
     // One renderer for every batch: it keeps the target's render between them.
     auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
-    std::vector<DeltaEStats> stats;
+    EvaluationOptions options;
+    options.heatmapMetric = heatmapMetric;
+    std::vector<CandidateImageStats> stats;
     for (std::size_t first = 0; first < ranked.size() && !stopRequested();
          first += kEvolveImageBatch) {
         const std::size_t count = std::min<std::size_t>(kEvolveImageBatch, ranked.size() - first);
         std::vector<MaterialInstance> candidates;
         for (std::size_t i = first; i < first + count; ++i)
             candidates.push_back({ranked[i].genome, preset.family, preset.baseKappa});
-        auto evaluation = renderer->evaluate(target, candidates, preset.scene, size);
+        auto evaluation = renderer->evaluate(target, candidates, preset.scene, size, options);
         if (!evaluation) throw std::runtime_error(evaluation.error().message);
         if (first == 0) writeOrThrow(evaluation->target, outDir / "target.png");
         for (std::size_t i = 0; i < count; ++i) {
@@ -68,7 +71,8 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
             writeOrThrow(evaluation->candidates[i],
                          outDir / "candidates" / rankedName("candidate", rank));
             writeOrThrow(evaluation->heatmaps[i], outDir / "heatmaps" / rankedName("heatmap", rank));
-            stats.push_back(evaluation->deltaE[i].stats);
+            stats.push_back({evaluation->deltaE[i].stats, std::nullopt});
+            if (!evaluation->flip.empty()) stats.back().flip = evaluation->flip[i].stats;
         }
     }
     return stats;

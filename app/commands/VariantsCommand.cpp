@@ -20,7 +20,7 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
     "                       [--size N] [--fitness-size N] [--max-evaluations N]\n"
-    "                       [--backend gpu|cpu] [--out DIR] [--json]\n\n"
+    "                       [--backend gpu|cpu] [--out DIR [--heatmap de00|flip]] [--json]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
     "whose renders lie LO to HI mean CIEDE2000 from the target's and at least D from each other.\n"
     "The paper's bands: 0,1 not perceptible; 1,2 close observation; 2,10 at a glance.\n"
@@ -34,6 +34,8 @@ constexpr const char* kHelp =
     "  --out DIR            write DIR/report.json, DIR/target.png, DIR/contact_sheet.png and per\n"
     "                       variant DIR/variants/variant_NNN.json (for render --genome), .png\n"
     "                       and _heatmap.png\n"
+    "  --heatmap M          what the heatmaps show: de00 (default; 0-10 viridis) or flip\n"
+    "                       (per-pixel LDR-FLIP, 0-1 magma)\n"
     "  --json               print the report as JSON\n"
     "Exit status 3 when the request cannot be met (a band the family cannot reach, or more\n"
     "variants than fit D apart): a one-line message says what was found, and it is still\n"
@@ -71,6 +73,11 @@ int runVariants(CommandLine& args) {
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const auto outDir = args.option("--out");
+    const std::string heatmapName = args.option("--heatmap").value_or("de00");
+    const auto heatmapMetric = parseImageMetric(heatmapName);
+    if (!heatmapMetric)
+        throw UsageError("--heatmap: expected de00 or flip, got '" + heatmapName + "'");
+    args.onlyWith("--heatmap", "--out");
     const bool asJson = args.flag("--json");
     args.finish();
 
@@ -112,7 +119,8 @@ int runVariants(CommandLine& args) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const nlohmann::json report = variantReport(preset, run, *set);
     if (outDir)
-        if (auto written = writeVariantFiles(*outDir, preset, *set, report); !written)
+        if (auto written = writeVariantFiles(*outDir, preset, *set, report, *heatmapMetric);
+            !written)
             throw UsageError("--out: " + written.error().message);
     if (asJson) std::printf("%s\n", report.dump(2).c_str());
     const std::string summary = variantSummary(run, *set);
