@@ -29,6 +29,7 @@
 #include "VulkanContext.h"
 #include "WindowRenderer.h"
 #include "io/ImageFile.h"
+#include "io/OutputFolder.h"
 
 namespace matevo::editor {
 namespace {
@@ -427,8 +428,18 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
     }
     if (actions.save) {
         const VariantsResult& shown = *shownVariants_;
-        const Status saved = writeVariantFiles(view.savePath, shown.preset, set,
-                                               variantReport(shown.preset, shown.run, set));
+        // One whole set in the folder: an earlier saved set there is replaced as a whole, a
+        // folder holding files matevo did not write is refused.
+        auto saveSet = [&]() -> Status {
+            auto output = OutputFolder::claim(view.savePath, true);
+            if (!output) return output.error();
+            if (auto written = writeVariantFiles(output->staging(), shown.preset, set,
+                                                 variantReport(shown.preset, shown.run, set));
+                !written)
+                return Error{output->userFacing(written.error().message)};
+            return output->commit();
+        };
+        const Status saved = saveSet();
         state.statusMessage = saved ? "Saved the set to " + view.savePath
                                     : "Save set failed: " + saved.error().message;
         view.summary = state.statusMessage;
