@@ -49,6 +49,7 @@ void addImageStatistics(nlohmann::json& report, const std::vector<CandidateImage
         population[rank]["mean_de00"] = deltaE.mean;
         population[rank]["max_de00"] = deltaE.max;
         population[rank]["p95_de00"] = deltaE.p95;
+        population[rank]["pixels"] = deltaE.pixels;
         if (const auto& flip = stats[rank].flip) {
             population[rank]["mean_flip"] = flip->mean;
             population[rank]["median_flip"] = flip->weightedMedian;

@@ -3,7 +3,8 @@
 // The second of the two ꟻLIP passes (core/gpu/FlipPass.h): the row-filtered planes of the
 // reference and of each candidate filtered along y, then the colour difference, the feature
 // difference and their combination per pixel, as core/color/FlipStages.cpp. Writes the error
-// (pooled pixels, covered in both images with alpha > 0.5, as e ≥ 0; the others as −1 − e)
+// (pooled pixels, covered in both images with alpha >= 0.5 as core/color/Coverage.h says, as
+// e ≥ 0; the others as −1 − e)
 // and the magma heatmap (transparent where not pooled).
 layout(local_size_x = 64) in;
 
@@ -98,8 +99,8 @@ void main() {
 
     uint index = candidate * uint(pixelCount) + uint(pixel);
     bool pooled =
-        referencePixels[settings.referenceImage * uint(pixelCount) + uint(pixel)].a > 0.5 &&
-        candidatePixels[(settings.firstCandidate + candidate) * uint(pixelCount) + uint(pixel)].a >
+        referencePixels[settings.referenceImage * uint(pixelCount) + uint(pixel)].a >= 0.5 &&
+        candidatePixels[(settings.firstCandidate + candidate) * uint(pixelCount) + uint(pixel)].a >=
             0.5;
     flipError[index] = pooled ? error : -1.0 - error;
     heatmapPixels[index] = pooled ? colormap[uint(floor(clamp(error, 0.0, 1.0) * 255.0 + 0.5))]

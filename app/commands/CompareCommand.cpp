@@ -20,7 +20,7 @@ constexpr const char* kHelp =
     "usage: matevo compare A B [--metric de00|flip] [--ppd N] [--heatmap OUT.png\n"
     "                      [--range MIN,MAX]] [--json] [--fail-above X]\n\n"
     "The difference between images A and B of the same size, pooled over the pixels both\n"
-    "images cover (alpha > 0.5), or over all pixels when neither has alpha. A and B may be\n"
+    "images cover (alpha >= 0.5), or over all pixels when neither has alpha. A and B may be\n"
     "any format OpenImageIO reads (.png, .exr, .jpg, .tif, .hdr, ...; any case): integer\n"
     "samples are sRGB-encoded, floating-point samples linear; colours are clamped to [0, 1].\n\n"
     "  --metric de00      (default) per-pixel CIEDE2000 (kL = kC = kH = 1), linear sRGB ->\n"
@@ -72,7 +72,7 @@ struct Inputs {
 };
 
 UsageError nothingCovered(const Inputs& inputs) {
-    return UsageError("no pixel is covered in both " + inputs.names + " (alpha > 0.5)");
+    return UsageError("no pixel is covered in both " + inputs.names + " (alpha >= 0.5)");
 }
 
 // The heatmap is only computed when it is asked for: colouring every pixel is a good part of a
