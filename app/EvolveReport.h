@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "EvolveImages.h"
 #include "color/ImageDifference.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "io/Preset.h"
@@ -18,8 +19,9 @@ namespace matevo::cli {
 // textures by absolute path), so that `render --genome` and `export` replay it on its own.
 nlohmann::json evolveReport(const Preset& preset, const std::filesystem::path& presetFile,
                             const GeneticAlgorithm& ga, const std::vector<Individual>& ranked);
-// Adds mean_de00, max_de00 and p95_de00 to each population entry (rank order) and to best.
-void addImageStatistics(nlohmann::json& report, const std::vector<DeltaEStats>& stats);
+// Adds mean_de00, max_de00 and p95_de00 (and with ꟻLIP mean_flip, median_flip, q1_flip, q3_flip,
+// max_flip) to each population entry (rank order) and to best.
+void addImageStatistics(nlohmann::json& report, const std::vector<CandidateImageStats>& stats);
 void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga,
                         const std::vector<Individual>& ranked, std::FILE* out);
 

@@ -1,13 +1,15 @@
 #include <cstdio>
+#include <future>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "Messages.h"
 #include "color/Colormap.h"
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
-#include "Messages.h"
+#include "color/ImageMetric.h"
 #include "commands/Commands.h"
 #include "io/ImageFile.h"
 
@@ -18,8 +20,9 @@ constexpr const char* kHelp =
     "usage: matevo compare A B [--metric de00|flip] [--ppd N] [--heatmap OUT.png\n"
     "                      [--range MIN,MAX]] [--json] [--fail-above X]\n\n"
     "The difference between images A and B of the same size, pooled over the pixels both\n"
-    "images cover (alpha > 0.5), or over all pixels when neither has alpha. Images are .png\n"
-    "(sRGB-encoded) or .exr (linear); colours are clamped to [0, 1].\n\n"
+    "images cover (alpha >= 0.5), or over all pixels when neither has alpha. A and B may be\n"
+    "any format OpenImageIO reads (.png, .exr, .jpg, .tif, .hdr, ...; any case): integer\n"
+    "samples are sRGB-encoded, floating-point samples linear; colours are clamped to [0, 1].\n\n"
     "  --metric de00      (default) per-pixel CIEDE2000 (kL = kC = kH = 1), linear sRGB ->\n"
     "                     XYZ (D65) -> L*a*b*\n"
     "  --metric flip      LDR-FLIP (Andersson et al. 2020): colour after the eye's contrast\n"
@@ -40,10 +43,7 @@ constexpr const char* kHelp =
     "error itself, as its authors pool it. Exit status 2 when a file cannot be read or is not an\n"
     "image, the sizes differ, or no pixel is covered in both images.\n";
 
-enum class Metric { DeltaE00, Flip };
-
-ImageFileContents readOrThrow(const std::string& file) {
-    auto contents = readImageFile(file);
+ImageFileContents valueOrThrow(Result<ImageFileContents> contents) {
     if (!contents) throw UsageError(contents.error().message);
     return std::move(*contents);
 }
@@ -58,9 +58,9 @@ HeatmapSettings parseRange(const std::string& text) {
     return settings;
 }
 
-Metric parseMetric(const std::optional<std::string>& text) {
-    if (!text || *text == "de00") return Metric::DeltaE00;
-    if (*text == "flip") return Metric::Flip;
+ImageMetric parseMetric(const std::optional<std::string>& text) {
+    if (!text) return ImageMetric::DeltaE00;
+    if (auto metric = parseImageMetric(*text)) return *metric;
     throw UsageError("--metric: unknown metric '" + *text + "' (expected de00 or flip)");
 }
 
@@ -72,12 +72,15 @@ struct Inputs {
 };
 
 UsageError nothingCovered(const Inputs& inputs) {
-    return UsageError("no pixel is covered in both " + inputs.names + " (alpha > 0.5)");
+    return UsageError("no pixel is covered in both " + inputs.names + " (alpha >= 0.5)");
 }
 
-void writeHeatmap(const Image& heatmap, const std::optional<std::string>& file) {
+// The heatmap is only computed when it is asked for: colouring every pixel is a good part of a
+// large comparison's time.
+template <typename MakeHeatmap>
+void writeHeatmap(const MakeHeatmap& makeHeatmap, const std::optional<std::string>& file) {
     if (!file) return;
-    auto written = writeImage(heatmap, *file);
+    auto written = writeImage(makeHeatmap(), *file);
     if (!written) throw UsageError("--heatmap: " + written.error().message);
 }
 
@@ -89,7 +92,7 @@ double reportDeltaE(const Inputs& inputs, const HeatmapSettings& settings,
     if (!map) throw UsageError(map.error().message);
     const DeltaEStats& stats = map->stats;
     if (stats.pixels == 0) throw nothingCovered(inputs);
-    writeHeatmap(heatmapImage(*map, settings), heatmapFile);
+    writeHeatmap([&] { return heatmapImage(*map, settings); }, heatmapFile);
     if (asJson) {
         nlohmann::ordered_json out;
         out["mean_de00"] = stats.mean;
@@ -110,7 +113,7 @@ double reportFlip(const Inputs& inputs, const FlipSettings& settings,
     if (!map) throw UsageError(map.error().message);
     const FlipStats& stats = map->stats;
     if (stats.pixels == 0) throw nothingCovered(inputs);
-    writeHeatmap(flipHeatmapImage(*map), heatmapFile);
+    writeHeatmap([&] { return flipHeatmapImage(*map); }, heatmapFile);
     if (asJson) {
         nlohmann::ordered_json out;
         out["mean_flip"] = stats.mean;
@@ -141,16 +144,16 @@ int runCompare(CommandLine& args) {
     const auto heatmapFile = args.option("--heatmap");
     const auto range = args.option("--range");
     const auto failAbove = args.numberOption("--fail-above");
-    const Metric metric = parseMetric(args.option("--metric"));
+    const ImageMetric metric = parseMetric(args.option("--metric"));
     const auto pixelsPerDegree = args.numberOption("--ppd");
     args.onlyWith("--range", "--heatmap");
     const auto files = args.positionals();
     args.finish();
     if (files.size() != 2)
         throw UsageError("expected two images A B (see matevo compare --help)");
-    if (metric == Metric::Flip && range)
+    if (metric == ImageMetric::Flip && range)
         throw UsageError("--range is for dE00; FLIP's colour map spans its fixed range [0, 1]");
-    if (metric == Metric::DeltaE00 && pixelsPerDegree)
+    if (metric == ImageMetric::DeltaE00 && pixelsPerDegree)
         throw UsageError("--ppd is FLIP's viewing condition; add --metric flip");
     const HeatmapSettings settings = range ? parseRange(*range) : HeatmapSettings{};
     FlipSettings flipSettings;
@@ -161,22 +164,24 @@ int runCompare(CommandLine& args) {
         flipSettings.pixelsPerDegree = *pixelsPerDegree;
     }
 
-    const ImageFileContents a = readOrThrow(files[0]);
-    const ImageFileContents b = readOrThrow(files[1]);
+    // The two files are decoded at once: decoding is most of a large comparison's time.
+    auto readingB = std::async(std::launch::async, [&files] { return readImageFile(files[1]); });
+    const ImageFileContents a = valueOrThrow(readImageFile(files[0]));
+    const ImageFileContents b = valueOrThrow(readingB.get());
     if (a.image.width != b.image.width || a.image.height != b.image.height)
         throw UsageError("image sizes differ: " + files[0] + " is " +
                          std::to_string(a.image.width) + "x" + std::to_string(a.image.height) +
                          ", " + files[1] + " is " + std::to_string(b.image.width) + "x" +
                          std::to_string(b.image.height));
     const Inputs inputs{a.image, b.image, files[0] + " and " + files[1]};
-    const double mean = metric == Metric::Flip
+    const double mean = metric == ImageMetric::Flip
                             ? reportFlip(inputs, flipSettings, heatmapFile, asJson)
                             : reportDeltaE(inputs, settings, heatmapFile, asJson);
     if (failAbove && mean > *failAbove) {
         std::fflush(stdout);
         char text[128];
         std::snprintf(text, sizeof text, "mean %s %.4f is above --fail-above %g",
-                      metric == Metric::Flip ? "FLIP" : "dE00", mean, *failAbove);
+                      metric == ImageMetric::Flip ? "FLIP" : "dE00", mean, *failAbove);
         printMessage(text);
         return exitCode(ExitStatus::AboveThreshold);
     }

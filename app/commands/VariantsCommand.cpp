@@ -3,13 +3,17 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "Messages.h"
 #include "PresetOption.h"
 #include "RenderBackend.h"
+#include "StopSignals.h"
 #include "commands/Commands.h"
+#include "common/StopRequest.h"
 #include "experiment/Experiment.h"
 #include "gpu/PopulationRendererFactory.h"
+#include "io/OutputFolder.h"
 #include "variants/VariantFiles.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
@@ -20,7 +24,8 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
     "                       [--size N] [--fitness-size N] [--max-evaluations N]\n"
-    "                       [--backend gpu|cpu] [--out DIR] [--json]\n\n"
+    "                       [--backend gpu|cpu] [--out DIR] [--force] [--heatmap de00|flip]\n"
+    "                       [--json]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
     "whose renders lie LO to HI mean CIEDE2000 from the target's and at least D from each other.\n"
     "The paper's bands: 0,1 not perceptible; 1,2 close observation; 2,10 at a glance.\n"
@@ -33,11 +38,16 @@ constexpr const char* kHelp =
     "                       or cpu\n"
     "  --out DIR            write DIR/report.json, DIR/target.png, DIR/contact_sheet.png and per\n"
     "                       variant DIR/variants/variant_NNN.json (for render --genome), .png\n"
-    "                       and _heatmap.png\n"
+    "                       and _heatmap.png; the folder holds one whole run, never a mix\n"
+    "  --force              replace DIR when it holds an earlier matevo output (else a folder\n"
+    "                       with files is refused before the search starts)\n"
+    "  --heatmap M          what the heatmaps show: de00 (default; 0-10 viridis) or flip\n"
+    "                       (per-pixel LDR-FLIP, 0-1 magma)\n"
     "  --json               print the report as JSON\n"
     "Exit status 3 when the request cannot be met (a band the family cannot reach, or more\n"
     "variants than fit D apart): a one-line message says what was found, and it is still\n"
-    "written.\n";
+    "written. SIGINT or SIGTERM stops the search at the next generation: the set found so\n"
+    "far is chosen and written, marked partial (exit 130 or 143).\n";
 
 constexpr int kMaxCount = 1000;
 
@@ -71,8 +81,24 @@ int runVariants(CommandLine& args) {
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const auto outDir = args.option("--out");
+    const std::string heatmapName = args.option("--heatmap").value_or("de00");
+    const auto heatmapMetric = parseImageMetric(heatmapName);
+    if (!heatmapMetric)
+        throw UsageError("--heatmap: expected de00 or flip, got '" + heatmapName + "'");
+    args.onlyWith("--heatmap", "--out");
+    const bool replaceOutput = args.flag("--force");
     const bool asJson = args.flag("--json");
+    args.onlyWith("--force", "--out");
     args.finish();
+
+    installStopSignalHandlers();
+    // Refused before the search: a folder with other files, or one we cannot write beside.
+    std::optional<OutputFolder> output;
+    if (outDir) {
+        auto claimed = OutputFolder::claim(*outDir, replaceOutput);
+        if (!claimed) throw UsageError("--out: " + claimed.error().message);
+        output.emplace(std::move(*claimed));
+    }
 
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);
@@ -91,7 +117,7 @@ int runVariants(CommandLine& args) {
         VariantSearch::start(preset.family, preset.target, request, settings, renderAt(fitnessSize));
     if (!search) throw std::runtime_error(search.error().message);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
-    while (!(*search)->finished()) {
+    while (!(*search)->finished() && !stopRequested()) {
         if (auto stepped = (*search)->step(); !stepped)
             throw std::runtime_error(stepped.error().message);
         if (showProgress) {
@@ -110,14 +136,30 @@ int runVariants(CommandLine& args) {
                    progress.closestDeltaE, 0.0};
     run.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const nlohmann::json report = variantReport(preset, run, *set);
-    if (outDir)
-        if (auto written = writeVariantFiles(
-                *outDir, materialFromPreset(preset, choice.file, preset.target, preset.name), *set,
-                report); !written)
-            throw UsageError("--out: " + written.error().message);
+    nlohmann::json report = variantReport(preset, run, *set);
+    const int signal = stopRequested();
+    if (signal) {
+        report["partial"] = true;
+        report["stopped_by"] = signalName(signal);
+    }
+    if (output) {
+        if (auto written =
+                writeVariantFiles(
+                output->staging(),
+                materialFromPreset(preset, choice.file, preset.target, preset.name), *set,
+                report, *heatmapMetric);
+            !written)
+            throw UsageError("--out: " + output->userFacing(written.error().message));
+        if (auto committed = output->commit(); !committed)
+            throw UsageError("--out: " + committed.error().message);
+    }
     if (asJson) std::printf("%s\n", report.dump(2).c_str());
     const std::string summary = variantSummary(run, *set);
+    if (signal) {
+        printMessage("stopped by " + signalName(signal) + ": " + summary +
+                     (outDir ? "; what was found is written, marked partial" : ""));
+        return stoppedExitStatus(signal);
+    }
     if (!fulfils(*set, request)) {
         printMessage("request not met: " + summary + (outDir ? "; what was found is written" : ""));
         return exitCode(ExitStatus::RequestNotMet);

@@ -23,15 +23,6 @@ std::string writtenTexture(const fs::path& texture, const fs::path& folder) {
     return texture.lexically_relative(fs::absolute(folder).lexically_normal()).string();
 }
 
-Genome readCheckedGenome(JsonReader& parent, const std::string& key,
-                         const MaterialFamily& family) {
-    JsonReader reader = parent.object(key);
-    Genome genome = readGenome(reader);
-    reader.warnAboutUnknownFields();
-    if (auto problem = validateGenome(genome, family)) parent.fail(key, *problem);
-    return genome;
-}
-
 MaterialFile readMaterialFile(JsonReader& root, const fs::path& folder) {
     const auto version = root.integer("format_version", 1, 1000000);
     if (version > kMaterialFormatVersion)
@@ -42,7 +33,7 @@ MaterialFile readMaterialFile(JsonReader& root, const fs::path& folder) {
     if (root.has("name")) result.name = root.string("name");
     result.material.family = readFamily(root, "family");
     result.material.baseKappa = readBaseKappa(root, result.material.family);
-    result.material.genome = readCheckedGenome(root, "genome", result.material.family);
+    result.material.genome = readFamilyGenome(root, "genome", result.material.family);
     const TextureNames textures = readTextures(root, result.material.family);
     result.roughnessTexture = resolvedTexture(folder, textures.roughness);
     result.baseColorTexture = resolvedTexture(folder, textures.baseColor);
@@ -80,7 +71,7 @@ MaterialFile readAnyMaterial(const nlohmann::json& json, const fs::path& folder,
     fromContext = true;
     MaterialFile result = context;
     if (root.has("genome")) {  // a population entry; its scores are not part of the material
-        result.material.genome = readCheckedGenome(root, "genome", context.material.family);
+        result.material.genome = readFamilyGenome(root, "genome", context.material.family);
     } else {
         result.material.genome = readGenome(root);
         root.warnAboutUnknownFields();

@@ -16,24 +16,30 @@ namespace matevo {
 
 namespace {
 
+KeptMaterial readKept(JsonReader& reader) {
+    KeptMaterial kept;
+    kept.name = reader.string("name");
+    kept.family = readFamily(reader, "family");
+    kept.genome = readFamilyGenome(reader, "genome", kept.family);
+    reader.warnAboutUnknownFields();
+    return kept;
+}
+
 Preset readPreset(JsonReader& root) {
     Preset preset;
     preset.name = root.string("name");
     if (root.has("description")) preset.description = root.string("description");
     preset.family = readFamily(root, "family");
-    {
-        JsonReader target = root.object("target");
-        preset.target = readGenome(target);
-        target.warnAboutUnknownFields();
-    }
     // The target must be a member of its own family, or the GA could never approach it.
-    if (auto problem = validateGenome(preset.target, preset.family)) root.fail("target", *problem);
+    preset.target = readFamilyGenome(root, "target", preset.family);
     preset.baseKappa = readBaseKappa(root, preset.family);
     auto textures = readTextures(root, preset.family);
     preset.roughnessTexture = std::move(textures.roughness);
     preset.baseColorTexture = std::move(textures.baseColor);
     preset.ga = readGaSettings(root.object("ga"));
     if (root.has("scene")) preset.scene = readScene(root.object("scene"));
+    if (root.has("kept"))
+        for (JsonReader entry : root.objects("kept")) preset.kept.push_back(readKept(entry));
     root.warnAboutUnknownFields();
     return preset;
 }
@@ -81,6 +87,14 @@ std::string serializePreset(const Preset& preset) {
         {"scene", sceneToJson(preset.scene)},
     };
     if (preset.family.base == Base::Conductor) json["base_kappa"] = preset.baseKappa;
+    if (!preset.kept.empty()) {
+        nlohmann::json kept = nlohmann::json::array();
+        for (const KeptMaterial& material : preset.kept)
+            kept.push_back({{"name", material.name},
+                            {"family", familyToJson(material.family)},
+                            {"genome", genomeToJson(material.genome)}});
+        json["kept"] = kept;
+    }
     return json.dump(2) + "\n";
 }
 

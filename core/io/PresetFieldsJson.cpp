@@ -1,6 +1,7 @@
 #include "io/PresetFieldsJson.h"
 
 #include "genome/FamilyRules.h"
+#include "io/GenomeJson.h"
 #include "io/JsonReader.h"
 
 namespace matevo {
@@ -17,6 +18,14 @@ MaterialFamily readFamily(JsonReader& parent, const std::string& key) {
     reader.warnAboutUnknownFields();
     if (auto problem = validateFamily(family)) parent.fail(key, *problem);
     return family;
+}
+
+Genome readFamilyGenome(JsonReader& parent, const std::string& key, const MaterialFamily& family) {
+    JsonReader reader = parent.object(key);
+    Genome genome = readGenome(reader);
+    reader.warnAboutUnknownFields();
+    if (auto problem = validateGenome(genome, family)) parent.fail(key, *problem);
+    return genome;
 }
 
 nlohmann::ordered_json familyToJson(const MaterialFamily& family) {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/GaSettings.h"
+#include "genome/Genome.h"
 #include "genome/MaterialFamily.h"
 #include "scene/SceneSettings.h"
 
@@ -19,6 +20,8 @@ class JsonReader;
 // Reads `key` of `parent` as a family and checks it (Table 2 textures only the rough layer).
 MaterialFamily readFamily(JsonReader& parent, const std::string& key);
 nlohmann::ordered_json familyToJson(const MaterialFamily& family);
+// The genome under `key`, which must be a member of `family` (Table 2).
+Genome readFamilyGenome(JsonReader& parent, const std::string& key, const MaterialFamily& family);
 
 // "base_kappa" of `parent`: required and positive for a conductor base; a dielectric has none
 // (absent or zeros).

@@ -29,9 +29,6 @@
 
 namespace matevo {
 
-// Subsamples per pixel side (2 x 2 per pixel).
-constexpr int kSubsamplesPerAxis = 2;
-
 // The scene's picture for any surface model (the glTF BRDF of core/export, for one): the same
 // camera, subsamples, coverage and threads, with `radiance(normal, toViewer)` giving the light
 // that leaves a sphere point towards the camera (world space, unit vectors).
