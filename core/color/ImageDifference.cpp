@@ -9,6 +9,7 @@
 #include "color/detail/ColorFormulas.h"
 #include "color/detail/FastFloatMath.h"
 #include "color/detail/ForEachChunk.h"
+#include "color/detail/VectorisedKernel.h"
 
 namespace matevo {
 namespace {
@@ -36,13 +37,7 @@ struct ChunkSummary {
     std::vector<std::uint32_t> histogram = std::vector<std::uint32_t>(kBucketCount, 0);
 };
 
-// Float math through the shared formulas: flattened, this loop has no calls and no branches, so
-// the compiler vectorises it. Clang (the fuzz build) cannot combine flatten with target_clones.
-#if defined(__clang__)
-#define MATEVO_VECTORISED_KERNEL [[gnu::target_clones("avx512f", "avx2", "default")]]
-#else
-#define MATEVO_VECTORISED_KERNEL [[gnu::flatten, gnu::target_clones("avx512f", "avx2", "default")]]
-#endif
+// Float math through the shared formulas (see VectorisedKernel.h).
 MATEVO_VECTORISED_KERNEL void deltaERange(
     const float* rgbaA, const float* rgbaB, float* deltaE, std::size_t count) {
     using formulas::FastFloatMath;
