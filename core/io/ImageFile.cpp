@@ -14,6 +14,7 @@
 #include "color/Srgb.h"
 #include "common/MemoryBudget.h"
 #include "io/AtomicFile.h"
+#include "io/ExrHeaderCheck.h"
 #include "io/InputFile.h"
 
 namespace matevo {
@@ -78,6 +79,9 @@ Result<ImageFileContents> decodeImageFile(std::string_view bytes,
     const FileKind kind = kindOf(file);
     if (kind == FileKind::kUnsupported)
         return fileError(file, "unsupported image type (expected .png, .exr or .hdr)");
+    if (kind == FileKind::kExr)
+        if (auto headers = checkExrHeaders(bytes); !headers)
+            return fileError(file, "not a readable OpenEXR image: " + headers.error().message);
     OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
 
     // PNG stores straight alpha; without this hint OpenImageIO would premultiply on read.
