@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "Messages.h"
 #include "PresetOption.h"
@@ -10,6 +11,7 @@
 #include "commands/Commands.h"
 #include "experiment/Experiment.h"
 #include "gpu/PopulationRendererFactory.h"
+#include "io/OutputFolder.h"
 #include "variants/VariantFiles.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
@@ -20,7 +22,7 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
     "                       [--size N] [--fitness-size N] [--max-evaluations N]\n"
-    "                       [--backend gpu|cpu] [--out DIR] [--json]\n\n"
+    "                       [--backend gpu|cpu] [--out DIR] [--force] [--json]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
     "whose renders lie LO to HI mean CIEDE2000 from the target's and at least D from each other.\n"
     "The paper's bands: 0,1 not perceptible; 1,2 close observation; 2,10 at a glance.\n"
@@ -33,7 +35,9 @@ constexpr const char* kHelp =
     "                       or cpu\n"
     "  --out DIR            write DIR/report.json, DIR/target.png, DIR/contact_sheet.png and per\n"
     "                       variant DIR/variants/variant_NNN.json (for render --genome), .png\n"
-    "                       and _heatmap.png\n"
+    "                       and _heatmap.png; DIR is written whole or left as it was\n"
+    "  --force              replace DIR when it holds an earlier matevo output (else a folder\n"
+    "                       with files is refused before the search starts)\n"
     "  --json               print the report as JSON\n"
     "Exit status 3 when the request cannot be met (a band the family cannot reach, or more\n"
     "variants than fit D apart): a one-line message says what was found, and it is still\n"
@@ -71,8 +75,18 @@ int runVariants(CommandLine& args) {
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const auto outDir = args.option("--out");
+    const bool replaceOutput = args.flag("--force");
     const bool asJson = args.flag("--json");
+    args.onlyWith("--force", "--out");
     args.finish();
+
+    // The output folder is refused before the search, not after it.
+    std::optional<OutputFolder> output;
+    if (outDir) {
+        auto claimed = OutputFolder::claim(*outDir, replaceOutput);
+        if (!claimed) throw UsageError("--out: " + claimed.error().message);
+        output.emplace(std::move(*claimed));
+    }
 
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);
@@ -111,9 +125,12 @@ int runVariants(CommandLine& args) {
     run.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const nlohmann::json report = variantReport(preset, run, *set);
-    if (outDir)
-        if (auto written = writeVariantFiles(*outDir, preset, *set, report); !written)
-            throw UsageError("--out: " + written.error().message);
+    if (output) {
+        if (auto written = writeVariantFiles(output->staging(), preset, *set, report); !written)
+            throw UsageError("--out: " + output->userFacing(written.error().message));
+        if (auto committed = output->commit(); !committed)
+            throw UsageError("--out: " + committed.error().message);
+    }
     if (asJson) std::printf("%s\n", report.dump(2).c_str());
     const std::string summary = variantSummary(run, *set);
     if (!fulfils(*set, request)) {

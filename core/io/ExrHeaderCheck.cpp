@@ -45,14 +45,12 @@ Status checkExrHeaders(std::string_view bytes) {
             if (!name) return name.error();
             auto type = readName(bytes, at, "attribute type");
             if (!type) return type.error();
-            if (bytes.size() - at < 4)
-                return Error{"header attribute '" + *name + "' has no size"};
+            if (bytes.size() - at < 4) return Error{"header attribute '" + *name + "' has no size"};
             const std::uint32_t size = readUint32(bytes, at);
             at += 4;
             if (size > bytes.size() - at)
                 return Error{"header attribute '" + *name + "' claims " + std::to_string(size) +
-                             " bytes, the file has " + std::to_string(bytes.size() - at) +
-                             " left"};
+                             " bytes, the file has " + std::to_string(bytes.size() - at) + " left"};
             at += size;
         }
         // A multi-part file lists its headers until an empty one.

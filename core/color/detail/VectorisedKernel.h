@@ -6,6 +6,5 @@
 #if defined(__clang__)
 #define MATEVO_VECTORISED_KERNEL [[gnu::target_clones("avx512f", "avx2", "default")]]
 #else
-#define MATEVO_VECTORISED_KERNEL \
-    [[gnu::flatten, gnu::target_clones("avx512f", "avx2", "default")]]
+#define MATEVO_VECTORISED_KERNEL [[gnu::flatten, gnu::target_clones("avx512f", "avx2", "default")]]
 #endif
