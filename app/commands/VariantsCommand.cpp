@@ -8,6 +8,7 @@
 #include "Messages.h"
 #include "PresetOption.h"
 #include "RenderBackend.h"
+#include "WorkEstimate.h"
 #include "commands/Commands.h"
 #include "experiment/Experiment.h"
 #include "gpu/PopulationRendererFactory.h"
@@ -80,13 +81,15 @@ int runVariants(CommandLine& args) {
     args.onlyWith("--force", "--out");
     args.finish();
 
-    // The output folder is refused before the search, not after it.
+    // An occupied output folder and work past the memory limit are refused before the search.
     std::optional<OutputFolder> output;
     if (outDir) {
         auto claimed = OutputFolder::claim(*outDir, replaceOutput);
         if (!claimed) throw UsageError("--out: " + claimed.error().message);
         output.emplace(std::move(*claimed));
     }
+    checkWorkEstimate(variantsEstimate(request.count, size, fitnessSize, settings.maxEvaluations,
+                                       settings.population));
 
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);
