@@ -8,8 +8,10 @@
 #include "Messages.h"
 #include "PresetOption.h"
 #include "RenderBackend.h"
+#include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
+#include "common/StopRequest.h"
 #include "experiment/Experiment.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/OutputFolder.h"
@@ -36,13 +38,14 @@ constexpr const char* kHelp =
     "                       or cpu\n"
     "  --out DIR            write DIR/report.json, DIR/target.png, DIR/contact_sheet.png and per\n"
     "                       variant DIR/variants/variant_NNN.json (for render --genome), .png\n"
-    "                       and _heatmap.png; DIR is written whole or left as it was\n"
+    "                       and _heatmap.png; the folder holds one whole run, never a mix\n"
     "  --force              replace DIR when it holds an earlier matevo output (else a folder\n"
     "                       with files is refused before the search starts)\n"
     "  --json               print the report as JSON\n"
     "Exit status 3 when the request cannot be met (a band the family cannot reach, or more\n"
     "variants than fit D apart): a one-line message says what was found, and it is still\n"
-    "written.\n";
+    "written. SIGINT or SIGTERM stops the search at the next generation: the set found so\n"
+    "far is chosen and written, marked partial (exit 130 or 143).\n";
 
 constexpr int kMaxCount = 1000;
 
@@ -81,7 +84,9 @@ int runVariants(CommandLine& args) {
     args.onlyWith("--force", "--out");
     args.finish();
 
-    // An occupied output folder and work past the memory limit are refused before the search.
+    installStopSignalHandlers();
+    // Refused before the search: a folder with other files, or one we cannot write beside,
+    // and work past the memory limit.
     std::optional<OutputFolder> output;
     if (outDir) {
         auto claimed = OutputFolder::claim(*outDir, replaceOutput);
@@ -108,7 +113,7 @@ int runVariants(CommandLine& args) {
         VariantSearch::start(preset.family, preset.target, request, settings, renderAt(fitnessSize));
     if (!search) throw std::runtime_error(search.error().message);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
-    while (!(*search)->finished()) {
+    while (!(*search)->finished() && !stopRequested()) {
         if (auto stepped = (*search)->step(); !stepped)
             throw std::runtime_error(stepped.error().message);
         if (showProgress) {
@@ -127,7 +132,12 @@ int runVariants(CommandLine& args) {
                    progress.closestDeltaE, 0.0};
     run.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const nlohmann::json report = variantReport(preset, run, *set);
+    nlohmann::json report = variantReport(preset, run, *set);
+    const int signal = stopRequested();
+    if (signal) {
+        report["partial"] = true;
+        report["stopped_by"] = signalName(signal);
+    }
     if (output) {
         if (auto written = writeVariantFiles(output->staging(), preset, *set, report); !written)
             throw UsageError("--out: " + output->userFacing(written.error().message));
@@ -136,6 +146,11 @@ int runVariants(CommandLine& args) {
     }
     if (asJson) std::printf("%s\n", report.dump(2).c_str());
     const std::string summary = variantSummary(run, *set);
+    if (signal) {
+        printMessage("stopped by " + signalName(signal) + ": " + summary +
+                     (outDir ? "; what was found is written, marked partial" : ""));
+        return stoppedExitStatus(signal);
+    }
     if (!fulfils(*set, request)) {
         printMessage("request not met: " + summary + (outDir ? "; what was found is written" : ""));
         return exitCode(ExitStatus::RequestNotMet);

@@ -7,6 +7,8 @@
 #include <thread>
 #include <vector>
 
+#include "common/WorkerThreads.h"
+
 namespace matevo {
 
 void parallelForChunks(int chunkCount, const std::function<void(int chunk)>& work,
@@ -31,7 +33,7 @@ void parallelForChunks(int chunkCount, const std::function<void(int chunk)>& wor
         }
     };
     const int threadCount =
-        std::clamp(int(std::thread::hardware_concurrency()), 1, std::max(chunkCount, 1));
+        std::clamp(int(workerThreadCount()), 1, std::max(chunkCount, 1));
     {
         std::vector<std::jthread> helpers;
         for (int i = 1; i < threadCount; ++i) helpers.emplace_back(runChunks, false);

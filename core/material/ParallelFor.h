@@ -1,5 +1,5 @@
 #pragma once
-// Fixed chunks on up to hardware_concurrency() threads. Each chunk writes only its own output,
+// Fixed chunks on up to workerThreadCount() threads (common/WorkerThreads.h). Each chunk writes only its own output,
 // so results never depend on the number of threads or on scheduling.
 #include <functional>
 

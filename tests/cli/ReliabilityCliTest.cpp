@@ -237,6 +237,24 @@ TEST_F(ReliabilityCli, SigtermStopsEvolveAtTheNextGenerationWithStatus143) {
     EXPECT_EQ(entriesIn(folder_), 1u);
 }
 
+TEST_F(ReliabilityCli, SigintStopsAVariantSearchAndWritesWhatWasFoundMarkedPartial) {
+    // A band no render reaches and a budget of hours: only the signal ends the search.
+    const CommandOutput run = interruptedRun(
+        "variants --count 3 --band 60,80 --max-evaluations 1000000 --fitness-size 8 --size 16 "
+        "--backend cpu --out \"" + (folder_ / "set").string() + "\"",
+        folder_ / "set", "INT", 1);
+    ASSERT_EQ(run.exitCode, 130) << run.err;
+    EXPECT_NE(run.err.find("stopped by SIGINT"), std::string::npos) << run.err;
+    std::ifstream reportFile(folder_ / "set" / "report.json");
+    const auto report = nlohmann::json::parse(reportFile);
+    EXPECT_TRUE(report["partial"].get<bool>());
+    EXPECT_EQ(report["stopped_by"], "SIGINT");
+    EXPECT_FALSE(report["met"].get<bool>());
+    EXPECT_LT(report["evaluations"].get<std::size_t>(), 1000000u);
+    EXPECT_TRUE(fs::is_regular_file(folder_ / "set" / "contact_sheet.png"));
+    EXPECT_EQ(entriesIn(folder_), 1u);  // no staging folder left
+}
+
 TEST_F(ReliabilityCli, TheEditorWithoutAVulkanDriverSaysSoAndExits2) {
     const CommandOutput run = runCommand(
         // -n: start the free-display search away from the editor test's, which may start

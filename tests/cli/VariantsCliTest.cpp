@@ -19,6 +19,7 @@
 namespace matevo {
 namespace {
 
+using testing::runCommand;
 using testing::runMatevo;
 namespace fs = std::filesystem;
 
@@ -144,6 +145,27 @@ TEST(VariantsCli, SameSeedSameReportOnEitherBackend) {
         EXPECT_EQ(first["variants"][i]["genome"], onCpu["variants"][i]["genome"]) << i;
 }
 
+TEST(VariantsCli, TheSetDoesNotDependOnTheThreadCount) {
+    const std::string arguments = "variants --json --preset " +
+                                  presetPath("validation_painted_metal") +
+                                  " --count 4 --band 2,5 --min-apart 2 --seed 2";
+    auto withEnvironment = [&](const std::string& environment, const std::string& backend) {
+        return runCommand(environment + " '" + std::string(MATEVO_BINARY_DIR) + "/matevo' " +
+                          arguments + " --backend " + backend);
+    };
+    // The CPU renderer and the ΔE00 loops on 1 and 3 threads; lavapipe on 1 and its default.
+    auto cpuOne = withEnvironment("MATEVO_THREADS=1", "cpu");
+    auto cpuThree = withEnvironment("MATEVO_THREADS=3", "cpu");
+    auto gpuOne = withEnvironment("MATEVO_THREADS=1 LP_NUM_THREADS=1", "gpu");
+    auto gpuDefault = withEnvironment("", "gpu");
+    for (const auto* run : {&cpuOne, &cpuThree, &gpuOne, &gpuDefault})
+        ASSERT_EQ(run->exitCode, 0) << run->err;
+    EXPECT_EQ(withoutWallTime(nlohmann::json::parse(cpuOne.out)),
+              withoutWallTime(nlohmann::json::parse(cpuThree.out)));
+    EXPECT_EQ(withoutWallTime(nlohmann::json::parse(gpuOne.out)),
+              withoutWallTime(nlohmann::json::parse(gpuDefault.out)));
+}
+
 TEST(VariantsCli, AnUnreachableBandExitsThreeAndStillWrites) {
     testing::ScratchFolder scratch("variants_cli_unreachable");
     auto result = runMatevo("variants --count 3 --band 60,80 --max-evaluations 150 --out '" +
@@ -171,6 +193,28 @@ TEST(VariantsCli, MoreVariantsThanFitApartExitThreeWithWhatWasFound) {
     EXPECT_LT(found, 40u);
     for (std::size_t i = 0; i < found; ++i)
         EXPECT_TRUE(fs::is_regular_file(scratch / report["variants"][i]["image"].get<std::string>()));
+}
+
+TEST(VariantsCli, TheOutputFolderHoldsOneWholeRunReplacedOnlyWithForce) {
+    testing::ScratchFolder scratch("variants_cli_force");
+    const fs::path out = scratch / "set";
+    const std::string run = "variants --band 2,5 --fitness-size 16 --size 32 --backend cpu "
+                            "--out '" + out.string() + "'";
+    ASSERT_EQ(runMatevo(run + " --count 3").exitCode, 0);
+    auto refused = runMatevo(run + " --count 2");
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
+    EXPECT_EQ(readJson(out / "report.json")["variants"].size(), 3u);  // untouched
+
+    auto replaced = runMatevo(run + " --count 2 --force");
+    ASSERT_EQ(replaced.exitCode, 0) << replaced.err;
+    // The smaller run leaves no variant of the larger one behind, and no staging folder.
+    EXPECT_EQ(readJson(out / "report.json")["variants"].size(), 2u);
+    EXPECT_FALSE(fs::exists(out / "variants" / "variant_002.png"));
+    EXPECT_EQ(std::distance(fs::directory_iterator(scratch.path()), {}), 1);
+
+    auto forceAlone = runMatevo("variants --count 2 --band 2,5 --force");
+    EXPECT_EQ(forceAlone.exitCode, 2) << forceAlone.err;
 }
 
 TEST(VariantsCli, BadUsageExitsTwoWithOneLine) {

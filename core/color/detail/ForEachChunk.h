@@ -1,5 +1,5 @@
 #pragma once
-// Fixed chunks of work on up to workerCount threads (0: all hardware threads), shared by the
+// Fixed chunks of work on up to workerCount threads (0: workerThreadCount()), shared by the
 // image comparisons. Chunks are claimed in any order, so work(chunk) must write only to its own
 // chunk's outputs; then results never depend on the thread count.
 #include <algorithm>
@@ -8,12 +8,14 @@
 #include <thread>
 #include <vector>
 
+#include "common/WorkerThreads.h"
+
 namespace matevo::detail {
 
 template <typename Work>
 void forEachChunk(std::size_t chunkCount, unsigned workerCount, const Work& work) {
     if (chunkCount == 0) return;
-    unsigned workers = workerCount != 0 ? workerCount : std::thread::hardware_concurrency();
+    unsigned workers = workerCount != 0 ? workerCount : workerThreadCount();
     workers = unsigned(std::clamp<std::size_t>(workers, 1, chunkCount));
     std::atomic<std::size_t> next{0};
     auto drain = [&] {
