@@ -1,7 +1,9 @@
 #include "io/ExrHeaderCheck.h"
 
+#include <array>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 namespace matevo {
 namespace {
@@ -9,6 +11,38 @@ namespace {
 constexpr unsigned char kMagic[4] = {0x76, 0x2f, 0x31, 0x01};
 constexpr std::uint32_t kMultiPartFlag = 0x1000;
 constexpr std::size_t kMaxNameBytes = 256;  // 255 characters with "long names", and the NUL
+constexpr std::size_t kChannelBytes = 16;   // pixel type, pLinear and reserved, two samplings
+
+// OpenEXR reads these types by their own size, whatever size the file declares, and then goes
+// on reading the next attribute from where it stopped; so must we.
+constexpr std::array<std::pair<const char*, std::size_t>, 26> kFixedSizeTypes{{
+    {"box2i", 16},
+    {"box2f", 16},
+    {"chromaticities", 32},
+    {"compression", 1},
+    {"envmap", 1},
+    {"lineOrder", 1},
+    {"deepImageState", 1},
+    {"double", 8},
+    {"float", 4},
+    {"int", 4},
+    {"rational", 8},
+    {"timecode", 8},
+    {"keycode", 28},
+    {"m33f", 36},
+    {"m33d", 72},
+    {"m44f", 64},
+    {"m44d", 128},
+    {"tiledesc", 9},
+    {"v2i", 8},
+    {"v2f", 8},
+    {"v2d", 16},
+    {"v3i", 12},
+    {"v3f", 12},
+    {"v3d", 24},
+    {"preview", 8},  // plus width x height x 4 bytes, checked below
+    {"chlist", 0},   // channels until an empty name, walked below
+}};
 
 std::uint32_t readUint32(std::string_view bytes, std::size_t at) {
     std::uint32_t value = 0;
@@ -25,6 +59,48 @@ Result<std::string> readName(std::string_view bytes, std::size_t& at, const char
     std::string name(bytes.substr(at, end - at));
     at = end + 1;
     return name;
+}
+
+Error overrun(const std::string& name, std::uint64_t claimed, std::size_t left) {
+    return Error{"header attribute '" + name + "' claims " + std::to_string(claimed) +
+                 " bytes, the file has " + std::to_string(left) + " left"};
+}
+
+// Advances `at` past the value of attribute `name` of `type` as OpenEXR reads it, refusing any
+// value (or any part OpenEXR allocates for) that reaches past the end of the file.
+Status skipValue(std::string_view bytes, std::size_t& at, const std::string& name,
+                 const std::string& type, std::uint32_t declared) {
+    const std::size_t left = bytes.size() - at;
+    for (const auto& [fixedType, size] : kFixedSizeTypes) {
+        if (type != fixedType) continue;
+        if (type == "chlist") {
+            while (true) {
+                auto channel = readName(bytes, at, "channel name");
+                if (!channel) return channel.error();
+                if (channel->empty()) return Ok{};
+                if (bytes.size() - at < kChannelBytes)
+                    return Error{"header channel '" + *channel + "' is cut short"};
+                at += kChannelBytes;
+            }
+        }
+        if (size > left) return overrun(name, size, left);
+        std::uint64_t total = size;
+        if (type == "preview")
+            total += std::uint64_t(readUint32(bytes, at)) * readUint32(bytes, at + 4) * 4;
+        if (total > left) return overrun(name, total, left);
+        at += std::size_t(total);
+        return Ok{};
+    }
+    if (declared > left) return overrun(name, declared, left);
+    if (type == "stringvector")  // each string's own length must fit in the declared size
+        for (std::size_t read = 0; read + 4 <= declared;) {
+            const std::uint32_t length = readUint32(bytes, at + read);
+            read += 4;
+            if (length > declared - read) return overrun(name, length, declared - read);
+            read += length;
+        }
+    at += declared;
+    return Ok{};
 }
 
 }  // namespace
@@ -46,12 +122,10 @@ Status checkExrHeaders(std::string_view bytes) {
             auto type = readName(bytes, at, "attribute type");
             if (!type) return type.error();
             if (bytes.size() - at < 4) return Error{"header attribute '" + *name + "' has no size"};
-            const std::uint32_t size = readUint32(bytes, at);
+            const std::uint32_t declared = readUint32(bytes, at);
             at += 4;
-            if (size > bytes.size() - at)
-                return Error{"header attribute '" + *name + "' claims " + std::to_string(size) +
-                             " bytes, the file has " + std::to_string(bytes.size() - at) + " left"};
-            at += size;
+            if (auto skipped = skipValue(bytes, at, *name, *type, declared); !skipped)
+                return skipped;
         }
         // A multi-part file lists its headers until an empty one.
         if (!multiPart) return Ok{};

@@ -2,8 +2,9 @@
 // A check of an OpenEXR file's headers before OpenEXR reads them. OpenEXR 3.1 allocates every
 // header attribute at the size the file claims before reading it, so a file of a few hundred
 // bytes can make it allocate and fill up to 2 GiB (found by tests/fuzz/FuzzImage.cpp). Here
-// every attribute must fit in the bytes that follow it, so what OpenEXR allocates for headers
-// is bounded by the file's size.
+// the attributes are walked as OpenEXR reads them (known types by their own size, whatever the
+// file declares) and each must fit in the bytes that follow it, so what OpenEXR allocates for
+// headers is bounded by the file's size.
 #include <string>
 #include <string_view>
 

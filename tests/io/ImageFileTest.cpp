@@ -207,6 +207,23 @@ TEST_F(ImageFileTest, ExrHeaderClaimingMoreThanTheFileIsRefusedBeforeDecoding) {
         << read.error().message;
 }
 
+// OpenEXR reads a channel list up to its empty name, whatever size the file declares, and reads
+// the next attribute from there: the check walks it the same way. This file (found by the
+// fuzzer) declares 73 bytes for 37 bytes of channels, and what OpenEXR then reads as the next
+// attribute claims far more than the file holds.
+TEST_F(ImageFileTest, ExrHeaderIsWalkedAsOpenExrReadsIt) {
+    std::ifstream in(
+        std::string(MATEVO_SOURCE_DIR) + "/tests/fuzz/corpus/image/exr-chlist-declared-size.bin",
+        std::ios::binary);
+    const std::string input((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(input.size(), 1u);
+    const auto file = folder_ / "found.exr";
+    auto read = decodeImageFile(std::string_view(input).substr(1), file);  // byte 0: the type
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), file);
+    EXPECT_NE(read.error().message.find("claims"), std::string::npos) << read.error().message;
+}
+
 TEST_F(ImageFileTest, WritesAreAtomicAndLeaveNoTemporaryFiles) {
     const auto file = folder_ / "a.png";
     ASSERT_TRUE(writeImage(randomImage(4, 4, 5), file).ok());
