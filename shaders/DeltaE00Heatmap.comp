@@ -1,8 +1,9 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
 // Per-pixel CIEDE2000 between one reference image and a batch of candidates, plus a heatmap
 // coloured through a 256-entry lookup table. Mirrors core/color: linear sRGB clamped to [0,1]
 // -> XYZ (D65) -> L*a*b* (white Y = 1) -> CIEDE2000 (kL = kC = kH = 1). Only pixels covered in
-// both images (alpha > 0.5) are compared; the others get deltaE = -1 and a transparent heatmap.
+// both images (alpha >= 0.5, core/color/Coverage.h) are compared; the others get deltaE = -1 and a transparent heatmap.
 layout(local_size_x = 64) in;
 
 // The reference and the candidates may share one buffer (the renderer's): they are addressed
@@ -23,23 +24,7 @@ layout(push_constant) uniform Settings {
 
 const float kPi = 3.14159265358979;
 
-// CIE 15:2004 companding with the exact rationals (6/29)^3, (29/6)^2 / 3 and 4/29.
-float labF(float t) {
-    return t > 216.0 / 24389.0 ? pow(t, 1.0 / 3.0) : (841.0 / 108.0) * t + 4.0 / 29.0;
-}
-
-vec3 linearSrgbToLab(vec3 rgb) {
-    rgb = clamp(rgb, 0.0, 1.0);
-    // sRGB primaries and the D65 white (0.3127, 0.3290), scaled so that RGB (1,1,1) has Y = 1;
-    // the constructor takes columns, so each line here is one column of the matrix.
-    const mat3 toXyz = mat3(0.41239079926595951, 0.21263900587151036, 0.019330818715591849,
-                            0.35758433938387796, 0.71516867876775592, 0.11919477979462599,
-                            0.18048078840183429, 0.072192315360733714, 0.95053215224966059);
-    const vec3 white = vec3(0.9504559270516717, 1.0, 1.0890577507598784);
-    vec3 ratio = (toXyz * rgb) / white;
-    vec3 f = vec3(labF(ratio.x), labF(ratio.y), labF(ratio.z));
-    return vec3(116.0 * f.y - 16.0, 500.0 * (f.x - f.y), 200.0 * (f.y - f.z));
-}
+#include "LinearSrgbToLab.glsl"
 
 // Hue angle in degrees in [0, 360); 0 for a neutral colour, as in Sharma et al. (2005).
 float hueDegrees(float b, float aPrime) {
@@ -48,10 +33,16 @@ float hueDegrees(float b, float aPrime) {
     return h < 0.0 ? h + 360.0 : h;
 }
 
+// x^7 by multiplication: pow() on lavapipe costs a log and an exp per lane.
+float seventhPower(float x) {
+    float square = x * x;
+    return square * square * square * x;
+}
+
 float ciede2000(vec3 lab1, vec3 lab2) {
     float c1 = length(lab1.yz);
     float c2 = length(lab2.yz);
-    float cMean7 = pow(0.5 * (c1 + c2), 7.0);
+    float cMean7 = seventhPower(0.5 * (c1 + c2));
     float g = 0.5 * (1.0 - sqrt(cMean7 / (cMean7 + 6103515625.0)));  // 25^7
     float a1 = (1.0 + g) * lab1.y;
     float a2 = (1.0 + g) * lab2.y;
@@ -79,8 +70,9 @@ float ciede2000(vec3 lab1, vec3 lab2) {
     }
     float t = 1.0 - 0.17 * cos(radians(hMean - 30.0)) + 0.24 * cos(radians(2.0 * hMean))
             + 0.32 * cos(radians(3.0 * hMean + 6.0)) - 0.20 * cos(radians(4.0 * hMean - 63.0));
-    float dTheta = 30.0 * exp(-pow((hMean - 275.0) / 25.0, 2.0));
-    float cMeanP7 = pow(cMean, 7.0);
+    float hueOffset = (hMean - 275.0) / 25.0;
+    float dTheta = 30.0 * exp(-hueOffset * hueOffset);
+    float cMeanP7 = seventhPower(cMean);
     float rC = 2.0 * sqrt(cMeanP7 / (cMeanP7 + 6103515625.0));
     float lShift = (lMean - 50.0) * (lMean - 50.0);
     float sL = 1.0 + 0.015 * lShift / sqrt(20.0 + lShift);
@@ -100,7 +92,7 @@ void main() {
     vec4 reference = referencePixels[settings.referenceImage * settings.pixelCount + pixel];
     uint candidateImage = settings.firstCandidate + gl_GlobalInvocationID.y;
     vec4 candidate = candidatePixels[candidateImage * settings.pixelCount + pixel];
-    if (reference.a <= 0.5 || candidate.a <= 0.5) {
+    if (reference.a < 0.5 || candidate.a < 0.5) {
         deltaE[index] = -1.0;
         heatmapPixels[index] = vec4(0.0);
         return;

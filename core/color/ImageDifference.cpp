@@ -6,9 +6,11 @@
 #include <cstdint>
 #include <string>
 
+#include "color/Coverage.h"
 #include "color/detail/ColorFormulas.h"
 #include "color/detail/FastFloatMath.h"
 #include "color/detail/ForEachChunk.h"
+#include "color/detail/VectorisedKernel.h"
 
 namespace matevo {
 namespace {
@@ -16,7 +18,6 @@ namespace {
 // Fixed chunk size: the partial sums, and so the mean, never depend on the thread count.
 constexpr std::size_t kChunkPixels = 16384;
 constexpr std::size_t kBlockPixels = 1024;
-constexpr float kCoverageThreshold = 0.5f;
 
 // Non-negative floats order like their bit patterns, so the top bits (exponent and three
 // mantissa bits: an eighth of an octave) sort ΔE00 values into ordered buckets. The p95 then
@@ -37,12 +38,7 @@ struct ChunkSummary {
 };
 
 // Float math through the shared formulas: flattened, this loop has no calls and no branches, so
-// the compiler vectorises it. Clang (the fuzz build) cannot combine flatten with target_clones.
-#if defined(__clang__)
-#define MATEVO_VECTORISED_KERNEL [[gnu::target_clones("avx512f", "avx2", "default")]]
-#else
-#define MATEVO_VECTORISED_KERNEL [[gnu::flatten, gnu::target_clones("avx512f", "avx2", "default")]]
-#endif
+// the compiler vectorises it.
 MATEVO_VECTORISED_KERNEL void deltaERange(
     const float* rgbaA, const float* rgbaB, float* deltaE, std::size_t count) {
     using formulas::FastFloatMath;
@@ -72,7 +68,7 @@ ChunkSummary compareChunk(const Image& a, const Image& b, bool useAlpha, std::si
         deltaERange(rgbaA + 4 * block, rgbaB + 4 * block, deltaE + block, blockEnd - block);
         for (std::size_t i = block; i < blockEnd; ++i) {
             const bool bothCover =
-                (rgbaA[4 * i + 3] > kCoverageThreshold) & (rgbaB[4 * i + 3] > kCoverageThreshold);
+                isCovered(rgbaA[4 * i + 3]) & isCovered(rgbaB[4 * i + 3]);
             const bool inBoth = !useAlpha || bothCover;
             // Branch-free: coverage along a sphere's rim is hard to predict. Adding 0 for an
             // uncovered pixel leaves every sum as it was.
