@@ -5,8 +5,8 @@
 
 #include "MaterialOption.h"
 #include "RenderBackend.h"
+#include "WorkEstimate.h"
 #include "commands/Commands.h"
-#include "common/MemoryBudget.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/ImageFile.h"
 #include "scene/LightingChoice.h"
@@ -44,12 +44,7 @@ int runRender(CommandLine& args) {
     args.finish();
     const MaterialFile material = genomeFile ? source.load(*genomeFile) : source.presetMaterial();
     const int imageSize = int(size.value_or(material.scene.imageSize));
-    // The render, its read-back and the encoded file: about three RGBA float images.
-    const std::uint64_t bytes = std::uint64_t(imageSize) * std::uint64_t(imageSize) * 16 * 3;
-    if (auto fits = checkMemoryEstimate(bytes,
-                                        "--size " + std::to_string(imageSize));
-        !fits)
-        throw UsageError(fits.error().message);
+    checkWorkEstimate(renderEstimate(imageSize));
     auto textures = loadSceneTextures(material, genomeFile.value_or(material.name));
     if (!textures) throw UsageError(textures.error().message);
     SceneSettings scene = material.scene;

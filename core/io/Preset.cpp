@@ -98,6 +98,13 @@ std::string serializePreset(const Preset& preset) {
     return json.dump(2) + "\n";
 }
 
+std::vector<Genome> keptGenomesOfFamily(const Preset& preset) {
+    std::vector<Genome> genomes;
+    for (const KeptMaterial& kept : preset.kept)
+        if (kept.family == preset.family) genomes.push_back(kept.genome);
+    return genomes;
+}
+
 Status savePreset(const Preset& preset, const std::filesystem::path& file) {
     // A save killed earlier (kill -9, power loss) may have left its temporary file here.
     removeStaleTemporaryFiles(file.has_parent_path() ? file.parent_path() : ".");
