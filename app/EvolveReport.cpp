@@ -2,28 +2,24 @@
 
 #include "genome/Genome.h"
 #include "io/GenomeJson.h"
+#include "io/MaterialFile.h"
+#include "io/PresetFieldsJson.h"
 
 namespace matevo::cli {
 
 namespace {
 
 nlohmann::json configJson(const Preset& preset) {
-    const GaSettings& ga = preset.ga;
-    return {{"preset", preset.name},
-            {"family", describe(preset.family)},
-            {"population", ga.population},
-            {"generations", ga.generations},
-            {"metric", toString(ga.metric)},
-            {"weights", ga.weights},
-            {"normalize_by_range", ga.normalizeByRange},
-            {"elitism", ga.elitism},
-            {"seed", ga.seed}};
+    nlohmann::json config = gaSettingsToJson(preset.ga);
+    config["preset"] = preset.name;
+    config["family"] = describe(preset.family);
+    return config;
 }
 
 }  // namespace
 
-nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga,
-                            const std::vector<Individual>& ranked) {
+nlohmann::json evolveReport(const Preset& preset, const std::filesystem::path& presetFile,
+                            const GeneticAlgorithm& ga, const std::vector<Individual>& ranked) {
     nlohmann::json generations = nlohmann::json::array();
     for (const auto& stats : ga.history())
         generations.push_back({{"generation", stats.generation},
@@ -35,11 +31,15 @@ nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga,
     for (const auto& individual : ranked)
         population.push_back(
             {{"genome", genomeToJson(individual.genome)}, {"fitness", individual.fitness}});
-    return {{"target", genomeToJson(preset.target)},
-            {"config", configJson(preset)},
-            {"generations", std::move(generations)},
-            {"population", population},
-            {"best", population.empty() ? nlohmann::json() : population.front()}};
+    nlohmann::json report = {{"target", genomeToJson(preset.target)},
+                             {"config", configJson(preset)},
+                             {"generations", std::move(generations)},
+                             {"population", population},
+                             {"best", population.empty() ? nlohmann::json() : population.front()}};
+    if (!ranked.empty())
+        report["best_material"] = materialToJson(
+            materialFromPreset(preset, presetFile, ranked.front().genome, preset.name + " best"));
+    return report;
 }
 
 void addImageStatistics(nlohmann::json& report, const std::vector<CandidateImageStats>& stats) {

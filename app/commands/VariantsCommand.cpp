@@ -148,7 +148,10 @@ int runVariants(CommandLine& args) {
     }
     if (output) {
         if (auto written =
-                writeVariantFiles(output->staging(), preset, *set, report, *heatmapMetric);
+                writeVariantFiles(
+                output->staging(),
+                materialFromPreset(preset, choice.file, preset.target, preset.name), *set,
+                report, *heatmapMetric);
             !written)
             throw UsageError("--out: " + output->userFacing(written.error().message));
         if (auto committed = output->commit(); !committed)
