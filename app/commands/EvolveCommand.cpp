@@ -170,11 +170,7 @@ int runEvolve(CommandLine& args) {
     installStopSignalHandlers();
     // Everything that can be refused is refused before the work starts.
     std::optional<OutputFolder> output;
-    if (outDir) {
-        auto claimed = OutputFolder::claim(*outDir, replaceOutput);
-        if (!claimed) throw UsageError("--out: " + claimed.error().message);
-        output.emplace(std::move(*claimed));
-    }
+    if (outDir) output.emplace(claimOutputFolder(*outDir, replaceOutput));
     checkWorkEstimate(evolveEstimate(choice.preset.ga.population, choice.preset.ga.generations,
                                      outDir ? imageSize : 0));
 

@@ -96,11 +96,7 @@ int runVariants(CommandLine& args) {
     // Refused before the search: a folder with other files, or one we cannot write beside,
     // and work past the memory limit.
     std::optional<OutputFolder> output;
-    if (outDir) {
-        auto claimed = OutputFolder::claim(*outDir, replaceOutput);
-        if (!claimed) throw UsageError("--out: " + claimed.error().message);
-        output.emplace(std::move(*claimed));
-    }
+    if (outDir) output.emplace(claimOutputFolder(*outDir, replaceOutput));
     checkWorkEstimate(variantsEstimate(request.count, size, fitnessSize, settings.maxEvaluations,
                                        settings.population));
 
