@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Runs the examples of docs/batch.md with the real matevo, as a user would paste them.
 
-Usage: run_batch_examples.py DOCS/batch.md MATEVO WORK_FOLDER
+Usage: run_batch_examples.py PAGE MATEVO WORK_FOLDER  (PAGE: the batch page in docs)
 
 Each fenced block after a line `<!-- example: NAME -->` is run in WORK_FOLDER/NAME with `matevo`
 on the PATH. That `matevo` is a small wrapper around the built binary which adds small image
