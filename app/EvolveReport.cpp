@@ -2,6 +2,7 @@
 
 #include "genome/Genome.h"
 #include "io/GenomeJson.h"
+#include "material/MaterialInstance.h"
 
 namespace matevo::cli {
 
@@ -17,7 +18,8 @@ nlohmann::json configJson(const Preset& preset) {
             {"weights", ga.weights},
             {"normalize_by_range", ga.normalizeByRange},
             {"elitism", ga.elitism},
-            {"seed", ga.seed}};
+            {"seed", ga.seed},
+            {"hue_variety", ga.kappaGenes == KappaGenes::On}};
 }
 
 }  // namespace
@@ -32,9 +34,14 @@ nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga,
                                {"worst", stats.worst},
                                {"diversity", stats.diversity}});
     nlohmann::json population = nlohmann::json::array();
-    for (const auto& individual : ranked)
+    for (const auto& individual : ranked) {
+        const MaterialInstance material =
+            materialOf(individual.genome, preset.family, preset.baseKappa);
         population.push_back(
-            {{"genome", genomeToJson(individual.genome)}, {"fitness", individual.fitness}});
+            {{"genome", genomeToJson(material.genome)}, {"fitness", individual.fitness}});
+        // Hue variety: the individual's own kappa.
+        if (individual.genome.carriesKappa()) population.back()["base_kappa"] = material.baseKappa;
+    }
     return {{"target", genomeToJson(preset.target)},
             {"config", configJson(preset)},
             {"generations", std::move(generations)},
@@ -65,7 +72,9 @@ void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga,
                      stats.mean, stats.worst, stats.diversity);
     if (ranked.empty()) return;
     std::fprintf(out, "best (fitness %.6f):", ranked.front().fitness);
-    for (std::size_t i = 0; i < kChromosomeCount; ++i)
+    const std::size_t shown =
+        ranked.front().genome.carriesKappa() ? kChromosomeCount : kPaperChromosomeCount;
+    for (std::size_t i = 0; i < shown; ++i)
         std::fprintf(out, " %s=%.4g", std::string(chromosomeName(i)).c_str(),
                      ranked.front().genome[i]);
     std::fputc('\n', out);

@@ -27,9 +27,9 @@ void drawMetric(DistanceMetric& metric) {
 }
 
 // Two columns with the name inside each slider: all twelve fit beside the other controls.
-void drawWeights(std::array<double, kChromosomeCount>& weights) {
+void drawWeights(std::array<double, kPaperChromosomeCount>& weights) {
     if (!ImGui::BeginTable("weights", 2)) return;
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) {
         ImGui::TableNextColumn();
         ImGui::SetNextItemWidth(-1.0f);
         float weight = float(weights[i]);

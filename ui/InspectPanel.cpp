@@ -21,7 +21,11 @@ void drawChromosomeTable(const Genome& target, const Genome& candidate) {
     ImGui::TableSetupColumn("this");
     ImGui::TableSetupColumn("Δ");
     ImGui::TableHeadersRow();
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+    // The kappa genes only when hue variety is in use.
+    const std::size_t shown = target.carriesKappa() || candidate.carriesKappa()
+                                  ? kChromosomeCount
+                                  : kPaperChromosomeCount;
+    for (std::size_t i = 0; i < shown; ++i) {
         const double difference = candidate[i] - target[i];
         ImGui::TableNextRow();
         ImGui::TableNextColumn();

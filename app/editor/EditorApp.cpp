@@ -408,6 +408,7 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
     request.band = {double(view.low), double(view.high)};
     request.minApart = double(view.minApart);
     request.seed = std::uint64_t(view.seed);
+    if (view.hueVariety) request.kappaGenes = KappaGenes::On;
     if (actions.run) {
         discardedVariants_.clear();
         if (variantsWorker_->start({state.preset, state.presetPath, request})) view.running = true;

@@ -48,6 +48,9 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::WaitVariants:
             return waitFor(settled.variants, action, "wait-variants: the variant search",
                            effects);
+        case Kind::VariantsHue:
+            state.variants.hueVariety = action.text == "on";
+            return true;
         case Kind::Variants:
             state.variants.open = true;
             state.variants.count = int(std::clamp<long long>(action.first, 1, 48));

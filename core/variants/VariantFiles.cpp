@@ -68,6 +68,8 @@ nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const 
     nlohmann::json variants = nlohmann::json::array();
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         const Variant& variant = set.variants[i];
+        const MaterialInstance material =
+            materialOf(variant.genome, preset.family, preset.baseKappa);
         variants.push_back({{"index", i},
                             {"file", "variants/" + variantStem(i) + ".json"},
                             {"image", "variants/" + variantStem(i) + ".png"},
@@ -75,7 +77,8 @@ nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const 
                             {"de00_to_target", variant.deltaEToTarget},
                             {"de00_to_nearest_sibling", nearest[i]},
                             {"kept", variant.kept},
-                            {"genome", genomeToJson(variant.genome)}});
+                            {"genome", genomeToJson(material.genome)}});
+        if (variant.genome.carriesKappa()) variants.back()["base_kappa"] = material.baseKappa;
     }
     const VariantRequest& request = run.request;
     const bool met = fulfils(set, request);
@@ -87,6 +90,7 @@ nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const 
               {"band", {request.band.low, request.band.high}},
               {"min_apart", request.minApart},
               {"seed", request.seed},
+              {"hue_variety", request.kappaGenes == KappaGenes::On},
               {"size", run.size},
               {"fitness_size", run.fitnessSize}}},
             {"met", met},
@@ -158,9 +162,11 @@ Status writeVariantFiles(const std::filesystem::path& dir, const Preset& preset,
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         const Variant& variant = set.variants[i];
         const std::string stem = variantStem(i);
-        const nlohmann::json material =
-            materialToJson(variant.genome, preset.family, preset.baseKappa);
-        if (auto written = writeFileAtomically(folder / (stem + ".json"), material.dump(2) + "\n");
+        const MaterialInstance material =
+            materialOf(variant.genome, preset.family, preset.baseKappa);
+        const nlohmann::json json =
+            materialToJson(material.genome, material.family, material.baseKappa);
+        if (auto written = writeFileAtomically(folder / (stem + ".json"), json.dump(2) + "\n");
             !written)
             return written;
         if (auto written = writeImage(variant.image, folder / (stem + ".png")); !written)
