@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "Suggestion.h"
+#include "io/ImageFile.h"
 
 namespace matevo::cli {
 
@@ -149,8 +150,7 @@ DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what) {
 std::string imageOutputPath(CommandLine& args) {
     const auto out = args.option("--out");
     if (!out) throw UsageError("--out FILE.png|FILE.exr is required");
-    const std::string extension = std::filesystem::path(*out).extension().string();
-    if (extension != ".png" && extension != ".exr")
+    if (!isWritableImageType(*out))
         throw UsageError("--out: " + *out + ": the extension must be .png or .exr");
     return *out;
 }

@@ -7,6 +7,7 @@
 #include "CommandLine.h"
 #include "common/StopRequest.h"
 #include "gpu/PopulationRendererFactory.h"
+#include "color/Colormap.h"
 #include "io/ImageFile.h"
 #include "scene/SceneTextures.h"
 
@@ -19,10 +20,10 @@ void writeOrThrow(const Image& image, const std::filesystem::path& file) {
     if (!status) throw UsageError(status.error().message);
 }
 
-std::string rankedName(const char* prefix, std::size_t rank) {
+std::string rankedName(const char* prefix, std::size_t rank, const std::string& extension) {
     char name[64];
-    std::snprintf(name, sizeof name, "%s_%03zu.png", prefix, rank);
-    return name;
+    std::snprintf(name, sizeof name, "%s_%03zu", prefix, rank);
+    return name + extension;
 }
 
 }  // namespace
@@ -37,8 +38,12 @@ std::uint64_t evolveImagesMemoryEstimate(int size) {
 
 std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
                                            const std::vector<Individual>& ranked, int size,
-                                           RenderBackend backend,
+                                           RenderBackend backend, const std::string& extension,
                                            const std::filesystem::path& outDir) {
+    // The images as the files will hold them: PNG rounds colour and alpha to 8 bits.
+    const auto asStored = [png = extension == ".png"](const Image& image) {
+        return png ? quantizeAsPng(image) : image;
+    };
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
@@ -54,6 +59,7 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
     // One renderer for every batch: it keeps the target's render between them.
     auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
     std::vector<DeltaEStats> stats;
+    Image storedTarget;
     for (std::size_t first = 0; first < ranked.size() && !stopRequested();
          first += kEvolveImageBatch) {
         const std::size_t count = std::min<std::size_t>(kEvolveImageBatch, ranked.size() - first);
@@ -62,13 +68,21 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
             candidates.push_back(materialOf(ranked[i].genome, preset.family, preset.baseKappa));
         auto evaluation = renderer->evaluate(target, candidates, preset.scene, size);
         if (!evaluation) throw std::runtime_error(evaluation.error().message);
-        if (first == 0) writeOrThrow(evaluation->target, outDir / "target.png");
+        if (first == 0) {
+            writeOrThrow(evaluation->target, outDir / ("target" + extension));
+            storedTarget = asStored(evaluation->target);
+        }
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t rank = first + i;
             writeOrThrow(evaluation->candidates[i],
-                         outDir / "candidates" / rankedName("candidate", rank));
-            writeOrThrow(evaluation->heatmaps[i], outDir / "heatmaps" / rankedName("heatmap", rank));
-            stats.push_back(evaluation->deltaE[i].stats);
+                         outDir / "candidates" / rankedName("candidate", rank, extension));
+            // Measured again on what was written, as `matevo compare` measures it; the heatmap
+            // is then the one `compare --heatmap` draws.
+            auto map = compareImages(storedTarget, asStored(evaluation->candidates[i]));
+            if (!map) throw std::runtime_error(map.error().message);
+            writeOrThrow(heatmapImage(*map, HeatmapSettings{}),
+                         outDir / "heatmaps" / rankedName("heatmap", rank, ".png"));
+            stats.push_back(map->stats);
         }
     }
     return stats;

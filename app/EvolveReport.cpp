@@ -55,6 +55,7 @@ void addImageStatistics(nlohmann::json& report, const std::vector<DeltaEStats>& 
         population[rank]["mean_de00"] = stats[rank].mean;
         population[rank]["max_de00"] = stats[rank].max;
         population[rank]["p95_de00"] = stats[rank].p95;
+        population[rank]["pixels"] = stats[rank].pixels;
     }
     if (!population.empty()) report["best"] = population.front();
 }

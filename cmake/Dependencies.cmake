@@ -8,6 +8,7 @@ if(MATEVO_BUILD_TESTS)
     find_package(GTest REQUIRED)
 endif()
 find_package(TinyGLTF REQUIRED)
+find_package(PNG REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 

@@ -44,6 +44,16 @@ expect_file evolved/result.json evolve
 expect_file painted.png render
 "$matevo" compare evolved/target.png evolved/candidates/candidate_000.png --json >/dev/null \
     || fail "compare"
+# Formats other than PNG come through the OpenImageIO module, installed in PREFIX/lib/matevo.
+"$matevo" render --preset validation_painted_metal --size 24 --backend cpu --out painted.EXR \
+    || fail "render to OpenEXR"
+"$matevo" compare painted.png painted.EXR --fail-above 1 >/dev/null \
+    || fail "compare a PNG with an OpenEXR file"
+"$matevo" variants --count 2 --band 1,4 --size 24 --fitness-size 16 --max-evaluations 200 \
+    --backend cpu --out variants >/dev/null || fail "variants"
+expect_file variants/report.json variants
+"$matevo" scene --variants variants --size 48x32 --out scene.png >/dev/null || fail "scene"
+expect_file scene.png scene
 "$matevo" experiment --runs 2 --population 4 --generations 1 --metric euclidean --size 16 \
     --backend cpu --out experiment >/dev/null 2>&1 || fail "experiment"
 expect_file experiment/results.csv experiment
@@ -63,6 +73,10 @@ message=$("$work/lone/bin/matevo" render --out lone.png 2>&1 >/dev/null) || stat
 [[ $status -eq 2 ]] || fail "a lone executable exited $status, not 2"
 [[ "$message" == "matevo render: cannot find the 'presets' folder; looked in "*"$work/lone/bin/share/matevo/presets"* ]] \
     || fail "unexpected message: $message"
+status=0
+message=$("$work/lone/bin/matevo" compare painted.png painted.EXR 2>&1 >/dev/null) || status=$?
+[[ $status -eq 2 && "$message" == *"OpenImageIO module is not installed (looked in "*"$work/lone/lib/matevo/"* ]] \
+    || fail "a lone executable reading OpenEXR: exit $status, $message"
 MATEVO_DATA_DIR="$work/prefix/share/matevo" "$work/lone/bin/matevo" render --size 16 \
     --backend cpu --out lone.png || fail "MATEVO_DATA_DIR"
 expect_file lone.png "render with MATEVO_DATA_DIR"

@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
     build-essential cmake ninja-build pkg-config
     libvulkan-dev mesa-vulkan-drivers glslang-tools glslang-dev
-    libglfw3-dev libimgui-dev libglm-dev libopenimageio-dev nlohmann-json3-dev
+    libglfw3-dev libimgui-dev libglm-dev libopenimageio-dev libpng-dev nlohmann-json3-dev
     libtinygltf-dev
 )
 # GoogleTest, the validation layer every GPU test runs under, a virtual display and input for

@@ -2,7 +2,7 @@
 // Per-pixel CIEDE2000 between one reference image and a batch of candidates, plus a heatmap
 // coloured through a 256-entry lookup table. Mirrors core/color: linear sRGB clamped to [0,1]
 // -> XYZ (D65) -> L*a*b* (white Y = 1) -> CIEDE2000 (kL = kC = kH = 1). Only pixels covered in
-// both images (alpha > 0.5) are compared; the others get deltaE = -1 and a transparent heatmap.
+// both images (alpha >= 0.5, core/color/Coverage.h) are compared; the others get deltaE = -1 and a transparent heatmap.
 layout(local_size_x = 64) in;
 
 // The reference and the candidates may share one buffer (the renderer's): they are addressed
@@ -100,7 +100,7 @@ void main() {
     vec4 reference = referencePixels[settings.referenceImage * settings.pixelCount + pixel];
     uint candidateImage = settings.firstCandidate + gl_GlobalInvocationID.y;
     vec4 candidate = candidatePixels[candidateImage * settings.pixelCount + pixel];
-    if (reference.a <= 0.5 || candidate.a <= 0.5) {
+    if (reference.a < 0.5 || candidate.a < 0.5) {
         deltaE[index] = -1.0;
         heatmapPixels[index] = vec4(0.0);
         return;

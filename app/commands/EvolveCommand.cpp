@@ -30,7 +30,7 @@ constexpr const char* kHelp =
     "usage: matevo evolve [--preset P] [--population N] [--generations N]\n"
     "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
-    "                     [--size N] [--backend gpu|cpu] [--force]\n"
+    "                     [--size N] [--format png|exr] [--backend gpu|cpu] [--force]\n"
     "                     [--fitness genotype|image] [--band LO,HI] [--fitness-size N] [--hue]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
@@ -43,8 +43,11 @@ constexpr const char* kHelp =
     "  --out DIR      also write DIR/result.json (the same object), DIR/target.png and, best\n"
     "                 first, DIR/candidates/candidate_NNN.png and DIR/heatmaps/heatmap_NNN.png\n"
     "                 (per-pixel CIEDE2000 against the target, 0-10 through viridis); adds each\n"
-    "                 candidate's mean_de00 (and max, p95) to the JSON\n"
+    "                 candidate's mean_de00 (and max, p95, pixels) to the JSON, measured on the\n"
+    "                 written files: matevo compare on them finds the same figures\n"
     "  --size N       image side in pixels for --out (default: the preset's scene size)\n"
+    "  --format F     png (default: 8-bit sRGB) or exr (linear float, exactly as rendered) for\n"
+    "                 the target and candidates with --out; heatmaps are always PNG\n"
     "  --backend B    renderer for --out and image fitness: gpu (default; falls back to the\n"
     "                 CPU when no Vulkan device is usable) or cpu\n"
     "  --force        replace DIR when it holds an earlier matevo output (else a folder with\n"
@@ -107,6 +110,9 @@ int runEvolve(CommandLine& args) {
     const bool replaceOutput = args.flag("--force");
     const int imageSize = int(
         args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
+    const std::string format = args.option("--format").value_or("png");
+    if (format != "png" && format != "exr")
+        throw UsageError("--format: expected png or exr, got '" + format + "'");
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const std::string fitnessName = args.option("--fitness").value_or("genotype");
@@ -128,6 +134,7 @@ int runEvolve(CommandLine& args) {
     const int fitnessSize = int(fitnessSizeOption.value_or(64));
     // Images are rendered only for --out and image fitness.
     args.onlyWith("--size", "--out");
+    args.onlyWith("--format", "--out");
     if (!imageFitness) args.onlyWith("--backend", "--out");
     args.onlyWith("--force", "--out");
     args.finish();
@@ -185,7 +192,8 @@ int runEvolve(CommandLine& args) {
     if (output) {
         try {
             const auto stats =
-                writeEvolveImages(choice, ranked, imageSize, backend, output->staging());
+                writeEvolveImages(choice, ranked, imageSize, backend, "." + format,
+                                  output->staging());
             addImageStatistics(report, stats);
             report["candidates_written"] = stats.size();
         } catch (const UsageError& error) {

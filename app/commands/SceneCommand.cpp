@@ -11,6 +11,7 @@
 #include "gpu/GpuContext.h"
 #include "gpu/GpuSceneRenderer.h"
 #include "io/ImageFile.h"
+#include "io/ImageType.h"
 #include "io/VariantFolder.h"
 #include "material/FgdTableCache.h"
 #include "mesh/MeshFile.h"
@@ -114,7 +115,7 @@ int runScene(CommandLine& args) {
     if (!image) return failed(image.error());
 
     compositeOverEnvironment(*image, camera, textures->environment);
-    if (out.extension() == ".png") applyExposureAndToneMap(*image, exposure, *toneMap);
+    if (lowerCaseExtension(out) == ".png") applyExposureAndToneMap(*image, exposure, *toneMap);
     if (auto written = writeImage(*image, out); !written)
         throw UsageError("--out: " + written.error().message);
     std::printf("%zu instances of %s (%zu triangles each), %zu materials, %s lighting: %s\n",

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "color/Coverage.h"
 #include "color/ImageDifference.h"
 #include "color/detail/ForEachChunk.h"
 
@@ -15,7 +16,6 @@ namespace {
 // radius above and below) into band-local buffers, then along y: more rows per band repeat
 // less of the row pass, fewer keep the buffers in cache.
 constexpr int kBandRows = 64;
-constexpr float kCoverageThreshold = 0.5f;
 
 // One image in YyCxCz, a plane per channel, and the achromatic channel normalised to [0, 1]
 // for the feature detectors.
@@ -264,8 +264,8 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
     std::vector<float> pooledErrors;
     pooledErrors.reserve(pixelCount);
     for (std::size_t i = 0; i < pixelCount; ++i) {
-        const bool counts = !useAlpha || (reference.rgba[4 * i + 3] > kCoverageThreshold &&
-                                          test.rgba[4 * i + 3] > kCoverageThreshold);
+        const bool counts = !useAlpha || (isCovered(reference.rgba[4 * i + 3]) &&
+                                          isCovered(test.rgba[4 * i + 3]));
         map.pooled[i] = counts ? 1 : 0;
         if (counts) pooledErrors.push_back(map.error[i]);
     }

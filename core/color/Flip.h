@@ -7,7 +7,7 @@
 // Input: linear RGBA, composited over black (RGB × alpha, the picture on a black background)
 // and clamped to [0, 1]. The error is computed over the whole image — the filters see the
 // silhouette against the background — and pooled over the same pixels as ΔE00: those both
-// images cover (alpha > 0.5), or every pixel with useAlpha false.
+// images cover (alpha >= 0.5, color/Coverage.h), or every pixel with useAlpha false.
 #include <cstddef>
 #include <cstdint>
 #include <vector>

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "color/Coverage.h"
 #include "color/detail/ColorFormulas.h"
 #include "color/detail/FastFloatMath.h"
 #include "color/detail/ForEachChunk.h"
@@ -16,7 +17,6 @@ namespace {
 // Fixed chunk size: the partial sums, and so the mean, never depend on the thread count.
 constexpr std::size_t kChunkPixels = 16384;
 constexpr std::size_t kBlockPixels = 1024;
-constexpr float kCoverageThreshold = 0.5f;
 
 // Non-negative floats order like their bit patterns, so the top bits (exponent and three
 // mantissa bits: an eighth of an octave) sort ΔE00 values into ordered buckets. The p95 then
@@ -72,7 +72,7 @@ ChunkSummary compareChunk(const Image& a, const Image& b, bool useAlpha, std::si
         deltaERange(rgbaA + 4 * block, rgbaB + 4 * block, deltaE + block, blockEnd - block);
         for (std::size_t i = block; i < blockEnd; ++i) {
             const bool bothCover =
-                (rgbaA[4 * i + 3] > kCoverageThreshold) & (rgbaB[4 * i + 3] > kCoverageThreshold);
+                isCovered(rgbaA[4 * i + 3]) & isCovered(rgbaB[4 * i + 3]);
             const bool inBoth = !useAlpha || bothCover;
             // Branch-free: coverage along a sphere's rim is hard to predict. Adding 0 for an
             // uncovered pixel leaves every sum as it was.

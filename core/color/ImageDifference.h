@@ -1,6 +1,6 @@
 #pragma once
 // Per-pixel CIEDE2000 between two renders of the same size and its pooled statistics over the
-// pixels covered in both (alpha > 0.5), the paper's image-space error (§5).
+// pixels covered in both (alpha >= 0.5, color/Coverage.h), the paper's image-space error (§5).
 #include <cstddef>
 #include <cstdint>
 #include <vector>

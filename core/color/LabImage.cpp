@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <array>
 
+#include "color/Coverage.h"
 #include "color/detail/ColorFormulas.h"
 #include "color/detail/FastFloatMath.h"
 
 namespace matevo {
 namespace {
 
-constexpr float kCoverageThreshold = 0.5f;  // the rule of compareImages
 constexpr std::size_t kBlockPixels = 1024;
 
 // The same formulas and math policy as compareImages, so each pixel's value is the same. A map
@@ -45,7 +45,7 @@ LabImage toLabImage(const Image& image) {
         formulas::linearSrgbToXyz(rgba[0], rgba[1], rgba[2], xyz);
         formulas::xyzToLab<float, FastFloatMath>(xyz, lab.lightness[i], lab.greenRed[i],
                                                  lab.blueYellow[i]);
-        lab.covered[i] = rgba[3] > kCoverageThreshold ? 1 : 0;
+        lab.covered[i] = isCovered(rgba[3]) ? 1 : 0;
     }
     return lab;
 }

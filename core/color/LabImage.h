@@ -2,7 +2,7 @@
 // A render converted to CIE L*a*b* once, so that it can be compared with many others without
 // converting it again: a variant set compares every candidate with the target and with each
 // member of the set. The per-pixel ΔE00 and the pixel rule are those of compareImages (clamp to
-// [0, 1], pixels where both alphas > 0.5), so meanDeltaE00 equals compareImages(...).stats.mean
+// [0, 1], pixels where both alphas >= 0.5), so meanDeltaE00 equals compareImages(...).stats.mean
 // up to the order of summation.
 #include <cstdint>
 #include <vector>
@@ -18,7 +18,7 @@ struct LabImage {
     std::vector<float> lightness;
     std::vector<float> greenRed;
     std::vector<float> blueYellow;
-    std::vector<std::uint8_t> covered;  // alpha > 0.5
+    std::vector<std::uint8_t> covered;  // alpha >= 0.5
 
     std::size_t pixelCount() const { return covered.size(); }
 };

@@ -1,7 +1,7 @@
 #pragma once
 // The ΔE00 + heatmap compute pass (shaders/DeltaE00Heatmap.comp): one reference image against
 // a batch of candidates, all linear RGBA float buffers laid out like Image::rgba, one image
-// after another. Writes per-pixel ΔE00 (-1 where either alpha <= 0.5) and heatmap RGBA.
+// after another. Writes per-pixel ΔE00 (-1 where either alpha < 0.5) and heatmap RGBA.
 #include <array>
 #include <cstdint>
 #include <span>

@@ -1,7 +1,9 @@
 #pragma once
-// Images on disk through OpenImageIO. PNG files hold sRGB-encoded 8-bit RGBA; EXR files hold
-// linear float RGBA. In memory an Image is always linear with straight (unassociated) alpha, so
-// colour values are stored as they are and alpha is never multiplied in.
+// Images on disk: the one image reader and writer. PNG goes through libpng (io/PngCodec.h), every
+// other format through OpenImageIO, loaded only then (io/ImageLibrary.h). Integer samples (PNG,
+// JPEG, 8/16-bit TIFF) are sRGB-encoded; floating-point samples (OpenEXR, Radiance HDR) are
+// linear. In memory an Image is always linear with straight (unassociated) alpha, so colour
+// values are stored as they are and alpha is never multiplied in.
 #include <filesystem>
 #include <string_view>
 
@@ -17,8 +19,9 @@ struct ImageFileContents {
     bool hasAlpha = false;
 };
 
-// Reads .png, .exr and Radiance .hdr (linear; for environments). Errors are one line naming the
-// file: unsupported extension, unreadable, not an image, or an unsupported channel layout.
+// Reads any format OpenImageIO reads, chosen by the extension in any case (.png, .PNG, .exr,
+// .hdr, .jpg, .tif, ...). Errors are one line naming the file: unsupported extension,
+// unreadable, not an image, or an unsupported channel layout.
 // Grey files are expanded to RGB.
 // Files are read through readInputFile (regular files up to kMaxImageFileBytes); the decoded
 // size is checked against the memory limit (common/MemoryBudget.h) before it is allocated, and
@@ -28,6 +31,9 @@ Result<ImageFileContents> readImageFile(const std::filesystem::path& file);
 Result<ImageFileContents> decodeImageFile(std::string_view bytes,
                                           const std::filesystem::path& file);
 Result<Image> readImage(const std::filesystem::path& file);
+
+// Whether writeImage can write this file's type: .png or .exr, in any case.
+bool isWritableImageType(const std::filesystem::path& file);
 
 // Writes RGBA to .png (sRGB-encoded 8 bit, values clamped to [0, 1]) or .exr (32-bit float).
 // Atomic: written to a temporary file beside the target, then renamed over it.

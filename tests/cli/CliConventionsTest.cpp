@@ -17,13 +17,7 @@ namespace {
 using testing::CommandOutput;
 using testing::runCommand;
 using testing::runMatevo;
-
-std::string quoted(const std::filesystem::path& file) {
-    std::string text = "'";  // built by appending: GCC 12 warns falsely on "'" + std::string
-    text += file.string();
-    text += '\'';
-    return text;
-}
+using testing::shellQuoted;
 
 // Exit 2, nothing on stdout, exactly one line on stderr that is `expectedLine`.
 void expectUsageLine(const CommandOutput& run, const std::string& expectedLine) {
@@ -86,7 +80,7 @@ class PresetsByName : public ::testing::Test {
 protected:
     // A user preset folder of our own, so the user's real presets never leak into the test.
     std::string withUserFolder(const std::string& arguments) {
-        return "XDG_DATA_HOME=" + quoted(scratch_.path()) + " '" + MATEVO_BINARY_DIR +
+        return "XDG_DATA_HOME=" + shellQuoted(scratch_.path()) + " '" + MATEVO_BINARY_DIR +
                "/matevo' " + arguments;
     }
     testing::ScratchFolder scratch_{"matevo_presets"};
@@ -132,7 +126,7 @@ class FailAbove : public ::testing::Test {
 protected:
     std::string write(const Image& image, const std::string& name) {
         EXPECT_TRUE(writeImage(image, scratch_ / name).ok());
-        return quoted(scratch_ / name);
+        return shellQuoted(scratch_ / name);
     }
     testing::ScratchFolder scratch_{"matevo_fail_above"};
 };

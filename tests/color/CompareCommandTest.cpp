@@ -174,7 +174,7 @@ TEST_F(CompareCommandTest, BadInputExitsTwoWithOneLine) {
 TEST_F(CompareCommandTest, HelpDescribesEveryOption) {
     const auto run = runMatevo("compare --help");
     EXPECT_EQ(run.exitCode, 0);
-    for (const char* option : {"--heatmap", "--range", "--json", "p95", "alpha > 0.5", "--metric",
+    for (const char* option : {"--heatmap", "--range", "--json", "p95", "alpha >= 0.5", "--metric",
                                "--ppd", "mean_flip", "median_flip", "q1_flip", "q3_flip",
                                "max_flip", "magma"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;

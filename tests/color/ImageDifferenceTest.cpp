@@ -52,7 +52,7 @@ TEST(ImageDifference, EveryPixelMatchesTheDoubleReference) {
     EXPECT_NEAR(map->stats.max, max, 5e-4);
 }
 
-// Pixels where either alpha is at most 0.5 are left out of the map and every statistic, however
+// Pixels where either alpha is below 0.5 are left out of the map and every statistic, however
 // different they are.
 TEST(ImageDifference, MaskedPixelsAreExcluded) {
     Image a(4, 4), b(4, 4);
@@ -69,10 +69,10 @@ TEST(ImageDifference, MaskedPixelsAreExcluded) {
         b.rgba[4 * i + 1] = 0.0f;
     }
     a.rgba[4 * 0 + 3] = 0.0f;  // outside a's sphere
-    b.rgba[4 * 5 + 3] = 0.5f;  // exactly the threshold: not covered
+    b.rgba[4 * 5 + 3] = 0.49f;  // just below the threshold: not covered
     a.rgba[4 * 10 + 3] = 0.3f;
     b.rgba[4 * 15 + 3] = 0.0f;
-    b.rgba[4 * 3 + 3] = 0.51f;  // just covered
+    b.rgba[4 * 3 + 3] = 0.5f;  // exactly the threshold: a half-covered pixel counts
 
     auto map = compareImages(a, b);
     ASSERT_TRUE(map.ok());

@@ -34,9 +34,9 @@ TEST(LabImage, IdenticalImagesAndNoCommonCoverageGiveZero) {
 
 TEST(LabImage, CoverageFollowsTheAlphaRule) {
     Image image(2, 1);
-    image.rgba = {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.51f};
+    image.rgba = {0.5f, 0.5f, 0.5f, 0.49f, 0.5f, 0.5f, 0.5f, 0.5f};
     const LabImage lab = toLabImage(image);
-    EXPECT_EQ(lab.covered[0], 0);  // alpha must exceed 0.5
+    EXPECT_EQ(lab.covered[0], 0);  // alpha must be at least 0.5
     EXPECT_EQ(lab.covered[1], 1);
 }
 

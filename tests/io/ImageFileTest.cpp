@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "color/Srgb.h"
 #include "support/ScratchFolder.h"
@@ -95,14 +96,70 @@ void expectOneLineErrorNaming(const Error& error, const std::filesystem::path& f
     EXPECT_EQ(error.message.find('\n'), std::string::npos) << error.message;
 }
 
+// Writes a real file with OpenImageIO, an encoder independent of ours.
+template <typename Sample>
+void writeWithOpenImageIO(const std::filesystem::path& file, int width, int height, int channels,
+                          OIIO::TypeDesc type, const std::vector<Sample>& samples) {
+    auto output = OIIO::ImageOutput::create(file.string());
+    ASSERT_TRUE(output) << file;
+    OIIO::ImageSpec spec(width, height, channels, type);
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    ASSERT_TRUE(output->open(file.string(), spec)) << output->geterror();
+    ASSERT_TRUE(output->write_image(type, samples.data())) << output->geterror();
+    ASSERT_TRUE(output->close());
+}
+
+TEST_F(ImageFileTest, ReadsEveryFormatOpenImageIOReadsInAnyExtensionCase) {
+    // 8-bit TIFF: sRGB-encoded like PNG, exactly.
+    const std::vector<std::uint8_t> rgba8 = {255, 128, 0, 255, 10, 20, 30, 128};
+    writeWithOpenImageIO(folder_ / "a.TIF", 2, 1, 4, OIIO::TypeDesc::UINT8, rgba8);
+    auto tiff = readImageFile(folder_ / "a.TIF");
+    ASSERT_TRUE(tiff.ok()) << tiff.error().message;
+    EXPECT_TRUE(tiff->hasAlpha);
+    EXPECT_NEAR(tiff->image.pixel(0, 0)[1], srgbToLinear(128.0 / 255.0), 1e-6);
+    EXPECT_NEAR(tiff->image.pixel(1, 0)[2], srgbToLinear(30.0 / 255.0), 1e-6);
+    EXPECT_NEAR(tiff->image.pixel(1, 0)[3], 128.0 / 255.0, 1e-6);  // alpha is not encoded
+
+    // Float TIFF: linear, kept as it is.
+    const std::vector<float> linear = {0.25f, 2.5f, 0.0f, 0.125f, 0.5f, 1.0f};
+    writeWithOpenImageIO(folder_ / "b.tiff", 2, 1, 3, OIIO::TypeDesc::FLOAT, linear);
+    auto floats = readImageFile(folder_ / "b.tiff");
+    ASSERT_TRUE(floats.ok()) << floats.error().message;
+    EXPECT_FALSE(floats->hasAlpha);
+    EXPECT_EQ(floats->image.pixel(0, 0)[1], 2.5f);
+    EXPECT_EQ(floats->image.pixel(1, 0)[0], 0.125f);
+
+    // JPEG (lossy): a flat grey patch comes back within a few code values.
+    writeWithOpenImageIO(folder_ / "c.JPG", 8, 8, 3, OIIO::TypeDesc::UINT8,
+                         std::vector<std::uint8_t>(8 * 8 * 3, 100));
+    auto jpeg = readImageFile(folder_ / "c.JPG");
+    ASSERT_TRUE(jpeg.ok()) << jpeg.error().message;
+    EXPECT_NEAR(linearToSrgb(jpeg->image.pixel(3, 3)[0]) * 255.0, 100.0, 3.0);
+
+    // 16-bit grey + alpha PNG under an upper-case extension: libpng's path, all 16 bits.
+    const std::vector<std::uint16_t> greyAlpha16 = {65535, 65535, 30000, 0};
+    writeWithOpenImageIO(folder_ / "d.PNG", 2, 1, 2, OIIO::TypeDesc::UINT16, greyAlpha16);
+    auto png16 = readImageFile(folder_ / "d.PNG");
+    ASSERT_TRUE(png16.ok()) << png16.error().message;
+    EXPECT_TRUE(png16->hasAlpha);
+    EXPECT_FLOAT_EQ(png16->image.pixel(0, 0)[0], 1.0f);
+    EXPECT_NEAR(png16->image.pixel(1, 0)[2], srgbToLinear(30000.0 / 65535.0), 1e-6);
+    EXPECT_EQ(png16->image.pixel(1, 0)[3], 0.0f);
+}
+
 TEST_F(ImageFileTest, UnsupportedExtensionsAreRejected) {
-    const auto file = folder_ / "a.jpg";
-    auto written = writeImage(randomImage(2, 2, 3), file);
+    const auto jpeg = folder_ / "a.jpg";  // read, but never written
+    auto written = writeImage(randomImage(2, 2, 3), jpeg);
     ASSERT_FALSE(written.ok());
-    expectOneLineErrorNaming(written.error(), file);
-    auto read = readImage(file);
-    ASSERT_FALSE(read.ok());
-    expectOneLineErrorNaming(read.error(), file);
+    expectOneLineErrorNaming(written.error(), jpeg);
+
+    for (const char* name : {"notes.txt", "no_extension"}) {
+        const auto file = folder_ / name;
+        std::ofstream(file) << "not an image\n";
+        auto read = readImage(file);
+        ASSERT_FALSE(read.ok());
+        expectOneLineErrorNaming(read.error(), file);
+    }
 }
 
 TEST_F(ImageFileTest, MissingAndNonImageFilesGiveOneLineErrors) {

@@ -43,4 +43,11 @@ CommandOutput runMatevo(const std::string& arguments) {
     return runCommand(std::string("'") + MATEVO_BINARY_DIR + "/matevo' " + arguments);
 }
 
+std::string shellQuoted(const std::filesystem::path& file) {
+    std::string text = "'";  // built by appending: GCC 12 warns falsely on "'" + std::string
+    text += file.string();
+    text += '\'';
+    return text;
+}
+
 }  // namespace matevo::testing
