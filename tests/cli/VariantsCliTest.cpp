@@ -205,7 +205,8 @@ TEST(VariantsCli, HueVarietyGivesEachVariantItsOwnKappaInsideTheBounds) {
     const fs::path dielectric = scratch / "glass.json";
     std::ofstream(dielectric) << R"({"name": "glass", "family": {"coat": "clearcoat",
         "base": "dielectric", "medium": false, "textured_layer": "none"},
-        "target": {"eta1": 1.5, "eta2": 2.0, "alpha1": 0.005, "alpha2": 0.2}})";
+        "target": {"eta1": 1.5, "eta2": 2.0, "alpha1": 0.005, "alpha2": 0.2},
+        "ga": {"population": 50, "generations": 5}})";
     auto refused = runMatevo("variants --hue --count 2 --band 2,5 --preset '" +
                              dielectric.string() + "'");
     EXPECT_EQ(refused.exitCode, 2) << refused.err;

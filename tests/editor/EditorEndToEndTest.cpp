@@ -138,8 +138,9 @@ TEST_F(EditorEndToEnd, ScriptedSessionShowsTargetAndGridOfDistinctSpheresWithHea
         << "heatmap " << heatPixels << ", plain " << plainPixels;
 }
 
-// The Variants mode end to end: find a set, discard one, refill, save, and check the saved set
-// as `matevo variants --out` would have written it; the screenshot shows the set's tiles.
+// The Variants mode end to end: find a set, discard one, refill with hue variety on (the kept
+// grey variants stay, the new one may take its own kappa), save, and check the saved set as
+// `matevo variants --out` would have written it; the screenshot shows the set's tiles.
 TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     const fs::path dir = freshDirectory("variants");
     fs::create_directories(dir / "config");
@@ -149,6 +150,7 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
            "variants 4\n"
            "wait-variants\n"
            "discard-variant 0\n"
+           "variants-hue on\n"
            "refill-variants\n"
            "wait-variants\n"
            "wait 2\n"
@@ -166,6 +168,8 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     const std::string report((std::istreambuf_iterator<char>(reportFile)), {});
     ASSERT_FALSE(report.empty()) << "no report.json in the saved set";
     EXPECT_NE(report.find("\"met\": true"), std::string::npos) << report;
+    EXPECT_NE(report.find("\"hue_variety\": true"), std::string::npos) << report;
+    EXPECT_NE(report.find("\"base_kappa\""), std::string::npos) << "a variant of its own kappa";
     for (int i = 0; i < 4; ++i) {
         const std::string stem = "set/variants/variant_00" + std::to_string(i);
         EXPECT_TRUE(fs::is_regular_file(dir / (stem + ".png"))) << stem;
