@@ -2,6 +2,7 @@
 // Median wall time of repeated runs. Medians, not means: the machines are shared and noisy.
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <vector>
 
 namespace matevo::bench {
@@ -18,6 +19,30 @@ double medianMilliseconds(int repetitions, Work&& work) {
     }
     std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
     return times[times.size() / 2];
+}
+
+// Median wall time and median CPU time of the whole process (every thread, lavapipe's too):
+// on a machine shared with other jobs the CPU time of a run varies far less than its wall time.
+struct WallAndCpu {
+    double wallMilliseconds = 0;
+    double cpuMilliseconds = 0;
+};
+
+template <typename Work>
+WallAndCpu medianWallAndCpu(int repetitions, Work&& work) {
+    auto cpuNow = [] {
+        timespec now{};
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+        return double(now.tv_sec) * 1e3 + double(now.tv_nsec) / 1e6;
+    };
+    std::vector<double> cpuTimes;
+    const double wall = medianMilliseconds(repetitions, [&] {
+        const double start = cpuNow();
+        work();
+        cpuTimes.push_back(cpuNow() - start);
+    });
+    std::nth_element(cpuTimes.begin(), cpuTimes.begin() + cpuTimes.size() / 2, cpuTimes.end());
+    return {wall, cpuTimes[cpuTimes.size() / 2]};
 }
 
 }  // namespace matevo::bench

@@ -33,21 +33,18 @@ LobeSet lobesAt(Material material, float cosView, float texel, vec3 tint) {
     float cosinePosition = clamp(cosView, 0.0, 1.0) * float(cosineNodes - 1);
     int m = min(int(cosinePosition), cosineNodes - 2);
     float wm = cosinePosition - float(m);
+    // Without a texel axis the second texel row is the first one again, with weight 0: one
+    // path for both shapes (lavapipe would run both sides of a branch).
+    float texelPosition = clamp(texel, 0.0, 1.0) * float(material.texelNodes - 1u);
+    uint t = min(uint(texelPosition), max(material.texelNodes, 2u) - 2u);
+    float wt = texelPosition - float(t);
+    uint texelStride = material.texelNodes > 1u ? uint(cosineNodes) : 0u;
+    uint row = material.firstEntry + t * uint(cosineNodes) + uint(m);
     Entry sum = Entry(vec4(0.0), vec4(0.0), vec4(0.0));
-    uint row = material.firstEntry + uint(m);
-    if (material.texelNodes > 1u) {
-        float texelPosition = clamp(texel, 0.0, 1.0) * float(material.texelNodes - 1u);
-        uint t = min(uint(texelPosition), material.texelNodes - 2u);
-        float wt = texelPosition - float(t);
-        row += t * uint(cosineNodes);
-        accumulate(sum, row, (1.0 - wt) * (1.0 - wm));
-        accumulate(sum, row + 1u, (1.0 - wt) * wm);
-        accumulate(sum, row + uint(cosineNodes), wt * (1.0 - wm));
-        accumulate(sum, row + uint(cosineNodes) + 1u, wt * wm);
-    } else {
-        accumulate(sum, row, 1.0 - wm);
-        accumulate(sum, row + 1u, wm);
-    }
+    accumulate(sum, row, (1.0 - wt) * (1.0 - wm));
+    accumulate(sum, row + 1u, (1.0 - wt) * wm);
+    accumulate(sum, row + texelStride, wt * (1.0 - wm));
+    accumulate(sum, row + texelStride + 1u, wt * wm);
     float variance = expandVariance(sum.base.a);
     return LobeSet(Lobe(sum.coat.rgb, sum.coat.a),
                    tintedLobe(sum.base.rgb, sum.roundTrip.rgb, variance,

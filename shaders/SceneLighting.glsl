@@ -17,29 +17,40 @@ vec2 latLongUv(vec3 direction) {
                 acos(clamp(direction.y, -1.0, 1.0)) / kPi);
 }
 
-// The environment averaged under a GGX lobe of roughness alpha around `direction`: one
-// trilinear fetch between the two nearest roughness levels (nodes at sqrt(alpha) uniform).
-vec3 prefilteredRadiance(vec3 direction, float alpha, float levels) {
+// The environment averaged under a GGX lobe of roughness alpha around the direction whose
+// lat-long coordinates are environmentUv: one trilinear fetch between the two nearest roughness
+// levels (nodes at sqrt(alpha) uniform).
+vec3 prefilteredRadiance(vec2 environmentUv, float alpha, float levels) {
     float level = sqrt(clamp(alpha, 0.0, 1.0)) * (levels - 1.0);
-    return textureLod(environmentMap, vec3(latLongUv(direction), (level + 0.5) / levels), 0.0).rgb;
+    return textureLod(environmentMap, vec3(environmentUv, (level + 0.5) / levels), 0.0).rgb;
+}
+
+// What shading needs of a point's geometry, the same for every material (the sphere compute
+// shader reads it precomputed).
+struct ShadingPoint {
+    float cosView;
+    float cosLight;
+    float cosHalf;
+    vec2 environmentUv;  // of the mirror direction; read only with an environment
+};
+
+ShadingPoint shadingPoint(vec3 normal, vec3 toViewer, vec3 toLight, vec2 environmentUv) {
+    return ShadingPoint(max(dot(normal, toViewer), 0.0), dot(normal, toLight),
+                        dot(normal, normalize(toViewer + toLight)), environmentUv);
 }
 
 // Outgoing radiance towards the viewer: the light through the lobes, plus the uniform ambient
 // through their energies, plus (split sum) each lobe's energy times the environment
 // prefiltered for its roughness around the mirror direction.
-vec3 shadeLobes(LobeSet lobes, vec3 normal, vec3 toViewer, Lighting lighting) {
-    float cosView = max(dot(normal, toViewer), 0.0);
-    float cosLight = dot(normal, lighting.toLight);
-    float cosHalf = dot(normal, normalize(toViewer + lighting.toLight));
-    vec3 radiance = evaluateBsdf(lobes, cosView, cosLight, cosHalf) * lighting.lightRadiance *
-                        max(cosLight, 0.0) +
+vec3 shadeLobes(LobeSet lobes, ShadingPoint point, Lighting lighting) {
+    vec3 radiance = evaluateBsdf(lobes, point.cosView, point.cosLight, point.cosHalf) *
+                        lighting.lightRadiance * max(point.cosLight, 0.0) +
                     environmentReflectance(lobes) * lighting.ambient;
     if (lighting.environmentLevels > 0.0) {
-        vec3 mirror = reflect(-toViewer, normal);
-        radiance += lobes.coat.energy *
-                        prefilteredRadiance(mirror, lobes.coat.alpha, lighting.environmentLevels) +
-                    lobes.base.energy *
-                        prefilteredRadiance(mirror, lobes.base.alpha, lighting.environmentLevels);
+        radiance += lobes.coat.energy * prefilteredRadiance(point.environmentUv, lobes.coat.alpha,
+                                                            lighting.environmentLevels) +
+                    lobes.base.energy * prefilteredRadiance(point.environmentUv, lobes.base.alpha,
+                                                            lighting.environmentLevels);
     }
     return radiance;
 }

@@ -37,9 +37,10 @@ void main() {
         roughnessTexel = textureLod(roughnessTexture, texCoord, 0.0).r;
         baseColor = textureLod(baseColorTexture, texCoord, 0.0).rgb;
     }
-    LobeSet lobes = lobesAt(materials[materialIndex], max(dot(normal, toViewer), 0.0),
-                            roughnessTexel, baseColor);
     Lighting lighting = Lighting(frame.toLight.xyz, frame.lightRadiance.rgb, frame.ambient.rgb,
                                  frame.ambient.w);
-    color = vec4(shadeLobes(lobes, normal, toViewer, lighting), 1.0);
+    vec2 environmentUv = latLongUv(reflect(-toViewer, normal));
+    ShadingPoint point = shadingPoint(normal, toViewer, lighting.toLight, environmentUv);
+    LobeSet lobes = lobesAt(materials[materialIndex], point.cosView, roughnessTexel, baseColor);
+    color = vec4(shadeLobes(lobes, point, lighting), 1.0);
 }

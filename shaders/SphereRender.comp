@@ -1,11 +1,21 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The paper's test scene on the GPU, one invocation per pixel and material: the same camera,
-// 2 x 2 subsamples (interior pixels shaded once at the centre), coverage alpha, sphere UV
-// mapping, textures and shading as the CPU reference (core/scene/SphereRenderer.cpp), with the
-// lobes interpolated from the material's LobeTable (core/material/LobeTable.h). Workgroups
-// along y are materials, so the branch on the table's shape does not diverge.
+// The paper's test scene on the GPU: the sphere's shading points (core/scene/SphereSamples.h,
+// traced once per camera and size on the CPU: normal, direction to the viewer, texture and
+// environment UV) shaded for every material as the CPU reference does
+// (core/scene/SphereRenderer.cpp): a covered pixel is the mean of its points, its alpha the
+// coverage; background pixels are cleared before. The lobes are interpolated from the
+// material's LobeTable (core/material/LobeTable.h). One invocation per covered pixel and
+// material; workgroups along y are materials.
+//
+// lavapipe runs both sides of every branch (masking lanes off) and a loop as long as its
+// longest lane, so what a dispatch does not need is removed by specialisation instead of
+// skipped at run time: one pipeline shades the pixels of one point (nearly all), another the
+// silhouette's pixels of up to kMaxPoints points.
 layout(local_size_x = 64) in;
+layout(constant_id = 0) const bool kTextured = false;        // roughness / base-colour textures
+layout(constant_id = 1) const bool kEnvironmentLit = false;  // the prefiltered environment
+layout(constant_id = 2) const uint kMaxPoints = 1;           // points per pixel in this dispatch
 
 layout(std430, binding = 5) readonly buffer LobeTables { vec4 lobeEntries[]; };
 #include "BelcourBsdf.glsl"
@@ -17,99 +27,53 @@ layout(binding = 2) uniform sampler2D roughnessTexture;  // 1x1 white when absen
 layout(binding = 3) uniform sampler2D baseColorTexture;  // 1x1 white when absent
 
 layout(std430, binding = 4) readonly buffer Scene {
-    vec4 cameraPosition;       // w image size in pixels
-    vec4 cameraForward;        // w tan(fov / 2)
-    vec4 cameraRight;          // w radius of the sphere's image (a centred disc) in pixels
-    vec4 cameraUp;
     vec4 toLight;
     vec4 lightRadiance;
-    vec4 environmentRadiance;  // w: roughness levels of environmentMap (0: none)
-    vec4 textured;             // x: 1 when a texture is present (else the UV is not needed)
+    vec4 environmentRadiance;  // w: roughness levels of environmentMap
 } scene;
+
+layout(push_constant) uniform Dispatch {
+    uint pixelsPerImage;
+    uint firstPixel;  // of this dispatch, in coveredPixels
+    uint pixelCount;
+} dispatch;
 layout(binding = 6) uniform sampler3D environmentMap;
+
+// Per covered pixel: pixel index, first point, point count, coverage (float bits).
+layout(std430, binding = 7) readonly buffer CoveredPixels { uvec4 coveredPixels[]; };
+// Per point: normal, direction to the viewer, (texture UV, environment UV).
+layout(std430, binding = 8) readonly buffer Points { vec4 pointData[]; };
 
 #include "SceneLighting.glsl"
 
-const int kSubsamplesPerAxis = 2;
-
-vec3 shade(Material material, vec3 normal, vec3 toViewer) {
+vec3 shade(Material material, uint point, Lighting lighting) {
+    vec3 normal = pointData[3u * point].xyz;
+    vec3 toViewer = pointData[3u * point + 1u].xyz;
+    vec4 uvs = pointData[3u * point + 2u];
     float roughnessTexel = 1.0;
     vec3 baseColor = vec3(1.0);
-    if (scene.textured.x > 0.0) {
-        vec2 uv = vec2(0.5 + atan(normal.x, normal.z) / (2.0 * kPi),
-                       acos(clamp(normal.y, -1.0, 1.0)) / kPi);
-        roughnessTexel = texture(roughnessTexture, uv).r;
-        baseColor = texture(baseColorTexture, uv).rgb;
+    if (kTextured) {
+        roughnessTexel = textureLod(roughnessTexture, uvs.xy, 0.0).r;
+        baseColor = textureLod(baseColorTexture, uvs.xy, 0.0).rgb;
     }
-    LobeSet lobes = lobesAt(material, max(dot(normal, toViewer), 0.0), roughnessTexel, baseColor);
-    Lighting lighting = Lighting(scene.toLight.xyz, scene.lightRadiance.rgb,
-                                 scene.environmentRadiance.rgb, scene.environmentRadiance.w);
-    return shadeLobes(lobes, normal, toViewer, lighting);
-}
-
-// Where the ray through image position p (pixels, y down) meets the sphere; false on a miss.
-bool traceSphere(vec2 p, int size, out vec3 normal, out vec3 toViewer) {
-    vec3 origin = scene.cameraPosition.xyz;
-    float tanHalfFov = scene.cameraForward.w;
-    vec2 ndc = vec2(2.0 * p.x / size - 1.0, 1.0 - 2.0 * p.y / size);
-    vec3 direction = normalize(scene.cameraForward.xyz +
-                               ndc.x * tanHalfFov * scene.cameraRight.xyz +
-                               ndc.y * tanHalfFov * scene.cameraUp.xyz);
-    float b = dot(origin, direction);
-    float discriminant = b * b - (dot(origin, origin) - 1.0);
-    if (discriminant < 0.0) return false;
-    float distance = -b - sqrt(discriminant);
-    if (distance <= 0.0) return false;
-    normal = normalize(origin + distance * direction);
-    toViewer = -direction;
-    return true;
-}
-
-vec2 subsampleOffset(int i) {
-    return (vec2(i % kSubsamplesPerAxis, i / kSubsamplesPerAxis) + 0.5) / float(kSubsamplesPerAxis);
+    ShadingPoint at = shadingPoint(normal, toViewer, lighting.toLight, uvs.zw);
+    LobeSet lobes = lobesAt(material, at.cosView, roughnessTexel, baseColor);
+    return shadeLobes(lobes, at, lighting);
 }
 
 void main() {
-    int size = int(scene.cameraPosition.w);
-    uint pixelCount = uint(size * size);
-    uint pixel = gl_GlobalInvocationID.x;
-    if (pixel >= pixelCount) return;
-
+    if (gl_GlobalInvocationID.x >= dispatch.pixelCount) return;
+    uvec4 pixel = coveredPixels[dispatch.firstPixel + gl_GlobalInvocationID.x];
     Material material = materials[gl_GlobalInvocationID.y];
-    vec2 corner = vec2(pixel % uint(size), pixel / uint(size));
-
-    const int kSubsamples = kSubsamplesPerAxis * kSubsamplesPerAxis;
-    vec3 normal;
-    vec3 toViewer;
-    // Only pixels near the disc's edge need the subsample test: elsewhere every subsample hits
-    // (or misses), as the test would find. The margin exceeds the subsamples' reach from the
-    // pixel centre (0.36 px) with room for rounding.
-    const float kEdgeMargin = 1.0;
-    float fromCentre = length(corner + 0.5 - 0.5 * float(size));
-    float discRadius = scene.cameraRight.w;
-    int hits = fromCentre < discRadius - kEdgeMargin ? kSubsamples : 0;
-    if (abs(fromCentre - discRadius) <= kEdgeMargin) {
-        for (int i = 0; i < kSubsamples; ++i) {
-            if (traceSphere(corner + subsampleOffset(i), size, normal, toViewer)) ++hits;
-        }
+    Lighting lighting = Lighting(scene.toLight.xyz, scene.lightRadiance.rgb,
+                                 scene.environmentRadiance.rgb,
+                                 kEnvironmentLit ? scene.environmentRadiance.w : 0.0);
+    vec3 radiance = shade(material, pixel.y, lighting);
+    for (uint i = 1u; i < kMaxPoints; ++i) {
+        // Lanes with fewer points shade their last one again and drop it.
+        vec3 extra = shade(material, pixel.y + min(i, pixel.z - 1u), lighting);
+        if (i < pixel.z) radiance += extra;
     }
-    uint index = gl_GlobalInvocationID.y * pixelCount + pixel;
-    if (hits == 0) {
-        renderPixels[index] = vec4(0.0);
-        return;
-    }
-    // Interior pixels shade once, at the centre, as on the CPU; the silhouette keeps its
-    // subsamples (traced again: cheaper on lavapipe than keeping their hit points).
-    vec3 radiance = vec3(0.0);
-    if (hits == kSubsamples && traceSphere(corner + 0.5, size, normal, toViewer)) {
-        radiance = shade(material, normal, toViewer);
-    } else {
-        for (int i = 0; i < kSubsamples; ++i) {
-            if (traceSphere(corner + subsampleOffset(i), size, normal, toViewer)) {
-                radiance += shade(material, normal, toViewer);
-            }
-        }
-        radiance /= float(hits);
-    }
-    renderPixels[index] = vec4(radiance, float(hits) / float(kSubsamples));
+    renderPixels[gl_GlobalInvocationID.y * dispatch.pixelsPerImage + pixel.x] =
+        vec4(radiance / float(pixel.z), uintBitsToFloat(pixel.w));
 }

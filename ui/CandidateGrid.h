@@ -1,10 +1,20 @@
 #pragma once
-// The candidate grid, best first: each tile is a rendered sphere (with the heatmap over it when
-// enabled) labelled with rank, fitness and mean ΔE00. Clicking a tile selects it for inspection.
+// The candidate grid: each tile a rendered sphere (with the heatmap over it when enabled)
+// labelled with rank, fitness and mean ΔE00, at the size the user picks. A toolbar sorts by
+// fitness or ΔE00 and filters by the paper's perceptual bands. Identical genomes arrive as one
+// tile with a copy count ("#3 ×5"). Click
+// selects a tile for inspection, double-click enlarges it to the target's size, and the hover
+// tooltip says what it is.
+#include <vector>
+
 #include "EditorState.h"
 
 namespace matevo::ui {
 
 void drawCandidateGrid(EditorState& state);
+
+// The tiles the grid shows, in order, after the band filter and sorting.
+std::vector<const CandidateView*> visibleCandidates(const EvolutionView& evolution,
+                                                    const GridView& view);
 
 }  // namespace matevo::ui

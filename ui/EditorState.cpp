@@ -10,4 +10,14 @@ std::string windowTitle(const EditorState& state) {
     return title;
 }
 
+const CandidateView* EditorState::inspectedCandidate() const {
+    const auto& candidates = evolution.candidates;
+    if (candidates.empty()) return nullptr;
+    if (selected)
+        for (const auto* views : {&candidates, &evolution.kept})
+            for (const CandidateView& candidate : *views)
+                if (candidate.genome == *selected) return &candidate;
+    return selected ? nullptr : &candidates.front();
+}
+
 }  // namespace matevo::ui

@@ -3,14 +3,17 @@
 // and `view`; the app pushes those changes to the GA worker and the GPU, and fills
 // `evolution` with what came back. No GPU handles: images arrive as opaque ImTextureIDs.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <imgui.h>
 
 #include "CompareMetricsPanel.h"
-#include "VariantsPanel.h"
+#include "PanelLayout.h"
 #include "ScenePanel.h"
+#include "StatusLog.h"
+#include "VariantsPanel.h"
 #include "genome/Genome.h"
 #include "io/Preset.h"
 
@@ -18,13 +21,27 @@ namespace matevo::ui {
 
 // How the ΔE00 heatmap is drawn over the candidate tiles.
 struct HeatmapView {
-    bool enabled = true;
+    bool enabled = false;     // off at first: the first view shows the materials themselves
     float minDeltaE = 0.0f;   // maps to the cold end of the colour ramp
     float maxDeltaE = 10.0f;  // maps to the hot end
     float opacity = 0.65f;
 
     bool operator==(const HeatmapView&) const = default;
 };
+
+// How the candidate grid is shown: view settings, remembered between sessions, not undoable.
+enum class TileOrder { Fitness, DeltaE };
+struct GridView {
+    float tileSize = 120.0f;  // pixels; the user's choice, kept when the window grows
+    TileOrder order = TileOrder::Fitness;
+    int band = -1;  // show only this PerceptualBand (index); -1: all
+
+    bool operator==(const GridView&) const = default;
+};
+
+// How the inspector sets the candidate against the target: equal-size images side by side, one
+// image split between them (a wipe), or one image flipping between them (Space).
+enum class CompareMode { SideBySide, Wipe, Flip };
 
 struct CandidateView {
     int rank = 0;  // 1 = best
@@ -33,6 +50,7 @@ struct CandidateView {
     Genome genome;
     ImTextureID image = nullptr;
     ImTextureID heatmap = nullptr;
+    int copies = 1;  // individuals in the population with this genome (one tile for all)
 };
 
 struct GenerationPoint {
@@ -40,32 +58,53 @@ struct GenerationPoint {
     double bestFitness = 0.0;
     double meanFitness = 0.0;
     double meanDeltaE00 = 0.0;  // over the candidates shown in the grid
+    double diversity = 0.0;     // of the whole population: RMS pairwise distance, ranges as 1
 };
 
 // Filled by the app from the worker's results; the panels only read it.
 struct EvolutionView {
     ImTextureID targetImage = nullptr;
     std::vector<CandidateView> candidates;  // best first
+    std::vector<CandidateView> kept;        // renders of the kept materials of this family
     std::vector<GenerationPoint> history;
     int totalGenerations = 0;
     bool running = false;
     std::string renderBackend;  // what drew the tiles, e.g. "GPU (llvmpipe)"
+    // The first launch builds the FGD/TIR lookup tables (seconds): how far, in [0, 1];
+    // negative when nothing is being built.
+    double tableBuildProgress = -1.0;
 };
+
+inline constexpr std::size_t kMaxRecentFiles = 8;
 
 struct EditorState {
     Preset preset;  // the parameters: undoable, saved to and loaded from preset files
     HeatmapView heatmap;
+    GridView grid;
+    PanelSplits splits;        // where the user dragged the panel boundaries
+    bool plotFromZero = true;  // the fitness plot's y axes start at zero
+    bool enlarged = false;     // the inspected candidate shown at the target's size
     EvolutionView evolution;
     CompareMetricsView compareMetrics;  // the "Compare metrics" window
     VariantsView variants;              // the "Variants" window
     SceneView sceneView;                // the "Scene" window
-    std::filesystem::path presetPath;  // empty until opened or saved
-    Preset savedPreset;                // as last opened or saved, for the unsaved mark
-    int selectedCandidate = -1;        // index into evolution.candidates; -1 = none
-    bool inspectShowsTarget = false;   // the A/B flip
-    std::string statusMessage;         // last file action or error, shown in the controls
+    std::filesystem::path presetPath;   // empty until opened or saved
+    Preset savedPreset;                 // as last opened or saved, for the unsaved mark
+    // The inspected material, by genome: a re-run reorders the grid, and an index would then
+    // silently show another material. Empty: the best candidate.
+    std::optional<Genome> selected;
+    std::vector<Genome> marked;  // tiles picked with Ctrl+click, for "Keep"
+    CompareMode compareMode = CompareMode::SideBySide;
+    float wipePosition = 0.5f;        // Wipe: the split, 0 = all candidate, 1 = all target
+    bool inspectShowsTarget = false;  // Flip: the target instead of the candidate (Space)
+    int gridColumns = 1;              // as last drawn, for the arrow keys
+    StatusLog status;                 // every action's outcome; the status bar shows the newest
+    bool statusLogOpen = false;       // the window listing the recent messages
+    std::vector<std::filesystem::path> recentFiles;  // newest first, remembered in imgui.ini
 
     bool hasUnsavedChanges() const { return preset != savedPreset; }
+    // The candidate showing the selected genome, else the best; null when there are none.
+    const CandidateView* inspectedCandidate() const;
 };
 
 // "matevo — validation_metal.json *": the file name and an unsaved-changes mark.

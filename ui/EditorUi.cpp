@@ -1,36 +1,55 @@
 #include "EditorUi.h"
 
+#include <algorithm>
 #include <utility>
+
+#include <imgui_internal.h>  // MarkIniSettingsDirty
 
 #include "CandidateGrid.h"
 #include "CompareMetricsPanel.h"
-#include "ScenePanel.h"
 #include "ControlPanel.h"
+#include "EnlargedView.h"
 #include "FitnessPlot.h"
 #include "InspectPanel.h"
+#include "KeptBin.h"
 #include "PanelLayout.h"
+#include "ScenePanel.h"
+#include "StatusBar.h"
 #include "TargetPanel.h"
 #include "VariantsPanel.h"
+#include "genome/FamilyRules.h"
+#include "io/GenomeJson.h"
 
 namespace matevo::ui {
+namespace {
 
-EditorUi::EditorUi(Preset preset, std::filesystem::path presetPath, ShortcutKeys keys)
-    : history_(preset), keys_(keys) {
+std::string documentName(const EditorState& state) {
+    return state.presetPath.empty() ? "The preset \"" + state.preset.name + "\""
+                                    : state.presetPath.filename().string();
+}
+
+}  // namespace
+
+EditorUi::EditorUi(Preset preset, std::filesystem::path presetPath, PresetFolders folders,
+                   ShortcutKeys keys)
+    : history_(UndoStep{preset, presetPath}), folders_(std::move(folders)), keys_(keys) {
     state_.preset = preset;
-    state_.savedPreset = std::move(preset);
-    state_.presetPath = std::move(presetPath);
+    state_.savedPreset = preset;
+    state_.presetPath = presetPath;
+    fileContents_[presetPath] = std::move(preset);
 }
 
 FrameRequests EditorUi::draw() {
     FrameRequests requests;
-    const PanelLayout layout = layoutPanels(ImGui::GetIO().DisplaySize);
+    const PanelLayout layout = layoutPanels(ImGui::GetIO().DisplaySize, state_.splits);
 
     if (beginPanel("Controls", layout.controls)) {
         const ControlPanelActions actions =
             drawControlPanel(state_, history_.canUndo(), history_.canRedo());
-        if (actions.open) openDialog_.open("Open preset", state_.presetPath);
+        if (actions.open) requestOpenDialog();
+        if (actions.openRecent) requestOpen(*actions.openRecent);
         if (actions.save) save();
-        if (actions.saveAs) saveDialog_.open("Save preset as", state_.presetPath);
+        if (actions.saveAs) openSaveAsDialog();
         if (actions.undo) undo();
         if (actions.redo) redo();
         requests.snapshot = actions.snapshot;
@@ -38,86 +57,279 @@ FrameRequests EditorUi::draw() {
     ImGui::End();
     if (beginPanel("Target", layout.target)) drawTargetPanel(state_);
     ImGui::End();
-    if (beginPanel("Fitness per generation", layout.plot)) drawFitnessPlot(state_.evolution);
+    if (beginPanel("Fitness per generation", layout.plot))
+        drawFitnessPlot(state_.evolution, state_.plotFromZero);
     ImGui::End();
     if (beginPanel("Candidates (best first)", layout.grid)) drawCandidateGrid(state_);
     ImGui::End();
     if (beginPanel("Inspect", layout.inspect)) drawInspectPanel(state_);
     ImGui::End();
+    drawEnlargedView(state_, layout.grid,
+                     layout.target.size.x - 2.0f * ImGui::GetStyle().WindowPadding.x);
+    drawStatusBar(state_, layout.statusBar);
+    drawSplitters(layout, state_.splits);
 
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
     requests.variants = drawVariantsWindow(state_.variants);
     drawSceneWindow(state_);
-    drawPathDialogs();
+    drawDialogs();
     handleShortcuts(requests);
     // One undo step per finished edit: a slider drag is recorded when it is released.
-    if (!ImGui::IsAnyItemActive()) history_.record(state_.preset);
+    if (!ImGui::IsAnyItemActive()) recordEdits();
+    requests.quit = std::exchange(quitConfirmed_, false);
+    // View settings live in imgui.ini: a change has it written (at ImGui's own pace).
+    if (ViewSettings view = viewSettingsOf(state_); view != shownView_) {
+        ImGui::MarkIniSettingsDirty();
+        shownView_ = view;
+    }
     return requests;
 }
 
 void EditorUi::handleShortcuts(FrameRequests& requests) {
     const ImGuiIO& io = ImGui::GetIO();
     if (ImGui::IsKeyPressed(keys_.snapshot, false)) requests.snapshot = true;
-    if (!io.KeyCtrl) return;
-    if (ImGui::IsKeyPressed(keys_.quit, false)) requests.quit = true;
+    if (!io.KeyCtrl) {
+        if (!io.WantTextInput && !ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId))
+            handleGridKeys();
+        return;
+    }
+    if (ImGui::IsKeyPressed(keys_.quit, false)) requestQuit();
     // A focused text field keeps Ctrl+Z/Y for its own editing and owns the keyboard.
-    if (io.WantTextInput || openDialog_.isOpen() || saveDialog_.isOpen()) return;
-    if (ImGui::IsKeyPressed(keys_.open, false)) openDialog_.open("Open preset", state_.presetPath);
+    if (io.WantTextInput || openDialog_.isOpen() || saveDialog_.isOpen() || unsavedPrompt_.isOpen())
+        return;
+    if (ImGui::IsKeyPressed(keys_.open, false)) requestOpenDialog();
     if (ImGui::IsKeyPressed(keys_.save, false)) {
         if (io.KeyShift)
-            saveDialog_.open("Save preset as", state_.presetPath);
+            openSaveAsDialog();
         else
             save();
     }
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z))) undo();
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y))) redo();
+    const bool zPressed = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z));
+    if (zPressed && !io.KeyShift) undo();
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y)) || (zPressed && io.KeyShift)) redo();
 }
 
-void EditorUi::drawPathDialogs() {
+void EditorUi::handleGridKeys() {
+    const auto pressed = [](ImGuiKey key) {
+        const int index = ImGui::GetKeyIndex(key);  // -1 when the platform maps no such key
+        return index >= 0 && ImGui::IsKeyPressed(index);
+    };
+    if (pressed(ImGuiKey_Escape)) state_.enlarged = false;
+    if (pressed(ImGuiKey_Enter) && state_.inspectedCandidate()) state_.enlarged = !state_.enlarged;
+    if (ImGui::IsKeyPressed(keys_.keep, false)) keepPicked(state_);
+    if (pressed(ImGuiKey_Space)) {
+        state_.compareMode = CompareMode::Flip;
+        state_.inspectShowsTarget = !state_.inspectShowsTarget;
+    }
+    // Arrows walk the tiles as shown: left/right one, up/down a row.
+    const int columns = std::max(1, state_.gridColumns);
+    const int step = pressed(ImGuiKey_LeftArrow)    ? -1
+                     : pressed(ImGuiKey_RightArrow) ? 1
+                     : pressed(ImGuiKey_UpArrow)    ? -columns
+                     : pressed(ImGuiKey_DownArrow)  ? columns
+                                                    : 0;
+    if (step == 0) return;
+    const auto shown = visibleCandidates(state_.evolution, state_.grid);
+    if (shown.empty()) return;
+    int index = 0;
+    if (const CandidateView* current = state_.inspectedCandidate())
+        for (std::size_t i = 0; i < shown.size(); ++i)
+            if (shown[i] == current) index = int(i) + step;
+    state_.selected = shown[std::size_t(std::clamp(index, 0, int(shown.size()) - 1))]->genome;
+}
+
+void EditorUi::drawDialogs() {
     if (auto file = openDialog_.draw()) openPreset(*file);
-    if (auto file = saveDialog_.draw()) savePreset(*file);
+    if (auto file = saveDialog_.draw()) {
+        if (savePreset(*file) && pendingWaitsForSaveAs_) {
+            pendingWaitsForSaveAs_ = false;
+            perform(std::exchange(pending_, {}));
+        }
+    }
+    // "Save as" cancelled while an action waited for it: the action is dropped, nothing lost.
+    if (pendingWaitsForSaveAs_ && !saveDialog_.isOpen()) {
+        pendingWaitsForSaveAs_ = false;
+        pending_ = {};
+        state_.status.post("Cancelled: the unsaved changes are kept");
+    }
+    switch (unsavedPrompt_.draw()) {
+        case PromptAnswer::None:
+            break;
+        case PromptAnswer::Save:
+            if (save()) {
+                perform(std::exchange(pending_, {}));
+            } else if (saveDialog_.isOpen()) {
+                pendingWaitsForSaveAs_ = true;
+            } else {
+                pending_ = {};  // the save failed and said why; the changes stay
+            }
+            break;
+        case PromptAnswer::Discard:
+            state_.status.post("Discarded the unsaved changes to " + documentName(state_),
+                               StatusKind::Warning);
+            perform(std::exchange(pending_, {}));
+            break;
+        case PromptAnswer::Cancel:
+            pending_ = {};
+            state_.status.post("Cancelled: the unsaved changes are kept");
+            break;
+    }
 }
 
-void EditorUi::save() {
-    if (state_.presetPath.empty())
-        saveDialog_.open("Save preset as", state_.preset.name + ".json");
-    else
-        savePreset(state_.presetPath);
+void EditorUi::requestOpenDialog() { askBefore({PendingAction::Kind::OpenDialog, {}}); }
+
+void EditorUi::requestOpen(const std::filesystem::path& file) {
+    askBefore({PendingAction::Kind::Open, file});
+}
+
+void EditorUi::dropFile(const std::filesystem::path& file) {
+    if (loadPreset(file)) {
+        requestOpen(file);
+        return;
+    }
+    auto genome = loadGenome(file);
+    if (!genome) {
+        state_.status.post("Dropped " + file.string() + ": neither a preset nor a genome file (" +
+                               genome.error().message + ")",
+                           StatusKind::Error);
+        return;
+    }
+    if (auto problem = validateGenome(*genome, state_.preset.family)) {
+        state_.status.post("Dropped genome " + file.string() + " does not fit the family " +
+                               describe(state_.preset.family) + ": " + *problem,
+                           StatusKind::Error);
+        return;
+    }
+    recordEdits();
+    state_.preset.target = *genome;
+    state_.status.post("Target set from the genome in " + file.string() + " (Ctrl+Z undoes)");
+}
+
+void EditorUi::requestQuit() { askBefore({PendingAction::Kind::Quit, {}}); }
+
+void EditorUi::askBefore(PendingAction action) {
+    recordEdits();
+    if (!state_.hasUnsavedChanges()) {
+        perform(action);
+        return;
+    }
+    if (unsavedPrompt_.isOpen() || pendingWaitsForSaveAs_) return;  // already asking
+    static constexpr const char* kWhat[] = {"", "opening another preset", "opening ", "quitting"};
+    std::string what = kWhat[int(action.kind)];
+    if (action.kind == PendingAction::Kind::Open) what += action.file.filename().string();
+    unsavedPrompt_.open(documentName(state_), what);
+    pending_ = std::move(action);
+}
+
+void EditorUi::perform(const PendingAction& action) {
+    switch (action.kind) {
+        case PendingAction::Kind::None:
+            break;
+        case PendingAction::Kind::OpenDialog: {
+            const std::filesystem::path folder =
+                state_.presetPath.empty() ? folders_.user : state_.presetPath.parent_path();
+            openDialog_.open("Open preset", folder.empty() ? folder : folder / "");
+            break;
+        }
+        case PendingAction::Kind::Open:
+            openPreset(action.file);
+            break;
+        case PendingAction::Kind::Quit:
+            quitConfirmed_ = true;
+            break;
+    }
+}
+
+bool EditorUi::save() {
+    if (state_.presetPath.empty() || isInside(state_.presetPath, folders_.shipped)) {
+        if (!state_.presetPath.empty())
+            state_.status.post(state_.presetPath.filename().string() +
+                               " is a shipped preset and stays read-only: choose where to save "
+                               "your copy");
+        openSaveAsDialog();
+        return false;
+    }
+    return savePreset(state_.presetPath);
+}
+
+void EditorUi::openSaveAsDialog() {
+    saveDialog_.open("Save preset as",
+                     suggestSavePath(folders_, state_.presetPath, state_.preset.name));
 }
 
 bool EditorUi::openPreset(const std::filesystem::path& file) {
     auto loaded = loadPreset(file);
     if (!loaded) {
-        state_.statusMessage = "Open failed: " + loaded.error().message;
+        state_.status.post("Open failed: " + loaded.error().message, StatusKind::Error);
         return false;
     }
     state_.preset = loaded->preset;
     state_.savedPreset = loaded->preset;
     state_.presetPath = file;
-    state_.selectedCandidate = -1;
-    history_.reset(loaded->preset);
-    state_.statusMessage = "Opened " + file.filename().string();
-    if (!loaded->warnings.empty()) state_.statusMessage += " (" + loaded->warnings.front() + ")";
+    state_.selected.reset();
+    fileContents_[file] = loaded->preset;
+    history_.reset(UndoStep{loaded->preset, file});
+    rememberRecent(file);
+    state_.status.post("Opened " + file.string());
+    for (const std::string& warning : loaded->warnings)
+        state_.status.post(warning, StatusKind::Warning);
     return true;
 }
 
 bool EditorUi::savePreset(const std::filesystem::path& file) {
-    const Status saved = matevo::savePreset(state_.preset, file);
-    if (!saved) {
-        state_.statusMessage = "Save failed: " + saved.error().message;
+    if (isInside(file, folders_.shipped)) {
+        state_.status.post("Save refused: " + file.string() +
+                               " is a shipped preset and stays read-only; save under another "
+                               "folder, e.g. " +
+                               folders_.user.string(),
+                           StatusKind::Error);
         return false;
     }
+    if (Status folder = createParentFolder(file); !folder) {
+        state_.status.post("Save failed: " + folder.error().message, StatusKind::Error);
+        return false;
+    }
+    recordEdits();
+    const Preset contents = rebaseTextures(state_.preset, state_.presetPath, file);
+    if (const Status saved = matevo::savePreset(contents, file); !saved) {
+        state_.status.post("Save failed: " + saved.error().message, StatusKind::Error);
+        return false;
+    }
+    state_.preset = contents;
     state_.presetPath = file;
-    state_.savedPreset = state_.preset;
-    state_.statusMessage = "Saved " + file.filename().string();
+    state_.savedPreset = contents;
+    fileContents_[file] = contents;
+    history_.markSaved(UndoStep{contents, file});
+    rememberRecent(file);
+    state_.status.post("Saved " + file.string());
     return true;
 }
 
-void EditorUi::undo() {
-    history_.record(state_.preset);
-    state_.preset = history_.undo();
+void EditorUi::rememberRecent(const std::filesystem::path& file) {
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(file, error);
+    auto& recent = state_.recentFiles;
+    recent.erase(std::remove(recent.begin(), recent.end(), absolute), recent.end());
+    recent.insert(recent.begin(), absolute);
+    if (recent.size() > kMaxRecentFiles) recent.resize(kMaxRecentFiles);
 }
 
-void EditorUi::redo() { state_.preset = history_.redo(); }
+void EditorUi::undo() {
+    recordEdits();
+    show(history_.undo());
+}
+
+void EditorUi::redo() { show(history_.redo()); }
+
+void EditorUi::show(const UndoStep& step) {
+    const bool otherFile = step.file != state_.presetPath;
+    state_.preset = step.preset;
+    state_.presetPath = step.file;
+    const auto known = fileContents_.find(step.file);
+    state_.savedPreset = known != fileContents_.end() ? known->second : step.preset;
+    if (otherFile)
+        state_.status.post("Back in " + (step.file.empty() ? std::string("the unsaved preset")
+                                                           : step.file.string()));
+}
 
 }  // namespace matevo::ui

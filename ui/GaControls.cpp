@@ -6,40 +6,67 @@
 #include <imgui.h>
 
 #include "Widgets.h"
+#include "genome/FamilyRules.h"
 
 namespace matevo::ui {
 namespace {
 
-// Slider limits for interactive use; presets may hold more (up to kMaxPopulation), which
-// Ctrl+click typing still reaches.
+// Drag ranges for interactive use. Presets hold more (kMaxPopulation, kMaxGenerations), which
+// Ctrl+click typing reaches: sliders do not clamp typed values to their drag range.
 constexpr int kSliderMaxPopulation = 400;
 constexpr int kSliderMaxGenerations = 100;
 constexpr float kMaxWeight = 5.0f;
+
+// Keeps `value` in [low, high]; when it was outside, says so.
+void clampAndReport(int& value, int low, int high, const char* name, StatusLog& status) {
+    const int clamped = std::clamp(value, low, high);
+    if (clamped == value) return;
+    status.post(std::string(name) + " " + std::to_string(value) + " is outside [" +
+                    std::to_string(low) + ", " + std::to_string(high) + "]: set to " +
+                    std::to_string(clamped),
+                StatusKind::Warning);
+    value = clamped;
+}
 
 void drawMetric(DistanceMetric& metric) {
     constexpr DistanceMetric kMetrics[] = {DistanceMetric::Chebyshev, DistanceMetric::Euclidean,
                                            DistanceMetric::Manhattan};
     constexpr const char* kLabels[] = {"Chebyshev", "Euclidean", "Manhattan"};
     for (int i = 0; i < 3; ++i) {
-        if (i > 0) ImGui::SameLine();
+        if (i > 0) sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), kLabels[i]));
         if (ImGui::RadioButton(kLabels[i], metric == kMetrics[i])) metric = kMetrics[i];
     }
 }
 
-// Two columns with the name inside each slider: all twelve fit beside the other controls.
-void drawWeights(std::array<double, kPaperChromosomeCount>& weights) {
+// Two columns with the name inside each slider. Only the family's active chromosomes: the
+// others play no part in its materials, so their weights change nothing.
+void drawWeights(std::array<double, kPaperChromosomeCount>& weights, const MaterialFamily& family,
+                 StatusLog& status) {
+    const FamilyRules rules = familyRules(family);
     if (!ImGui::BeginTable("weights", 2)) return;
+    int unused = 0;
     for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) {
+        if (!rules.ranges[i].active) {
+            ++unused;
+            continue;
+        }
         ImGui::TableNextColumn();
         ImGui::SetNextItemWidth(-1.0f);
         float weight = float(weights[i]);
         const std::string name(chromosomeName(i));
         const std::string format = name + " %.2f";
-        if (ImGui::SliderFloat((name + "##weight").c_str(), &weight, 0.0f, kMaxWeight,
-                               format.c_str()))
-            weights[i] = std::max(0.0f, weight);
+        const bool changed = ImGui::SliderFloat((name + "##weight").c_str(), &weight, 0.0f,
+                                                kMaxWeight, format.c_str());
+        if (changed) weights[i] = weight;
+        if (editFinished(changed) && weights[i] < 0.0) {
+            status.post("The " + name + " weight cannot be negative: set to 0",
+                        StatusKind::Warning);
+            weights[i] = 0.0;
+        }
     }
     ImGui::EndTable();
+    if (unused > 0)
+        mutedText(std::to_string(unused) + " weights hidden: chromosomes this family does not use");
     if (ImGui::Button("Reset weights")) weights.fill(1.0);
 }
 
@@ -53,16 +80,27 @@ std::uint64_t nextSeed(std::uint64_t seed) {
     return z ^ (z >> 31);
 }
 
-void drawGaControls(GaSettings& settings) {
+void drawGaControls(GaSettings& settings, const MaterialFamily& family, StatusLog& status) {
     sectionHeader("Genetic algorithm");
-    ImGui::SliderInt("Population", &settings.population, 2, kSliderMaxPopulation, "%d",
-                     ImGuiSliderFlags_AlwaysClamp);
-    ImGui::SliderInt("Generations", &settings.generations, 1, kSliderMaxGenerations, "%d",
-                     ImGuiSliderFlags_AlwaysClamp);
-    ImGui::SliderInt("Elitism", &settings.elitism, 0, settings.population / 2, "%d",
-                     ImGuiSliderFlags_AlwaysClamp);
-    hoverHint("Best individuals copied unchanged into the next generation (the paper uses 0).");
-    settings.elitism = std::clamp(settings.elitism, 0, settings.population / 2);
+    if (editFinished(ImGui::SliderInt("Population", &settings.population, 2, kSliderMaxPopulation)))
+        clampAndReport(settings.population, 2, kMaxPopulation, "Population", status);
+    hoverHint("Drag up to 400; Ctrl+click to type up to 100000.");
+    if (editFinished(
+            ImGui::SliderInt("Generations", &settings.generations, 1, kSliderMaxGenerations)))
+        clampAndReport(settings.generations, 0, kMaxGenerations, "Generations", status);
+    hoverHint("Drag up to 100; Ctrl+click to type up to 100000.");
+    if (editFinished(ImGui::SliderInt("Elitism", &settings.elitism, 0, settings.population / 2)))
+        clampAndReport(settings.elitism, 0, settings.population / 2, "Elitism", status);
+    hoverHint(
+        "Best individuals copied unchanged into the next generation (the paper uses 0); "
+        "at most half the population.");
+    if (settings.elitism > settings.population / 2 && !ImGui::IsAnyItemActive()) {
+        status.post("Elitism " + std::to_string(settings.elitism) +
+                        " is more than half the population: set to " +
+                        std::to_string(settings.population / 2),
+                    StatusKind::Warning);
+        settings.elitism = settings.population / 2;
+    }
 
     ImGui::TextUnformatted("Fitness metric");
     drawMetric(settings.metric);
@@ -70,11 +108,11 @@ void drawGaControls(GaSettings& settings) {
     hoverHint("Divide each chromosome's difference by its Table 2 range before weighting.");
 
     ImGui::InputScalar("Seed", ImGuiDataType_U64, &settings.seed);
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("New seed"));
     if (ImGui::Button("New seed")) settings.seed = nextSeed(settings.seed);
 
     sectionHeader("Fitness weights");
-    drawWeights(settings.weights);
+    drawWeights(settings.weights, family, status);
 }
 
 }  // namespace matevo::ui

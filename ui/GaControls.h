@@ -3,11 +3,15 @@
 // per-chromosome weights, seed and elitism.
 #include <cstdint>
 
+#include "StatusLog.h"
 #include "evolve/GaSettings.h"
+#include "genome/MaterialFamily.h"
 
 namespace matevo::ui {
 
-void drawGaControls(GaSettings& settings);
+// Typed values beyond a slider's drag range are kept when presets allow them; values no preset
+// allows are clamped, and `status` says what was changed.
+void drawGaControls(GaSettings& settings, const MaterialFamily& family, StatusLog& status);
 
 // The seed that "new seed" picks: a fixed scramble of the current one, so a session can be
 // replayed (no clock, no hardware randomness).

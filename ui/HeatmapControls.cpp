@@ -91,14 +91,12 @@ void drawBandNames(const HeatmapView& heatmap) {
 }  // namespace
 
 void drawHeatmapControls(HeatmapView& heatmap) {
-    ImGui::Checkbox("Heatmap", &heatmap.enabled);
-    hoverHint("Overlay each candidate's per-pixel CIEDE2000 against the target.");
-    ImGui::SameLine();
     ImGui::SetNextItemWidth(150.0f);
     ImGui::DragFloatRange2("ΔE00 range", &heatmap.minDeltaE, &heatmap.maxDeltaE, 0.1f, 0.0f,
                            kMaxRange, "%.1f", "%.1f", ImGuiSliderFlags_AlwaysClamp);
     heatmap.maxDeltaE = std::max(heatmap.maxDeltaE, heatmap.minDeltaE + 0.1f);
-    ImGui::SameLine();
+    hoverHint("The ΔE00 values at the cold and hot ends of the colour ramp.");
+    sameLineIfFits(labelledWidth(90.0f, "Opacity"));
     ImGui::SetNextItemWidth(90.0f);
     ImGui::SliderFloat("Opacity", &heatmap.opacity, 0.0f, 1.0f, "%.2f");
     drawLegend(heatmap);

@@ -1,6 +1,6 @@
 #pragma once
-// The heatmap toolbar above the candidate grid: overlay toggle, ΔE00 range and opacity, and a
-// legend: the colour ramp over the range with the paper's perceptual bands marked on it.
+// The heatmap's settings above the candidate grid, shown while the overlay is on: ΔE00 range and
+// opacity, and a legend: the colour ramp over the range with the paper's perceptual bands.
 #include "EditorState.h"
 
 namespace matevo::ui {

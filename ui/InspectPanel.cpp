@@ -7,12 +7,18 @@
 
 #include "ImageView.h"
 #include "Widgets.h"
+#include "genome/FamilyRules.h"
 #include "io/GenomeJson.h"
 
 namespace matevo::ui {
 namespace {
 
-void drawChromosomeTable(const Genome& target, const Genome& candidate) {
+constexpr float kGap = 8.0f;
+
+// The family's active chromosomes only: the others are the same in every candidate.
+void drawChromosomeTable(const MaterialFamily& family, const Genome& target,
+                         const Genome& candidate) {
+    const FamilyRules rules = familyRules(family);
     constexpr ImGuiTableFlags kFlags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
     if (!ImGui::BeginTable("chromosomes", 4, kFlags)) return;
@@ -21,11 +27,10 @@ void drawChromosomeTable(const Genome& target, const Genome& candidate) {
     ImGui::TableSetupColumn("this");
     ImGui::TableSetupColumn("Δ");
     ImGui::TableHeadersRow();
-    // The kappa genes only when hue variety is in use.
-    const std::size_t shown = target.carriesKappa() || candidate.carriesKappa()
-                                  ? kChromosomeCount
-                                  : kPaperChromosomeCount;
-    for (std::size_t i = 0; i < shown; ++i) {
+    // The family's active chromosomes, and the kappa genes when hue variety is in use.
+    const bool kappaGenes = target.carriesKappa() || candidate.carriesKappa();
+    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+        if (!rules.ranges[i].active && !(kappaGenes && i >= kPaperChromosomeCount)) continue;
         const double difference = candidate[i] - target[i];
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -43,61 +48,132 @@ void drawChromosomeTable(const Genome& target, const Genome& candidate) {
     ImGui::EndTable();
 }
 
+void drawCompareModes(EditorState& state) {
+    if (ImGui::RadioButton("Side by side", state.compareMode == CompareMode::SideBySide))
+        state.compareMode = CompareMode::SideBySide;
+    hoverHint("Target and candidate at the same size, with the candidate's ΔE00 heatmap.");
+    sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Wipe"));
+    if (ImGui::RadioButton("Wipe", state.compareMode == CompareMode::Wipe))
+        state.compareMode = CompareMode::Wipe;
+    hoverHint("One sphere: target on the left of the line, candidate on the right. Drag the line.");
+    sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Flip"));
+    if (ImGui::RadioButton("Flip", state.compareMode == CompareMode::Flip))
+        state.compareMode = CompareMode::Flip;
+    hoverHint("One sphere, flipping between target and candidate: Space.");
+}
+
 // True when the candidate was promoted to target.
 bool drawActions(EditorState& state, const CandidateView& candidate) {
-    if (ImGui::Button(state.inspectShowsTarget ? "Showing target (B)" : "Showing candidate (A)"))
-        state.inspectShowsTarget = !state.inspectShowsTarget;
-    hoverHint("A/B flip: swap the large view between this candidate and the target.");
-    ImGui::SameLine();
     const bool promoted = ImGui::Button("Promote to target");
+    hoverHint("Make this candidate the target (undo with Ctrl+Z).");
     if (promoted) {
         state.preset.target = candidate.genome;
-        state.selectedCandidate = -1;
+        state.selected.reset();
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Copy genome as JSON")) {
+    sameLineIfFits(buttonWidth("Copy JSON"));
+    if (ImGui::Button("Copy JSON")) {
         ImGui::SetClipboardText(genomeToJson(candidate.genome).dump(2).c_str());
-        state.statusMessage = "Copied candidate #" + std::to_string(candidate.rank) + " as JSON";
+        state.status.post("Copied candidate #" + std::to_string(candidate.rank) + " as JSON");
     }
+    hoverHint("Copy the candidate's genome to the clipboard as JSON.");
     return promoted;
+}
+
+// A caption in the image's corner, when the image is large enough to carry one.
+void drawLabel(ImDrawList& drawList, ImVec2 at, float size, const char* text) {
+    if (size < ImGui::CalcTextSize(text).x + 16.0f) return;
+    drawList.AddText(ImVec2(at.x + 4.0f, at.y + 2.0f), ImGui::GetColorU32(kMutedTextColor), text);
+}
+
+// Target on the left of the split, candidate on the right; the line follows a drag.
+void drawWipe(EditorState& state, const CandidateView& candidate, ImVec2 origin, float size) {
+    ImDrawList& drawList = *ImGui::GetWindowDrawList();
+    ImGui::InvisibleButton("wipe", ImVec2(size, size));
+    if (ImGui::IsItemActive())
+        state.wipePosition = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / size, 0.0f, 1.0f);
+    const float splitX = origin.x + state.wipePosition * size;
+    drawImage(drawList, origin, size, state.evolution.targetImage);
+    drawList.PushClipRect(ImVec2(splitX, origin.y), ImVec2(origin.x + size, origin.y + size), true);
+    drawImage(drawList, origin, size, candidate.image);
+    drawList.PopClipRect();
+    drawList.AddLine(ImVec2(splitX, origin.y), ImVec2(splitX, origin.y + size),
+                     IM_COL32(255, 255, 255, 200), 2.0f);
+    drawLabel(drawList, origin, size, "target | candidate");
+}
+
+void drawComparison(EditorState& state, const CandidateView& candidate, float width, float height) {
+    ImDrawList& drawList = *ImGui::GetWindowDrawList();
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const ImTextureID target = state.evolution.targetImage;
+    switch (state.compareMode) {
+        case CompareMode::SideBySide: {
+            // Target, candidate and its heatmap: equal sizes, so they are judged alike.
+            const float size = std::max(48.0f, std::min(height, (width - 2.0f * kGap) / 3.0f));
+            const ImVec2 second(origin.x + size + kGap, origin.y);
+            const ImVec2 third(origin.x + 2.0f * (size + kGap), origin.y);
+            drawImage(drawList, origin, size, target);
+            drawImage(drawList, second, size, candidate.image);
+            drawImage(drawList, third, size, candidate.image, candidate.heatmap, 1.0f);
+            drawLabel(drawList, origin, size, "target");
+            drawLabel(drawList, second, size, "candidate");
+            drawLabel(drawList, third, size, "ΔE00");
+            ImGui::Dummy(ImVec2(3.0f * size + 2.0f * kGap, size));
+            break;
+        }
+        case CompareMode::Wipe:
+            drawWipe(state, candidate, origin, std::max(48.0f, std::min(height, width)));
+            break;
+        case CompareMode::Flip: {
+            const float size = std::max(48.0f, std::min(height, width));
+            drawImage(drawList, origin, size, state.inspectShowsTarget ? target : candidate.image);
+            drawLabel(drawList, origin, size,
+                      state.inspectShowsTarget ? "target (Space)" : "candidate (Space)");
+            ImGui::Dummy(ImVec2(size, size));
+            break;
+        }
+    }
 }
 
 }  // namespace
 
 void drawInspectPanel(EditorState& state) {
-    const auto& candidates = state.evolution.candidates;
-    if (candidates.empty()) {
+    if (state.evolution.candidates.empty()) {
         ImGui::TextColored(kMutedTextColor, "No candidates yet.");
         return;
     }
     // Until a tile is clicked, the best candidate is the one worth a closer look.
-    const bool chosen =
-        state.selectedCandidate >= 0 && state.selectedCandidate < int(candidates.size());
-    const CandidateView candidate = candidates[chosen ? std::size_t(state.selectedCandidate) : 0];
-    ImGui::Text("Candidate #%d   fitness %.4f   mean ΔE00 %.2f", candidate.rank, candidate.fitness,
-                candidate.meanDeltaE00);
-    if (!chosen) {
-        ImGui::SameLine();
-        ImGui::TextColored(kMutedTextColor, "(the best; click a tile for another)");
+    const CandidateView* inspected = state.inspectedCandidate();
+    if (!inspected) {
+        mutedText(
+            "The selected material is not in the current population; click a tile to "
+            "inspect another.");
+        return;
     }
+    const CandidateView candidate = *inspected;  // a copy: promoting changes the grid
+    ImGui::Text("#%d   fitness %.4f   mean ΔE00 %.2f", candidate.rank, candidate.fitness,
+                candidate.meanDeltaE00);
+    if (!state.selected) {
+        ImGui::SameLine();
+        ImGui::TextColored(kMutedTextColor, "(the best)");
+    }
+    drawCompareModes(state);
+    sameLineIfFits(buttonWidth("Promote to target"));
     if (drawActions(state, candidate)) return;  // promoted: the grid is about to change
 
-    // Two square images (A/B view, heatmap) and the chromosome table beside them.
-    constexpr float kTableWidth = 250.0f;
+    // The comparison and the chromosome table beside it; in a narrow panel, the table below.
+    constexpr float kTableWidth = 300.0f;
+    constexpr float kMinImage = 96.0f;
     const ImVec2 available = ImGui::GetContentRegionAvail();
-    const float imageSize =
-        std::max(64.0f, std::min(available.y - 4.0f, (available.x - kTableWidth - 16.0f) * 0.5f));
-    ImDrawList& drawList = *ImGui::GetWindowDrawList();
-    const ImVec2 origin = ImGui::GetCursorScreenPos();
-    const ImTextureID shown =
-        state.inspectShowsTarget ? state.evolution.targetImage : candidate.image;
-    drawImage(drawList, origin, imageSize, shown);
-    drawImage(drawList, ImVec2(origin.x + imageSize + 8.0f, origin.y), imageSize, candidate.image,
-              candidate.heatmap, 1.0f);
-    ImGui::Dummy(ImVec2(2.0f * imageSize + 8.0f, imageSize));
-    ImGui::SameLine();
-    ImGui::BeginChild("genes");
-    drawChromosomeTable(state.preset.target, candidate.genome);
+    const bool stacked = available.x < kTableWidth + 3.0f * (kMinImage + kGap);
+    ImGui::BeginGroup();
+    if (stacked)
+        drawComparison(state, candidate, available.x, available.y * 0.5f);
+    else
+        drawComparison(state, candidate, available.x - kTableWidth - kGap, available.y - 4.0f);
+    ImGui::EndGroup();
+    if (!stacked) ImGui::SameLine();
+    ImGui::BeginChild("genes", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+    drawChromosomeTable(state.preset.family, state.preset.target, candidate.genome);
     ImGui::EndChild();
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <imgui.h>
@@ -11,6 +13,12 @@
 
 namespace matevo::ui {
 namespace {
+
+std::string formatValue(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", value);
+    return text;
+}
 
 // Sliders cannot express open ends: step inside by a hair so the value stays valid.
 double clampInto(const ChromosomeRange& range, double value) {
@@ -55,7 +63,7 @@ bool drawFamily(MaterialFamily& family) {
     return true;
 }
 
-void drawChromosomeSliders(const MaterialFamily& family, Genome& target) {
+void drawChromosomeSliders(const MaterialFamily& family, Genome& target, StatusLog& status) {
     const FamilyRules rules = familyRules(family);
     int pinned = 0;
     for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) {
@@ -69,19 +77,44 @@ void drawChromosomeSliders(const MaterialFamily& family, Genome& target) {
         // Roughness and depth span decades: a logarithmic slider gives each decade equal room.
         const bool logarithmic = range.min > 0.0 && range.max > 20.0 * range.min;
         const std::string label = std::string(chromosomeName(i)) + "##target";
-        if (ImGui::SliderFloat(label.c_str(), &value, float(range.min), float(range.max), "%.4g",
-                               logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
+        const bool changed =
+            ImGui::SliderFloat(label.c_str(), &value, float(range.min), float(range.max), "%.4g",
+                               logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
+        if (editFinished(changed)) {
+            const Genome before = target;
             target[i] = clampInto(range, value);
             if (i == kEta1)
                 target[kEta2] = clampInto(rules.eta2Given(target[kEta1]), target[kEta2]);
+            // Typed outside Table 2 (or eta1 moved eta2 along): say what was kept.
+            const bool typedOutside = std::abs(target[i] - value) > 1e-3 * range.width();
+            const bool movedEta2 = i == kEta1 && target[kEta2] != before[kEta2];
+            if (typedOutside)
+                status.post(std::string(chromosomeName(i)) + " " + formatValue(value) +
+                                " is outside Table 2 (" + describe(range) + "): set to " +
+                                formatValue(target[i]),
+                            StatusKind::Warning);
+            if (movedEta2)
+                status.post("eta2 follows eta1 (Table 2): " + describeChanges(before, target));
+        } else if (changed) {
+            target[i] = value;  // being typed: checked when the field is left
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Table 2: %s", describe(range).c_str());
     }
-    if (pinned > 0)
-        ImGui::TextColored(kMutedTextColor, "%d medium chromosomes unused by this family", pinned);
+    if (pinned > 0) mutedText(std::to_string(pinned) + " medium chromosomes unused by this family");
 }
 
 }  // namespace
+
+std::string describeChanges(const Genome& before, const Genome& after) {
+    std::string changes;
+    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+        if (before[i] == after[i]) continue;
+        if (!changes.empty()) changes += ", ";
+        changes += std::string(chromosomeName(i)) + " " + formatValue(before[i]) + " → " +
+                   formatValue(after[i]);
+    }
+    return changes;
+}
 
 Genome fitGenomeToFamily(Genome genome, const MaterialFamily& family) {
     const FamilyRules rules = familyRules(family);
@@ -93,11 +126,19 @@ Genome fitGenomeToFamily(Genome genome, const MaterialFamily& family) {
     return genome;
 }
 
-void drawMaterialControls(MaterialFamily& family, Genome& target) {
+void drawMaterialControls(MaterialFamily& family, Genome& target, StatusLog& status) {
     sectionHeader("Material family");
-    if (drawFamily(family)) target = fitGenomeToFamily(target, family);
+    if (drawFamily(family)) {
+        const Genome before = target;
+        target = fitGenomeToFamily(target, family);
+        const std::string changes = describeChanges(before, target);
+        status.post("Family is now " + describe(family) +
+                        (changes.empty() ? ": the target fits it unchanged"
+                                         : ": target moved into its Table 2 ranges: " + changes),
+                    changes.empty() ? StatusKind::Info : StatusKind::Warning);
+    }
     sectionHeader("Target chromosomes");
-    drawChromosomeSliders(family, target);
+    drawChromosomeSliders(family, target, status);
 }
 
 }  // namespace matevo::ui

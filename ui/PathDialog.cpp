@@ -1,5 +1,6 @@
 #include "PathDialog.h"
 
+#include <algorithm>
 #include <utility>
 
 #include <imgui.h>
@@ -19,11 +20,15 @@ std::optional<std::filesystem::path> PathDialog::draw() {
         wantsOpen_ = false;
     }
     std::optional<std::filesystem::path> chosen;
-    ImGui::SetNextWindowSize(ImVec2(560, 0), ImGuiCond_Appearing);
-    visible_ = ImGui::BeginPopupModal(title_.c_str(), nullptr, ImGuiWindowFlags_NoSavedSettings);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing,
+                            ImVec2(0.5f, 0.5f));
+    visible_ = ImGui::BeginPopupModal(
+        title_.c_str(), nullptr,
+        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize);
     if (!visible_) return chosen;
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::SetNextItemWidth(std::min(640.0f, display.x - 80.0f));
     const bool entered = ImGui::InputText("##path", &path_, ImGuiInputTextFlags_EnterReturnsTrue);
     const bool confirmed = ImGui::Button("OK", ImVec2(100, 0)) || entered;
     ImGui::SameLine();

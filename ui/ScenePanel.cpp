@@ -64,7 +64,7 @@ void handleMouse(EditorState& state, ImVec2 topLeft, ImVec2 size) {
         const bool dragged =
             io.MouseDragMaxDistanceSqr[0] > io.MouseDragThreshold * io.MouseDragThreshold;
         if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && !dragged)
-            state.selectedCandidate = int(candidate);
+            state.selected = candidates[candidate].genome;
     }
 }
 

@@ -1,20 +1,20 @@
 #include "TargetPanel.h"
 
+#include <string>
+
 #include "ImageView.h"
 #include "Widgets.h"
-
-#include <string>
 
 namespace matevo::ui {
 
 void drawTargetPanel(const EditorState& state) {
     const Preset& preset = state.preset;
     ImGui::Text("%s", preset.name.c_str());
-    ImGui::SameLine();
-    ImGui::TextColored(kMutedTextColor, "%s", describe(preset.family).c_str());
+    const std::string family = describe(preset.family);
+    sameLineIfFits(ImGui::CalcTextSize(family.c_str()).x);
+    mutedText(family);
     // The scene decides what the target and every tile look like (and so the distances).
-    const std::string scene(describe(preset.scene.mode));
-    ImGui::TextColored(kMutedTextColor, "scene: %s", scene.c_str());
+    mutedText("scene: " + std::string(describe(preset.scene.mode)));
     drawImageFitted(state.evolution.targetImage);
 }
 

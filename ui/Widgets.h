@@ -1,5 +1,7 @@
 #pragma once
 // Small widgets shared by the panels (imgui 1.86 lacks SeparatorText and friends).
+#include <string>
+
 #include <imgui.h>
 
 namespace matevo::ui {
@@ -9,6 +11,22 @@ void sectionHeader(const char* title);
 
 // A short grey explanation on hover of the previous item.
 void hoverHint(const char* text);
+
+// For the slider just drawn, which returned `changed`: its new value is final, so clamp and
+// report it now. A dragged value is; a typed one (Ctrl+click) only when the field is left, so
+// that typing "1000" is not judged at "1".
+bool editFinished(bool changed);
+
+// Grey explanatory text, wrapped at the window's edge.
+void mutedText(const std::string& text);
+
+// Width of a widget of `itemWidth` with its label to the right (ImGui's default layout).
+float labelledWidth(float itemWidth, const char* label);
+// Width of a button with this label.
+float buttonWidth(const char* label);
+// SameLine() when an item `width` wide still fits on the current line, else a new line: toolbars
+// wrap in narrow windows instead of cutting controls off.
+void sameLineIfFits(float width);
 
 inline const ImVec4 kAccentColor = {0.45f, 0.72f, 1.0f, 1.0f};
 inline const ImVec4 kMutedTextColor = {0.62f, 0.64f, 0.68f, 1.0f};

@@ -1,4 +1,6 @@
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -10,10 +12,11 @@ namespace matevo::cli {
 int runBench(CommandLine& args) {
     if (args.wantsHelp()) {
         std::printf(
-            "usage: matevo bench [--json] [--scene-instances N] [--variants]\n\n"
+            "usage: matevo bench [--json] [--only grid|scene] [--scene-instances N] [--variants]\n\n"
             "Measures medians of the genetic algorithm (pop 100 x 10 generations, genotype\n"
             "fitness), CIEDE2000 throughput and the renderers. Prints a table, or one JSON object\n"
             "with --json. scripts/bench.sh runs the Python peers beside it and prints ratios.\n"
+            "--only grid|scene measures only the GPU/CPU grid or only the scene frames.\n"
             "--scene-instances N sets the instances of the scene figures (default 100).\n"
             "--variants measures only the variant search, with and without its novelty, on the\n"
             "three validation presets (a few minutes).\n");
@@ -22,11 +25,19 @@ int runBench(CommandLine& args) {
     const bool asJson = args.flag("--json");
     const int sceneInstances = int(args.integerOption("--scene-instances", 1, 1000000).value_or(100));
     const bool variants = args.flag("--variants");
+    const std::optional<std::string> only = args.option("--only");
     args.finish();
+    if (only && *only != "grid" && *only != "scene")
+        throw UsageError("--only: expected grid or scene, got '" + *only + "'");
+    if (only && variants) throw UsageError("--only and --variants measure different things");
 
     bench::BenchReport report;
     if (variants) {
         bench::benchVariants(report);
+    } else if (only == "grid") {
+        bench::benchGpuGrid(report);
+    } else if (only == "scene") {
+        bench::benchScene(report, sceneInstances);
     } else {
         bench::benchGeneticAlgorithm(report);
         bench::benchCpuRender(report);

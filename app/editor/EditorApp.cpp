@@ -1,5 +1,6 @@
 #include "EditorApp.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -17,6 +18,7 @@
 
 #include "CompareMetricsDisplay.h"
 #include "CompareMetricsWorker.h"
+#include "EditorStyle.h"
 #include "EditorTimings.h"
 #include "EditorUi.h"
 #include "EvolutionDisplay.h"
@@ -26,10 +28,15 @@
 #include "ScriptPlayer.h"
 #include "VariantsDisplay.h"
 #include "VariantsWorker.h"
+#include "ViewSettings.h"
 #include "VulkanContext.h"
+#include "WindowInput.h"
 #include "WindowRenderer.h"
 #include "io/ImageFile.h"
 #include "io/OutputFolder.h"
+#include "io/PresetCatalog.h"
+#include "io/ResourcePaths.h"
+#include "material/FgdTableCache.h"
 
 namespace matevo::editor {
 namespace {
@@ -65,41 +72,19 @@ private:
 
 // $XDG_CONFIG_HOME/matevo/imgui.ini, else ~/.config/matevo/imgui.ini; empty if neither exists.
 std::string imguiIniPath() {
-    std::filesystem::path base;
-    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config)
-        base = config;
-    else if (const char* home = std::getenv("HOME"); home && *home)
-        base = std::filesystem::path(home) / ".config";
-    else
-        return {};
+    const std::filesystem::path folder = userConfigDirectory();
+    if (folder.empty()) return {};
     std::error_code error;
-    std::filesystem::create_directories(base / "matevo", error);
-    return error ? std::string() : (base / "matevo" / "imgui.ini").string();
+    std::filesystem::create_directories(folder, error);
+    return error ? std::string() : (folder / "imgui.ini").string();
 }
 
-void applyStyle() {
-    ImGui::StyleColorsDark();
-    ImGuiStyle& style = ImGui::GetStyle();
-    style.WindowRounding = 0.0f;
-    style.FrameRounding = 3.0f;
-    style.GrabRounding = 3.0f;
-    style.WindowBorderSize = 1.0f;
-    style.FramePadding = ImVec2(6, 3);
-    style.ItemSpacing = ImVec2(7, 4);
-    style.Colors[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.11f, 0.12f, 1.0f);
-    style.Colors[ImGuiCol_TitleBgActive] = ImVec4(0.16f, 0.20f, 0.27f, 1.0f);
-    style.Colors[ImGuiCol_TitleBg] = ImVec4(0.13f, 0.15f, 0.19f, 1.0f);
-}
-
-// DejaVu Sans (a Debian default font) has the Greek ΔE; ImGui's built-in font is the fallback.
-void loadFont() {
-    static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x206F, 0};
-    const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-    ImGuiIO& io = ImGui::GetIO();
-    if (std::filesystem::exists(path) &&
-        io.Fonts->AddFontFromFileTTF(path, 14.0f, nullptr, kRanges))
-        return;
-    io.Fonts->AddFontDefault();
+// Shipped presets are read-only; the user's own go to their data folder.
+ui::PresetFolders presetFolders() {
+    ui::PresetFolders folders;
+    if (auto shipped = findResourceDirectory("presets")) folders.shipped = *shipped;
+    folders.user = userPresetDirectory();
+    return folders;
 }
 
 class EditorApp {
@@ -141,6 +126,7 @@ private:
     EditorOptions options_;
     std::string iniPath_;
     std::unique_ptr<GLFWwindow, WindowDeleter> window_;
+    std::unique_ptr<WindowInput> input_;
     std::unique_ptr<VulkanContext> vulkan_;
     std::unique_ptr<WindowRenderer> renderer_;
     std::unique_ptr<ImGuiSession> imgui_;
@@ -153,6 +139,9 @@ private:
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
+    // Frames drawn after a change, so that hover states and popups settle before waiting.
+    static constexpr int kSettleFrames = 3;
+    std::atomic<bool> workerPosted_{false};  // a worker has a result or progress to show
     std::vector<std::shared_ptr<ShownImage>> compareImages_;  // what Compare metrics shows
     std::vector<std::shared_ptr<ShownImage>> variantsImages_;  // what Variants shows
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
@@ -171,9 +160,9 @@ EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, VulkanContext& vulkan,
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = iniPath.empty() ? nullptr : iniPath.c_str();
-    applyStyle();
-    loadFont();
-    ImGui_ImplGlfw_InitForVulkan(window, true);
+    ui::applyEditorStyle();
+    ui::loadEditorFont();
+    ImGui_ImplGlfw_InitForVulkan(window, false);  // WindowInput owns the callbacks
     ImGui_ImplVulkan_InitInfo info{};
     info.Instance = vulkan.instance().handle();
     info.PhysicalDevice = vulkan.device().physicalDevice();
@@ -203,12 +192,13 @@ EditorApp::ImGuiSession::~ImGuiSession() {
 EditorApp::EditorApp(const EditorOptions& options)
     : options_(options),
       iniPath_(imguiIniPath()),
-      ui_(options.preset, options.presetFile,
-          ui::ShortcutKeys{GLFW_KEY_O, GLFW_KEY_S, GLFW_KEY_Q, GLFW_KEY_F12}),
+      ui_(options.preset, options.presetFile, presetFolders(),
+          ui::ShortcutKeys{GLFW_KEY_O, GLFW_KEY_S, GLFW_KEY_Q, GLFW_KEY_F12, GLFW_KEY_K}),
       script_(options.script) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     window_.reset(glfwCreateWindow(options.width, options.height, "matevo", nullptr, nullptr));
     if (!window_) throw WindowUnavailable("cannot open a window on this display");
+    input_ = std::make_unique<WindowInput>(window_.get());
     auto vulkan = VulkanContext::create(window_.get(), options.validation);
     if (!vulkan) throw WindowUnavailable(vulkan.error().message);
     vulkan_ = std::move(*vulkan);
@@ -219,30 +209,36 @@ EditorApp::EditorApp(const EditorOptions& options)
     if (!renderer) throw std::runtime_error(renderer.error().message);
     renderer_ = std::move(renderer).value();
     imgui_ = std::make_unique<ImGuiSession>(window_.get(), *vulkan_, *renderer_, iniPath_);
+    ui::rememberViewSettings(ui_.state());
     auto bridge = ImageBridge::create(*vulkan_, renderer_->renderPass());
     if (!bridge) throw std::runtime_error(bridge.error().message);
     bridge_ = std::move(bridge).value();
     display_ = std::make_unique<EvolutionDisplay>(*bridge_);
+    const auto wake = [this] {
+        workerPosted_.store(true);
+        glfwPostEmptyEvent();
+    };
     // The workers render on the window's device: tiles are shown without leaving the GPU.
-    worker_ = std::make_unique<EvolutionWorker>([] { glfwPostEmptyEvent(); }, vulkan_->device(),
-                                                options.backend);
+    worker_ = std::make_unique<EvolutionWorker>(wake, vulkan_->device(), options.backend);
     gpu::RendererRequest compareRenderer;
     compareRenderer.backend = options.backend;
     compareRenderer.who = "matevo edit: Compare metrics";
     compareRenderer.device = &vulkan_->device();
-    compareWorker_ =
-        std::make_unique<CompareMetricsWorker>([] { glfwPostEmptyEvent(); }, compareRenderer);
+    compareWorker_ = std::make_unique<CompareMetricsWorker>(wake, compareRenderer);
     gpu::RendererRequest variantsRenderer = compareRenderer;
     variantsRenderer.who = "matevo edit: Variants";
-    variantsWorker_ =
-        std::make_unique<VariantsWorker>([] { glfwPostEmptyEvent(); }, variantsRenderer);
-    sceneWorker_ = std::make_unique<SceneViewWorker>([] { glfwPostEmptyEvent(); },
-                                                     vulkan_->device());
+    variantsWorker_ = std::make_unique<VariantsWorker>(wake, variantsRenderer);
+    sceneWorker_ = std::make_unique<SceneViewWorker>(wake, vulkan_->device());
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
 
 EditorApp::~EditorApp() {
+    // imgui.ini holds the view settings, read from ui_: write it now, while ui_ is alive, and
+    // not again when the ImGui context goes after it.
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.IniFilename) ImGui::SaveIniSettingsToDisk(io.IniFilename);
+    io.IniFilename = nullptr;
     variantsWorker_.reset();
     sceneWorker_.reset();
     compareWorker_.reset();
@@ -258,17 +254,30 @@ bool EditorApp::shouldQuit() const {
 int EditorApp::run() {
     int frames = 0;
     std::optional<std::filesystem::path> screenshotPath;
+    int framesToSettle = 0;
     while (!shouldQuit()) {
-        // Draw only when something changed: input, a new generation (the worker posts an empty
-        // event), a due script step or snapshot. Spinning would take a core from the GA on a
-        // two-core machine. The timeout keeps the progress line and SIGTERM responsive.
-        const bool due = screenshotPath || (!script_.finished() && !script_.waitingForEvolution());
+        // Draw only when something changed: input (and a few frames after it, for ImGui's
+        // hover and popups to settle), a worker's result (it posts an empty event), a due script
+        // step or snapshot, or the progress of a running job. An idle editor draws nothing: on
+        // a two-core machine every frame is time taken from the GA. The timeout keeps SIGTERM
+        // and the progress line responsive.
+        const bool scriptDue = !script_.finished() && !script_.waitingForEvolution() &&
+                               (!script_.idling() || script_.idleOver());
+        const bool due = screenshotPath || scriptDue || input_->hasPending() || framesToSettle > 0;
+        const bool busy = worker_->busy() || compareWorker_->busy() || variantsWorker_->busy();
         if (due)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(
-                worker_->busy() || compareWorker_->busy() || variantsWorker_->busy() ? 0.1 : 0.25);
+            glfwWaitEventsTimeout(busy ? 0.1 : 0.25);
         if (shouldQuit()) break;
+        if (input_->takeCloseRequest()) ui_.requestQuit();
+        if (auto dropped = input_->takeDroppedFiles(); !dropped.empty())
+            ui_.dropFile(dropped.front());
+        const bool woken = workerPosted_.exchange(false);
+        if (input_->takeChanged() || woken) framesToSettle = kSettleFrames;
+        if (!due && !busy && framesToSettle == 0) continue;  // nothing changed: draw nothing
+        framesToSettle = std::max(0, framesToSettle - 1);
+        if (script_.idling()) timings_.frameWhileScriptIdle();
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_.get(), &width, &height);
         if (width == 0 || height == 0) {  // minimised: nothing to draw into until restored
@@ -309,16 +318,18 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     applyCompareMetricsResults();
     applyVariantsResults();
     applySceneView();
+    ui_.state().evolution.tableBuildProgress = tableBuildProgress();
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    input_->applyFrame();  // after the backend's pointer polling, which it overrides
     ImGui::NewFrame();
     const ui::FrameRequests requests = ui_.draw();
     ImGui::Render();
     if (requests.quit) quitRequested_ = true;
     if (requests.snapshot) screenshotPath = nextSnapshotPath();
     if (requests.runCompareMetrics)
-        compareWorker_->start({ui_.state().preset, ui_.state().presetPath,
-                               ui_.state().compareMetrics.runs});
+        compareWorker_->start(
+            {ui_.state().preset, ui_.state().presetPath, ui_.state().compareMetrics.runs});
     handleVariantsActions(requests.variants);
     handleVariantsActions(scriptedVariants);
     submitChangesToWorker();
@@ -362,7 +373,7 @@ void EditorApp::applyEvolutionResults() {
     ui::EditorState& state = ui_.state();
     std::optional<EvolutionUpdate> update = worker_->takeLatest();
     if (!update) return;
-    if (!update->error.empty()) state.statusMessage = update->error;
+    if (!update->error.empty()) state.status.post(update->error, ui::StatusKind::Error);
     if (Status shown = display_->show(std::move(*update), state.evolution); !shown)
         failure_ = shown.error().message;
 }
@@ -441,9 +452,9 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
             return output->commit();
         };
         const Status saved = saveSet();
-        state.statusMessage = saved ? "Saved the set to " + view.savePath
-                                    : "Save set failed: " + saved.error().message;
-        view.summary = state.statusMessage;
+        view.summary = saved ? "Saved the set to " + view.savePath
+                             : "Save set failed: " + saved.error().message;
+        state.status.post(view.summary, saved ? ui::StatusKind::Info : ui::StatusKind::Error);
     }
 }
 
@@ -482,7 +493,12 @@ void EditorApp::submitChangesToWorker() {
     const Preset& preset = ui_.state().preset;
     // Wait for the end of a drag: every intermediate value would cancel the one before.
     if (ImGui::IsAnyItemActive() && submittedPreset_) return;
-    if (submittedPreset_ == preset) return;
+    // Keeping, naming or removing a kept material changes nothing the GA does.
+    const auto withoutKept = [](Preset p) {
+        p.kept.clear();
+        return p;
+    };
+    if (submittedPreset_ && withoutKept(*submittedPreset_) == withoutKept(preset)) return;
     submittedPreset_ = preset;
     const std::uint64_t jobId = worker_->submit({preset, ui_.state().presetPath});
     ui_.state().evolution.running = true;
@@ -499,8 +515,11 @@ std::filesystem::path EditorApp::nextSnapshotPath() const {
 
 void EditorApp::saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path) {
     const Status written = writeImage(toLinearImage(frame), path);
-    ui_.state().statusMessage =
-        written ? "Snapshot " + path.string() : "Snapshot failed: " + written.error().message;
+    if (written)
+        ui_.state().status.post("Snapshot " + path.string());
+    else
+        ui_.state().status.post("Snapshot failed: " + written.error().message,
+                                ui::StatusKind::Error);
     if (!written && !options_.script.empty()) failure_ = written.error().message;
 }
 

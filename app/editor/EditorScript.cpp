@@ -24,11 +24,13 @@ struct Grammar {
 // The largest window GLFW and the swapchain are asked for; far beyond any screen.
 constexpr long long kMaxWindowSide = 16384;
 constexpr long long kMaxWaitFrames = 10'000'000;
+constexpr long long kMaxIdleMilliseconds = 600'000;
 
 const std::map<std::string, Grammar>& grammar() {
     static const std::map<std::string, Grammar> table = {
         {"wait", {Kind::Wait, 1, false, 0, kMaxWaitFrames}},
         {"wait-evolution", {Kind::WaitEvolution, 0, false}},
+        {"idle", {Kind::Idle, 1, false, 0, kMaxIdleMilliseconds}},
         {"population", {Kind::Population, 1, false, 2, kMaxPopulation}},
         {"generations", {Kind::Generations, 1, false, 1, kMaxGenerations}},
         {"seed", {Kind::Seed, 1, false, 0, std::numeric_limits<long long>::max()}},
@@ -40,6 +42,7 @@ const std::map<std::string, Grammar>& grammar() {
         {"undo", {Kind::Undo, 0, false}},
         {"redo", {Kind::Redo, 0, false}},
         {"resize", {Kind::Resize, 2, false, 64, kMaxWindowSide}},
+        {"check-layout", {Kind::CheckLayout, 0, false}},
         {"screenshot", {Kind::Screenshot, 0, true}},
         {"save", {Kind::Save, 0, true}},
         {"variants-hue", {Kind::VariantsHue, 0, true}},

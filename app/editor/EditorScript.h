@@ -4,6 +4,8 @@
 //
 //   wait N                  draw N frames
 //   wait-evolution          draw until the GA run is finished and shown (gives up after 120 s)
+//   idle MS                 do nothing for MS milliseconds: frames are drawn only if something
+//                           asks for one (an idle editor draws none)
 //   population N | generations N | seed N
 //   metric chebyshev|euclidean|manhattan
 //   heatmap on|off|toggle
@@ -12,6 +14,7 @@
 //   wait-scene              draw until the Scene window shows a render (gives up after 120 s)
 //   undo | redo
 //   resize W H              resize the window (pixels)
+//   check-layout            fail (exit 1) if a panel cuts off a control at its right edge
 //   screenshot PATH         PNG of the window, as F12
 //   save PATH               save the preset
 //   variants-hue on|off     the Variants window's "Hue variety" (evolve the metal's kappa too)
@@ -32,6 +35,7 @@ struct ScriptAction {
     enum class Kind {
         Wait,
         WaitEvolution,
+        Idle,
         Population,
         Generations,
         Seed,
@@ -43,6 +47,7 @@ struct ScriptAction {
         Undo,
         Redo,
         Resize,
+        CheckLayout,
         Screenshot,
         Save,
         VariantsHue,

@@ -46,10 +46,10 @@ std::string EditorTimings::report() const {
                   "{\"frame_idle_ms\":%.2f,\"frame_idle_samples\":%zu,"
                   "\"frame_evolving_ms\":%.2f,\"frame_evolving_samples\":%zu,"
                   "\"change_to_first_grid_ms\":%.1f,\"change_to_final_grid_ms\":%.1f,"
-                  "\"changes\":%zu}",
+                  "\"changes\":%zu,\"frames_while_script_idle\":%d}",
                   median(idleFrames_), idleFrames_.size(), median(evolvingFrames_),
                   evolvingFrames_.size(), median(changeToFirstGrid_), median(changeToFinalGrid_),
-                  changeToFirstGrid_.size());
+                  changeToFirstGrid_.size(), framesWhileScriptIdle_);
     return line;
 }
 

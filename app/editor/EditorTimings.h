@@ -13,6 +13,8 @@ public:
     using Clock = std::chrono::steady_clock;
 
     void addFrame(double milliseconds, bool evolving);
+    // A frame was drawn while a script's `idle` action waited (an idle editor should draw none).
+    void frameWhileScriptIdle() { ++framesWhileScriptIdle_; }
     void changeSubmitted(std::uint64_t jobId, Clock::time_point when);
     // Called when a frame showing results of `jobId` was presented.
     void resultsShown(std::uint64_t jobId, bool finished, Clock::time_point when);
@@ -24,6 +26,7 @@ private:
     std::vector<double> evolvingFrames_;
     std::vector<double> changeToFirstGrid_;
     std::vector<double> changeToFinalGrid_;
+    int framesWhileScriptIdle_ = 0;
     std::uint64_t pendingJob_ = 0;
     bool firstShown_ = false;
     Clock::time_point submittedAt_;

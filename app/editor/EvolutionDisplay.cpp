@@ -7,8 +7,9 @@ namespace matevo::editor {
 
 Result<std::shared_ptr<ShownImage>> EvolutionDisplay::showTile(
     const std::shared_ptr<const gpu::DisplayTile>& tile) {
-    for (const std::shared_ptr<ShownImage>& shown : candidates_)
-        if (&shown->tile() == tile.get()) return shown;
+    for (const auto* images : {&candidates_, &kept_})
+        for (const std::shared_ptr<ShownImage>& shown : *images)
+            if (&shown->tile() == tile.get()) return shown;
     if (target_ && &target_->tile() == tile.get()) return target_;
     return bridge_.show(tile);
 }
@@ -32,12 +33,28 @@ Status EvolutionDisplay::show(EvolutionUpdate update, ui::EvolutionView& view) {
         candidate.fitness = result.individual.fitness;
         candidate.meanDeltaE00 = result.deltaE.mean;
         candidate.genome = result.individual.genome;
+        candidate.copies = result.copies;
         candidate.image = (*shown)->render();
         candidate.heatmap = (*shown)->heatmap();
         view.candidates.push_back(candidate);
         candidates.push_back(std::move(shown).value());
     }
+    // Kept materials: render and ΔE00 from the current target.
+    std::vector<std::shared_ptr<ShownImage>> kept;
+    view.kept.clear();
+    for (const CandidateResult& result : update.kept) {
+        auto shown = showTile(result.tile);
+        if (!shown) return shown.error();
+        ui::CandidateView material;
+        material.meanDeltaE00 = result.deltaE.mean;
+        material.genome = result.individual.genome;
+        material.image = (*shown)->render();
+        material.heatmap = (*shown)->heatmap();
+        view.kept.push_back(material);
+        kept.push_back(std::move(shown).value());
+    }
     candidates_ = std::move(candidates);  // frames in flight keep the replaced ones alive
+    kept_ = std::move(kept);
     view.history = std::move(update.history);
     view.totalGenerations = update.totalGenerations;
     view.renderBackend = update.backend;

@@ -31,6 +31,7 @@ private:
     bool finished_ = false;
     std::shared_ptr<ShownImage> target_;
     std::vector<std::shared_ptr<ShownImage>> candidates_;
+    std::vector<std::shared_ptr<ShownImage>> kept_;
 };
 
 }  // namespace matevo::editor

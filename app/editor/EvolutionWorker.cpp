@@ -139,9 +139,25 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
     for (;;) {
         if (cancelled(jobId)) return;
         const std::vector<Individual> ranked = ga.rankedPopulation();
+        // The best distinct genomes: a converging population holds many copies of one
+        // material, which would fill the grid with identical tiles. Copies are counted instead.
+        std::vector<std::size_t> firstOf;  // index into ranked of each shown genome
+        std::vector<int> copies;
+        for (std::size_t i = 0; i < ranked.size(); ++i) {
+            const auto same = std::find_if(firstOf.begin(), firstOf.end(), [&](std::size_t j) {
+                return ranked[j].genome == ranked[i].genome;
+            });
+            if (same != firstOf.end())
+                ++copies[std::size_t(same - firstOf.begin())];
+            else if (firstOf.size() < std::size_t(kGridTiles))
+                firstOf.push_back(i), copies.push_back(1);
+        }
         std::vector<Genome> shown;
-        for (std::size_t i = 0; i < ranked.size() && i < kGridTiles; ++i)
-            shown.push_back(ranked[i].genome);
+        for (std::size_t i : firstOf) shown.push_back(ranked[i].genome);
+        // Kept materials of this family are drawn too, whether or not the run finds them.
+        for (const KeptMaterial& kept : preset.kept)
+            if (kept.family == preset.family && shown.size() < firstOf.size() + kKeptTiles)
+                shown.push_back(kept.genome);
         auto tiles = renderCache.tiles(shown);
         if (cancelled(jobId)) return;
         if (!tiles) {
@@ -151,12 +167,18 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
             return;
         }
         update.candidates.clear();
-        for (std::size_t i = 0; i < shown.size(); ++i)
-            update.candidates.push_back(
-                {int(i) + 1, ranked[i], std::move((*tiles)[i].tile), (*tiles)[i].stats});
+        update.kept.clear();
+        for (std::size_t i = 0; i < shown.size(); ++i) {
+            auto& tile = (*tiles)[i];
+            if (i < firstOf.size())
+                update.candidates.push_back({int(firstOf[i]) + 1, ranked[firstOf[i]],
+                                             std::move(tile.tile), tile.stats, copies[i]});
+            else
+                update.kept.push_back({0, {shown[i], 0.0}, std::move(tile.tile), tile.stats, 0});
+        }
         const GenerationStats& stats = ga.history().back();
         update.history.push_back(
-            {stats.generation, stats.best, stats.mean, meanOf(update.candidates)});
+            {stats.generation, stats.best, stats.mean, meanOf(update.candidates), stats.diversity});
         update.finished = ga.finished();
         publish(update);
         if (update.finished) return;

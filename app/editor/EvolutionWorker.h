@@ -34,6 +34,7 @@ struct CandidateResult {
     Individual individual;
     std::shared_ptr<const gpu::DisplayTile> tile;  // render + ΔE00 map against the target
     DeltaEStats deltaE;
+    int copies = 1;  // individuals in the population with this genome
 };
 
 struct EvolutionUpdate {
@@ -43,6 +44,7 @@ struct EvolutionUpdate {
     std::shared_ptr<const gpu::DisplayTile> target;  // large, for the target panel
     std::string backend;                      // what rendered the tiles: "GPU (name)" or "CPU"
     std::vector<CandidateResult> candidates;  // best first
+    std::vector<CandidateResult> kept;        // the preset's kept materials of its family
     std::vector<ui::GenerationPoint> history;
     std::string error;  // the job could not run (e.g. a missing texture)
 };
@@ -50,6 +52,7 @@ struct EvolutionUpdate {
 class EvolutionWorker {
 public:
     static constexpr int kGridTiles = 24;
+    static constexpr std::size_t kKeptTiles = 48;  // kept materials drawn, at most
     static constexpr int kTileSize = 128;
     static constexpr int kTargetSize = 320;
     static constexpr std::size_t kRenderCacheSize = 128;  // tiles (~50 MB)

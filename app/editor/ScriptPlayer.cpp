@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "LayoutCheck.h"
+
 namespace matevo::editor {
 namespace {
 
@@ -51,6 +53,15 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::VariantsHue:
             state.variants.hueVariety = action.text == "on";
             return true;
+        case Kind::Idle:
+            if (!idleUntil_) {
+                idleUntil_ =
+                    std::chrono::steady_clock::now() + std::chrono::milliseconds(action.first);
+                return false;
+            }
+            if (!idleOver()) return false;
+            idleUntil_.reset();
+            return true;
         case Kind::Variants:
             state.variants.open = true;
             state.variants.count = int(std::clamp<long long>(action.first, 1, 48));
@@ -84,7 +95,8 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
                 action.text == "toggle" ? !state.heatmap.enabled : action.text == "on";
             return true;
         case Kind::Select:
-            state.selectedCandidate = int(action.first);
+            if (action.first >= 0 && std::size_t(action.first) < state.evolution.candidates.size())
+                state.selected = state.evolution.candidates[std::size_t(action.first)].genome;
             return true;
         case Kind::Scene:
             state.sceneView.open = action.text == "open";
@@ -107,11 +119,19 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::Resize:
             effects.resize = {int(action.first), int(action.second)};
             return true;
+        case Kind::CheckLayout:
+            for (const std::string& problem : ui::findCutOffContent())
+                effects.error +=
+                    (effects.error.empty() ? "script line " + std::to_string(action.line) +
+                                                 ": check-layout: cut off: "
+                                           : "; ") +
+                    problem;
+            return true;
         case Kind::Screenshot:
             effects.screenshot = action.text;
             return true;
         case Kind::Save:
-            if (!ui.savePreset(action.text)) effects.error = state.statusMessage;
+            if (!ui.savePreset(action.text)) effects.error = state.status.latest().text;
             return true;
         case Kind::Quit:
             effects.quit = true;

@@ -31,6 +31,10 @@ public:
         return !finished() && (actions_[next_].kind == ScriptAction::Kind::WaitEvolution ||
                                actions_[next_].kind == ScriptAction::Kind::WaitVariants);
     }
+    // An `idle` action is under way: the app draws only what something else asks for, and
+    // polls idleOver() to resume the script.
+    bool idling() const { return idleUntil_.has_value(); }
+    bool idleOver() const { return idleUntil_ && std::chrono::steady_clock::now() >= *idleUntil_; }
     // What the script waits for: the GA run is done and shown; the variant search likewise.
     struct Settled {
         bool evolution = false;
@@ -51,6 +55,7 @@ private:
     std::size_t next_ = 0;
     long long framesWaited_ = 0;
     std::optional<std::chrono::steady_clock::time_point> waitingSince_;
+    std::optional<std::chrono::steady_clock::time_point> idleUntil_;
 };
 
 }  // namespace matevo::editor

@@ -1,6 +1,9 @@
 #pragma once
 // One compute shader with its pipeline and a single descriptor set. Bindings are numbered in
 // the order given at creation. Callers submit and wait before rebinding (our passes do).
+// Specialisation constants (32-bit each, constant_id = position in the list) fix what a
+// pipeline does not use: lavapipe runs both sides of a branch, but not a branch specialised
+// away.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -17,7 +20,8 @@ class ComputeKernel {
 public:
     static Result<ComputeKernel> create(const Device& device, std::span<const uint32_t> spirv,
                                         std::vector<VkDescriptorType> bindings,
-                                        uint32_t pushConstantBytes);
+                                        uint32_t pushConstantBytes,
+                                        std::span<const uint32_t> specialization = {});
 
     void bindBuffer(uint32_t binding, const Buffer& buffer) const;
     void bindSampledImage(uint32_t binding, VkImageView view, VkSampler sampler) const;

@@ -1,5 +1,6 @@
 #include "gpu/GpuSceneRenderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -14,11 +15,16 @@
 
 #include "gpu/ShaderModule.h"
 #include "gpu/VulkanError.h"
+#include "mesh/MeshSimplification.h"
 
 namespace matevo::gpu {
 namespace {
 
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+// Screen pixels per triangle of a level of detail, counted over the instance's whole disc
+// (about half the triangles face away): smaller triangles cost lavapipe as much as these and
+// change nothing visible.
+constexpr double kPixelsPerTriangle = 2.0;
 
 enum Binding : uint32_t {
     kInstances = 0,
@@ -256,10 +262,19 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
     if (!uploaded) return uploaded.error();
     renderer.textures_ = std::move(uploaded).value();
 
-    auto vertices = createFilledBuffer(device, std::as_bytes(std::span(mesh.vertices)),
+    // Every level in one vertex and one index buffer.
+    std::vector<MeshVertex> allVertices;
+    std::vector<uint32_t> allIndices;
+    for (const Mesh& level : levelsOfDetail(mesh)) {
+        renderer.levels_.push_back({uint32_t(allIndices.size()), uint32_t(level.indices.size()),
+                                    int32_t(allVertices.size())});
+        allVertices.insert(allVertices.end(), level.vertices.begin(), level.vertices.end());
+        allIndices.insert(allIndices.end(), level.indices.begin(), level.indices.end());
+    }
+    auto vertices = createFilledBuffer(device, std::as_bytes(std::span(allVertices)),
                                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     if (!vertices) return vertices.error();
-    auto indices = createFilledBuffer(device, std::as_bytes(std::span(mesh.indices)),
+    auto indices = createFilledBuffer(device, std::as_bytes(std::span(allIndices)),
                                       VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     if (!indices) return indices.error();
     auto frameBuffer = Buffer::create(device, sizeof(GpuFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -267,7 +282,6 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
     if (!frameBuffer) return frameBuffer.error();
     renderer.vertices_ = std::move(vertices).value();
     renderer.indices_ = std::move(indices).value();
-    renderer.indexCount_ = uint32_t(mesh.indices.size());
     renderer.frameBuffer_ = std::move(frameBuffer).value();
 
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -353,16 +367,48 @@ Status GpuSceneRenderer::prepareTarget(int width, int height) {
     return Ok{};
 }
 
-Status GpuSceneRenderer::prepareInstances(std::span<const SceneInstance> instances) {
-    std::vector<GpuInstance> gpuInstances(std::max<std::size_t>(instances.size(), 1));
+Status GpuSceneRenderer::prepareInstances(const SceneFrame& frame) {
+    const std::span<const SceneInstance> instances = frame.instances;
+    struct Placed {
+        std::size_t instance;
+        std::size_t level;
+        double distance;
+    };
+    std::vector<Placed> placed;
+    placed.reserve(instances.size());
+    const SceneCamera& camera = frame.camera;
+    // Pixels per unit length at distance 1 from the camera.
+    const double focalPixels =
+        0.5 * frame.height / std::tan(camera.fieldOfViewDegrees * std::numbers::pi / 360.0);
     for (std::size_t i = 0; i < instances.size(); ++i) {
         if (instances[i].material >= materialCount_)
             return Error{"scene instance " + std::to_string(i) + " names material " +
                          std::to_string(instances[i].material) + " of " +
                          std::to_string(materialCount_)};
-        std::memcpy(gpuInstances[i].transform, glm::value_ptr(instances[i].transform),
+        // Meshes fit the unit sphere (core/mesh/Mesh.h): its image is a disc of about this
+        // radius; the level is the finest whose triangles get kPixelsPerTriangle of it.
+        const glm::mat4& transform = instances[i].transform;
+        const double scale = glm::length(glm::dvec3(transform[0]));
+        const double distance = glm::length(glm::dvec3(transform[3]) - camera.position);
+        const double radius = distance > scale ? focalPixels * scale / distance : INFINITY;
+        const double pixels = std::numbers::pi * radius * radius;
+        std::size_t level = 0;
+        while (level + 1 < levels_.size() &&
+               double(levels_[level].indexCount / 3) * kPixelsPerTriangle > pixels)
+            ++level;
+        placed.push_back({i, level, distance});
+    }
+    std::stable_sort(placed.begin(), placed.end(), [](const Placed& a, const Placed& b) {
+        return a.level != b.level ? a.level < b.level : a.distance < b.distance;
+    });
+    std::vector<GpuInstance> gpuInstances(std::max<std::size_t>(instances.size(), 1));
+    levelInstances_.assign(levels_.size(), 0);
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+        const SceneInstance& instance = instances[placed[i].instance];
+        std::memcpy(gpuInstances[i].transform, glm::value_ptr(instance.transform),
                     sizeof gpuInstances[i].transform);
-        gpuInstances[i].material[0] = instances[i].material;
+        gpuInstances[i].material[0] = instance.material;
+        ++levelInstances_[placed[i].level];
     }
     const VkDeviceSize bytes = gpuInstances.size() * sizeof(GpuInstance);
     if (instances_.size() < bytes) {
@@ -381,7 +427,7 @@ Status GpuSceneRenderer::record(VkCommandBuffer commands, const SceneFrame& fram
     if (frame.width <= 0 || frame.height <= 0) return Error{"the scene image is empty"};
     if (materialCount_ == 0) return Error{"the scene has no materials (setMaterials)"};
     if (auto ok = prepareTarget(frame.width, frame.height); !ok) return ok.error();
-    if (auto ok = prepareInstances(frame.instances); !ok) return ok.error();
+    if (auto ok = prepareInstances(frame); !ok) return ok.error();
     const GpuFrame gpuFrame = toGpu(frame, scene, textures_);
     std::memcpy(frameBuffer_.bytes().data(), &gpuFrame, sizeof gpuFrame);
 
@@ -405,8 +451,14 @@ Status GpuSceneRenderer::record(VkCommandBuffer commands, const SceneFrame& fram
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(commands, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(commands, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-    if (!frame.instances.empty())
-        vkCmdDrawIndexed(commands, indexCount_, uint32_t(frame.instances.size()), 0, 0, 0);
+    uint32_t firstInstance = 0;
+    for (std::size_t level = 0; level < levels_.size(); ++level) {
+        if (levelInstances_[level] > 0)
+            vkCmdDrawIndexed(commands, levels_[level].indexCount, levelInstances_[level],
+                             levels_[level].firstIndex, levels_[level].vertexOffset,
+                             firstInstance);
+        firstInstance += levelInstances_[level];
+    }
     vkCmdEndRenderPass(commands);
     return Ok{};
 }

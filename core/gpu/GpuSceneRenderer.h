@@ -9,7 +9,12 @@
 // to write and read back at 4 samples per pixel (a deferred G-buffer with MSAA would multiply
 // the memory traffic that bounds lavapipe), and a single light plus the environment gives a
 // deferred pass nothing to amortise. docs/scene-view.md has the figures.
+//
+// Levels of detail (core/mesh/MeshSimplification.h): each instance is drawn from the finest
+// level that gives its triangles a few pixels each on screen, one instanced draw per level,
+// nearer instances first within a level so that the depth test rejects what they hide.
 #include <span>
+#include <vector>
 
 #include "common/Image.h"
 #include "common/Result.h"
@@ -63,7 +68,8 @@ public:
 
 private:
     Status prepareTarget(int width, int height);
-    Status prepareInstances(std::span<const SceneInstance> instances);
+    // Uploads the instances grouped by level of detail; fills levelInstances_.
+    Status prepareInstances(const SceneFrame& frame);
 
     const Device* device_ = nullptr;
     const FgdTables* tables_ = nullptr;
@@ -72,7 +78,13 @@ private:
     uint32_t materialCount_ = 0;
     Buffer vertices_;
     Buffer indices_;
-    uint32_t indexCount_ = 0;
+    struct DetailLevel {
+        uint32_t firstIndex = 0;
+        uint32_t indexCount = 0;
+        int32_t vertexOffset = 0;
+    };
+    std::vector<DetailLevel> levels_;  // finest first, in vertices_ and indices_
+    std::vector<uint32_t> levelInstances_;  // instances per level, consecutive in instances_
     Buffer frameBuffer_;  // the shaders' Frame block
     Buffer instances_;
     DescriptorSet descriptors_;

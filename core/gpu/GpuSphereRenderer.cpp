@@ -1,15 +1,14 @@
 #include "gpu/GpuSphereRenderer.h"
 
-#include <cmath>
 #include <cstring>
-#include <numbers>
+#include <tuple>
 
 #include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
 
 #include <shaders/kSphereRenderSpirv.h>
 
 #include "gpu/VulkanError.h"
+#include "scene/SphereSamples.h"
 
 namespace matevo::gpu {
 namespace {
@@ -18,49 +17,30 @@ constexpr uint32_t kWorkgroupSize = 64;  // local_size_x in the shader
 
 // std430 mirror of the shader's Scene block.
 struct GpuScene {
-    float cameraPosition[4];
-    float cameraForward[4];
-    float cameraRight[4];
-    float cameraUp[4];
     float toLight[4];
     float lightRadiance[4];
     float environmentRadiance[4];
-    float textured[4];  // x: 1 when a texture is present
 };
 
-void store(float (&target)[4], const glm::dvec3& xyz, double w) {
-    target[0] = float(xyz.x);
-    target[1] = float(xyz.y);
-    target[2] = float(xyz.z);
+// The shader's push constants: which covered pixels one dispatch shades.
+struct PushConstants {
+    uint32_t pixelsPerImage;
+    uint32_t firstPixel;
+    uint32_t pixelCount;
+};
+
+void store(float (&target)[4], const std::array<double, 3>& xyz, double w) {
+    for (int i = 0; i < 3; ++i) target[i] = float(xyz[std::size_t(i)]);
     target[3] = float(w);
 }
 
-glm::dvec3 toVector(const std::array<double, 3>& values) {
-    return {values[0], values[1], values[2]};
-}
-
-GpuScene toGpu(const SceneSettings& scene, int size, const GpuSceneTextures& textures) {
-    // The camera of core/scene/SphereRenderer.cpp: looks at the origin, +y up.
-    const glm::dvec3 position = toVector(scene.cameraPosition);
-    const glm::dvec3 forward = glm::normalize(-position);
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
-    const glm::dvec3 up = glm::cross(right, forward);
-    // The sphere's image is a disc around the image centre (the camera looks at the sphere's
-    // centre): the cone of half-angle asin(1 / distance) on the unit image plane, in pixels.
-    const double tanHalfFov = std::tan(scene.fieldOfViewDegrees * std::numbers::pi / 360.0);
-    const double cameraDistance = glm::length(position);
-    // From inside the sphere nothing is seen: a radius of 0 leaves every pixel a miss.
-    const double silhouetteAngle = cameraDistance > 1.0 ? std::asin(1.0 / cameraDistance) : 0.0;
+GpuScene toGpu(const SceneSettings& scene, const GpuSceneTextures& textures) {
+    const glm::dvec3 toLight = glm::normalize(
+        glm::dvec3(scene.lightDirection[0], scene.lightDirection[1], scene.lightDirection[2]));
     GpuScene gpu{};
-    store(gpu.cameraPosition, position, size);
-    store(gpu.cameraForward, forward, tanHalfFov);
-    store(gpu.cameraRight, right, std::tan(silhouetteAngle) / tanHalfFov * 0.5 * double(size));
-    store(gpu.cameraUp, up, 0.0);
-    store(gpu.toLight, glm::normalize(toVector(scene.lightDirection)), 0.0);
-    store(gpu.lightRadiance, toVector(scene.lightRadiance), 0.0);
-    store(gpu.environmentRadiance, toVector(ambientRadiance(scene)),
-          textures.environmentLevels());
-    store(gpu.textured, {textures.textured() ? 1.0 : 0.0, 0.0, 0.0}, 0.0);
+    store(gpu.toLight, {toLight.x, toLight.y, toLight.z}, 0.0);
+    store(gpu.lightRadiance, scene.lightRadiance, 0.0);
+    store(gpu.environmentRadiance, ambientRadiance(scene), textures.environmentLevels());
     return gpu;
 }
 
@@ -78,18 +58,25 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
                                       MemoryUse::Upload);
     if (!sceneBuffer) return sceneBuffer.error();
 
-    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    auto kernel = ComputeKernel::create(
-        device, kSphereRenderSpirv,
-        {storage, storage, sampled, sampled, storage, storage, sampled}, 0);
-    if (!kernel) return kernel.error();
-
     renderer.textures_ = std::move(uploaded).value();
     renderer.sceneBuffer_ = std::move(sceneBuffer).value();
-    renderer.kernel_ = std::move(kernel).value();
-    renderer.textures_.bind(renderer.kernel_.descriptors(), 2, 3, 6);
-    renderer.kernel_.bindBuffer(4, renderer.sceneBuffer_);
+    // One pipeline for the pixels of one point, one for the silhouette's of several.
+    for (int maxPoints : {1, kMaxPointsPerPixel}) {
+        const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        const uint32_t specialization[] = {renderer.textures_.textured() ? 1u : 0u,
+                                           renderer.textures_.environmentLevels() > 0 ? 1u : 0u,
+                                           uint32_t(maxPoints)};
+        auto kernel = ComputeKernel::create(
+            device, kSphereRenderSpirv,
+            {storage, storage, sampled, sampled, storage, storage, sampled, storage, storage},
+            sizeof(PushConstants), specialization);
+        if (!kernel) return kernel.error();
+        renderer.textures_.bind(kernel->descriptors(), 2, 3, 6);
+        kernel->bindBuffer(4, renderer.sceneBuffer_);
+        (maxPoints == 1 ? renderer.kernel_ : renderer.silhouetteKernel_) =
+            std::move(kernel).value();
+    }
     return renderer;
 }
 
@@ -98,15 +85,28 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
                                  const SceneSettings& scene, int size, const Buffer& renders) {
     if (auto uploaded = materials_.upload(*device_, *tables_, materials); !uploaded)
         return uploaded.error();
-    const GpuScene gpuScene = toGpu(scene, size, textures_);
+    if (auto prepared = samples_.prepare(*device_, scene, size); !prepared)
+        return prepared.error();
+    const GpuScene gpuScene = toGpu(scene, textures_);
     std::memcpy(sceneBuffer_.bytes().data(), &gpuScene, sizeof(gpuScene));
 
-    kernel_.bindBuffer(0, materials_.materials());
-    kernel_.bindBuffer(1, renders);
-    kernel_.bindBuffer(5, materials_.lobeEntries());
-    const uint32_t pixelCount = uint32_t(size) * uint32_t(size);
-    kernel_.record(commands, nullptr, (pixelCount + kWorkgroupSize - 1) / kWorkgroupSize,
-                   uint32_t(materials.size()), 1);
+    const ImageBatchShape shape{size, size, uint32_t(materials.size())};
+    // The shader writes covered pixels only.
+    recordClear(commands, renders, shape, 4, 0.0f);
+    const uint32_t singlePoint = samples_.singlePointPixels();
+    const uint32_t silhouette = samples_.coveredPixels() - singlePoint;
+    for (auto [kernel, first, count] : {std::tuple{&kernel_, 0u, singlePoint},
+                                        std::tuple{&silhouetteKernel_, singlePoint, silhouette}}) {
+        kernel->bindBuffer(0, materials_.materials());
+        kernel->bindBuffer(1, renders);
+        kernel->bindBuffer(5, materials_.lobeEntries());
+        kernel->bindBuffer(7, samples_.pixels());
+        kernel->bindBuffer(8, samples_.points());
+        const PushConstants constants{shape.pixelCount(), first, count};
+        if (count > 0)
+            kernel->record(commands, &constants, (count + kWorkgroupSize - 1) / kWorkgroupSize,
+                           shape.count, 1);
+    }
     return Ok{};
 }
 

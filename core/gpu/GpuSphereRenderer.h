@@ -1,6 +1,7 @@
 #pragma once
 // The test sphere rendered on the GPU (shaders/SphereRender.comp): many materials per
-// submission, the same scene and textures as the CPU reference renderSphereCpu. Each material's
+// submission, the same scene and textures as the CPU reference renderSphereCpu, shading the
+// same points (core/scene/SphereSamples.h, traced once per camera and size). Each material's
 // LobeTable is built on the CPU (the same numbers the CPU renderer shades from, so the back ends
 // agree) and uploaded with the materials; the shader interpolates it and evaluates the lobes.
 #include <span>
@@ -13,6 +14,7 @@
 #include "gpu/ComputeKernel.h"
 #include "gpu/GpuMaterialTables.h"
 #include "gpu/GpuSceneTextures.h"
+#include "gpu/GpuSphereSamples.h"
 #include "gpu/ImageBatch.h"
 #include "material/FgdTables.h"
 #include "material/MaterialInstance.h"
@@ -44,7 +46,9 @@ private:
     GpuSceneTextures textures_;
     Buffer sceneBuffer_;
     GpuMaterialTables materials_;
-    ComputeKernel kernel_;
+    GpuSphereSamples samples_;
+    ComputeKernel kernel_;            // pixels shaded at one point
+    ComputeKernel silhouetteKernel_;  // the silhouette's pixels of several points
 };
 
 }  // namespace matevo::gpu

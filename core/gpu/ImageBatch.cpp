@@ -1,6 +1,7 @@
 #include "gpu/ImageBatch.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 namespace matevo::gpu {
@@ -35,8 +36,29 @@ Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& sh
     const VkDeviceSize size =
         VkDeviceSize(shape.pixelCount()) * shape.count * VkDeviceSize(channels) * sizeof(float);
     return Buffer::create(device, std::max<VkDeviceSize>(size, 4),
-                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                              VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                           use);
+}
+
+void recordClear(VkCommandBuffer commands, const Buffer& batch, const ImageBatchShape& shape,
+                 int channels, float value) {
+    // Earlier passes and copies may still read or write the buffer.
+    VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    before.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    before.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    vkCmdPipelineBarrier(commands,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
+    const VkDeviceSize bytes =
+        VkDeviceSize(shape.pixelCount()) * shape.count * VkDeviceSize(channels) * sizeof(float);
+    vkCmdFillBuffer(commands, batch.handle(), 0, bytes, std::bit_cast<uint32_t>(value));
+    VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    after.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    after.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &after, 0, nullptr, 0,
+                         nullptr);
 }
 
 void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index,

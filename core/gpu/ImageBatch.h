@@ -23,6 +23,12 @@ struct ImageBatchShape {
 Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& shape,
                                  int channels, MemoryUse use);
 
+// Records filling the batch's `shape.count` slots with `value` in every channel, ordered after
+// earlier work on the buffer and before compute shaders of the same submission read or write
+// it (a pass that writes only some pixels clears the rest this way).
+void recordClear(VkCommandBuffer commands, const Buffer& batch, const ImageBatchShape& shape,
+                 int channels, float value);
+
 // Copies image into slot `index` (sizes must match the shape).
 void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index,
                  const Image& image);

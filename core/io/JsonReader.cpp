@@ -44,8 +44,8 @@ void JsonReader::fail(const std::string& key, const std::string& problem) const 
     throw JsonFieldError(fieldPath(key) + ": " + problem);
 }
 
-double JsonReader::checkedNumber(const nlohmann::json& value, const std::string& where,
-                                 double min, double max) {
+double JsonReader::checkedNumber(const nlohmann::json& value, const std::string& where, double min,
+                                 double max) {
     if (!value.is_number()) throw JsonFieldError(where + ": must be a number");
     double number = value.get<double>();
     if (!std::isfinite(number) || number < min || number > max)
@@ -99,6 +99,18 @@ JsonReader JsonReader::object(const std::string& key) {
     const auto& value = field(key);
     if (!value.is_object()) fail(key, "must be a JSON object");
     return JsonReader(value, fieldPath(key), warnings_);
+}
+
+std::vector<JsonReader> JsonReader::objects(const std::string& key) {
+    const auto& value = field(key);
+    if (!value.is_array()) fail(key, "must be an array of JSON objects");
+    std::vector<JsonReader> readers;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string where = key + "[" + std::to_string(i) + "]";
+        if (!value[i].is_object()) fail(where, "must be a JSON object");
+        readers.emplace_back(value[i], fieldPath(where), warnings_);
+    }
+    return readers;
 }
 
 void JsonReader::warnAboutUnknownFields() {

@@ -32,6 +32,8 @@ public:
     template <std::size_t N>
     std::array<double, N> numbers(const std::string& key, double min, double max);
     JsonReader object(const std::string& key);
+    // An array of objects, one reader each; their errors name "key[i].field".
+    std::vector<JsonReader> objects(const std::string& key);
 
     // Call once every known field was read: warns about the others.
     void warnAboutUnknownFields();
@@ -58,8 +60,8 @@ std::array<double, N> JsonReader::numbers(const std::string& key, double min, do
         fail(key, "must be an array of " + std::to_string(N) + " numbers");
     std::array<double, N> result{};
     for (std::size_t i = 0; i < N; ++i)
-        result[i] = checkedNumber(value[i], fieldPath(key) + "[" + std::to_string(i) + "]", min,
-                                  max);
+        result[i] =
+            checkedNumber(value[i], fieldPath(key) + "[" + std::to_string(i) + "]", min, max);
     return result;
 }
 

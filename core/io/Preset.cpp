@@ -94,19 +94,37 @@ void readTextures(JsonReader reader, Preset& preset) {
     reader.warnAboutUnknownFields();
 }
 
+MaterialFamily readValidFamily(JsonReader& parent, const std::string& key) {
+    MaterialFamily family = readFamily(parent.object(key));
+    if (auto problem = validateFamily(family)) parent.fail(key, *problem);
+    return family;
+}
+
+// The genome under `key`, which must be a member of `family` (Table 2).
+Genome readFamilyGenome(JsonReader& parent, const std::string& key, const MaterialFamily& family) {
+    JsonReader reader = parent.object(key);
+    Genome genome = readGenome(reader);
+    reader.warnAboutUnknownFields();
+    if (auto problem = validateGenome(genome, family)) parent.fail(key, *problem);
+    return genome;
+}
+
+KeptMaterial readKept(JsonReader& reader) {
+    KeptMaterial kept;
+    kept.name = reader.string("name");
+    kept.family = readValidFamily(reader, "family");
+    kept.genome = readFamilyGenome(reader, "genome", kept.family);
+    reader.warnAboutUnknownFields();
+    return kept;
+}
+
 Preset readPreset(JsonReader& root) {
     Preset preset;
     preset.name = root.string("name");
     if (root.has("description")) preset.description = root.string("description");
-    preset.family = readFamily(root.object("family"));
-    if (auto problem = validateFamily(preset.family)) root.fail("family", *problem);
-    {
-        JsonReader target = root.object("target");
-        preset.target = readGenome(target);
-        target.warnAboutUnknownFields();
-    }
+    preset.family = readValidFamily(root, "family");
     // The target must be a member of its own family, or the GA could never approach it.
-    if (auto problem = validateGenome(preset.target, preset.family)) root.fail("target", *problem);
+    preset.target = readFamilyGenome(root, "target", preset.family);
     if (preset.family.base == Base::Conductor) {
         preset.baseKappa = root.numbers<3>("base_kappa", 0.0, 100.0);
         const auto& k = preset.baseKappa;
@@ -117,10 +135,11 @@ Preset readPreset(JsonReader& root) {
     }
     if (root.has("textures")) readTextures(root.object("textures"), preset);
     if (preset.family.texturedLayer != TexturedLayer::None && preset.roughnessTexture.empty())
-        root.fail("textures.roughness",
-                  "a family with a textured layer needs a roughness texture");
+        root.fail("textures.roughness", "a family with a textured layer needs a roughness texture");
     preset.ga = readGaSettings(root.object("ga"));
     if (root.has("scene")) preset.scene = readScene(root.object("scene"));
+    if (root.has("kept"))
+        for (JsonReader entry : root.objects("kept")) preset.kept.push_back(readKept(entry));
     root.warnAboutUnknownFields();
     return preset;
 }
@@ -187,6 +206,14 @@ std::string serializePreset(const Preset& preset) {
           {"environment", preset.scene.environment}}},
     };
     if (preset.family.base == Base::Conductor) json["base_kappa"] = preset.baseKappa;
+    if (!preset.kept.empty()) {
+        nlohmann::json kept = nlohmann::json::array();
+        for (const KeptMaterial& material : preset.kept)
+            kept.push_back({{"name", material.name},
+                            {"family", familyToJson(material.family)},
+                            {"genome", genomeToJson(material.genome)}});
+        json["kept"] = kept;
+    }
     return json.dump(2) + "\n";
 }
 

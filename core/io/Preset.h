@@ -14,6 +14,17 @@
 
 namespace matevo {
 
+// A material the user kept from a run ("the kept bin"): a name and a genome. Kept materials
+// outlive re-runs, seeds and family changes, so a genome need not fit the preset's current
+// family; it is what variant sets and exports start from.
+struct KeptMaterial {
+    std::string name;
+    Genome genome;
+    MaterialFamily family;  // the family it was evolved in
+
+    bool operator==(const KeptMaterial&) const = default;
+};
+
 struct Preset {
     std::string name = "untitled";
     std::string description;
@@ -27,6 +38,7 @@ struct Preset {
     std::string baseColorTexture;  // tints the base layer
     GaSettings ga;
     SceneSettings scene;
+    std::vector<KeptMaterial> kept;  // saved as "kept": [{"name", "family", "genome"}, …]
 
     bool operator==(const Preset&) const = default;
 };

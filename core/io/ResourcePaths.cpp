@@ -40,4 +40,12 @@ Result<std::filesystem::path> defaultPresetPath() {
     return *presets / "validation_metal.json";
 }
 
+std::filesystem::path userConfigDirectory() {
+    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config == '/')
+        return std::filesystem::path(config) / "matevo";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return std::filesystem::path(home) / ".config" / "matevo";
+    return {};
+}
+
 }  // namespace matevo

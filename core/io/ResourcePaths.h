@@ -20,4 +20,9 @@ std::vector<std::filesystem::path> resourceSearchPath();
 Result<std::filesystem::path> findResourceDirectory(std::string_view name);
 Result<std::filesystem::path> defaultPresetPath();  // presets/validation_metal.json
 
+// $XDG_CONFIG_HOME/matevo (default ~/.config/matevo): imgui.ini and the editor's view
+// settings; not created here. Empty when neither XDG_CONFIG_HOME nor HOME is set. (The user's
+// presets: userPresetDirectory in io/PresetCatalog.h.)
+std::filesystem::path userConfigDirectory();
+
 }  // namespace matevo

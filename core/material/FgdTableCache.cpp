@@ -1,6 +1,7 @@
 #include "material/FgdTableCache.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -16,6 +17,9 @@
 namespace matevo {
 
 namespace {
+
+// Per mille of the tables being built in this process; -1 when none are.
+std::atomic<int> buildPermille{-1};
 
 constexpr char kMagic[8] = {'M', 'V', 'F', 'G', 'D', 'T', 'I', 'R'};
 
@@ -145,17 +149,25 @@ FgdTables loadOrBuildFgdTables(const std::filesystem::path& cacheDirectory,
     std::fprintf(stderr, "matevo: building the FGD/TIR tables (once; cached in %s)\n",
                  file.string().c_str());
     int shownPercent = -1;
+    buildPermille.store(0);
     FgdTables tables = generateFgdTables(settings, [&shownPercent](double fraction) {
+        buildPermille.store(int(fraction * 1000.0));
         const int percent = int(fraction * 100.0);
         if (percent == shownPercent) return;
         shownPercent = percent;
         std::fprintf(stderr, "\rmatevo: tables %3d%%", percent);
     });
     std::fprintf(stderr, "\rmatevo: tables done\n");
+    buildPermille.store(-1);
     if (auto written = writeFgdTables(file, tables, settings); !written)
         std::fprintf(stderr, "matevo: warning: tables not cached: %s\n",
                      written.error().message.c_str());
     return tables;
+}
+
+double tableBuildProgress() {
+    const int permille = buildPermille.load();
+    return permille < 0 ? -1.0 : permille / 1000.0;
 }
 
 const FgdTables& defaultFgdTables() {

@@ -38,6 +38,10 @@ std::filesystem::path defaultTableCacheDirectory();
 FgdTables loadOrBuildFgdTables(const std::filesystem::path& cacheDirectory,
                                const TableGenerationSettings& settings = {});
 
+// While loadOrBuildFgdTables builds tables in this process (on any thread): how far, in
+// [0, 1]; negative otherwise. For a window, which has no stderr to show progress on.
+double tableBuildProgress();
+
 // The process-wide tables (default settings, default cache), built once on first use.
 const FgdTables& defaultFgdTables();
 

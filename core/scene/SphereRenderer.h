@@ -25,9 +25,6 @@
 
 namespace matevo {
 
-// Subsamples per pixel side (2 x 2 per pixel).
-constexpr int kSubsamplesPerAxis = 2;
-
 // Multi-threaded over fixed row chunks; the result does not depend on the thread count.
 Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,
                       const SceneSettings& scene, int size, const FgdTables& tables,

@@ -37,9 +37,10 @@ PixelRect toPixels(const ui::PanelRect& panel, int insetTop = 0) {
             int(panel.position.x + panel.size.x) - 2, int(panel.position.y + panel.size.y) - 2};
 }
 
-std::vector<Blob> spheres(const Screenshot& shot, const PixelRect& area, int minPixels) {
+std::vector<Blob> spheres(const Screenshot& shot, const PixelRect& area, int minPixels,
+                          int threshold = 70) {
     std::vector<Blob> round;
-    for (const Blob& blob : shot.litBlobs(area, minPixels)) {
+    for (const Blob& blob : shot.litBlobs(area, minPixels, threshold)) {
         const double width = blob.bounds.x1 - blob.bounds.x0;
         const double height = blob.bounds.y1 - blob.bounds.y0;
         // A sphere's lit part is compact and about as wide as it is tall.
@@ -49,7 +50,21 @@ std::vector<Blob> spheres(const Screenshot& shot, const PixelRect& area, int min
     return round;
 }
 
-class EditorEndToEnd : public ::testing::Test {
+// "frames_while_script_idle":N from the --report-timings line; -1 when missing.
+int framesWhileIdle(const std::string& output) {
+    const std::string key = "\"frames_while_script_idle\":";
+    const auto at = output.find(key);
+    return at == std::string::npos ? -1 : std::atoi(output.c_str() + at + key.size());
+}
+
+struct WindowSize {
+    int width;
+    int height;
+    std::size_t visibleTiles;  // whole tiles at the default tile size
+};
+
+// The smallest window the editor supports and a large one: the same session at both.
+class EditorEndToEnd : public ::testing::TestWithParam<WindowSize> {
 protected:
     void SetUp() override {
         dir = freshDirectory("e2e");
@@ -60,21 +75,21 @@ protected:
                   "metric manhattan\n"
                   "generations 4\n"
                   "wait-evolution\n"
-                  "resize "
-               << kWidth << " " << kHeight
-               << "\n"
                   "wait 3\n"
+                  "check-layout\n"
+                  "heatmap on\n"
+                  "wait 2\n"
                   "screenshot "
                << (dir / "heatmap.png").string()
                << "\n"
-                  "heatmap toggle\n"
+                  "heatmap off\n"
                   "wait 2\n"
                   "screenshot "
                << (dir / "plain.png").string()
                << "\n"
-                  "heatmap toggle\n"
                   "select 0\n"
                   "wait 2\n"
+                  "idle 2000\n"
                   "save "
                << (dir / "saved.json").string()
                << "\n"
@@ -85,17 +100,25 @@ protected:
     fs::path dir;
 };
 
-TEST_F(EditorEndToEnd, ScriptedSessionShowsTargetAndGridOfDistinctSpheresWithHeatmap) {
+TEST_P(EditorEndToEnd, ScriptedSessionShowsTargetAndGridOfDistinctSpheresWithHeatmap) {
+    const auto [width, height, visibleTiles] = GetParam();
     fs::create_directories(dir / "config");
     fs::create_directories(dir / "cwd");
-    const std::string command = "cd '" + (dir / "cwd").string() + "' && XDG_CONFIG_HOME='" +
-                                (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
-                                "/matevo' edit '" + MATEVO_SOURCE_DIR +
-                                "/presets/validation_metal.json' --validate --script '" +
-                                (dir / "script.txt").string() + "' --frames 100000";
+    const std::string command =
+        "cd '" + (dir / "cwd").string() + "' && XDG_CONFIG_HOME='" + (dir / "config").string() +
+        "' '" + MATEVO_BINARY_DIR + "/matevo' edit '" + MATEVO_SOURCE_DIR +
+        "/presets/validation_metal.json' --validate --report-timings --size " +
+        std::to_string(width) + "x" + std::to_string(height) + " --script '" +
+        (dir / "script.txt").string() + "' --frames 100000";
     const CommandOutput run = runCommand(command);
-    ASSERT_EQ(run.exitCode, 0) << run.err;
+    ASSERT_EQ(run.exitCode, 0) << run.err;  // check-layout failing names what is cut off
     EXPECT_EQ(run.err.find("validation"), std::string::npos) << run.err;
+
+    // An idle editor draws nothing: two seconds of the script's idle drew at most the frames
+    // that settle the last change and the one that ends the idle (polling drew 8 or more).
+    const int idleFrames = framesWhileIdle(run.out);
+    EXPECT_GE(idleFrames, 0) << run.out;
+    EXPECT_LE(idleFrames, 4) << run.out;
 
     // imgui.ini goes to the config folder, never the working directory.
     EXPECT_TRUE(fs::exists(dir / "config/matevo/imgui.ini"));
@@ -112,18 +135,17 @@ TEST_F(EditorEndToEnd, ScriptedSessionShowsTargetAndGridOfDistinctSpheresWithHea
     ASSERT_TRUE(plainFile.ok()) << plainFile.error().message;
     const Screenshot withHeatmap(*heatmapFile);
     const Screenshot plain(*plainFile);
-    // The resize happened before the screenshots.
-    ASSERT_EQ(plain.width(), kWidth);
-    ASSERT_EQ(plain.height(), kHeight);
+    ASSERT_EQ(plain.width(), width);
+    ASSERT_EQ(plain.height(), height);
 
-    const ui::PanelLayout layout = ui::layoutPanels(ImVec2(kWidth, kHeight));
+    const ui::PanelLayout layout = ui::layoutPanels(ImVec2(float(width), float(height)));
     const auto target = spheres(plain, toPixels(layout.target, 40), 8000);
     ASSERT_EQ(target.size(), 1u) << "one large target sphere";
 
-    // Below the heatmap toolbar and legend: the tiles.
+    // Below the toolbar, the tabs and the status line: the tiles.
     const PixelRect tiles = toPixels(layout.grid, 100);
     const auto candidates = spheres(plain, tiles, 1500);
-    EXPECT_GE(candidates.size(), 8u) << "a grid of candidate spheres";
+    EXPECT_GE(candidates.size(), visibleTiles) << "a grid of candidate spheres";
     std::set<std::tuple<int, int, int>> looks;
     for (const Blob& blob : candidates)
         looks.insert({int(blob.meanRgb[0]), int(blob.meanRgb[1]), int(blob.meanRgb[2])});
@@ -137,6 +159,13 @@ TEST_F(EditorEndToEnd, ScriptedSessionShowsTargetAndGridOfDistinctSpheresWithHea
     EXPECT_GT(heatPixels - plainPixels, spherePixels / 4)
         << "heatmap " << heatPixels << ", plain " << plainPixels;
 }
+
+INSTANTIATE_TEST_SUITE_P(WindowSizes, EditorEndToEnd,
+                         ::testing::Values(WindowSize{1024, 640, 3}, WindowSize{1920, 1080, 14}),
+                         [](const auto& suiteParam) {
+                             return std::to_string(suiteParam.param.width) + "x" +
+                                    std::to_string(suiteParam.param.height);
+                         });
 
 // The Variants mode end to end: find a set, discard one, refill with hue variety on (the kept
 // grey variants stay, the new one may take its own kappa), save, and check the saved set as
@@ -186,9 +215,12 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     auto shotFile = readImage(dir / "variants.png");
     ASSERT_TRUE(shotFile.ok()) << shotFile.error().message;
     const Screenshot shot(*shotFile);
-    const auto tiles = spheres(shot, {0, 0, shot.width(), shot.height()}, 3000);
-    // The paper scene leaves much of each sphere dark; the lit ones must still be there.
-    EXPECT_GE(tiles.size(), 3u) << "sphere tiles in the Variants window";
+    // The row of tiles in the Variants window (first shown at ImGui's (60, 60), 960 wide, below
+    // its two lines of text and three rows of controls): the target and the four variants.
+    // They are dark red in the paper scene, so "lit" starts low: above the tiles' dark backdrop,
+    // which keeps each sphere apart from the window's lighter background.
+    const auto tiles = spheres(shot, {60, 230, 1020, 385}, 3000, 30);
+    EXPECT_EQ(tiles.size(), 5u) << "sphere tiles in the Variants window";
     fs::remove_all(dir);
 }
 

@@ -51,7 +51,16 @@ TEST(EvolutionWorker, TilesAreImagesOnTheGivenDevice) {
                                        : std::string("CPU"));
         ASSERT_NE(update->target, nullptr);
         expectOnDevice(context->device, update->target->render, EvolutionWorker::kTargetSize);
-        ASSERT_EQ(update->candidates.size(), 12u);
+        // One tile per distinct genome, with its count: together, the whole population of 12.
+        ASSERT_FALSE(update->candidates.empty());
+        int individuals = 0;
+        for (std::size_t i = 0; i < update->candidates.size(); ++i) {
+            individuals += update->candidates[i].copies;
+            for (std::size_t j = 0; j < i; ++j)
+                EXPECT_NE(update->candidates[i].individual.genome,
+                          update->candidates[j].individual.genome);
+        }
+        EXPECT_EQ(individuals, 12);
         for (const CandidateResult& candidate : update->candidates) {
             ASSERT_NE(candidate.tile, nullptr);
             ASSERT_TRUE(candidate.tile->deltaE.has_value());

@@ -14,6 +14,7 @@
 #include "material/FgdTableCache.h"
 #include "scene/ProceduralTextures.h"
 #include "scene/SphereRenderer.h"
+#include "scene/StudioEnvironment.h"
 
 namespace matevo {
 namespace {
@@ -119,6 +120,30 @@ TEST(GpuRender, MatchesCpuOnRandomGenomesOfEveryFamily) {
                              &textures,
                              SceneSettings{}});
     ASSERT_EQ(cases.size(), supportedFamilies().size() * kGenomesPerFamily);
+    expectBackEndsAgree(cases);
+}
+
+// The environment's path (mirror directions, prefiltered fetches, with and without textures)
+// is shared by both back ends too.
+TEST(GpuRender, MatchesCpuUnderTheStudioEnvironment) {
+    auto environment = loadEnvironment("studio");
+    ASSERT_TRUE(environment.ok()) << environment.error().message;
+    SceneTextures plain;
+    plain.environment = *environment;
+    SceneTextures textured = plain;
+    textured.roughness = makePaintRoughnessTexture(64, 32);
+    textured.baseColor = makeMetalDepthBaseColorTexture(64, 32);
+    SceneSettings scene;
+    scene.mode = SceneMode::Environment;
+    const std::array<double, 3> kappa = {3.1, 2.9, 2.8};
+    Random random(13);
+    std::vector<RenderCase> cases;
+    for (const SceneTextures* textures : {&plain, &textured})
+        for (const MaterialFamily& family : supportedFamilies())
+            cases.push_back({describe(family) + (textures == &plain ? "" : " textured"),
+                             {randomGenome(family, random), family, kappa},
+                             textures,
+                             scene});
     expectBackEndsAgree(cases);
 }
 

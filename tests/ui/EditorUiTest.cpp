@@ -5,10 +5,9 @@
 #include <string>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
+#include "EditorUiFixture.h"
 #include "GaControls.h"
-#include "HeadlessImGui.h"
 #include "MaterialControls.h"
 #include "genome/FamilyRules.h"
 #include "io/Preset.h"
@@ -16,37 +15,7 @@
 namespace matevo::ui {
 namespace {
 
-namespace fs = std::filesystem;
-using testing::HeadlessImGui;
-
-Preset validationMetal() {
-    auto loaded = loadPreset(fs::path(MATEVO_SOURCE_DIR) / "presets/validation_metal.json");
-    EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error().message);
-    return loaded->preset;
-}
-
-fs::path freshDirectory(const std::string& name) {
-    auto dir = fs::temp_directory_path() / ("matevo_ui_" + name + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-class EditorUiTest : public ::testing::Test {
-protected:
-    EditorUiTest() : ui(validationMetal(), "validation_metal.json") { imgui.frame(draw); }
-
-    HeadlessImGui imgui;
-    EditorUi ui;
-    FrameRequests lastRequests;
-    std::function<void()> draw = [this] { lastRequests = ui.draw(); };
-
-    ImVec2 locate(const char* window, const char* label) {
-        auto point = imgui.locate(window, label, draw);
-        EXPECT_TRUE(point.has_value()) << label << " not found in " << window;
-        return point.value_or(ImVec2(-1, -1));
-    }
-};
+using namespace testing;
 
 TEST_F(EditorUiTest, DraggingThePopulationSliderChangesItAndUndoRestoresIt) {
     const Preset original = ui.state().preset;
@@ -109,8 +78,9 @@ TEST_F(EditorUiTest, NewSeedButtonPicksAnotherSeedReproducibly) {
 }
 
 TEST_F(EditorUiTest, HeatmapToggleIsAViewSettingNotAnEdit) {
+    EXPECT_FALSE(ui.state().heatmap.enabled) << "off at first: the materials themselves show";
     imgui.click(locate("Candidates (best first)", "Heatmap"), draw);
-    EXPECT_FALSE(ui.state().heatmap.enabled);
+    EXPECT_TRUE(ui.state().heatmap.enabled);
     EXPECT_FALSE(ui.state().hasUnsavedChanges());
 }
 
@@ -127,7 +97,7 @@ TEST_F(EditorUiTest, ClickingATileSelectsItAndPromoteMakesItTheTarget) {
     const auto tileAt = imgui.locate(*tiles, tile, draw);
     ASSERT_TRUE(tileAt.has_value());
     imgui.click(*tileAt, draw);
-    EXPECT_EQ(ui.state().selectedCandidate, 0);
+    EXPECT_EQ(ui.state().selected, candidate);
     imgui.frame(draw);
     ImGuiWindow* inspect = ImGui::FindWindowByName("Inspect");
     ASSERT_NE(inspect, nullptr);
@@ -179,7 +149,7 @@ TEST_F(EditorUiTest, OpenDialogTakesATypedPath) {
     io.AddInputCharactersUTF8((dir / "typed.json").c_str());
     imgui.frame(draw);
     imgui.pressKey(io.KeyMap[ImGuiKey_Enter], false, false, draw);
-    EXPECT_EQ(ui.state().preset.ga.population, 33) << ui.state().statusMessage;
+    EXPECT_EQ(ui.state().preset.ga.population, 33) << ui.state().status.latest().text;
     EXPECT_EQ(ui.state().presetPath, dir / "typed.json");
     fs::remove_all(dir);
 }
@@ -188,7 +158,7 @@ TEST_F(EditorUiTest, OpeningABadFileKeepsTheStateAndSaysWhy) {
     const Preset before = ui.state().preset;
     EXPECT_FALSE(ui.openPreset("/nonexistent/nothing.json"));
     EXPECT_EQ(ui.state().preset, before);
-    EXPECT_NE(ui.state().statusMessage.find("nothing.json"), std::string::npos);
+    EXPECT_NE(ui.state().status.latest().text.find("nothing.json"), std::string::npos);
 }
 
 TEST_F(EditorUiTest, CtrlQAsksToQuit) {
@@ -199,6 +169,74 @@ TEST_F(EditorUiTest, CtrlQAsksToQuit) {
     EXPECT_TRUE(lastRequests.quit);
     io.KeysDown['Q'] = false;
     io.KeyCtrl = false;
+}
+
+TEST_F(EditorUiTest, TypedPopulationBeyondTheDragRangeIsKeptAndImpossibleOnesAreReported) {
+    // Ctrl+click turns the slider into a text field; type 1000 (presets allow up to 100000).
+    const ImVec2 slider = locate("Controls", "Population");
+    ImGuiIO& io = ImGui::GetIO();
+    const auto typeInto = [&](const char* text) {
+        io.MousePos = slider;
+        io.KeyCtrl = true;
+        imgui.frame(draw);
+        io.MouseDown[0] = true;
+        imgui.frame(draw);
+        io.MouseDown[0] = false;
+        io.KeyCtrl = false;
+        imgui.frame(draw);
+        io.KeysDown[io.KeyMap[ImGuiKey_A]] = io.KeyCtrl = true;  // select what is there
+        imgui.frame(draw);
+        io.KeysDown[io.KeyMap[ImGuiKey_A]] = io.KeyCtrl = false;
+        io.AddInputCharactersUTF8(text);
+        imgui.frame(draw);
+        imgui.pressKey(io.KeyMap[ImGuiKey_Enter], false, false, draw);
+    };
+    typeInto("1000");
+    EXPECT_EQ(ui.state().preset.ga.population, 1000) << "kept: presets accept it";
+    typeInto("1");
+    EXPECT_EQ(ui.state().preset.ga.population, 2);
+    const ui::StatusEntry& message = ui.state().status.latest();
+    EXPECT_EQ(message.kind, ui::StatusKind::Warning);
+    EXPECT_NE(message.text.find("Population 1 is outside [2, 100000]: set to 2"), std::string::npos)
+        << message.text;
+}
+
+TEST_F(EditorUiTest, ChangingTheFamilySaysHowTheTargetMoved) {
+    // Validation metal is clear-coated (alpha1 0.03); a rough coat needs alpha1 >= 0.1 (Table 2).
+    const ImVec2 coat = locate("Controls", "Coat");
+    imgui.click(coat, draw);
+    imgui.frame(draw);
+    ImGuiWindow* popup = HeadlessImGui::findWindow("##Combo_");
+    ASSERT_NE(popup, nullptr);
+    const auto roughcoat = imgui.locate(*popup, popup->GetID("roughcoat"), draw);
+    ASSERT_TRUE(roughcoat.has_value());
+    imgui.click(*roughcoat, draw);
+    ASSERT_EQ(ui.state().preset.family.coat, Coat::Roughcoat);
+    const std::string message = ui.state().status.latest().text;
+    EXPECT_NE(message.find("Family is now"), std::string::npos) << message;
+    EXPECT_NE(message.find("alpha1 0.03 → 0.1"), std::string::npos) << message;
+}
+
+TEST_F(EditorUiTest, SelectionFollowsTheGenomeAcrossARerun) {
+    Genome first = ui.state().preset.target, second = first;
+    first[kAlpha1] = 0.05;
+    second[kAlpha1] = 0.07;
+    auto& candidates = ui.state().evolution.candidates;
+    candidates = {{1, 0.1, 2.0, first, nullptr, nullptr}, {2, 0.2, 3.0, second, nullptr, nullptr}};
+    imgui.frame(draw);
+    ui.state().selected = second;  // the user clicked #2
+    // A re-run reorders the population: the same material is now #1, another one is #2.
+    Genome other = first;
+    other[kAlpha1] = 0.09;
+    candidates = {{1, 0.05, 3.0, second, nullptr, nullptr}, {2, 0.3, 4.0, other, nullptr, nullptr}};
+    imgui.frame(draw);
+    ASSERT_NE(ui.state().inspectedCandidate(), nullptr);
+    EXPECT_EQ(ui.state().inspectedCandidate()->genome, second);
+    EXPECT_EQ(ui.state().inspectedCandidate()->rank, 1);
+    // Gone from the population: the inspector says so instead of showing another material.
+    candidates = {{1, 0.3, 4.0, other, nullptr, nullptr}};
+    imgui.frame(draw);
+    EXPECT_EQ(ui.state().inspectedCandidate(), nullptr);
 }
 
 TEST(MaterialControls, ChangingFamilyFitsTheTargetIntoTheNewRanges) {

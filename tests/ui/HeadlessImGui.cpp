@@ -5,6 +5,7 @@
 namespace matevo::testing {
 
 HeadlessImGui::HeadlessImGui(ImVec2 displaySize) : context_(ImGui::CreateContext()) {
+    ImGui::SetCurrentContext(context_);  // also when another one exists (a "next session")
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
     io.DisplaySize = displaySize;

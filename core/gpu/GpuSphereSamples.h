@@ -1,0 +1,44 @@
+#pragma once
+// The test sphere's shading points (core/scene/SphereSamples.h) on the GPU, as
+// shaders/SphereRender.comp reads them: one record per covered pixel (pixel index, first point,
+// point count, coverage) and three vec4 per point (normal, direction to the viewer, texture UV
+// and environment UV of the mirror direction). They depend on the camera and the image size
+// only, so they are traced and uploaded once and shaded for every material of every batch:
+// the shader does no ray tracing and no inverse trigonometry.
+#include <array>
+#include <optional>
+
+#include "common/Result.h"
+#include "gpu/Buffer.h"
+#include "gpu/Device.h"
+#include "scene/SceneSettings.h"
+
+namespace matevo::gpu {
+
+class GpuSphereSamples {
+public:
+    // Traces and uploads the points unless those of this camera and size are already there;
+    // the caller must not prepare while a submission reads them.
+    Status prepare(const Device& device, const SceneSettings& scene, int size);
+
+    const Buffer& pixels() const { return pixels_; }
+    const Buffer& points() const { return points_; }
+    uint32_t coveredPixels() const { return coveredPixels_; }
+    // The first ones, shaded at one point each; the silhouette's pixels follow.
+    uint32_t singlePointPixels() const { return singlePointPixels_; }
+
+private:
+    struct Key {
+        std::array<double, 3> cameraPosition;
+        double fieldOfViewDegrees;
+        int size;
+        bool operator==(const Key&) const = default;
+    };
+    std::optional<Key> key_;
+    Buffer pixels_;
+    Buffer points_;
+    uint32_t coveredPixels_ = 0;
+    uint32_t singlePointPixels_ = 0;
+};
+
+}  // namespace matevo::gpu
