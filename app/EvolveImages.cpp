@@ -29,17 +29,20 @@ std::string rankedName(const char* prefix, std::size_t rank, const std::string& 
 }  // namespace
 
 std::uint64_t evolveImagesMemoryEstimate(int size) {
-    // Per candidate: render and heatmap (RGBA float) and the ΔE00 map (float), held for one
-    // batch twice over (GPU read-back buffers and the images made from them), plus the target.
+    // Per candidate: render and heatmap (RGBA float), the ΔE00 map (float) and maybe the ꟻLIP
+    // map (float, byte), held for one batch twice over (GPU read-back buffers and the images
+    // made from them), plus the target; the ꟻLIP pass's own planes (7 floats per pixel).
     const std::uint64_t pixels = std::uint64_t(size) * std::uint64_t(size);
-    const std::uint64_t perCandidate = pixels * (16 + 16 + 4);
+    const std::uint64_t perCandidate = pixels * (16 + 16 + 4 + 5 + 28);
     return 2 * perCandidate * (kEvolveImageBatch + 1);
 }
 
-std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
-                                           const std::vector<Individual>& ranked, int size,
-                                           RenderBackend backend, const std::string& extension,
-                                           const std::filesystem::path& outDir) {
+std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
+                                                   const std::vector<Individual>& ranked, int size,
+                                                   RenderBackend backend,
+                                                   const std::string& extension,
+                                                   ImageMetric heatmapMetric,
+                                                   const std::filesystem::path& outDir) {
     // The images as the files will hold them: PNG rounds colour and alpha to 8 bits.
     const auto asStored = [png = extension == ".png"](const Image& image) {
         return png ? quantizeAsPng(image) : image;
@@ -58,7 +61,9 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
     // One renderer for every batch: it keeps the target's render between them.
     auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
-    std::vector<DeltaEStats> stats;
+    EvaluationOptions options;
+    options.heatmaps = false;  // drawn below from the images as written
+    std::vector<CandidateImageStats> stats;
     Image storedTarget;
     for (std::size_t first = 0; first < ranked.size() && !stopRequested();
          first += kEvolveImageBatch) {
@@ -66,7 +71,7 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
         std::vector<MaterialInstance> candidates;
         for (std::size_t i = first; i < first + count; ++i)
             candidates.push_back(materialOf(ranked[i].genome, preset.family, preset.baseKappa));
-        auto evaluation = renderer->evaluate(target, candidates, preset.scene, size);
+        auto evaluation = renderer->evaluate(target, candidates, preset.scene, size, options);
         if (!evaluation) throw std::runtime_error(evaluation.error().message);
         if (first == 0) {
             writeOrThrow(evaluation->target, outDir / ("target" + extension));
@@ -77,12 +82,22 @@ std::vector<DeltaEStats> writeEvolveImages(const PresetChoice& choice,
             writeOrThrow(evaluation->candidates[i],
                          outDir / "candidates" / rankedName("candidate", rank, extension));
             // Measured again on what was written, as `matevo compare` measures it; the heatmap
-            // is then the one `compare --heatmap` draws.
-            auto map = compareImages(storedTarget, asStored(evaluation->candidates[i]));
+            // is then the one `compare --heatmap` draws (with --metric flip for ꟻLIP).
+            const Image storedCandidate = asStored(evaluation->candidates[i]);
+            auto map = compareImages(storedTarget, storedCandidate);
             if (!map) throw std::runtime_error(map.error().message);
-            writeOrThrow(heatmapImage(*map, HeatmapSettings{}),
-                         outDir / "heatmaps" / rankedName("heatmap", rank, ".png"));
-            stats.push_back(map->stats);
+            CandidateImageStats entry{map->stats, std::nullopt};
+            Image heatmap;
+            if (heatmapMetric == ImageMetric::Flip) {
+                auto flip = computeFlip(storedTarget, storedCandidate);
+                if (!flip) throw std::runtime_error(flip.error().message);
+                entry.flip = flip->stats;
+                heatmap = flipHeatmapImage(*flip);
+            } else {
+                heatmap = heatmapImage(*map, HeatmapSettings{});
+            }
+            writeOrThrow(heatmap, outDir / "heatmaps" / rankedName("heatmap", rank, ".png"));
+            stats.push_back(entry);
         }
     }
     return stats;

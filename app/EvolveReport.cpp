@@ -49,13 +49,21 @@ nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga,
             {"best", population.empty() ? nlohmann::json() : population.front()}};
 }
 
-void addImageStatistics(nlohmann::json& report, const std::vector<DeltaEStats>& stats) {
+void addImageStatistics(nlohmann::json& report, const std::vector<CandidateImageStats>& stats) {
     auto& population = report["population"];
     for (std::size_t rank = 0; rank < stats.size() && rank < population.size(); ++rank) {
-        population[rank]["mean_de00"] = stats[rank].mean;
-        population[rank]["max_de00"] = stats[rank].max;
-        population[rank]["p95_de00"] = stats[rank].p95;
-        population[rank]["pixels"] = stats[rank].pixels;
+        const DeltaEStats& deltaE = stats[rank].deltaE;
+        population[rank]["mean_de00"] = deltaE.mean;
+        population[rank]["max_de00"] = deltaE.max;
+        population[rank]["p95_de00"] = deltaE.p95;
+        population[rank]["pixels"] = deltaE.pixels;
+        if (const auto& flip = stats[rank].flip) {
+            population[rank]["mean_flip"] = flip->mean;
+            population[rank]["median_flip"] = flip->weightedMedian;
+            population[rank]["q1_flip"] = flip->firstWeightedQuartile;
+            population[rank]["q3_flip"] = flip->thirdWeightedQuartile;
+            population[rank]["max_flip"] = flip->max;
+        }
     }
     if (!population.empty()) report["best"] = population.front();
 }

@@ -5,7 +5,13 @@
 #include "color/Srgb.h"
 
 #include <cstdint>
+#include <cstdio>
+#include <optional>
 #include <string>
+
+#include "gpu/GpuContext.h"
+#include "gpu/GpuImageComparer.h"
+#include "gpu/HeatmapColormap.h"
 
 namespace matevo::bench {
 namespace {
@@ -62,12 +68,58 @@ double measure(BenchReport& report, int size, int repetitions, int flipRepetitio
     return rate;
 }
 
+// The same pair on the GPU (lavapipe on our machines): upload, the compute pass, read-back and
+// the statistics, for ΔE00 and for LDR-FLIP, after one warm-up call each (lavapipe compiles a
+// pipeline on first use).
+void measureGpu(BenchReport& report, gpu::GpuImageComparer& comparer, const std::string& device,
+                int size, int repetitions) {
+    const Image a = benchImage(size, 0);
+    const std::vector<Image> b{benchImage(size, 1)};
+    bool failed = false;
+    auto deltaE = [&] { failed |= !comparer.compare(a, b).ok(); };
+    auto flip = [&] { failed |= !comparer.compareFlip(a, b).ok(); };
+    deltaE();
+    flip();
+    const double deltaEMilliseconds = medianMilliseconds(repetitions, deltaE);
+    const double flipMilliseconds = medianMilliseconds(repetitions, flip);
+    if (failed) {
+        std::fprintf(stderr, "matevo bench: a GPU image comparison failed; gpu_* skipped\n");
+        return;
+    }
+    const std::string side = std::to_string(size);
+    const double megapixels = double(a.pixelCount()) / 1e6;
+    report.push_back({"gpu_de00_mpix_s_" + side, megapixels / (deltaEMilliseconds / 1000.0),
+                      "GPU dE00 image comparison " + side + "^2 on " + device +
+                          ", upload + pass + read-back (Mpixel/s)"});
+    report.push_back({"gpu_flip_mpix_s_" + side, megapixels / (flipMilliseconds / 1000.0),
+                      "GPU LDR-FLIP image comparison " + side + "^2, the same (Mpixel/s)"});
+    report.push_back({"gpu_flip_over_de00_" + side, flipMilliseconds / deltaEMilliseconds,
+                      "GPU FLIP / dE00 time per pixel at " + side + "^2, same run"});
+}
+
+void benchGpuComparison(BenchReport& report) {
+    auto context = gpu::GpuContext::createHeadless({});
+    if (!context) {
+        std::fprintf(stderr, "matevo bench: no usable Vulkan device (%s); gpu_* skipped\n",
+                     context.error().message.c_str());
+        return;
+    }
+    auto comparer = gpu::GpuImageComparer::create(context->device, gpu::heatmapColormap());
+    if (!comparer) {
+        std::fprintf(stderr, "matevo bench: %s; gpu_* skipped\n", comparer.error().message.c_str());
+        return;
+    }
+    measureGpu(report, *comparer, context->device.name(), 256, 31);
+    measureGpu(report, *comparer, context->device.name(), 2048, 5);
+}
+
 }  // namespace
 
 void benchDeltaE00(BenchReport& report) {
     measure(report, 256, 201, 31);
     const double large = measure(report, 2048, 15, 5);
     report.push_back({"de00_mpix_s", large, "CPU dE00 image comparison, 2048^2 (Mpixel/s)"});
+    benchGpuComparison(report);
 }
 
 }  // namespace matevo::bench

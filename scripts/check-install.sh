@@ -26,6 +26,7 @@ else
 fi
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
 [[ -f "$work/prefix/share/doc/matevo/LICENSE" ]] || fail "LICENSE not installed"
+[[ -f "$work/prefix/share/matevo/preset.schema.json" ]] || fail "the presets' schema not installed"
 
 matevo="$work/prefix/bin/matevo"
 mkdir -p "$work/elsewhere" "$work/data/matevo/presets"

@@ -11,12 +11,12 @@ packages=(
     libtinygltf-dev
 )
 # GoogleTest, the validation layer every GPU test runs under, a virtual display and input for
-# the editor test, screenshots, the Python peers the tests and benchmarks compare with, and
-# clang with its sanitizer runtimes for scripts/fuzz.sh.
+# the editor test, screenshots, the Python peers the tests and benchmarks compare with,
+# jsonschema for the presets' schema, and clang with its sanitizer runtimes for scripts/fuzz.sh.
 test_packages=(
     libgtest-dev vulkan-validationlayers clang libclang-rt-14-dev
     xvfb xauth imagemagick xdotool
-    python3-skimage python3-deap python3-numpy
+    python3-skimage python3-deap python3-numpy python3-jsonschema
 )
 case "${1:-}" in
     "") ;;

@@ -5,10 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "Messages.h"
 #include "color/Colormap.h"
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
-#include "Messages.h"
+#include "color/ImageMetric.h"
 #include "commands/Commands.h"
 #include "io/ImageFile.h"
 
@@ -42,8 +43,6 @@ constexpr const char* kHelp =
     "error itself, as its authors pool it. Exit status 2 when a file cannot be read or is not an\n"
     "image, the sizes differ, or no pixel is covered in both images.\n";
 
-enum class Metric { DeltaE00, Flip };
-
 ImageFileContents valueOrThrow(Result<ImageFileContents> contents) {
     if (!contents) throw UsageError(contents.error().message);
     return std::move(*contents);
@@ -59,9 +58,9 @@ HeatmapSettings parseRange(const std::string& text) {
     return settings;
 }
 
-Metric parseMetric(const std::optional<std::string>& text) {
-    if (!text || *text == "de00") return Metric::DeltaE00;
-    if (*text == "flip") return Metric::Flip;
+ImageMetric parseMetric(const std::optional<std::string>& text) {
+    if (!text) return ImageMetric::DeltaE00;
+    if (auto metric = parseImageMetric(*text)) return *metric;
     throw UsageError("--metric: unknown metric '" + *text + "' (expected de00 or flip)");
 }
 
@@ -145,16 +144,16 @@ int runCompare(CommandLine& args) {
     const auto heatmapFile = args.option("--heatmap");
     const auto range = args.option("--range");
     const auto failAbove = args.numberOption("--fail-above");
-    const Metric metric = parseMetric(args.option("--metric"));
+    const ImageMetric metric = parseMetric(args.option("--metric"));
     const auto pixelsPerDegree = args.numberOption("--ppd");
     args.onlyWith("--range", "--heatmap");
     const auto files = args.positionals();
     args.finish();
     if (files.size() != 2)
         throw UsageError("expected two images A B (see matevo compare --help)");
-    if (metric == Metric::Flip && range)
+    if (metric == ImageMetric::Flip && range)
         throw UsageError("--range is for dE00; FLIP's colour map spans its fixed range [0, 1]");
-    if (metric == Metric::DeltaE00 && pixelsPerDegree)
+    if (metric == ImageMetric::DeltaE00 && pixelsPerDegree)
         throw UsageError("--ppd is FLIP's viewing condition; add --metric flip");
     const HeatmapSettings settings = range ? parseRange(*range) : HeatmapSettings{};
     FlipSettings flipSettings;
@@ -175,14 +174,14 @@ int runCompare(CommandLine& args) {
                          ", " + files[1] + " is " + std::to_string(b.image.width) + "x" +
                          std::to_string(b.image.height));
     const Inputs inputs{a.image, b.image, files[0] + " and " + files[1]};
-    const double mean = metric == Metric::Flip
+    const double mean = metric == ImageMetric::Flip
                             ? reportFlip(inputs, flipSettings, heatmapFile, asJson)
                             : reportDeltaE(inputs, settings, heatmapFile, asJson);
     if (failAbove && mean > *failAbove) {
         std::fflush(stdout);
         char text[128];
         std::snprintf(text, sizeof text, "mean %s %.4f is above --fail-above %g",
-                      metric == Metric::Flip ? "FLIP" : "dE00", mean, *failAbove);
+                      metric == ImageMetric::Flip ? "FLIP" : "dE00", mean, *failAbove);
         printMessage(text);
         return exitCode(ExitStatus::AboveThreshold);
     }

@@ -30,8 +30,9 @@ constexpr const char* kHelp =
     "usage: matevo evolve [--preset P] [--population N] [--generations N]\n"
     "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
-    "                     [--size N] [--format png|exr] [--backend gpu|cpu] [--force]\n"
-    "                     [--fitness genotype|image] [--band LO,HI] [--fitness-size N] [--hue]\n\n"
+    "                     [--size N] [--format png|exr] [--heatmap de00|flip]\n"
+    "                     [--backend gpu|cpu] [--force]\n"
+    "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N] [--hue]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
     "override the preset's GA settings.\n"
@@ -45,6 +46,9 @@ constexpr const char* kHelp =
     "                 (per-pixel CIEDE2000 against the target, 0-10 through viridis); adds each\n"
     "                 candidate's mean_de00 (and max, p95, pixels) to the JSON, measured on the\n"
     "                 written files: matevo compare on them finds the same figures\n"
+    "  --heatmap M    what the --out heatmaps show: de00 (default) or flip (per-pixel LDR-FLIP,\n"
+    "                 0-1 through magma; adds mean_flip, median_flip, q1_flip, q3_flip and\n"
+    "                 max_flip to the JSON)\n"
     "  --size N       image side in pixels for --out (default: the preset's scene size)\n"
     "  --format F     png (default: 8-bit sRGB) or exr (linear float, exactly as rendered) for\n"
     "                 the target and candidates with --out; heatmaps are always PNG\n"
@@ -52,12 +56,13 @@ constexpr const char* kHelp =
     "                 CPU when no Vulkan device is usable) or cpu\n"
     "  --force        replace DIR when it holds an earlier matevo output (else a folder with\n"
     "                 files is refused); DIR always holds one whole run\n"
-    "  --fitness F    genotype (default: the paper's distance with --metric and --weights) or\n"
-    "                 image: each candidate's rendered mean CIEDE2000 from the target\n"
-    "  --band LO,HI   with image fitness: how far outside the band of mean CIEDE2000 a\n"
+    "  --fitness F    genotype (default: the paper's distance with --metric and --weights),\n"
+    "                 image: each candidate's rendered mean CIEDE2000 from the target, or\n"
+    "                 flip: its rendered mean LDR-FLIP from the target (sees spatial structure)\n"
+    "  --band LO,HI   with image or flip fitness: how far outside the band of the mean a\n"
     "                 candidate lies (0 inside: the objective is met)\n"
     "  --fitness-size N  image side the image fitness renders at (default 64)\n"
-    "  --hue          with image fitness, beyond the paper: evolve the conductor base's kappa\n"
+    "  --hue          with image or flip fitness, beyond the paper: evolve the conductor base's kappa\n"
     "                 too (RGB, each in [1, 4]), so candidates may differ in colour\n"
     "Progress goes to stderr. Ctrl-C (SIGINT) or SIGTERM stops after the current generation or\n"
     "batch of images and writes what is complete, marked \"partial\" (exit 130 or 143).\n";
@@ -116,16 +121,22 @@ int runEvolve(CommandLine& args) {
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const std::string fitnessName = args.option("--fitness").value_or("genotype");
-    if (fitnessName != "genotype" && fitnessName != "image")
-        throw UsageError("--fitness: expected genotype or image, got '" + fitnessName + "'");
-    const bool imageFitness = fitnessName == "image";
+    if (fitnessName != "genotype" && fitnessName != "image" && fitnessName != "flip")
+        throw UsageError("--fitness: expected genotype, image or flip, got '" + fitnessName + "'");
+    const bool imageFitness = fitnessName != "genotype";
+    const ImageMetric fitnessMetric =
+        fitnessName == "flip" ? ImageMetric::Flip : ImageMetric::DeltaE00;
+    const std::string heatmapName = args.option("--heatmap").value_or("de00");
+    const auto heatmapMetric = parseImageMetric(heatmapName);
+    if (!heatmapMetric)
+        throw UsageError("--heatmap: expected de00 or flip, got '" + heatmapName + "'");
     const auto bandText = args.option("--band");
     const auto fitnessSizeOption = args.integerOption("--fitness-size", 8, 1024);
     const bool hue = args.flag("--hue");
     if (!imageFitness && (bandText || fitnessSizeOption || hue))
         throw UsageError(std::string(bandText ? "--band" : fitnessSizeOption ? "--fitness-size"
                                                                             : "--hue") +
-                         " does nothing without --fitness image");
+                         " does nothing without --fitness image or flip");
     if (hue && choice.preset.family.base != Base::Conductor)
         throw UsageError("--hue: the preset's base is a dielectric; hue variety evolves a "
                          "conductor's kappa");
@@ -135,6 +146,7 @@ int runEvolve(CommandLine& args) {
     // Images are rendered only for --out and image fitness.
     args.onlyWith("--size", "--out");
     args.onlyWith("--format", "--out");
+    args.onlyWith("--heatmap", "--out");
     if (!imageFitness) args.onlyWith("--backend", "--out");
     args.onlyWith("--force", "--out");
     args.finish();
@@ -163,7 +175,7 @@ int runEvolve(CommandLine& args) {
         auto cache = GenomeRenderCache::create(
             renderGenomesWith(gpu::createPopulationRenderer(rendererRequest, *textures),
                               preset.family, preset.baseKappa, preset.scene, fitnessSize),
-            preset.target);
+            preset.target, fitnessMetric);
         if (!cache) throw std::runtime_error(cache.error().message);
         fitness.emplace(std::move(cache).value(), band);
     }
@@ -191,9 +203,8 @@ int runEvolve(CommandLine& args) {
     }
     if (output) {
         try {
-            const auto stats =
-                writeEvolveImages(choice, ranked, imageSize, backend, "." + format,
-                                  output->staging());
+            const auto stats = writeEvolveImages(choice, ranked, imageSize, backend, "." + format,
+                                                 *heatmapMetric, output->staging());
             addImageStatistics(report, stats);
             report["candidates_written"] = stats.size();
         } catch (const UsageError& error) {

@@ -226,7 +226,7 @@ int runInto(const Request& request, OutputFolder& output) {
             }
         }
     }
-    nlohmann::json report = {{"runs_completed", allRecords.size()}, {"partial", false}};
+    nlohmann::ordered_json report = {{"runs_completed", allRecords.size()}, {"partial", false}};
     if (const int signal = stopRequested()) {
         report["partial"] = true;
         report["stopped_by"] = signalName(signal);

@@ -24,7 +24,8 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
     "                       [--size N] [--fitness-size N] [--max-evaluations N] [--hue]\n"
-    "                       [--backend gpu|cpu] [--out DIR] [--force] [--json]\n\n"
+    "                       [--backend gpu|cpu] [--out DIR] [--force] [--heatmap de00|flip]\n"
+    "                       [--json]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
     "whose renders lie LO to HI mean CIEDE2000 from the target's and at least D from each other.\n"
     "The paper's bands: 0,1 not perceptible; 1,2 close observation; 2,10 at a glance.\n"
@@ -42,6 +43,8 @@ constexpr const char* kHelp =
     "                       and _heatmap.png; the folder holds one whole run, never a mix\n"
     "  --force              replace DIR when it holds an earlier matevo output (else a folder\n"
     "                       with files is refused before the search starts)\n"
+    "  --heatmap M          what the heatmaps show: de00 (default; 0-10 viridis) or flip\n"
+    "                       (per-pixel LDR-FLIP, 0-1 magma)\n"
     "  --json               print the report as JSON\n"
     "Exit status 3 when the request cannot be met (a band the family cannot reach, or more\n"
     "variants than fit D apart): a one-line message says what was found, and it is still\n"
@@ -81,6 +84,11 @@ int runVariants(CommandLine& args) {
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     if (args.flag("--hue")) request.kappaGenes = KappaGenes::On;
     const auto outDir = args.option("--out");
+    const std::string heatmapName = args.option("--heatmap").value_or("de00");
+    const auto heatmapMetric = parseImageMetric(heatmapName);
+    if (!heatmapMetric)
+        throw UsageError("--heatmap: expected de00 or flip, got '" + heatmapName + "'");
+    args.onlyWith("--heatmap", "--out");
     const bool replaceOutput = args.flag("--force");
     const bool asJson = args.flag("--json");
     args.onlyWith("--force", "--out");
@@ -142,7 +150,9 @@ int runVariants(CommandLine& args) {
         report["stopped_by"] = signalName(signal);
     }
     if (output) {
-        if (auto written = writeVariantFiles(output->staging(), preset, *set, report); !written)
+        if (auto written =
+                writeVariantFiles(output->staging(), preset, *set, report, *heatmapMetric);
+            !written)
             throw UsageError("--out: " + output->userFacing(written.error().message));
         if (auto committed = output->commit(); !committed)
             throw UsageError("--out: " + committed.error().message);

@@ -87,6 +87,18 @@ Image heatmapImage(const DeltaEMap& map, const HeatmapSettings& settings) {
                         [&](float deltaE) { return heatmapColorLinear(deltaE, settings); });
 }
 
+Result<Image> errorHeatmap(const Image& reference, const Image& test, ImageMetric metric,
+                           const HeatmapSettings& settings) {
+    if (metric == ImageMetric::Flip) {
+        auto map = computeFlip(reference, test);
+        if (!map) return map.error();
+        return flipHeatmapImage(*map);
+    }
+    auto map = compareImages(reference, test);
+    if (!map) return map.error();
+    return heatmapImage(*map, settings);
+}
+
 Image overlayHeatmap(const Image& candidate, const DeltaEMap& map,
                      const HeatmapSettings& settings) {
     return blendCovered(candidate, map.width, map.height, map.covered, map.deltaE,

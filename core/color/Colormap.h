@@ -8,8 +8,10 @@
 
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
+#include "color/ImageMetric.h"
 #include "color/PerceptualBand.h"
 #include "common/Image.h"
+#include "common/Result.h"
 
 namespace matevo {
 
@@ -35,6 +37,11 @@ std::array<float, 3> magmaSrgb(double error);
 std::array<float, 3> flipColorLinear(double error);
 // Opaque magma where the ꟻLIP map pools a pixel, fully transparent elsewhere.
 Image flipHeatmapImage(const FlipMap& map);
+
+// The heatmap of `metric` between two renders of the same size (ΔE00 through `settings`, ꟻLIP
+// through magma at the default viewing condition); an Error when the sizes differ.
+Result<Image> errorHeatmap(const Image& reference, const Image& test, ImageMetric metric,
+                           const HeatmapSettings& settings = {});
 
 // The candidate with the heatmap blended over it at settings.opacity where the map covers a
 // pixel; elsewhere the candidate unchanged, so it stays transparent outside its sphere. The

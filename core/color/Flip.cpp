@@ -1,13 +1,17 @@
 #include "color/Flip.h"
 
 #include <algorithm>
+#include <array>
+#include <initializer_list>
 #include <bit>
 #include <cmath>
 #include <string>
 
 #include "color/Coverage.h"
 #include "color/ImageDifference.h"
+#include "color/detail/FlipFormulas.h"
 #include "color/detail/ForEachChunk.h"
+#include "color/detail/VectorisedKernel.h"
 
 namespace matevo {
 namespace {
@@ -23,163 +27,254 @@ struct OpponentPlanes {
     std::vector<float> achromatic, redGreen, blueYellow, lightness;
 };
 
-OpponentPlanes toOpponentPlanes(const Image& image) {
+MATEVO_VECTORISED_KERNEL void opponentRange(const float* rgba, std::size_t count, float* achromatic,
+                                            float* redGreen, float* blueYellow, float* lightness) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const float* pixel = rgba + 4 * i;
+        const float alpha = std::clamp(pixel[3], 0.0f, 1.0f);  // over black
+        const flip::Ycxcz color =
+            flip::formulas::ycxczOf(pixel[0] * alpha, pixel[1] * alpha, pixel[2] * alpha);
+        achromatic[i] = color.y;
+        redGreen[i] = color.cx;
+        blueYellow[i] = color.cz;
+        lightness[i] = (color.y + 16.0f) * (1.0f / 116.0f);
+    }
+}
+
+OpponentPlanes toOpponentPlanes(const Image& image, unsigned workerCount) {
     const std::size_t count = image.pixelCount();
     OpponentPlanes planes{std::vector<float>(count), std::vector<float>(count),
                           std::vector<float>(count), std::vector<float>(count)};
-    for (std::size_t i = 0; i < count; ++i) {
-        const float* pixel = &image.rgba[4 * i];
-        const float alpha = std::clamp(pixel[3], 0.0f, 1.0f);  // over black
-        const flip::Ycxcz color =
-            flip::linearSrgbToYcxcz(pixel[0] * alpha, pixel[1] * alpha, pixel[2] * alpha);
-        planes.achromatic[i] = color.y;
-        planes.redGreen[i] = color.cx;
-        planes.blueYellow[i] = color.cz;
-        planes.lightness[i] = (color.y + 16.0f) / 116.0f;
-    }
+    const std::size_t chunkPixels = std::size_t(kBandRows) * std::size_t(image.width);
+    detail::forEachChunk((count + chunkPixels - 1) / chunkPixels, workerCount, [&](std::size_t chunk) {
+        const std::size_t first = chunk * chunkPixels;
+        opponentRange(&image.rgba[4 * first], std::min(chunkPixels, count - first),
+                      &planes.achromatic[first], &planes.redGreen[first],
+                      &planes.blueYellow[first], &planes.lightness[first]);
+    });
     return planes;
 }
 
-// out[x] = Σ_k taps[k] in[clamp(x + k − radius)]: the row copied with repeated edges, then
-// one multiply-add sweep per tap (which the compiler vectorises).
-void filterRow(const float* in, int width, const std::vector<float>& taps, float* padded,
-               float* out) {
-    const int radius = int(taps.size() / 2);
-    for (int i = 0; i < width + 2 * radius; ++i) padded[i] = in[std::clamp(i - radius, 0, width - 1)];
-    std::fill(out, out + width, 0.0f);
-    for (std::size_t k = 0; k < taps.size(); ++k) {
-        const float tap = taps[k];
-        const float* shifted = padded + k;
-        for (int x = 0; x < width; ++x) out[x] += tap * shifted[x];
+// A filter's taps and their mirror symmetry. Our filters are Gaussians and their derivatives:
+// even (taps[r + k] = taps[r − k]) or odd (= −taps[r − k]), so each mirrored pair is added
+// (or subtracted) before one multiply, which halves the work.
+struct Taps {
+    std::vector<float> values;
+    int radius = 0;
+    enum class Symmetry { Even, Odd, None } symmetry = Symmetry::None;
+};
+
+Taps withSymmetry(const std::vector<float>& values) {
+    Taps taps{values, int(values.size() / 2), Taps::Symmetry::Even};
+    bool even = true, odd = values[std::size_t(taps.radius)] == 0.0f;
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        even &= values[k] == values[values.size() - 1 - k];
+        odd &= values[k] == -values[values.size() - 1 - k];
     }
+    taps.symmetry = even ? Taps::Symmetry::Even : odd ? Taps::Symmetry::Odd : Taps::Symmetry::None;
+    return taps;
+}
+
+// out[x] += Σ_k taps[k] lines[k][x] over the 2r + 1 lines around x: shifts of one padded row
+// (filtering along x) or rows of a band (along y).
+MATEVO_VECTORISED_KERNEL void accumulateFiltered(const Taps& taps, int width,
+                                                 const float* const* lines, float* out) {
+    const float* values = taps.values.data();
+    const int r = taps.radius;
+    if (taps.symmetry == Taps::Symmetry::None) {
+        for (int k = 0; k <= 2 * r; ++k)
+            for (int x = 0; x < width; ++x) out[x] += values[k] * lines[k][x];
+        return;
+    }
+    const float* centre = lines[r];
+    for (int x = 0; x < width; ++x) out[x] += values[r] * centre[x];
+    // Mirrored pairs: added for an even filter, subtracted for an odd one.
+    for (int k = 0; k < r; ++k) {
+        const float* low = lines[k];
+        const float* high = lines[2 * r - k];
+        const float tap = values[k];
+        if (taps.symmetry == Taps::Symmetry::Even)
+            for (int x = 0; x < width; ++x) out[x] += tap * (low[x] + high[x]);
+        else
+            for (int x = 0; x < width; ++x) out[x] += tap * (low[x] - high[x]);
+    }
+}
+
+// Scratch space of one band's worker: a padded row and the line pointers.
+struct FilterScratch {
+    std::vector<float> padded;
+    std::vector<const float*> lines;
+};
+
+// out = the row `in` filtered along x, edge pixels repeated.
+void filterRow(const float* in, int width, const Taps& taps, FilterScratch& scratch, float* out) {
+    const int radius = taps.radius;
+    scratch.padded.resize(std::size_t(width + 2 * radius));
+    float* padded = scratch.padded.data();
+    std::fill(padded, padded + radius, in[0]);
+    std::copy(in, in + width, padded + radius);
+    std::fill(padded + radius + width, padded + width + 2 * radius, in[width - 1]);
+    scratch.lines.resize(std::size_t(2 * radius + 1));
+    for (int k = 0; k <= 2 * radius; ++k) scratch.lines[std::size_t(k)] = scratch.padded.data() + k;
+    std::fill(out, out + width, 0.0f);
+    accumulateFiltered(taps, width, scratch.lines.data(), out);
 }
 
 // The row pass of one band: rows [first, first + count) of the image (clamped at its edges)
 // for one plane, filtered along x with `taps`, stored consecutively.
 class RowFiltered {
 public:
-    RowFiltered(int width, int first, int count) : width_(width), first_(first),
-        rows_(std::size_t(width) * std::size_t(count)) {}
-
-    void fill(const std::vector<float>& plane, int height, const std::vector<float>& taps,
-              std::vector<float>& padded) {
-        const int count = int(rows_.size() / std::size_t(width_));
+    // Keeps its buffer's memory from band to band.
+    void fill(const std::vector<float>& plane, int width, int height, int first, int count,
+              const Taps& taps, FilterScratch& scratch) {
+        width_ = width;
+        first_ = first;
+        rows_.resize(std::size_t(width) * std::size_t(count));
         for (int i = 0; i < count; ++i) {
-            const int y = std::clamp(first_ + i, 0, height - 1);
-            filterRow(&plane[std::size_t(y) * width_], width_, taps, padded.data(),
-                      &rows_[std::size_t(i) * width_]);
+            const int y = std::clamp(first + i, 0, height - 1);
+            filterRow(&plane[std::size_t(y) * width], width, taps, scratch,
+                      &rows_[std::size_t(i) * width]);
         }
     }
     // The stored row for image row y (first_ ≤ y < first_ + count).
     const float* row(int y) const { return &rows_[std::size_t(y - first_) * width_]; }
 
 private:
-    int width_, first_;
+    int width_ = 0, first_ = 0;
     std::vector<float> rows_;
 };
 
 // out[x] += Σ_k taps[k] rows.row(y + k − radius)[x].
-void filterColumns(const RowFiltered& rows, int y, const std::vector<float>& taps, int width,
-                   float* out) {
-    const int radius = int(taps.size() / 2);
-    for (std::size_t k = 0; k < taps.size(); ++k) {
-        const float tap = taps[k];
-        const float* row = rows.row(y + int(k) - radius);
-        for (int x = 0; x < width; ++x) out[x] += tap * row[x];
-    }
+void filterColumns(const RowFiltered& rows, int y, const Taps& taps, int width,
+                   FilterScratch& scratch, float* out) {
+    scratch.lines.resize(taps.values.size());
+    for (int k = 0; k <= 2 * taps.radius; ++k)
+        scratch.lines[std::size_t(k)] = rows.row(y + k - taps.radius);
+    accumulateFiltered(taps, width, scratch.lines.data(), out);
 }
 
 struct Kernels {
-    flip::CsfKernels csf;
-    flip::FeatureKernels feature;
+    Taps achromatic, redGreen, blueYellow0, blueYellow1;  // contrast sensitivity
+    Taps gaussian, firstDerivative, secondDerivative;     // feature detectors
+    float maxColorDistance = 0;
 };
+
+Kernels makeKernels(double pixelsPerDegree) {
+    const flip::CsfKernels csf = flip::makeCsfKernels(pixelsPerDegree);
+    const flip::FeatureKernels feature = flip::makeFeatureKernels(pixelsPerDegree);
+    return {withSymmetry(csf.achromatic),       withSymmetry(csf.redGreen),
+            withSymmetry(csf.blueYellow[0]),    withSymmetry(csf.blueYellow[1]),
+            withSymmetry(feature.gaussian),     withSymmetry(feature.firstDerivative),
+            withSymmetry(feature.secondDerivative), float(flip::maxColorDistance())};
+}
+
+// Step 3 along one row from the filtered opponent channels of both images.
+MATEVO_VECTORISED_KERNEL void colorErrorRow(const float* const* filtered, int width,
+                                            float maxColorDistance, float* colorError) {
+    for (int x = 0; x < width; ++x)
+        colorError[x] = flip::formulas::colorDifference(
+            {filtered[0][x], filtered[1][x], filtered[2][x]},
+            {filtered[3][x], filtered[4][x], filtered[5][x]}, maxColorDistance);
+}
+
+// Steps 4 and 5 along one row from both images' ∂x, ∂y, ∂xx, ∂yy; error holds the colour error
+// and receives ꟻLIP.
+MATEVO_VECTORISED_KERNEL void combineRow(const float* const* derivatives, int width,
+                                         float* error) {
+    for (int x = 0; x < width; ++x) {
+        auto length = [&](int dx, int dy) {
+            return std::sqrt(derivatives[dx][x] * derivatives[dx][x] +
+                             derivatives[dy][x] * derivatives[dy][x]);
+        };
+        error[x] = flip::formulas::combine(
+            error[x], flip::formulas::featureDifference(length(0, 1), length(4, 5),
+                                                        length(2, 3), length(6, 7)));
+    }
+}
+
+// One worker's buffers, reused from band to band (a band's are hundreds of kilobytes, which
+// the allocator would map and unmap each time): the row passes of both images and the column
+// sums of one row.
+struct BandScratch {
+    FilterScratch filter;
+    std::array<std::array<RowFiltered, 4>, 2> rows;  // [image][plane]
+    std::vector<float> sums;
+};
+
+// Which plane a row pass filters, with which taps.
+struct PlaneFilter {
+    std::vector<float> OpponentPlanes::*plane;
+    const Taps* taps;
+};
+
+// The row passes of both images (rows[image][i] through filters[i]) over the band's rows and
+// `radius` more above and below.
+void rowPasses(const OpponentPlanes& reference, const OpponentPlanes& test,
+               std::initializer_list<PlaneFilter> filters, int width, int height, int firstRow,
+               int endRow, int radius, BandScratch& scratch) {
+    const OpponentPlanes* images[2] = {&reference, &test};
+    for (std::size_t image = 0; image < 2; ++image) {
+        std::size_t i = 0;
+        for (const PlaneFilter& filter : filters)
+            scratch.rows[image][i++].fill(images[image]->*filter.plane, width, height,
+                                          firstRow - radius, endRow - firstRow + 2 * radius,
+                                          *filter.taps, scratch.filter);
+    }
+}
 
 // The colour error (step 3) of one band's rows.
 void colorErrorOfBand(const OpponentPlanes& reference, const OpponentPlanes& test, int width,
-                      int height, int firstRow, int endRow, const flip::CsfKernels& csf,
-                      float* colorError) {
-    const int radius = csf.radius;
-    const int first = firstRow - radius, count = endRow - firstRow + 2 * radius;
-    std::vector<float> padded(std::size_t(width + 2 * radius));
-    struct Filtered {
-        RowFiltered achromatic, redGreen, blueYellow0, blueYellow1;
-    };
-    auto rowPass = [&](const OpponentPlanes& planes) {
-        Filtered filtered{RowFiltered(width, first, count), RowFiltered(width, first, count),
-                          RowFiltered(width, first, count), RowFiltered(width, first, count)};
-        filtered.achromatic.fill(planes.achromatic, height, csf.achromatic, padded);
-        filtered.redGreen.fill(planes.redGreen, height, csf.redGreen, padded);
-        filtered.blueYellow0.fill(planes.blueYellow, height, csf.blueYellow[0], padded);
-        filtered.blueYellow1.fill(planes.blueYellow, height, csf.blueYellow[1], padded);
-        return filtered;
-    };
-    const Filtered rowsReference = rowPass(reference);
-    const Filtered rowsTest = rowPass(test);
-
+                      int height, int firstRow, int endRow, const Kernels& kernels,
+                      BandScratch& scratch, float* colorError) {
+    rowPasses(reference, test,
+              {{&OpponentPlanes::achromatic, &kernels.achromatic},
+               {&OpponentPlanes::redGreen, &kernels.redGreen},
+               {&OpponentPlanes::blueYellow, &kernels.blueYellow0},
+               {&OpponentPlanes::blueYellow, &kernels.blueYellow1}},
+              width, height, firstRow, endRow, kernels.achromatic.radius, scratch);
     // Columns, clamped at the image's edges: a band's stored rows already repeat them.
-    std::vector<float> sums(std::size_t(width) * 6);
+    scratch.sums.resize(std::size_t(width) * 6);
+    float* out[6];
+    for (int c = 0; c < 6; ++c) out[c] = &scratch.sums[std::size_t(c) * width];
     for (int y = firstRow; y < endRow; ++y) {
-        std::fill(sums.begin(), sums.end(), 0.0f);
-        float* out[6];
-        for (int c = 0; c < 6; ++c) out[c] = &sums[std::size_t(c) * width];
-        filterColumns(rowsReference.achromatic, y, csf.achromatic, width, out[0]);
-        filterColumns(rowsReference.redGreen, y, csf.redGreen, width, out[1]);
-        filterColumns(rowsReference.blueYellow0, y, csf.blueYellow[0], width, out[2]);
-        filterColumns(rowsReference.blueYellow1, y, csf.blueYellow[1], width, out[2]);
-        filterColumns(rowsTest.achromatic, y, csf.achromatic, width, out[3]);
-        filterColumns(rowsTest.redGreen, y, csf.redGreen, width, out[4]);
-        filterColumns(rowsTest.blueYellow0, y, csf.blueYellow[0], width, out[5]);
-        filterColumns(rowsTest.blueYellow1, y, csf.blueYellow[1], width, out[5]);
-        for (int x = 0; x < width; ++x)
-            colorError[std::size_t(y) * width + x] = flip::colorDifference(
-                {out[0][x], out[1][x], out[2][x]}, {out[3][x], out[4][x], out[5][x]});
+        std::fill(scratch.sums.begin(), scratch.sums.end(), 0.0f);
+        for (std::size_t image = 0; image < 2; ++image) {
+            const auto& rows = scratch.rows[image];
+            float* const* o = out + 3 * image;
+            filterColumns(rows[0], y, kernels.achromatic, width, scratch.filter, o[0]);
+            filterColumns(rows[1], y, kernels.redGreen, width, scratch.filter, o[1]);
+            filterColumns(rows[2], y, kernels.blueYellow0, width, scratch.filter, o[2]);
+            filterColumns(rows[3], y, kernels.blueYellow1, width, scratch.filter, o[2]);
+        }
+        colorErrorRow(out, width, kernels.maxColorDistance, colorError + std::size_t(y) * width);
     }
 }
 
 // The feature error (step 4) of one band's rows, combined with its colour error (step 5).
 void flipOfBand(const OpponentPlanes& reference, const OpponentPlanes& test, int width,
-                int height, int firstRow, int endRow, const flip::FeatureKernels& feature,
-                float* error) {
-    const int radius = feature.radius;
-    const int first = firstRow - radius, count = endRow - firstRow + 2 * radius;
-    std::vector<float> padded(std::size_t(width + 2 * radius));
-    struct Filtered {
-        RowFiltered slope, curvature, blurred;  // along x: first, second derivative, Gaussian
-    };
-    auto rowPass = [&](const OpponentPlanes& planes) {
-        Filtered filtered{RowFiltered(width, first, count), RowFiltered(width, first, count),
-                          RowFiltered(width, first, count)};
-        filtered.slope.fill(planes.lightness, height, feature.firstDerivative, padded);
-        filtered.curvature.fill(planes.lightness, height, feature.secondDerivative, padded);
-        filtered.blurred.fill(planes.lightness, height, feature.gaussian, padded);
-        return filtered;
-    };
-    const Filtered rowsReference = rowPass(reference);
-    const Filtered rowsTest = rowPass(test);
-
-    std::vector<float> sums(std::size_t(width) * 8);
+                int height, int firstRow, int endRow, const Kernels& kernels,
+                BandScratch& scratch, float* error) {
+    // Along x: the first and second derivative and the Gaussian of the normalised achromatic.
+    rowPasses(reference, test,
+              {{&OpponentPlanes::lightness, &kernels.firstDerivative},
+               {&OpponentPlanes::lightness, &kernels.secondDerivative},
+               {&OpponentPlanes::lightness, &kernels.gaussian}},
+              width, height, firstRow, endRow, kernels.gaussian.radius, scratch);
+    scratch.sums.resize(std::size_t(width) * 8);
+    float* out[8];
+    for (int c = 0; c < 8; ++c) out[c] = &scratch.sums[std::size_t(c) * width];
     for (int y = firstRow; y < endRow; ++y) {
-        std::fill(sums.begin(), sums.end(), 0.0f);
-        float* out[8];
-        for (int c = 0; c < 8; ++c) out[c] = &sums[std::size_t(c) * width];
-        const Filtered* images[2] = {&rowsReference, &rowsTest};
-        for (int image = 0; image < 2; ++image) {
+        std::fill(scratch.sums.begin(), scratch.sums.end(), 0.0f);
+        for (std::size_t image = 0; image < 2; ++image) {
+            const auto& rows = scratch.rows[image];
+            const RowFiltered &slope = rows[0], &curvature = rows[1], &blurred = rows[2];
             float* const* o = out + 4 * image;
-            filterColumns(images[image]->slope, y, feature.gaussian, width, o[0]);      // ∂x
-            filterColumns(images[image]->blurred, y, feature.firstDerivative, width, o[1]);  // ∂y
-            filterColumns(images[image]->curvature, y, feature.gaussian, width, o[2]);  // ∂xx
-            filterColumns(images[image]->blurred, y, feature.secondDerivative, width, o[3]);  // ∂yy
+            filterColumns(slope, y, kernels.gaussian, width, scratch.filter, o[0]);           // ∂x
+            filterColumns(blurred, y, kernels.firstDerivative, width, scratch.filter, o[1]);  // ∂y
+            filterColumns(curvature, y, kernels.gaussian, width, scratch.filter, o[2]);       // ∂xx
+            filterColumns(blurred, y, kernels.secondDerivative, width, scratch.filter, o[3]); // ∂yy
         }
-        for (int x = 0; x < width; ++x) {
-            auto length = [&](int dx, int dy) {
-                return std::sqrt(out[dx][x] * out[dx][x] + out[dy][x] * out[dy][x]);
-            };
-            const float edgeReference = length(0, 1), pointReference = length(2, 3);
-            const float edgeTest = length(4, 5), pointTest = length(6, 7);
-            float& value = error[std::size_t(y) * width + x];
-            value = flip::combineFlip(
-                value, flip::featureDifference(edgeReference, edgeTest, pointReference, pointTest));
-        }
+        combineRow(out, width, error + std::size_t(y) * width);
     }
 }
 
@@ -189,10 +284,10 @@ FlipStats poolFlip(const std::vector<float>& errors) {
     FlipStats stats;
     stats.pixels = errors.size();
     if (errors.empty()) return stats;
-    // Non-negative floats order like their bit patterns: the top bits (exponent and three
+    // Non-negative floats order like their bit patterns: the top bits (exponent and seven
     // mantissa bits) sort errors into ordered buckets, so a weighted percentile needs sorting
-    // only within the one bucket where the running sum passes it.
-    constexpr int kBucketShift = 20;
+    // only within the one (small) bucket where the running sum passes it.
+    constexpr int kBucketShift = 16;
     constexpr std::size_t kBuckets = std::size_t(1) << (31 - kBucketShift);
     auto bucketOf = [](float error) {
         return std::min(std::size_t(std::bit_cast<std::uint32_t>(std::max(error, 0.0f)) >>
@@ -247,19 +342,20 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
     map.pooled.resize(pixelCount);
     if (pixelCount == 0) return map;
 
-    const OpponentPlanes referencePlanes = toOpponentPlanes(reference);
-    const OpponentPlanes testPlanes = toOpponentPlanes(test);
-    const Kernels kernels{flip::makeCsfKernels(settings.pixelsPerDegree),
-                          flip::makeFeatureKernels(settings.pixelsPerDegree)};
+    const OpponentPlanes referencePlanes = toOpponentPlanes(reference, workerCount);
+    const OpponentPlanes testPlanes = toOpponentPlanes(test, workerCount);
+    const Kernels kernels = makeKernels(settings.pixelsPerDegree);
     const std::size_t bands = std::size_t((map.height + kBandRows - 1) / kBandRows);
-    detail::forEachChunk(bands, workerCount, [&](std::size_t band) {
-        const int firstRow = int(band) * kBandRows;
-        const int endRow = std::min(map.height, firstRow + kBandRows);
-        colorErrorOfBand(referencePlanes, testPlanes, map.width, map.height, firstRow, endRow,
-                         kernels.csf, map.error.data());
-        flipOfBand(referencePlanes, testPlanes, map.width, map.height, firstRow, endRow,
-                   kernels.feature, map.error.data());
-    });
+    detail::forEachChunkWithScratch(
+        bands, workerCount, [] { return BandScratch{}; },
+        [&](BandScratch& scratch, std::size_t band) {
+            const int firstRow = int(band) * kBandRows;
+            const int endRow = std::min(map.height, firstRow + kBandRows);
+            colorErrorOfBand(referencePlanes, testPlanes, map.width, map.height, firstRow,
+                             endRow, kernels, scratch, map.error.data());
+            flipOfBand(referencePlanes, testPlanes, map.width, map.height, firstRow, endRow,
+                       kernels, scratch, map.error.data());
+        });
 
     std::vector<float> pooledErrors;
     pooledErrors.reserve(pixelCount);

@@ -4,13 +4,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "color/detail/ColorFormulas.h"
-#include "color/detail/FastFloatMath.h"
+#include "color/detail/FlipFormulas.h"
 
 namespace matevo::flip {
 namespace {
-
-using formulas::kWhite;
 
 constexpr CsfTerm kAchromatic{1.0, 0.0047};
 constexpr CsfTerm kRedGreen{1.0, 0.0053};
@@ -57,47 +54,9 @@ std::vector<float> balanced(const std::vector<double>& taps) {
     return result;
 }
 
-struct HuntLab {
-    float l, a, b;
-};
-
-// Float with the vectorisable cube root of the ΔE00 path: a few ulps, far below what the
-// per-pixel tolerance against the reference allows (docs/flip.md).
-HuntLab huntAdjustedLab(const Ycxcz& color) {
-    // YyCxCz → XYZ (the transform is linear) → linear sRGB, clamped to the displayable range.
-    const float yRatio = (color.y + 16.0f) / 116.0f;
-    const float xyz[3] = {(yRatio + color.cx / 500.0f) * float(kWhite[0]), yRatio * float(kWhite[1]),
-                          (yRatio - color.cz / 200.0f) * float(kWhite[2])};
-    float rgb[3];
-    for (int row = 0; row < 3; ++row)
-        rgb[row] = float(formulas::kXyzToRgb[row][0]) * xyz[0] +
-                   float(formulas::kXyzToRgb[row][1]) * xyz[1] +
-                   float(formulas::kXyzToRgb[row][2]) * xyz[2];
-    float clampedXyz[3];
-    formulas::linearSrgbToXyz(rgb[0], rgb[1], rgb[2], clampedXyz);  // clamps to [0, 1]
-    float l, a, b;
-    formulas::xyzToLab<float, formulas::FastFloatMath>(clampedXyz, l, a, b);
-    // Hunt: chroma appears weaker in darker colours.
-    return {l, 0.01f * l * a, 0.01f * l * b};
-}
-
-float hyab(const HuntLab& p, const HuntLab& q) {
-    const float da = p.a - q.a, db = p.b - q.b;
-    return std::abs(p.l - q.l) + std::sqrt(da * da + db * db);
-}
-
-Ycxcz ycxczOfLinear(double r, double g, double b) {
-    double xyz[3];
-    formulas::linearSrgbToXyz(r, g, b, xyz);
-    const double xRatio = xyz[0] / kWhite[0], yRatio = xyz[1] / kWhite[1],
-                 zRatio = xyz[2] / kWhite[2];
-    return {float(116.0 * yRatio - 16.0), float(500.0 * (xRatio - yRatio)),
-            float(200.0 * (yRatio - zRatio))};
-}
-
 }  // namespace
 
-Ycxcz linearSrgbToYcxcz(float r, float g, float b) { return ycxczOfLinear(r, g, b); }
+Ycxcz linearSrgbToYcxcz(float r, float g, float b) { return formulas::ycxczOf(r, g, b); }
 
 int csfRadius(double pixelsPerDegree) {
     double widest = 0;
@@ -144,38 +103,24 @@ FeatureKernels makeFeatureKernels(double pixelsPerDegree) {
 
 double maxColorDistance() {
     static const double distance = [] {
-        const HuntLab green = huntAdjustedLab(ycxczOfLinear(0.0, 1.0, 0.0));
-        const HuntLab blue = huntAdjustedLab(ycxczOfLinear(0.0, 0.0, 1.0));
-        return std::pow(double(hyab(green, blue)), kColorExponent);
+        const auto green = formulas::huntAdjustedLab(formulas::ycxczOf(0.0f, 1.0f, 0.0f));
+        const auto blue = formulas::huntAdjustedLab(formulas::ycxczOf(0.0f, 0.0f, 1.0f));
+        return std::pow(double(formulas::hyab(green, blue)), kColorExponent);
     }();
     return distance;
 }
 
 float colorDifference(const Ycxcz& filteredReference, const Ycxcz& filteredTest) {
-    const float distance = std::pow(
-        hyab(huntAdjustedLab(filteredReference), huntAdjustedLab(filteredTest)),
-        float(kColorExponent));
-    const auto cmax = float(maxColorDistance());
-    const float cutoff = float(kColorCutoff) * cmax;
-    const auto target = float(kColorCutoffTarget);
-    const float error = distance < cutoff
-                            ? distance * (target / cutoff)
-                            : target + (distance - cutoff) / (cmax - cutoff) * (1.0f - target);
-    return std::min(error, 1.0f);
+    return formulas::colorDifference(filteredReference, filteredTest, float(maxColorDistance()));
 }
 
 float featureDifference(float edgeReference, float edgeTest, float pointReference,
                         float pointTest) {
-    const float largest =
-        std::max(std::abs(edgeReference - edgeTest), std::abs(pointReference - pointTest));
-    // Each derivative response of an image in [0, 1] lies in [−1, 1], so the scaled maximum
-    // cannot pass 1; the clamp only absorbs float rounding. q_f = 0.5: a square root.
-    static_assert(kFeatureExponent == 0.5);
-    return std::min(std::sqrt(largest / std::numbers::sqrt2_v<float>), 1.0f);
+    return formulas::featureDifference(edgeReference, edgeTest, pointReference, pointTest);
 }
 
 float combineFlip(float colorError, float featureError) {
-    return std::pow(colorError, 1.0f - featureError);
+    return formulas::combine(colorError, featureError);
 }
 
 }  // namespace matevo::flip

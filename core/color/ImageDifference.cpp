@@ -10,6 +10,7 @@
 #include "color/detail/ColorFormulas.h"
 #include "color/detail/FastFloatMath.h"
 #include "color/detail/ForEachChunk.h"
+#include "color/detail/VectorisedKernel.h"
 
 namespace matevo {
 namespace {
@@ -37,12 +38,7 @@ struct ChunkSummary {
 };
 
 // Float math through the shared formulas: flattened, this loop has no calls and no branches, so
-// the compiler vectorises it. Clang (the fuzz build) cannot combine flatten with target_clones.
-#if defined(__clang__)
-#define MATEVO_VECTORISED_KERNEL [[gnu::target_clones("avx512f", "avx2", "default")]]
-#else
-#define MATEVO_VECTORISED_KERNEL [[gnu::flatten, gnu::target_clones("avx512f", "avx2", "default")]]
-#endif
+// the compiler vectorises it.
 MATEVO_VECTORISED_KERNEL void deltaERange(
     const float* rgbaA, const float* rgbaB, float* deltaE, std::size_t count) {
     using formulas::FastFloatMath;

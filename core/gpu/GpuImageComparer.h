@@ -1,21 +1,29 @@
 #pragma once
-// ΔE00 and heatmaps on the GPU for images that already exist on the host (e.g. CPU renders):
-// upload, one submission of the compute pass, read back. The GPU renderer feeds the same pass
-// straight from its own buffers instead.
+// ΔE00 or ꟻLIP and heatmaps on the GPU for images that already exist on the host (e.g. CPU
+// renders): upload, one submission of the compute pass, read back. The GPU renderer feeds the
+// same passes straight from its own buffers instead.
 #include <span>
 #include <vector>
 
+#include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "common/Image.h"
 #include "common/Result.h"
 #include "gpu/CommandRunner.h"
 #include "gpu/DeltaE00Pass.h"
+#include "gpu/FlipPass.h"
+#include "gpu/ImageBatch.h"
 
 namespace matevo::gpu {
 
 struct GpuComparison {
     std::vector<DeltaEMap> maps;  // one per candidate
     std::vector<Image> heatmaps;  // one per candidate; transparent where not covered
+};
+
+struct GpuFlipComparison {
+    std::vector<FlipMap> maps;    // one per candidate
+    std::vector<Image> heatmaps;  // one per candidate, magma; transparent where not pooled
 };
 
 struct HeatmapRange {
@@ -25,16 +33,28 @@ struct HeatmapRange {
 
 class GpuImageComparer {
 public:
+    // `colormap` colours ΔE00 over the range given to compare; ꟻLIP is always magma.
     static Result<GpuImageComparer> create(const Device& device,
                                            const DeltaE00Pass::Colormap& colormap);
 
     // Every candidate must have the reference's size.
     Result<GpuComparison> compare(const Image& reference, std::span<const Image> candidates,
                                   const HeatmapRange& range = {});
+    Result<GpuFlipComparison> compareFlip(const Image& reference, std::span<const Image> candidates,
+                                          const FlipSettings& settings = {});
 
 private:
+    // The images in upload buffers, and read-back buffers for one map and one heatmap per
+    // candidate.
+    struct Uploaded {
+        ImageBatchShape shape;
+        Buffer reference, candidates, maps, heatmaps;
+    };
+    Result<Uploaded> upload(const Image& reference, std::span<const Image> candidates) const;
+
     const Device* device_ = nullptr;
-    DeltaE00Pass pass_;
+    DeltaE00Pass deltaEPass_;
+    FlipPass flipPass_;
     CommandRunner runner_;
 };
 

@@ -1,5 +1,7 @@
 #include "gpu/GpuPopulationRenderer.h"
 
+#include "gpu/HeatmapColormap.h"
+
 namespace matevo::gpu {
 
 Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
@@ -42,19 +44,35 @@ Status GpuPopulationRenderer::setTextures(const SceneTextures& textures) {
     return Ok{};
 }
 
-Status GpuPopulationRenderer::ensureBuffers(const ImageBatchShape& shape) {
-    if (shape.width == bufferShape_.width && shape.height == bufferShape_.height &&
-        shape.count == bufferShape_.count)
-        return Ok{};
-    auto renders = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
-    auto deltaE = createBatchBuffer(*device_, shape, 1, MemoryUse::Readback);
-    auto heatmaps = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
-    for (const auto* buffer : {&renders, &deltaE, &heatmaps})
-        if (!*buffer) return buffer->error();
-    renders_ = std::move(renders).value();
-    deltaE_ = std::move(deltaE).value();
-    heatmaps_ = std::move(heatmaps).value();
-    bufferShape_ = shape;
+Status GpuPopulationRenderer::ensureBuffers(const ImageBatchShape& shape, bool flip) {
+    const bool sameShape = shape.width == bufferShape_.width &&
+                           shape.height == bufferShape_.height && shape.count == bufferShape_.count;
+    if (!sameShape) {
+        auto renders = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
+        auto deltaE = createBatchBuffer(*device_, shape, 1, MemoryUse::Readback);
+        auto heatmaps = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
+        for (const auto* buffer : {&renders, &deltaE, &heatmaps})
+            if (!*buffer) return buffer->error();
+        renders_ = std::move(renders).value();
+        deltaE_ = std::move(deltaE).value();
+        heatmaps_ = std::move(heatmaps).value();
+        flip_ = {};
+        flipHeatmaps_ = {};
+        bufferShape_ = shape;
+    }
+    if (flip && !flip_.handle()) {
+        if (!flipPass_) {
+            auto pass = FlipPass::create(*device_, flipColormap());
+            if (!pass) return pass.error();
+            flipPass_ = std::move(pass).value();
+        }
+        auto errors = createBatchBuffer(*device_, shape, 1, MemoryUse::Readback);
+        auto heatmaps = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
+        for (const auto* buffer : {&errors, &heatmaps})
+            if (!*buffer) return buffer->error();
+        flip_ = std::move(errors).value();
+        flipHeatmaps_ = std::move(heatmaps).value();
+    }
     return Ok{};
 }
 
@@ -97,7 +115,8 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     if (!tiles.empty() && tiles.size() != candidates.size())
         return Error{"GPU render: one tile per candidate expected"};
     const ImageBatchShape shape{size, size, uint32_t(candidates.size())};
-    if (auto ready = ensureBuffers(shape); !ready) return ready.error();
+    const bool flip = options.wantsFlip();
+    if (auto ready = ensureBuffers(shape, flip); !ready) return ready.error();
     auto commands = runner_.begin();
     if (!commands) return commands.error();
     if (auto recorded = renderer_.record(*commands, candidates, scene, size, renders_); !recorded)
@@ -108,6 +127,13 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
         *commands,
         {&targetRender_, &renders_, &deltaE_, &heatmaps_, shape.pixelCount(), shape.count, 0, 0,
          float(options.heatmap.minDeltaE), float(options.heatmap.maxDeltaE)});
+    if (flip)
+        if (auto recorded = flipPass_->record(
+                *commands,
+                {&targetRender_, &renders_, &flip_, &flipHeatmaps_, size, size, shape.count, 0, 0},
+                options.flipSettings);
+            !recorded)
+            return recorded.error();
     if (!tiles.empty()) recordCopiesToTiles(*commands, renders_, &deltaE_, shape, tiles);
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
@@ -116,7 +142,10 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
         if (options.candidateImages)
             evaluation.candidates.push_back(downloadImage(renders_, shape, i));
         evaluation.deltaE.push_back(downloadDeltaEMap(deltaE_, shape, i));
-        if (options.heatmaps) evaluation.heatmaps.push_back(downloadImage(heatmaps_, shape, i));
+        if (flip) evaluation.flip.push_back(downloadFlipMap(flip_, shape, i));
+        if (options.heatmaps)
+            evaluation.heatmaps.push_back(downloadImage(
+                options.heatmapMetric == ImageMetric::Flip ? flipHeatmaps_ : heatmaps_, shape, i));
     }
     return evaluation;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The render interface on Vulkan: the target and every candidate are rendered by
-// GpuSphereRenderer, the ΔE00 pass compares each candidate with the target's render and colours
-// the heatmaps, and everything is read back, in one submission. The target's render stays in
+// GpuSphereRenderer, the ΔE00 pass (and, when asked, the ꟻLIP pass) compares each candidate
+// with the target's render and colours the heatmaps, and everything is read back, in one
+// submission. The target's render stays in
 // its own buffer until the target changes. Buffers are kept between calls of the same shape.
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "common/Result.h"
 #include "gpu/DeltaE00Pass.h"
 #include "gpu/DisplayTile.h"
+#include "gpu/FlipPass.h"
 #include "gpu/GpuContext.h"
 #include "gpu/GpuSphereRenderer.h"
 #include "render/PopulationRenderer.h"
@@ -51,7 +53,7 @@ public:
 
 private:
     GpuPopulationRenderer() = default;
-    Status ensureBuffers(const ImageBatchShape& shape);
+    Status ensureBuffers(const ImageBatchShape& shape, bool flip);
     Status renderTarget(const TargetKey& key);
 
     // Declared first, destroyed last: everything below lives on its device.
@@ -61,6 +63,7 @@ private:
     CommandRunner runner_;
     GpuSphereRenderer renderer_;
     DeltaE00Pass deltaEPass_;
+    std::optional<FlipPass> flipPass_;  // made when first asked for (lavapipe compiles it then)
     std::optional<TargetKey> targetKey_;
     Image target_;  // the host copy of targetRender_
     Buffer targetRender_;
@@ -68,6 +71,9 @@ private:
     Buffer renders_;
     Buffer deltaE_;
     Buffer heatmaps_;
+    // The ꟻLIP pass's maps and heatmaps, of bufferShape_ when ꟻLIP was asked for.
+    Buffer flip_;
+    Buffer flipHeatmaps_;
 };
 
 }  // namespace matevo::gpu

@@ -3,14 +3,27 @@
 #include "color/Colormap.h"
 
 namespace matevo::gpu {
+namespace {
 
-DeltaE00Pass::Colormap heatmapColormap() {
+// Entry i holds the colour at position i / 255.
+template <typename Color>
+DeltaE00Pass::Colormap tabulated(const Color& colorAt) {
     DeltaE00Pass::Colormap colormap{};
     for (std::size_t i = 0; i < colormap.size(); ++i) {
-        const auto rgb = colormapLinear(double(i) / double(colormap.size() - 1));
+        const auto rgb = colorAt(double(i) / double(colormap.size() - 1));
         colormap[i] = {rgb[0], rgb[1], rgb[2], 1.0f};
     }
     return colormap;
+}
+
+}  // namespace
+
+DeltaE00Pass::Colormap heatmapColormap() {
+    return tabulated([](double position) { return colormapLinear(position); });
+}
+
+DeltaE00Pass::Colormap flipColormap() {
+    return tabulated([](double error) { return flipColorLinear(error); });
 }
 
 }  // namespace matevo::gpu

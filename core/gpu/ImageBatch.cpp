@@ -92,4 +92,23 @@ DeltaEMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, u
     return map;
 }
 
+FlipMap downloadFlipMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index) {
+    FlipMap map;
+    map.width = shape.width;
+    map.height = shape.height;
+    const std::size_t pixels = shape.pixelCount();
+    const float* values = batch.as<float>().data() + pixels * index;
+    map.error.resize(pixels);
+    map.pooled.resize(pixels);
+    std::vector<float> pooledErrors;
+    pooledErrors.reserve(pixels);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        map.pooled[i] = values[i] >= 0.0f;
+        map.error[i] = map.pooled[i] ? values[i] : -1.0f - values[i];
+        if (map.pooled[i]) pooledErrors.push_back(map.error[i]);
+    }
+    map.stats = poolFlip(pooledErrors);
+    return map;
+}
+
 }  // namespace matevo::gpu

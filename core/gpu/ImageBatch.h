@@ -1,9 +1,10 @@
 #pragma once
-// Host-visible buffers holding a batch of same-sized images or ΔE00 maps, one after another in
-// the layout of Image::rgba, and their conversion to and from the core types.
+// Host-visible buffers holding a batch of same-sized images or ΔE00 or ꟻLIP maps, one after another
+// in the layout of Image::rgba, and their conversion to and from the core types.
 #include <cstdint>
 #include <span>
 
+#include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "common/Image.h"
 #include "common/Result.h"
@@ -36,5 +37,8 @@ Image downloadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t 
 
 // A ΔE00 map from the pass's output (negative = not covered) with its pooled statistics.
 DeltaEMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
+
+// A ꟻLIP map from the ꟻLIP pass's output (e pooled, −1 − e not) with its pooled statistics.
+FlipMap downloadFlipMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
 
 }  // namespace matevo::gpu

@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "color/Flip.h"
+
 namespace matevo {
 
 std::size_t GenomeHash::operator()(const Genome& genome) const {
@@ -18,13 +20,16 @@ std::size_t GenomeHash::operator()(const Genome& genome) const {
     return std::size_t(hash);
 }
 
-Result<GenomeRenderCache> GenomeRenderCache::create(RenderGenomes render, const Genome& target) {
+Result<GenomeRenderCache> GenomeRenderCache::create(RenderGenomes render, const Genome& target,
+                                                    ImageMetric metric) {
     auto images = render(std::span(&target, 1));
     if (!images) return images.error();
     if (images->size() != 1) return Error{"the renderer returned no image for the target"};
     GenomeRenderCache cache;
     cache.render_ = std::move(render);
     cache.target_ = toLabImage(images->front());
+    cache.metric_ = metric;
+    if (metric == ImageMetric::Flip) cache.targetImage_ = std::move(images->front());
     return cache;
 }
 
@@ -42,6 +47,11 @@ Status GenomeRenderCache::renderMissing(std::span<const Genome> genomes) {
     for (std::size_t i = 0; i < missing.size(); ++i) {
         GenomeRender entry{toLabImage((*images)[i]), 0.0};
         entry.deltaEToTarget = meanDeltaE00(target_, entry.lab);
+        if (metric_ == ImageMetric::Flip) {
+            auto flip = computeFlip(targetImage_, (*images)[i]);
+            if (!flip) return flip.error();
+            entry.flipToTarget = flip->stats.mean;
+        }
         renders_.emplace(missing[i], std::move(entry));
     }
     renderCount_ += missing.size();

@@ -22,8 +22,11 @@ void ImageSpaceFitness::score(std::span<const Genome> genomes, std::span<double>
         std::fill(fitness.begin(), fitness.end(), std::numeric_limits<double>::infinity());
         return;
     }
-    for (std::size_t i = 0; i < genomes.size(); ++i)
-        fitness[i] = band_.violation(cache_.at(genomes[i]).deltaEToTarget);
+    const bool flip = cache_.metric() == ImageMetric::Flip;
+    for (std::size_t i = 0; i < genomes.size(); ++i) {
+        const GenomeRender& render = cache_.at(genomes[i]);
+        fitness[i] = band_.violation(flip ? render.flipToTarget : render.deltaEToTarget);
+    }
     cache_.forgetAllBut(genomes);
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The image-space fitness for the GA (beside the paper's genotype distances): a genome's
-// rendered mean ΔE00 from the target over the sphere's pixels (the rule of `matevo compare`),
-// or, with a band, how far outside the band that lies — 0 inside, where the objective is met.
+// rendered mean ΔE00 (or, with a cache made for ꟻLIP, mean ꟻLIP) from the target over the
+// sphere's pixels (the rule of `matevo compare`), or, with a band, how far outside the band
+// that lies — 0 inside, where the objective is met.
 // A whole generation is rendered in one batch through the cache, so a genome that recurs (a
 // parent copied unchanged) is not rendered again. Only the latest generation's renders are
 // kept, which bounds the memory of a long run.
@@ -16,7 +17,7 @@ namespace matevo {
 
 class ImageSpaceFitness {
 public:
-    // band {0, 0}: the plain mean ΔE00 (lower is fitter).
+    // band {0, 0}: the plain mean (lower is fitter). The band is in the cache's metric.
     ImageSpaceFitness(GenomeRenderCache cache, DeltaEBand band = {0.0, 0.0});
     ImageSpaceFitness(const ImageSpaceFitness&) = delete;
     ImageSpaceFitness& operator=(const ImageSpaceFitness&) = delete;

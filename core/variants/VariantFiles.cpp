@@ -155,7 +155,8 @@ Image contactSheet(const VariantSet& set) {
 }
 
 Status writeVariantFiles(const std::filesystem::path& dir, const Preset& preset,
-                         const VariantSet& set, const nlohmann::json& report) {
+                         const VariantSet& set, const nlohmann::json& report,
+                         ImageMetric heatmapMetric) {
     const std::filesystem::path folder = dir / "variants";
     if (auto created = createFolder(folder); !created) return created;
     if (auto written = writeImage(set.target, dir / "target.png"); !written) return written;
@@ -171,11 +172,9 @@ Status writeVariantFiles(const std::filesystem::path& dir, const Preset& preset,
             return written;
         if (auto written = writeImage(variant.image, folder / (stem + ".png")); !written)
             return written;
-        auto map = compareImages(set.target, variant.image);
-        if (!map) return map.error();
-        if (auto written =
-                writeImage(heatmapImage(*map, HeatmapSettings{}), folder / (stem + "_heatmap.png"));
-            !written)
+        auto heatmap = errorHeatmap(set.target, variant.image, heatmapMetric);
+        if (!heatmap) return heatmap.error();
+        if (auto written = writeImage(*heatmap, folder / (stem + "_heatmap.png")); !written)
             return written;
     }
     if (auto written = writeImage(contactSheet(set), dir / "contact_sheet.png"); !written)

@@ -7,11 +7,13 @@
 //   DIR/variants/variant_NNN.json         one material each, read by `render --genome`
 //   DIR/variants/variant_NNN.png          its render at the output size
 //   DIR/variants/variant_NNN_heatmap.png  its per-pixel ΔE00 against the target, 0-10 viridis
+//                                         (or LDR-ꟻLIP, 0-1 magma)
 #include <filesystem>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "color/ImageMetric.h"
 #include "common/Image.h"
 #include "common/Result.h"
 #include "evolve/RenderGenomes.h"
@@ -52,9 +54,10 @@ std::string variantSummary(const VariantRun& run, const VariantSet& set);
 // to its nearest sibling, on a dark background.
 Image contactSheet(const VariantSet& set);
 
-// Writes every file listed above (atomically, each one), creating the folders; an Error names
-// the file that could not be written.
+// Writes every file listed above (atomically, each one), creating the folders, with heatmaps of
+// `heatmapMetric`; an Error names the file that could not be written.
 Status writeVariantFiles(const std::filesystem::path& dir, const Preset& preset,
-                       const VariantSet& set, const nlohmann::json& report);
+                         const VariantSet& set, const nlohmann::json& report,
+                         ImageMetric heatmapMetric = ImageMetric::DeltaE00);
 
 }  // namespace matevo

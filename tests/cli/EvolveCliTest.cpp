@@ -86,6 +86,56 @@ TEST(EvolveCli, OutWritesResultTargetCandidatesAndHeatmaps) {
     fs::remove_all(dir);
 }
 
+// ꟻLIP heatmaps: the statistics in the JSON are those `matevo compare --metric flip` finds in
+// the written files (to within the PNGs' 8-bit quantization), on both back ends.
+TEST(EvolveCli, OutWithFlipHeatmapsReportsWhatCompareFinds) {
+    for (const char* backend : {"gpu", "cpu"}) {
+        auto dir = fs::temp_directory_path() /
+                   ("matevo_evolve_flip_" + std::string(backend) + std::to_string(::getpid()));
+        fs::remove_all(dir);
+        auto result = runMatevo(
+            "evolve --json --population 4 --generations 1 --size 48 "
+            "--heatmap flip --backend " +
+            std::string(backend) + " --out '" + dir.string() + "'");
+        ASSERT_EQ(result.exitCode, 0) << result.err;
+        auto json = nlohmann::json::parse(result.out);
+        for (std::size_t rank = 0; rank < 4; ++rank) {
+            const auto& entry = json["population"][rank];
+            const double q1 = entry["q1_flip"].get<double>();
+            const double median = entry["median_flip"].get<double>();
+            EXPECT_LE(q1, median) << backend;
+            EXPECT_LE(median, entry["q3_flip"].get<double>()) << backend;
+            EXPECT_LE(entry["q3_flip"].get<double>(), entry["max_flip"].get<double>()) << backend;
+            EXPECT_LE(entry["max_flip"].get<double>(), 1.0) << backend;
+            EXPECT_TRUE(entry.contains("mean_de00")) << "ΔE00 is still reported";
+        }
+        const std::string candidate = (dir / "candidates" / "candidate_000.png").string();
+        auto compared = runMatevo("compare '" + (dir / "target.png").string() + "' '" + candidate +
+                                  "' --metric flip --json");
+        ASSERT_EQ(compared.exitCode, 0) << compared.err;
+        EXPECT_NEAR(nlohmann::json::parse(compared.out)["mean_flip"].get<double>(),
+                    json["best"]["mean_flip"].get<double>(), 0.01)
+            << backend;
+        EXPECT_TRUE(fs::is_regular_file(dir / "heatmaps" / "heatmap_003.png"));
+        fs::remove_all(dir);
+    }
+}
+
+// Image fitness by ꟻLIP: each candidate's fitness is its rendered mean ꟻLIP, in [0, 1].
+TEST(EvolveCli, FlipFitnessScoresByMeanFlip) {
+    auto json = evolveJson(
+        "--population 8 --generations 2 --seed 4 --fitness flip "
+        "--fitness-size 32 --backend cpu");
+    EXPECT_EQ(json["config"]["fitness"], "flip");
+    EXPECT_GT(json["config"]["evaluations"].get<int>(), 8);
+    for (const auto& entry : json["population"]) {
+        EXPECT_GE(entry["fitness"].get<double>(), 0.0);
+        EXPECT_LE(entry["fitness"].get<double>(), 1.0);
+    }
+    EXPECT_LT(json["best"]["fitness"].get<double>(),
+              json["population"][7]["fitness"].get<double>());
+}
+
 TEST(EvolveCli, CpuAndGpuBackendsAgreeOnTheCandidates) {
     auto base = fs::temp_directory_path() / ("matevo_evolve_backend_" + std::to_string(::getpid()));
     fs::remove_all(base);
@@ -108,7 +158,8 @@ TEST(EvolveCli, BadInputExitsTwoWithOneLine) {
     for (const char* arguments :
          {"--population 0", "--population 2000000000", "--generations -1", "--metric cosine",
           "--weights 1,2,3", "--weights 1,1,1,1,1,1,1,1,1,1,1,x", "--seed -4", "--frobnicate",
-          "--preset /nonexistent.json", "--population", "--backend metal", "--size 3"}) {
+          "--preset /nonexistent.json", "--population", "--backend metal", "--size 3",
+          "--heatmap flip", "--out /tmp/x --heatmap viridis", "--fitness flop"}) {
         auto result = runMatevo(std::string("evolve ") + arguments);
         EXPECT_EQ(result.exitCode, 2) << arguments;
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;

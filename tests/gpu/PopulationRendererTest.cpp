@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "GpuTestContext.h"
+#include "color/Colormap.h"
 #include "evolve/GenomeSampling.h"
 #include "genome/FamilyRules.h"
 #include "gpu/GpuPopulationRenderer.h"
@@ -112,6 +113,51 @@ TEST(PopulationRenderer, HandsBackOnlyWhatWasAskedFor) {
         EXPECT_EQ(evaluation->deltaE.size(), population.candidates.size()) << renderer->name();
         EXPECT_FALSE(renderer->evaluate(population.target, population.candidates, {}, 0).ok());
     }
+    test::expectNoValidationMessages(*test::validatedContext());
+}
+
+// ꟻLIP through the one interface: each back end's maps are core/color's ꟻLIP of its own
+// renders (the GPU pass to within the tolerance of GpuFlipTest), the heatmaps their magma
+// pictures, and the ΔE00 maps are still there.
+TEST(PopulationRenderer, FlipMapsAndHeatmapsWhenAsked) {
+    const Population population = makePopulation();
+    auto gpu = gpuRenderer();
+    ASSERT_NE(gpu, nullptr);
+    CpuPopulationRenderer cpu{SceneTextures{}};
+    EvaluationOptions flipHeatmaps;
+    flipHeatmaps.heatmapMetric = ImageMetric::Flip;
+    ASSERT_TRUE(flipHeatmaps.wantsFlip());
+    for (PopulationRenderer* renderer : {gpu.get(), static_cast<PopulationRenderer*>(&cpu)}) {
+        // Twice: the second call reuses the GPU's buffers and the kept target render.
+        for (int call = 0; call < 2; ++call) {
+            auto evaluation = renderer->evaluate(population.target, population.candidates, {},
+                                                 kSize, flipHeatmaps);
+            ASSERT_TRUE(evaluation.ok()) << renderer->name();
+            ASSERT_EQ(evaluation->flip.size(), population.candidates.size());
+            ASSERT_EQ(evaluation->deltaE.size(), population.candidates.size());
+            for (std::size_t i = 0; i < population.candidates.size(); ++i) {
+                auto reference = computeFlip(evaluation->target, evaluation->candidates[i]);
+                ASSERT_TRUE(reference.ok());
+                const FlipMap& map = evaluation->flip[i];
+                EXPECT_EQ(map.pooled, reference->pooled) << renderer->name();
+                EXPECT_NEAR(map.stats.mean, reference->stats.mean, 1e-3) << renderer->name();
+                EXPECT_GT(map.stats.mean, 0.0) << "distinct genomes should differ";
+                for (std::size_t p = 0; p < map.error.size(); ++p)
+                    ASSERT_NEAR(map.error[p], reference->error[p], 2e-4) << renderer->name();
+                const Image expected = flipHeatmapImage(map);
+                EXPECT_EQ(evaluation->heatmaps[i].rgba, expected.rgba) << renderer->name();
+            }
+        }
+    }
+    // Asked without heatmaps: the maps only.
+    EvaluationOptions scoresOnly;
+    scoresOnly.flip = true;
+    scoresOnly.heatmaps = false;
+    scoresOnly.candidateImages = false;
+    auto scores = gpu->evaluate(population.target, population.candidates, {}, kSize, scoresOnly);
+    ASSERT_TRUE(scores.ok());
+    EXPECT_EQ(scores->flip.size(), population.candidates.size());
+    EXPECT_TRUE(scores->heatmaps.empty());
     test::expectNoValidationMessages(*test::validatedContext());
 }
 

@@ -26,6 +26,10 @@ struct FastFloatMath {
     static constexpr std::array<float, 8> kAtanCoefficients = {
         0.9999993355468136f,  -0.3332986064638426f,  0.1994656393694752f, -0.1390862029235393f,
         0.09642171970112862f, -0.05591195847088065f, 0.0218626877435911f, -0.00405448852947783f};
+    // (2 / ln 2) / (2k + 1): the atanh series in log2 units.
+    static constexpr std::array<float, 5> kLog2AtanhCoefficients = {
+        2.8853900817779268f, 0.96179669392597560f, 0.57707801635558536f, 0.41219858311113240f,
+        0.32059889797532520f};
     static constexpr std::array<float, 5> kSineCoefficients = {1.0f, -1.0f / 6, 1.0f / 120,
                                                                -1.0f / 5040, 1.0f / 362880};
     static constexpr std::array<float, 6> kCosineCoefficients = {
@@ -56,12 +60,28 @@ struct FastFloatMath {
     }
 
     // For x <= 0 (results below 2^-125 flush towards 0, far below what ΔE00 can see).
-    static float exp(float x) {
-        const float twoPower = std::max(x, -87.0f) * std::numbers::log2e_v<float>;
-        const auto whole = std::int32_t(twoPower + (twoPower < 0.0f ? -0.5f : 0.5f));
-        const float fraction = twoPower - float(whole);  // in [-1/2, 1/2]
+    static float exp(float x) { return exp2(std::max(x, -87.0f) * std::numbers::log2e_v<float>); }
+
+    // For x in [-125, 127]; exact at integers.
+    static float exp2(float x) {
+        const auto whole = std::int32_t(x + (x < 0.0f ? -0.5f : 0.5f));
+        const float fraction = x - float(whole);  // in [-1/2, 1/2]
         return polynomial(fraction, kExp2Coefficients) * std::bit_cast<float>((whole + 127) << 23);
     }
+
+    // For positive normal x; exact at powers of two.
+    static float log2(float x) {
+        // x = m 2^e with m in [√½, √2): log2 m = (2 / ln 2) atanh(s), s = (m − 1) / (m + 1),
+        // |s| < 0.172, whose odd series to s^9 is within 1e-9.
+        const auto bits = std::bit_cast<std::int32_t>(x);
+        const std::int32_t exponent = (bits - 0x3f3504f3) >> 23;  // 0x3f3504f3: √½
+        const float mantissa = std::bit_cast<float>(bits - exponent * (1 << 23));
+        const float s = (mantissa - 1.0f) / (mantissa + 1.0f);
+        return float(exponent) + s * polynomial(s * s, kLog2AtanhCoefficients);
+    }
+
+    // x^y for x >= 0 and x^y within exp2's range; 0 for x = 0 (y > 0 assumed).
+    static float pow(float x, float y) { return x > 0.0f ? exp2(y * log2(x)) : 0.0f; }
 
     // In [0, 360); 0 for (0, 0).
     static float atan2Degrees(float y, float x) {

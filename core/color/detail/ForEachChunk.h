@@ -12,18 +12,28 @@
 
 namespace matevo::detail {
 
-template <typename Work>
-void forEachChunk(std::size_t chunkCount, unsigned workerCount, const Work& work) {
+// As forEachChunk, and each worker makes one scratch object (makeScratch()) that it hands to
+// every work(scratch, chunk) it runs, so that buffers are reused from chunk to chunk.
+template <typename MakeScratch, typename Work>
+void forEachChunkWithScratch(std::size_t chunkCount, unsigned workerCount,
+                             const MakeScratch& makeScratch, const Work& work) {
     if (chunkCount == 0) return;
     unsigned workers = workerCount != 0 ? workerCount : workerThreadCount();
     workers = unsigned(std::clamp<std::size_t>(workers, 1, chunkCount));
     std::atomic<std::size_t> next{0};
     auto drain = [&] {
-        for (std::size_t chunk = next++; chunk < chunkCount; chunk = next++) work(chunk);
+        auto scratch = makeScratch();
+        for (std::size_t chunk = next++; chunk < chunkCount; chunk = next++) work(scratch, chunk);
     };
     std::vector<std::jthread> helpers;
     for (unsigned i = 1; i < workers; ++i) helpers.emplace_back(drain);
     drain();
+}
+
+template <typename Work>
+void forEachChunk(std::size_t chunkCount, unsigned workerCount, const Work& work) {
+    forEachChunkWithScratch(
+        chunkCount, workerCount, [] { return 0; }, [&](int, std::size_t chunk) { work(chunk); });
 }
 
 }  // namespace matevo::detail

@@ -1,0 +1,198 @@
+// The ꟻLIP passes on the GPU against core/color's CPU reference, on our renders, noise and
+// shifted edges, at several viewing conditions, under the validation layer.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "GpuTestContext.h"
+#include "color/Colormap.h"
+#include "color/Flip.h"
+#include "evolve/GenomeSampling.h"
+#include "genome/FamilyRules.h"
+#include "gpu/GpuImageComparer.h"
+#include "scene/ProceduralTextures.h"
+#include "scene/SphereRenderer.h"
+#include "support/TestImages.h"
+
+namespace matevo {
+namespace {
+
+// Stated tolerances of the GPU pass against the CPU reference: both follow the same steps in
+// float; they differ in the order of the filter sums and in the GPU's pow, exp2 and log2.
+constexpr double kMeanTolerance = 1e-3;      // the bound on the pooled mean
+constexpr float kPerPixelTolerance = 2e-4f;  // every pixel, pooled or not (measured 3.7e-5)
+
+// Uniform noise in [0, scale] per channel, opaque.
+Image noiseImage(int width, int height, uint32_t seed, float scale) {
+    Image image = testdata::randomImage(width, height, seed, false);
+    for (std::size_t i = 0; i < image.rgba.size(); ++i)
+        if (i % 4 != 3) image.rgba[i] *= scale;
+    return image;
+}
+
+// A light-dark edge at x + slope y = offset (grey 0.8 and a dark blue), opaque.
+Image edgeImage(int size, double slope, double offset) {
+    Image image(size, size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            float* pixel = image.pixel(x, y);
+            const bool light = double(x) + slope * double(y) < offset;
+            pixel[0] = light ? 0.8f : 0.02f;
+            pixel[1] = light ? 0.8f : 0.05f;
+            pixel[2] = light ? 0.8f : 0.3f;
+            pixel[3] = 1.0f;
+        }
+    return image;
+}
+
+struct FlipCase {
+    std::string name;
+    Image reference;
+    std::vector<Image> candidates;
+    double pixelsPerDegree = flip::kDefaultPixelsPerDegree;
+};
+
+struct Agreement {
+    double largestMeanDifference = 0;
+    float largestPixelDifference = 0;
+};
+
+void expectAgreement(gpu::GpuImageComparer& comparer, const FlipCase& flipCase,
+                     Agreement& agreement) {
+    SCOPED_TRACE(flipCase.name);
+    const FlipSettings settings{flipCase.pixelsPerDegree};
+    auto gpuResult = comparer.compareFlip(flipCase.reference, flipCase.candidates, settings);
+    ASSERT_TRUE(gpuResult.ok()) << gpuResult.error().message;
+    ASSERT_EQ(gpuResult->maps.size(), flipCase.candidates.size());
+    for (std::size_t i = 0; i < flipCase.candidates.size(); ++i) {
+        auto cpu = computeFlip(flipCase.reference, flipCase.candidates[i], true, settings);
+        ASSERT_TRUE(cpu.ok()) << cpu.error().message;
+        const FlipMap& gpuMap = gpuResult->maps[i];
+        ASSERT_EQ(gpuMap.pooled, cpu->pooled) << "candidate " << i;
+        ASSERT_EQ(gpuMap.stats.pixels, cpu->stats.pixels);
+        ASSERT_GT(cpu->stats.pixels, 0u);
+
+        float largestPixel = 0;
+        for (std::size_t p = 0; p < cpu->error.size(); ++p) {
+            ASSERT_GE(gpuMap.error[p], 0.0f);
+            ASSERT_LE(gpuMap.error[p], 1.0f);
+            largestPixel = std::max(largestPixel, std::abs(gpuMap.error[p] - cpu->error[p]));
+        }
+        EXPECT_LE(largestPixel, kPerPixelTolerance) << "candidate " << i;
+        const double meanDifference = std::abs(gpuMap.stats.mean - cpu->stats.mean);
+        EXPECT_LE(meanDifference, kMeanTolerance) << "candidate " << i;
+        EXPECT_NEAR(gpuMap.stats.weightedMedian, cpu->stats.weightedMedian, kPerPixelTolerance);
+        EXPECT_NEAR(gpuMap.stats.max, cpu->stats.max, kPerPixelTolerance);
+        agreement.largestMeanDifference = std::max(agreement.largestMeanDifference, meanDifference);
+        agreement.largestPixelDifference = std::max(agreement.largestPixelDifference, largestPixel);
+
+        // The heatmap is the magma entry of each pooled pixel's error, transparent elsewhere.
+        const Image& heatmap = gpuResult->heatmaps[i];
+        for (std::size_t p = 0; p < cpu->error.size(); ++p) {
+            const float* texel = &heatmap.rgba[4 * p];
+            if (!gpuMap.pooled[p]) {
+                EXPECT_EQ(texel[3], 0.0f);
+                continue;
+            }
+            const auto expected = flipColorLinear(gpuMap.error[p]);
+            for (int c = 0; c < 3; ++c) ASSERT_EQ(texel[c], expected[c]) << "pixel " << p;
+            ASSERT_EQ(texel[3], 1.0f);
+        }
+    }
+}
+
+std::vector<FlipCase> renderCases() {
+    SceneTextures textures;
+    textures.roughness = makePaintRoughnessTexture(64, 32);
+    textures.baseColor = makeMetalDepthBaseColorTexture(64, 32);
+    const std::array<double, 3> kappa = {3.1, 2.9, 2.8};
+    Random random(15);
+    std::vector<FlipCase> cases;
+    constexpr int kSize = 96;
+    for (const MaterialFamily& family : supportedFamilies()) {
+        const MaterialInstance target{randomGenome(family, random), family, kappa};
+        FlipCase flipCase{"renders of " + describe(family),
+                          renderSphereCpu(target, textures, SceneSettings{}, kSize),
+                          {}};
+        for (int i = 0; i < 2; ++i) {
+            const MaterialInstance candidate{randomGenome(family, random), family, kappa};
+            flipCase.candidates.push_back(
+                renderSphereCpu(candidate, textures, SceneSettings{}, kSize));
+        }
+        cases.push_back(std::move(flipCase));
+    }
+    return cases;
+}
+
+// One comparer on the validated context per test; no validation message may appear.
+class GpuFlip : public testing::Test {
+protected:
+    void SetUp() override {
+        context_ = test::validatedContext();
+        ASSERT_NE(context_, nullptr);
+        auto comparer = gpu::GpuImageComparer::create(context_->device, test::rampColormap());
+        ASSERT_TRUE(comparer.ok()) << comparer.error().message;
+        comparer_.emplace(std::move(comparer).value());
+    }
+    void TearDown() override {
+        if (context_) test::expectNoValidationMessages(*context_);
+    }
+
+    gpu::GpuContext* context_ = nullptr;
+    std::optional<gpu::GpuImageComparer> comparer_;
+};
+
+TEST_F(GpuFlip, MatchesCpuReferenceOnRendersNoiseAndShiftedEdges) {
+    std::vector<FlipCase> cases = renderCases();
+    cases.push_back({"noise vs noise",
+                     noiseImage(128, 128, 1, 1.0f),
+                     {noiseImage(128, 128, 2, 1.0f), noiseImage(128, 128, 3, 0.1f)}});
+    cases.push_back({"dark noise, 200x150 at 20 ppd",
+                     noiseImage(200, 150, 4, 0.1f),
+                     {noiseImage(200, 150, 5, 0.1f)},
+                     20.0});
+    cases.push_back({"edge shifted by 1 and 3 pixels",
+                     edgeImage(96, 0.0, 48.0),
+                     {edgeImage(96, 0.0, 49.0), edgeImage(96, 0.0, 51.0)}});
+    cases.push_back({"diagonal edge shifted by 2 pixels at 120 ppd",
+                     edgeImage(80, 0.5, 60.0),
+                     {edgeImage(80, 0.5, 62.0)},
+                     120.0});
+    // The same renders at another viewing condition (other filter radii).
+    FlipCase coarse = cases.front();
+    coarse.name += " at 30 ppd";
+    coarse.pixelsPerDegree = 30.0;
+    cases.push_back(std::move(coarse));
+
+    Agreement agreement;
+    for (const FlipCase& flipCase : cases) expectAgreement(*comparer_, flipCase, agreement);
+    std::printf(
+        "GPU vs CPU ꟻLIP over %zu cases: largest |Δ mean| %.2e, largest |Δ| per pixel "
+        "%.2e\n",
+        cases.size(), agreement.largestMeanDifference, agreement.largestPixelDifference);
+}
+
+TEST_F(GpuFlip, IdenticalImagesGiveZero) {
+    const Image image = noiseImage(40, 30, 9, 1.0f);
+    const std::vector<Image> candidates{image};
+    auto result = comparer_->compareFlip(image, candidates);
+    ASSERT_TRUE(result.ok()) << result.error().message;
+    for (float error : result->maps[0].error) ASSERT_EQ(error, 0.0f);
+    EXPECT_EQ(result->maps[0].stats.pixels, image.pixelCount());
+}
+
+TEST_F(GpuFlip, RefusesBadInput) {
+    const std::vector<Image> otherSize{Image(8, 8)};
+    EXPECT_FALSE(comparer_->compareFlip(Image(16, 16), otherSize).ok());
+    const std::vector<Image> sameSize{Image(16, 16)};
+    EXPECT_FALSE(comparer_->compareFlip(Image(16, 16), sameSize, FlipSettings{0.0}).ok());
+}
+
+}  // namespace
+}  // namespace matevo
