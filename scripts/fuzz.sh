@@ -4,7 +4,8 @@
 # corpus. New corpus entries go to build-fuzz/corpus/, never into the repository; a crash
 # leaves its input in build-fuzz/findings/ and fails the script.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]     e.g. scripts/fuzz.sh 600 fuzz_preset
-# Long runs: nice -n 19 scripts/fuzz.sh 3600
+# Long runs: nice -n 19 scripts/fuzz.sh 3600 (with the kernel's autogroup scheduling, nice ranks a
+# process only within its session: `echo 19 > /proc/self/autogroup` first to yield to others).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-10}

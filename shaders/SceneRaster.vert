@@ -17,8 +17,7 @@ layout(std430, binding = 1) readonly buffer Frame {
     vec4 cameraPosition;
     vec4 toLight;
     vec4 lightRadiance;
-    vec4 ambient;   // w: roughness levels of the environment (0: none)
-    vec4 textured;  // x: 1 when a texture is present
+    vec4 ambient;  // w: roughness levels of the environment (0: none)
 } frame;
 
 layout(location = 0) out vec3 worldPosition;

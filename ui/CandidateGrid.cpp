@@ -27,12 +27,18 @@ void drawStatusLine(const EvolutionView& evolution, std::size_t shown) {
     }
     if (evolution.running && evolution.history.empty())
         ImGui::TextColored(kAccentColor, "Evolving: starting…");
-    else if (evolution.running)
+    else if (evolution.running && done < evolution.totalGenerations)
         ImGui::TextColored(kAccentColor, "Evolving: generation %d of %d", done,
                            evolution.totalGenerations);
+    else if (evolution.running)  // the run is done; the rest of the population is being drawn
+        ImGui::TextColored(kAccentColor, "Drawing the whole population: %zu of %d distinct",
+                           evolution.candidates.size(), evolution.distinctGenomes);
     else
         mutedText(std::to_string(shown) + " of " + std::to_string(evolution.candidates.size()) +
-                  " distinct candidates, after " + std::to_string(done) + " generations");
+                  " distinct candidates shown, after " + std::to_string(done) + " generations" +
+                  (int(evolution.candidates.size()) < evolution.distinctGenomes
+                       ? " (the best of " + std::to_string(evolution.distinctGenomes) + ")"
+                       : std::string()));
     if (!evolution.renderBackend.empty())
         hoverHint(("Drawn on " + evolution.renderBackend).c_str());
 }
@@ -48,7 +54,7 @@ void drawGridToolbar(GridView& view, HeatmapView& heatmap) {
     hoverHint("Overlay each candidate's per-pixel CIEDE2000 against the target.");
     sameLineIfFits(labelledWidth(110.0f, "Tile"));
     ImGui::SetNextItemWidth(110.0f);
-    ImGui::SliderFloat("Tile", &view.tileSize, kMinTileSize, kMaxTileSize, "%.0f px");
+    sliderFloat("Tile", &view.tileSize, kMinTileSize, kMaxTileSize, "%.0f px");
     hoverHint(
         "Tile size: kept when the window grows. Double-click a tile (or Enter) to see it "
         "at the target's size.");
@@ -182,6 +188,24 @@ void drawPopulation(EditorState& state) {
 }
 
 }  // namespace
+
+std::optional<std::string> adviceForFarCandidates(const EvolutionView& evolution,
+                                                  const GaSettings& ga) {
+    if (evolution.candidates.empty()) return std::nullopt;
+    std::vector<double> deltaE;
+    for (const CandidateView& candidate : evolution.candidates)
+        deltaE.push_back(candidate.meanDeltaE00);
+    const auto middle = deltaE.begin() + std::ptrdiff_t(deltaE.size() / 2);
+    std::nth_element(deltaE.begin(), middle, deltaE.end());
+    if (*middle <= kFarFromTargetDeltaE) return std::nullopt;
+    char median[16];
+    std::snprintf(median, sizeof median, "%.1f", *middle);
+    return "The candidates are far from the target (median ΔE00 " + std::string(median) +
+           "): " + std::to_string(ga.generations) +
+           " generations are too few for this material to converge; try 30 (validation metal "
+           "depth: median 13 at 5, 1-3 at 30). For variants a set distance from the target, "
+           "use Variants: it searches by rendered ΔE00.";
+}
 
 std::vector<const CandidateView*> visibleCandidates(const EvolutionView& evolution,
                                                     const GridView& view) {

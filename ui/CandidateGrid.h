@@ -5,11 +5,22 @@
 // tile with a copy count ("#3 ×5"). Click
 // selects a tile for inspection, double-click enlarges it to the target's size, and the hover
 // tooltip says what it is.
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "EditorState.h"
 
 namespace matevo::ui {
+
+// Above this median ΔE00 from the target, candidates read as other materials (the paper's
+// "perceptible at a glance" band ends at 10).
+inline constexpr double kFarFromTargetDeltaE = 10.0;
+
+// For a finished run whose candidates are far from the target: what to change, for the status
+// bar; nothing otherwise.
+std::optional<std::string> adviceForFarCandidates(const EvolutionView& evolution,
+                                                  const GaSettings& ga);
 
 void drawCandidateGrid(EditorState& state);
 

@@ -3,6 +3,7 @@
 // and `view`; the app pushes those changes to the GA worker and the GPU, and fills
 // `evolution` with what came back. No GPU handles: images arrive as opaque ImTextureIDs.
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "ScenePanel.h"
 #include "StatusLog.h"
 #include "VariantsPanel.h"
+#include "color/ImageDifference.h"
+#include "common/Image.h"
 #include "genome/Genome.h"
 #include "io/Preset.h"
 
@@ -51,6 +54,9 @@ struct CandidateView {
     ImTextureID image = nullptr;
     ImTextureID heatmap = nullptr;
     int copies = 1;  // individuals in the population with this genome (one tile for all)
+    // Host copies of the render and its ΔE00 map, for the inspector's readout under the pointer.
+    std::shared_ptr<const Image> picture = nullptr;
+    std::shared_ptr<const DeltaEMap> deltaEMap = nullptr;
 };
 
 struct GenerationPoint {
@@ -64,8 +70,10 @@ struct GenerationPoint {
 // Filled by the app from the worker's results; the panels only read it.
 struct EvolutionView {
     ImTextureID targetImage = nullptr;
-    std::vector<CandidateView> candidates;  // best first
-    std::vector<CandidateView> kept;        // renders of the kept materials of this family
+    std::shared_ptr<const Image> targetPicture;  // at tile size, what the ΔE00 maps compare with
+    std::vector<CandidateView> candidates;       // best first, one per distinct genome
+    int distinctGenomes = 0;  // in the population: once the run is done, all are drawn (to a cap)
+    std::vector<CandidateView> kept;  // renders of the kept materials of this family
     std::vector<GenerationPoint> history;
     int totalGenerations = 0;
     bool running = false;

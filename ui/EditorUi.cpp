@@ -70,6 +70,7 @@ FrameRequests EditorUi::draw() {
     drawSplitters(layout, state_.splits);
 
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
+    state_.variants.keptInFamily = int(keptGenomesOfFamily(state_.preset).size());
     requests.variants = drawVariantsWindow(state_.variants);
     drawSceneWindow(state_);
     drawDialogs();

@@ -55,8 +55,8 @@ void drawWeights(std::array<double, kPaperChromosomeCount>& weights, const Mater
         float weight = float(weights[i]);
         const std::string name(chromosomeName(i));
         const std::string format = name + " %.2f";
-        const bool changed = ImGui::SliderFloat((name + "##weight").c_str(), &weight, 0.0f,
-                                                kMaxWeight, format.c_str());
+        const bool changed =
+            sliderFloat((name + "##weight").c_str(), &weight, 0.0f, kMaxWeight, format.c_str());
         if (changed) weights[i] = weight;
         if (editFinished(changed) && weights[i] < 0.0) {
             status.post("The " + name + " weight cannot be negative: set to 0",
@@ -82,14 +82,13 @@ std::uint64_t nextSeed(std::uint64_t seed) {
 
 void drawGaControls(GaSettings& settings, const MaterialFamily& family, StatusLog& status) {
     sectionHeader("Genetic algorithm");
-    if (editFinished(ImGui::SliderInt("Population", &settings.population, 2, kSliderMaxPopulation)))
+    if (editFinished(sliderInt("Population", &settings.population, 2, kSliderMaxPopulation)))
         clampAndReport(settings.population, 2, kMaxPopulation, "Population", status);
     hoverHint("Drag up to 400; Ctrl+click to type up to 100000.");
-    if (editFinished(
-            ImGui::SliderInt("Generations", &settings.generations, 1, kSliderMaxGenerations)))
+    if (editFinished(sliderInt("Generations", &settings.generations, 1, kSliderMaxGenerations)))
         clampAndReport(settings.generations, 0, kMaxGenerations, "Generations", status);
     hoverHint("Drag up to 100; Ctrl+click to type up to 100000.");
-    if (editFinished(ImGui::SliderInt("Elitism", &settings.elitism, 0, settings.population / 2)))
+    if (editFinished(sliderInt("Elitism", &settings.elitism, 0, settings.population / 2)))
         clampAndReport(settings.elitism, 0, settings.population / 2, "Elitism", status);
     hoverHint(
         "Best individuals copied unchanged into the next generation (the paper uses 0); "

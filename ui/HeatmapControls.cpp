@@ -98,7 +98,7 @@ void drawHeatmapControls(HeatmapView& heatmap) {
     hoverHint("The ΔE00 values at the cold and hot ends of the colour ramp.");
     sameLineIfFits(labelledWidth(90.0f, "Opacity"));
     ImGui::SetNextItemWidth(90.0f);
-    ImGui::SliderFloat("Opacity", &heatmap.opacity, 0.0f, 1.0f, "%.2f");
+    sliderFloat("Opacity", &heatmap.opacity, 0.0f, 1.0f, "%.2f");
     drawLegend(heatmap);
     drawBandNames(heatmap);
 }

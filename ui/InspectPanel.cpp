@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "ImageView.h"
+#include "PixelReadout.h"
 #include "Widgets.h"
 #include "genome/FamilyRules.h"
 #include "io/GenomeJson.h"
@@ -101,7 +104,55 @@ void drawWipe(EditorState& state, const CandidateView& candidate, ImVec2 origin,
     drawLabel(drawList, origin, size, "target | candidate");
 }
 
-void drawComparison(EditorState& state, const CandidateView& candidate, float width, float height) {
+// Where the pointer is over the image at `topLeft`, in [0, 1)² of it; nothing when elsewhere.
+std::optional<ImVec2> pointerOver(ImVec2 topLeft, float size, std::optional<ImVec2> found) {
+    if (found || !ImGui::IsWindowHovered(ImGuiHoveredFlags_AllowWhenBlockedByActiveItem))
+        return found;
+    const ImVec2 pointer = ImGui::GetIO().MousePos;
+    const ImVec2 at((pointer.x - topLeft.x) / size, (pointer.y - topLeft.y) / size);
+    if (at.x < 0.0f || at.x >= 1.0f || at.y < 0.0f || at.y >= 1.0f) return std::nullopt;
+    return at;
+}
+
+// Three lines under the images, always there so that nothing moves when the pointer arrives:
+// the ΔE00 of the pixel under it and its colour in the target and in the candidate.
+void drawPixelReadout(const EditorState& state, const CandidateView& candidate,
+                      std::optional<ImVec2> pointer) {
+    const auto readout =
+        pointer ? readPixel(state.evolution.targetPicture.get(), candidate.picture.get(),
+                            candidate.deltaEMap.get(), pointer->x, pointer->y)
+                : std::nullopt;
+    if (!readout) {
+        ImGui::TextColored(kMutedTextColor, "Point at an image: the ΔE00 and colours of a pixel");
+        ImGui::NewLine();
+        ImGui::NewLine();
+        return;
+    }
+    if (readout->deltaE)
+        ImGui::Text("pixel %d, %d   ΔE00 %.2f", readout->x, readout->y, *readout->deltaE);
+    else
+        ImGui::Text("pixel %d, %d   ΔE00 -   (background)", readout->x, readout->y);
+    const auto swatch = [](const std::string& name, const PixelColour& colour) {
+        const ImVec4 shown(float(colour.srgb[0]) / 255.0f, float(colour.srgb[1]) / 255.0f,
+                           float(colour.srgb[2]) / 255.0f, 1.0f);
+        const float side = ImGui::GetTextLineHeight();
+        ImGui::ColorButton(("##" + name).c_str(), shown, ImGuiColorEditFlags_NoTooltip,
+                           ImVec2(side, side));
+        ImGui::SameLine();
+        ImGui::Text("%s L*a*b* %.1f %.1f %.1f", name.c_str(), colour.lab.l, colour.lab.a,
+                    colour.lab.b);
+        const std::string srgb = "sRGB " + std::to_string(colour.srgb[0]) + " " +
+                                 std::to_string(colour.srgb[1]) + " " +
+                                 std::to_string(colour.srgb[2]);
+        hoverHint(srgb.c_str());
+    };
+    swatch("target", readout->target);
+    swatch("candidate", readout->candidate);
+}
+
+// The comparison images; returns where the pointer is over one of them.
+std::optional<ImVec2> drawComparison(EditorState& state, const CandidateView& candidate,
+                                     float width, float height) {
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImTextureID target = state.evolution.targetImage;
@@ -118,20 +169,24 @@ void drawComparison(EditorState& state, const CandidateView& candidate, float wi
             drawLabel(drawList, second, size, "candidate");
             drawLabel(drawList, third, size, "ΔE00");
             ImGui::Dummy(ImVec2(3.0f * size + 2.0f * kGap, size));
-            break;
+            return pointerOver(third, size,
+                               pointerOver(second, size, pointerOver(origin, size, {})));
         }
-        case CompareMode::Wipe:
-            drawWipe(state, candidate, origin, std::max(48.0f, std::min(height, width)));
-            break;
+        case CompareMode::Wipe: {
+            const float size = std::max(48.0f, std::min(height, width));
+            drawWipe(state, candidate, origin, size);
+            return pointerOver(origin, size, {});
+        }
         case CompareMode::Flip: {
             const float size = std::max(48.0f, std::min(height, width));
             drawImage(drawList, origin, size, state.inspectShowsTarget ? target : candidate.image);
             drawLabel(drawList, origin, size,
                       state.inspectShowsTarget ? "target (Space)" : "candidate (Space)");
             ImGui::Dummy(ImVec2(size, size));
-            break;
+            return pointerOver(origin, size, {});
         }
     }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -165,11 +220,13 @@ void drawInspectPanel(EditorState& state) {
     constexpr float kMinImage = 96.0f;
     const ImVec2 available = ImGui::GetContentRegionAvail();
     const bool stacked = available.x < kTableWidth + 3.0f * (kMinImage + kGap);
+    const float readoutHeight = 3.0f * ImGui::GetTextLineHeightWithSpacing();
     ImGui::BeginGroup();
-    if (stacked)
-        drawComparison(state, candidate, available.x, available.y * 0.5f);
-    else
-        drawComparison(state, candidate, available.x - kTableWidth - kGap, available.y - 4.0f);
+    const std::optional<ImVec2> pointer =
+        stacked ? drawComparison(state, candidate, available.x, available.y * 0.5f - readoutHeight)
+                : drawComparison(state, candidate, available.x - kTableWidth - kGap,
+                                 available.y - 4.0f - readoutHeight);
+    drawPixelReadout(state, candidate, pointer);
     ImGui::EndGroup();
     if (!stacked) ImGui::SameLine();
     ImGui::BeginChild("genes", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);

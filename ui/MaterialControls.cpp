@@ -77,9 +77,8 @@ void drawChromosomeSliders(const MaterialFamily& family, Genome& target, StatusL
         // Roughness and depth span decades: a logarithmic slider gives each decade equal room.
         const bool logarithmic = range.min > 0.0 && range.max > 20.0 * range.min;
         const std::string label = std::string(chromosomeName(i)) + "##target";
-        const bool changed =
-            ImGui::SliderFloat(label.c_str(), &value, float(range.min), float(range.max), "%.4g",
-                               logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
+        const bool changed = sliderFloat(label.c_str(), &value, float(range.min), float(range.max),
+                                         "%.4g", logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
         if (editFinished(changed)) {
             const Genome before = target;
             target[i] = clampInto(range, value);

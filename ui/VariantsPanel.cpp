@@ -27,8 +27,8 @@ void drawBandChoice(VariantsView& view) {
         }
     }
     ImGui::SetNextItemWidth(200.0f);
-    if (ImGui::DragFloatRange2("Band (mean ΔE00 to the target)", &view.low, &view.high, 0.05f,
-                               0.0f, 100.0f, "%.2f", "%.2f", ImGuiSliderFlags_AlwaysClamp))
+    if (ImGui::DragFloatRange2("Band (mean ΔE00 to the target)", &view.low, &view.high, 0.05f, 0.0f,
+                               100.0f, "%.2f", "%.2f", ImGuiSliderFlags_AlwaysClamp))
         view.bandChoice = int(kCustomBand);
 }
 
@@ -54,6 +54,14 @@ void drawRequest(VariantsView& view, VariantsActions& actions) {
         std::snprintf(overlay, sizeof overlay, "%.0f%%", view.progress * 100.0f);
         ImGui::ProgressBar(view.progress, ImVec2(-1.0f, 0.0f), overlay);
         return;
+    }
+    if (view.keptInFamily > 0) {
+        const std::string label =
+            "Start from the kept bin (" + std::to_string(view.keptInFamily) + ")";
+        ImGui::Checkbox(label.c_str(), &view.startFromKept);
+        hoverHint(
+            "The kept materials of this family join the set as they are; the search "
+            "finds the rest");
     }
     actions.run = ImGui::Button("Find variants");
     ImGui::SameLine();
@@ -119,13 +127,13 @@ void drawMatrix(const VariantsView& view) {
             if (i == j) continue;
             const double value = view.pairwise[i][j];
             const auto colour = colormapSrgb(value / 10.0);
-            ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg,
-                                   ImGui::GetColorU32(ImVec4(colour[0], colour[1], colour[2],
-                                                             0.85f)));
+            ImGui::TableSetBgColor(
+                ImGuiTableBgTarget_CellBg,
+                ImGui::GetColorU32(ImVec4(colour[0], colour[1], colour[2], 0.85f)));
             const bool close = value < view.minApart;
-            ImGui::TextColored(close ? ImVec4(1.0f, 0.4f, 0.35f, 1.0f)
-                                     : ImVec4(1.0f, 1.0f, 1.0f, 1.0f),
-                               "%.1f", value);
+            ImGui::TextColored(
+                close ? ImVec4(1.0f, 0.4f, 0.35f, 1.0f) : ImVec4(1.0f, 1.0f, 1.0f, 1.0f), "%.1f",
+                value);
         }
     }
     ImGui::EndTable();

@@ -40,6 +40,8 @@ struct VariantsView {
     std::vector<VariantTileView> variants;
     std::vector<std::vector<double>> pairwise;
     std::string savePath = "variants-out";
+    int keptInFamily = 0;       // kept materials of the preset's family (the editor's kept bin)
+    bool startFromKept = true;  // a fresh set starts from them: they join it as they are
 };
 
 struct VariantsActions {

@@ -17,6 +17,13 @@ void hoverHint(const char* text);
 // that typing "1000" is not judged at "1".
 bool editFinished(bool changed);
 
+// ImGui's SliderFloat and SliderInt, with the value drawn in the half of the frame the grab is
+// not in: ImGui centres it, under the grab whenever the value is mid-range.
+bool sliderFloat(const char* label, float* value, float min, float max, const char* format,
+                 ImGuiSliderFlags flags = 0);
+bool sliderInt(const char* label, int* value, int min, int max, const char* format = "%d",
+               ImGuiSliderFlags flags = 0);
+
 // Grey explanatory text, wrapped at the window's edge.
 void mutedText(const std::string& text);
 

@@ -10,6 +10,7 @@
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/ImageMetric.h"
+#include "WorkEstimate.h"
 #include "commands/Commands.h"
 #include "io/ImageFile.h"
 
@@ -173,6 +174,7 @@ int runCompare(CommandLine& args) {
                          std::to_string(a.image.width) + "x" + std::to_string(a.image.height) +
                          ", " + files[1] + " is " + std::to_string(b.image.width) + "x" +
                          std::to_string(b.image.height));
+    checkWorkEstimate(compareEstimate(a.image.width, a.image.height, metric == ImageMetric::Flip));
     const Inputs inputs{a.image, b.image, files[0] + " and " + files[1]};
     const double mean = metric == ImageMetric::Flip
                             ? reportFlip(inputs, flipSettings, heatmapFile, asJson)

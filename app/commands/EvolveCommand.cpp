@@ -11,7 +11,7 @@
 #include "Messages.h"
 #include "PresetOption.h"
 #include "StopSignals.h"
-#include "common/MemoryBudget.h"
+#include "WorkEstimate.h"
 #include "common/StopRequest.h"
 #include "commands/Commands.h"
 #include "evolve/GeneticAlgorithm.h"
@@ -155,14 +155,12 @@ int runEvolve(CommandLine& args) {
     // Everything that can be refused is refused before the work starts.
     std::optional<OutputFolder> output;
     if (outDir) {
-        if (auto fits = checkMemoryEstimate(evolveImagesMemoryEstimate(imageSize),
-                                            "--out at --size " + std::to_string(imageSize));
-            !fits)
-            throw UsageError(fits.error().message);
         auto claimed = OutputFolder::claim(*outDir, replaceOutput);
         if (!claimed) throw UsageError("--out: " + claimed.error().message);
         output.emplace(std::move(*claimed));
     }
+    checkWorkEstimate(evolveEstimate(choice.preset.ga.population, choice.preset.ga.generations,
+                                     outDir ? imageSize : 0));
 
     const Preset& preset = choice.preset;
     std::optional<ImageSpaceFitness> fitness;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "PresetOption.h"
 #include "ProgressBar.h"
 #include "StopSignals.h"
+#include "WorkEstimate.h"
 #include "commands/Commands.h"
 #include "common/StopRequest.h"
 #include "experiment/Experiment.h"
@@ -145,6 +147,31 @@ int totalWork(const Request& request) {
     return total;
 }
 
+// Every GA run of the request, each scored by one render.
+WorkEstimate estimateWork(const Request& request) {
+    WorkEstimate total;
+    long long gaRuns = 0;
+    int largestImage = 0;
+    for (const auto& choice : request.presets) {
+        const int imageSize = request.imageSize.value_or(choice.preset.scene.imageSize);
+        largestImage = std::max(largestImage, imageSize);
+        const std::vector<GaSize> sizes =
+            request.sweep ? paperSweep(choice.preset.family) : std::vector{request.settings.size};
+        for (const GaSize& size : sizes) {
+            const long long runs =
+                (long long)request.settings.runs * (long long)request.settings.metrics.size();
+            const WorkEstimate part =
+                experimentEstimate(runs, size.population, size.generations, imageSize);
+            total.bytes = std::max(total.bytes, part.bytes);  // one preset's renders at a time
+            total.seconds += part.seconds;
+            gaRuns += runs;
+        }
+    }
+    total.what = std::to_string(gaRuns) + " GA runs scored at up to " +
+                 std::to_string(largestImage) + "x" + std::to_string(largestImage);
+    return total;
+}
+
 std::string sizeLabel(const GaSize& size) {
     std::string label = "p";
     label += std::to_string(size.population);
@@ -260,9 +287,11 @@ int runExperiment(CommandLine& args) {
     }
     const Request request = parseRequest(args);
     installStopSignalHandlers();
-    // Refused before any run: a folder with other files, or one we cannot write beside.
+    // Refused before any run: a folder with other files, or one we cannot write beside, and
+    // work past the memory limit.
     auto output = OutputFolder::claim(request.outDir, request.replaceOutput);
     if (!output) throw UsageError("--out: " + output.error().message);
+    checkWorkEstimate(estimateWork(request));
     try {
         return runInto(request, *output);
     } catch (const UsageError& error) {

@@ -5,8 +5,8 @@
 
 #include "PresetOption.h"
 #include "RenderBackend.h"
+#include "WorkEstimate.h"
 #include "commands/Commands.h"
-#include "common/MemoryBudget.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/GenomeJson.h"
 #include "io/ImageFile.h"
@@ -41,11 +41,7 @@ int runRender(CommandLine& args) {
     const auto lighting = args.option("--env");
     const std::filesystem::path out = imageOutputPath(args);
     args.finish();
-    // The render, its read-back and the encoded file: about three RGBA float images.
-    if (auto fits = checkMemoryEstimate(std::uint64_t(size) * std::uint64_t(size) * 16 * 3,
-                                        "--size " + std::to_string(size));
-        !fits)
-        throw UsageError(fits.error().message);
+    checkWorkEstimate(renderEstimate(int(size)));
 
     MaterialInstance material{choice.preset.target, choice.preset.family, choice.preset.baseKappa};
     if (genomeFile) {

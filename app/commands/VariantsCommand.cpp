@@ -9,6 +9,7 @@
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "StopSignals.h"
+#include "WorkEstimate.h"
 #include "commands/Commands.h"
 #include "common/StopRequest.h"
 #include "experiment/Experiment.h"
@@ -98,13 +99,16 @@ int runVariants(CommandLine& args) {
         throw UsageError("--hue: the preset's base is a dielectric; hue variety evolves a "
                          "conductor's kappa");
     installStopSignalHandlers();
-    // Refused before the search: a folder with other files, or one we cannot write beside.
+    // Refused before the search: a folder with other files, or one we cannot write beside,
+    // and work past the memory limit.
     std::optional<OutputFolder> output;
     if (outDir) {
         auto claimed = OutputFolder::claim(*outDir, replaceOutput);
         if (!claimed) throw UsageError("--out: " + claimed.error().message);
         output.emplace(std::move(*claimed));
     }
+    checkWorkEstimate(variantsEstimate(request.count, size, fitnessSize, settings.maxEvaluations,
+                                       settings.population));
 
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);

@@ -54,6 +54,7 @@ Status CandidateRenderCache::prepare(const Preset& preset,
         return set;
     }
     entries_.clear();
+    targetPicture_.reset();
     preset_.reset();  // nothing is cached for a half-prepared preset
     if (Status drawn = drawTarget(preset); !drawn) return drawn;
     preset_ = preset;
@@ -100,7 +101,7 @@ Status CandidateRenderCache::draw(std::span<const Genome> genomes) {
     }
     EvaluationOptions options;
     options.heatmaps = false;  // the window colours the ΔE00 maps itself, in the user's range
-    options.candidateImages = !gpuRenderer_;
+    options.candidateImages = true;  // the GPU's are copied to the tiles on the device too
     const MaterialInstance target = material(preset_->target);
     auto evaluation =
         gpuRenderer_ ? gpuRenderer_->evaluateIntoTiles(target, materials, preset_->scene, tileSize_,
@@ -112,8 +113,15 @@ Status CandidateRenderCache::draw(std::span<const Genome> genomes) {
                                                  evaluation->candidates, evaluation->deltaE);
             !uploaded)
             return uploaded;
-    for (std::size_t i = 0; i < genomes.size(); ++i)
-        entries_.push_back({genomes[i], {tiles[i], evaluation->deltaE[i].stats}, useCounter_});
+    if (!targetPicture_) targetPicture_ = std::make_shared<Image>(std::move(evaluation->target));
+    for (std::size_t i = 0; i < genomes.size(); ++i) {
+        const DeltaEStats stats = evaluation->deltaE[i].stats;
+        entries_.push_back(
+            {genomes[i],
+             {tiles[i], stats, std::make_shared<Image>(std::move(evaluation->candidates[i])),
+              std::make_shared<DeltaEMap>(std::move(evaluation->deltaE[i]))},
+             useCounter_});
+    }
     return Ok{};
 }
 

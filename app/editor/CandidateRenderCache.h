@@ -26,6 +26,9 @@ namespace matevo::editor {
 struct CandidateTile {
     std::shared_ptr<const gpu::DisplayTile> tile;  // render + ΔE00 map, on the window's device
     DeltaEStats stats;                             // of the ΔE00 map
+    // Host copies, for the inspector's readout of the pixel under the pointer.
+    std::shared_ptr<const Image> picture;
+    std::shared_ptr<const DeltaEMap> deltaE;
 };
 
 class CandidateRenderCache {
@@ -39,6 +42,8 @@ public:
     // target is rendered here, once per change.
     Status prepare(const Preset& preset, const std::filesystem::path& presetFile);
     const std::shared_ptr<const gpu::DisplayTile>& target() const { return target_; }
+    // The target at tile size, as the ΔE00 maps compare against it; null before the first tiles.
+    const std::shared_ptr<const Image>& targetPicture() const { return targetPicture_; }
     // The tiles of `genomes`, in order (an Error too when the request's `cancelled` said so).
     Result<std::vector<CandidateTile>> tiles(std::span<const Genome> genomes);
     // "GPU (llvmpipe)" or "CPU", for the status line; empty before the first prepare.
@@ -71,6 +76,7 @@ private:
     std::optional<Preset> preset_;  // what the cached pictures were drawn from
     std::filesystem::path presetFile_;
     std::shared_ptr<const gpu::DisplayTile> target_;
+    std::shared_ptr<const Image> targetPicture_;
     std::vector<Entry> entries_;
     std::uint64_t useCounter_ = 0;
 };

@@ -16,6 +16,7 @@
 #include <backends/imgui_impl_vulkan.h>
 #include <imgui.h>
 
+#include "CandidateGrid.h"
 #include "CompareMetricsDisplay.h"
 #include "CompareMetricsWorker.h"
 #include "EditorStyle.h"
@@ -103,8 +104,8 @@ private:
     // ImGui's context and its GLFW and Vulkan backends, shut down in reverse.
     class ImGuiSession {
     public:
-        ImGuiSession(GLFWwindow* window, VulkanContext& vulkan,
-                     const WindowRenderer& renderer, const std::string& iniPath);
+        ImGuiSession(GLFWwindow* window, VulkanContext& vulkan, const WindowRenderer& renderer,
+                     const std::string& iniPath);
         ~ImGuiSession();
         ImGuiSession(const ImGuiSession&) = delete;
         ImGuiSession& operator=(const ImGuiSession&) = delete;
@@ -136,19 +137,20 @@ private:
     ScriptPlayer script_;
     EditorTimings timings_;
     std::optional<Preset> submittedPreset_;
+    std::optional<Preset> previewedPreset_;  // the target shown while a slider is dragged
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
     // Frames drawn after a change, so that hover states and popups settle before waiting.
     static constexpr int kSettleFrames = 3;
     std::atomic<bool> workerPosted_{false};  // a worker has a result or progress to show
-    std::vector<std::shared_ptr<ShownImage>> compareImages_;  // what Compare metrics shows
+    std::vector<std::shared_ptr<ShownImage>> compareImages_;   // what Compare metrics shows
     std::vector<std::shared_ptr<ShownImage>> variantsImages_;  // what Variants shows
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
     std::unique_ptr<VariantsWorker> variantsWorker_;
     std::optional<VariantsResult> shownVariants_;  // the set in the Variants window
     std::vector<Genome> discardedVariants_;        // since its last fresh run
-    std::shared_ptr<ShownImage> sceneImage_;  // what the Scene window shows
+    std::shared_ptr<ShownImage> sceneImage_;       // what the Scene window shows
     std::unique_ptr<SceneViewWorker> sceneWorker_;
     std::optional<SceneViewJob> requestedScene_;
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
@@ -374,8 +376,12 @@ void EditorApp::applyEvolutionResults() {
     std::optional<EvolutionUpdate> update = worker_->takeLatest();
     if (!update) return;
     if (!update->error.empty()) state.status.post(update->error, ui::StatusKind::Error);
+    const bool runDone = update->finished && !update->targetOnly && update->error.empty();
     if (Status shown = display_->show(std::move(*update), state.evolution); !shown)
         failure_ = shown.error().message;
+    if (runDone)
+        if (auto advice = ui::adviceForFarCandidates(state.evolution, state.preset.ga))
+            state.status.post(*advice, ui::StatusKind::Warning);
 }
 
 void EditorApp::applyCompareMetricsResults() {
@@ -421,6 +427,8 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
     request.seed = std::uint64_t(view.seed);
     if (view.hueVariety) request.kappaGenes = KappaGenes::On;
     if (actions.run) {
+        // The kept bin is where a set starts: its materials join as they are.
+        if (view.startFromKept) request.keep = keptGenomesOfFamily(state.preset);
         discardedVariants_.clear();
         if (variantsWorker_->start({state.preset, state.presetPath, request})) view.running = true;
     }
@@ -491,14 +499,25 @@ void EditorApp::applySceneView() {
 
 void EditorApp::submitChangesToWorker() {
     const Preset& preset = ui_.state().preset;
-    // Wait for the end of a drag: every intermediate value would cancel the one before.
-    if (ImGui::IsAnyItemActive() && submittedPreset_) return;
+    // During a drag the GA waits for the release (every intermediate value would cancel the
+    // run before it), but the target follows the slider: one render per new value.
+    if (ImGui::IsAnyItemActive() && submittedPreset_) {
+        const Preset& shown = previewedPreset_ ? *previewedPreset_ : *submittedPreset_;
+        if (preset.target == shown.target && preset.baseKappa == shown.baseKappa) return;
+        previewedPreset_ = preset;
+        worker_->submit({preset, ui_.state().presetPath, true});
+        return;
+    }
+    // A preview replaced the target and stopped the run: a full job follows even when the
+    // slider came back to where it started.
+    const bool previewed = std::exchange(previewedPreset_, std::nullopt).has_value();
     // Keeping, naming or removing a kept material changes nothing the GA does.
     const auto withoutKept = [](Preset p) {
         p.kept.clear();
         return p;
     };
-    if (submittedPreset_ && withoutKept(*submittedPreset_) == withoutKept(preset)) return;
+    if (!previewed && submittedPreset_ && withoutKept(*submittedPreset_) == withoutKept(preset))
+        return;
     submittedPreset_ = preset;
     const std::uint64_t jobId = worker_->submit({preset, ui_.state().presetPath});
     ui_.state().evolution.running = true;

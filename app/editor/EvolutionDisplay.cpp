@@ -15,14 +15,15 @@ Result<std::shared_ptr<ShownImage>> EvolutionDisplay::showTile(
 }
 
 Status EvolutionDisplay::show(EvolutionUpdate update, ui::EvolutionView& view) {
-    jobId_ = update.jobId;
-    finished_ = update.finished;
     if (update.target) {
         auto target = showTile(update.target);
         if (!target) return target.error();
         target_ = std::move(target).value();
         view.targetImage = target_->render();
     }
+    if (update.targetOnly) return Ok{};  // a preview: the grid waits for the full run
+    jobId_ = update.jobId;
+    finished_ = update.finished;
     std::vector<std::shared_ptr<ShownImage>> candidates;
     view.candidates.clear();
     for (const CandidateResult& result : update.candidates) {
@@ -34,6 +35,8 @@ Status EvolutionDisplay::show(EvolutionUpdate update, ui::EvolutionView& view) {
         candidate.meanDeltaE00 = result.deltaE.mean;
         candidate.genome = result.individual.genome;
         candidate.copies = result.copies;
+        candidate.picture = result.picture;
+        candidate.deltaEMap = result.deltaEMap;
         candidate.image = (*shown)->render();
         candidate.heatmap = (*shown)->heatmap();
         view.candidates.push_back(candidate);
@@ -55,6 +58,8 @@ Status EvolutionDisplay::show(EvolutionUpdate update, ui::EvolutionView& view) {
     }
     candidates_ = std::move(candidates);  // frames in flight keep the replaced ones alive
     kept_ = std::move(kept);
+    view.distinctGenomes = update.distinctGenomes;
+    if (update.targetPicture) view.targetPicture = update.targetPicture;
     view.history = std::move(update.history);
     view.totalGenerations = update.totalGenerations;
     view.renderBackend = update.backend;

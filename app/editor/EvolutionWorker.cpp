@@ -1,7 +1,9 @@
 #include "EvolutionWorker.h"
 
 #include <algorithm>
+#include <array>
 #include <exception>
+#include <map>
 #include <numeric>
 
 #include <sys/resource.h>
@@ -11,6 +13,12 @@
 namespace matevo::editor {
 namespace {
 
+struct DistinctGenomes {
+    std::vector<std::size_t> first;  // index into the ranked population of each shown genome
+    std::vector<int> copies;         // individuals with that genome
+    int total = 0;                   // distinct genomes in the population, shown or not
+};
+
 double meanOf(const std::vector<CandidateResult>& candidates) {
     if (candidates.empty()) return 0.0;
     return std::accumulate(
@@ -19,12 +27,56 @@ double meanOf(const std::vector<CandidateResult>& candidates) {
            double(candidates.size());
 }
 
+// The first `limit` distinct genomes of a ranked population (as indices into it) with how many
+// individuals carry each: a converging population holds many copies of one material, which
+// would fill the grid with identical tiles.
+DistinctGenomes distinctGenomes(const std::vector<Individual>& ranked, std::size_t limit) {
+    DistinctGenomes distinct;
+    // Each genome's place among the shown ones (or past them): populations reach 100000.
+    std::map<std::array<double, kChromosomeCount>, std::size_t> seen;
+    for (std::size_t i = 0; i < ranked.size(); ++i) {
+        const auto [at, added] = seen.try_emplace(ranked[i].genome.values, seen.size());
+        if (added && distinct.first.size() < limit) {
+            distinct.first.push_back(i);
+            distinct.copies.push_back(0);
+        }
+        if (at->second < distinct.first.size()) ++distinct.copies[at->second];
+    }
+    distinct.total = int(seen.size());
+    return distinct;
+}
+
+// The first `count` distinct genomes and the kept ones, drawn, as update's tiles.
+Status fillTiles(EvolutionUpdate& update, const std::vector<Individual>& ranked,
+                 const DistinctGenomes& distinct, std::size_t count,
+                 const std::vector<Genome>& kept, CandidateRenderCache& renderCache) {
+    std::vector<Genome> shown;
+    for (std::size_t i = 0; i < count; ++i) shown.push_back(ranked[distinct.first[i]].genome);
+    // Kept materials of this family are drawn too, whether or not the run finds them.
+    for (std::size_t i = 0; i < kept.size() && i < EvolutionWorker::kKeptTiles; ++i)
+        shown.push_back(kept[i]);
+    auto tiles = renderCache.tiles(shown);
+    if (!tiles) return tiles.error();
+    update.targetPicture = renderCache.targetPicture();
+    update.candidates.clear();
+    update.kept.clear();
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+        auto& tile = (*tiles)[i];
+        if (i < count)
+            update.candidates.push_back({int(distinct.first[i]) + 1, ranked[distinct.first[i]],
+                                         std::move(tile.tile), tile.stats, distinct.copies[i],
+                                         std::move(tile.picture), std::move(tile.deltaE)});
+        else
+            update.kept.push_back({0, {shown[i], 0.0}, std::move(tile.tile), tile.stats, 0});
+    }
+    return Ok{};
+}
+
 }  // namespace
 
 EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate, const gpu::Device& device,
                                  RenderBackend backend)
-    : onUpdate_(std::move(onUpdate)),
-      thread_([this, &device, backend] { run(device, backend); }) {}
+    : onUpdate_(std::move(onUpdate)), thread_([this, &device, backend] { run(device, backend); }) {}
 
 EvolutionWorker::~EvolutionWorker() {
     {
@@ -133,55 +185,47 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
     }
     update.target = renderCache.target();
     update.backend = renderCache.backendName();
+    if (job.targetOnly) {
+        update.targetOnly = true;
+        update.finished = true;
+        publish(std::move(update));
+        return;
+    }
 
     GeneticAlgorithm ga(preset.family, preset.target, preset.ga);
     ga.initialize();
+    const std::vector<Genome> kept = keptGenomesOfFamily(preset);
     for (;;) {
         if (cancelled(jobId)) return;
         const std::vector<Individual> ranked = ga.rankedPopulation();
-        // The best distinct genomes: a converging population holds many copies of one
-        // material, which would fill the grid with identical tiles. Copies are counted instead.
-        std::vector<std::size_t> firstOf;  // index into ranked of each shown genome
-        std::vector<int> copies;
-        for (std::size_t i = 0; i < ranked.size(); ++i) {
-            const auto same = std::find_if(firstOf.begin(), firstOf.end(), [&](std::size_t j) {
-                return ranked[j].genome == ranked[i].genome;
-            });
-            if (same != firstOf.end())
-                ++copies[std::size_t(same - firstOf.begin())];
-            else if (firstOf.size() < std::size_t(kGridTiles))
-                firstOf.push_back(i), copies.push_back(1);
+        const bool last = ga.finished();
+        // While the GA runs, the best distinct genomes; once it is done, the whole population,
+        // drawn a grid's worth at a time so that the first tiles show at once.
+        const DistinctGenomes distinct =
+            distinctGenomes(ranked, last ? kMaxBrowsedTiles : kGridTiles);
+        update.distinctGenomes = distinct.total;
+        std::size_t drawn = std::min(distinct.first.size(), std::size_t(kGridTiles));
+        for (;;) {
+            if (Status filled = fillTiles(update, ranked, distinct, drawn, kept, renderCache);
+                !filled) {
+                if (cancelled(jobId)) return;
+                update.finished = true;
+                update.error = filled.error().message;
+                publish(std::move(update));
+                return;
+            }
+            if (cancelled(jobId)) return;
+            if (drawn <= std::size_t(kGridTiles)) {  // once per generation, over the grid's best
+                const GenerationStats& stats = ga.history().back();
+                update.history.push_back({stats.generation, stats.best, stats.mean,
+                                          meanOf(update.candidates), stats.diversity});
+            }
+            update.finished = last && drawn == distinct.first.size();
+            publish(update);
+            if (drawn == distinct.first.size()) break;
+            drawn = std::min(drawn + std::size_t(kGridTiles), distinct.first.size());
         }
-        std::vector<Genome> shown;
-        for (std::size_t i : firstOf) shown.push_back(ranked[i].genome);
-        // Kept materials of this family are drawn too, whether or not the run finds them.
-        for (const KeptMaterial& kept : preset.kept)
-            if (kept.family == preset.family && shown.size() < firstOf.size() + kKeptTiles)
-                shown.push_back(kept.genome);
-        auto tiles = renderCache.tiles(shown);
-        if (cancelled(jobId)) return;
-        if (!tiles) {
-            update.finished = true;
-            update.error = tiles.error().message;
-            publish(std::move(update));
-            return;
-        }
-        update.candidates.clear();
-        update.kept.clear();
-        for (std::size_t i = 0; i < shown.size(); ++i) {
-            auto& tile = (*tiles)[i];
-            if (i < firstOf.size())
-                update.candidates.push_back({int(firstOf[i]) + 1, ranked[firstOf[i]],
-                                             std::move(tile.tile), tile.stats, copies[i]});
-            else
-                update.kept.push_back({0, {shown[i], 0.0}, std::move(tile.tile), tile.stats, 0});
-        }
-        const GenerationStats& stats = ga.history().back();
-        update.history.push_back(
-            {stats.generation, stats.best, stats.mean, meanOf(update.candidates), stats.diversity});
-        update.finished = ga.finished();
-        publish(update);
-        if (update.finished) return;
+        if (last) return;
         ga.step();
     }
 }

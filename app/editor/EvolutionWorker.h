@@ -27,6 +27,9 @@ namespace matevo::editor {
 struct EvolutionJob {
     Preset preset;
     std::filesystem::path presetFile;  // its textures are relative to its folder
+    // Only the target, no GA run: the live preview while a slider is dragged (the candidates
+    // follow on release, with a full job).
+    bool targetOnly = false;
 };
 
 struct CandidateResult {
@@ -34,16 +37,21 @@ struct CandidateResult {
     Individual individual;
     std::shared_ptr<const gpu::DisplayTile> tile;  // render + ΔE00 map against the target
     DeltaEStats deltaE;
-    int copies = 1;  // individuals in the population with this genome
+    int copies = 1;                        // individuals in the population with this genome
+    std::shared_ptr<const Image> picture;  // host copies, for the inspector's pixel readout
+    std::shared_ptr<const DeltaEMap> deltaEMap;
 };
 
 struct EvolutionUpdate {
     std::uint64_t jobId = 0;
     int totalGenerations = 0;
     bool finished = false;
+    bool targetOnly = false;  // a preview: the target alone, the candidates left as they are
     std::shared_ptr<const gpu::DisplayTile> target;  // large, for the target panel
+    std::shared_ptr<const Image> targetPicture;      // at tile size, as the ΔE00 maps saw it
     std::string backend;                      // what rendered the tiles: "GPU (name)" or "CPU"
-    std::vector<CandidateResult> candidates;  // best first
+    std::vector<CandidateResult> candidates;  // best first, one per distinct genome
+    int distinctGenomes = 0;                  // in the population, drawn or not
     std::vector<CandidateResult> kept;        // the preset's kept materials of its family
     std::vector<ui::GenerationPoint> history;
     std::string error;  // the job could not run (e.g. a missing texture)
@@ -51,7 +59,10 @@ struct EvolutionUpdate {
 
 class EvolutionWorker {
 public:
-    static constexpr int kGridTiles = 24;
+    static constexpr int kGridTiles = 24;  // drawn per generation while the GA runs
+    // Drawn once it is done: the whole population up to this many distinct genomes (the
+    // population slider's range; each tile holds one of the window's 1024 descriptor sets).
+    static constexpr std::size_t kMaxBrowsedTiles = 400;
     static constexpr std::size_t kKeptTiles = 48;  // kept materials drawn, at most
     static constexpr int kTileSize = 128;
     static constexpr int kTargetSize = 320;

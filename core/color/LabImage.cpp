@@ -6,6 +6,7 @@
 #include "color/Coverage.h"
 #include "color/detail/ColorFormulas.h"
 #include "color/detail/FastFloatMath.h"
+#include "color/detail/VectorisedKernel.h"
 
 namespace matevo {
 namespace {
@@ -15,7 +16,7 @@ constexpr std::size_t kBlockPixels = 1024;
 // The same formulas and math policy as compareImages, so each pixel's value is the same. A map
 // without a reduction, so it vectorises (summing in the loop would not, as float addition must
 // keep its order).
-[[gnu::flatten, gnu::target_clones("avx512f", "avx2", "default")]] void deltaERange(
+MATEVO_VECTORISED_KERNEL void deltaERange(
     const LabImage& a, const LabImage& b, std::size_t begin, std::size_t count, float* deltaE) {
     using formulas::FastFloatMath;
     for (std::size_t i = 0; i < count; ++i) {

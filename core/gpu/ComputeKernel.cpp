@@ -41,13 +41,8 @@ Result<ComputeKernel> ComputeKernel::create(const Device& device,
     pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipelineInfo.stage.module = kernel.module_.get();
     pipelineInfo.stage.pName = "main";
-    std::vector<VkSpecializationMapEntry> entries;
-    for (uint32_t id = 0; id < specialization.size(); ++id)
-        entries.push_back({id, uint32_t(id * sizeof(uint32_t)), sizeof(uint32_t)});
-    const VkSpecializationInfo specializationInfo{uint32_t(entries.size()), entries.data(),
-                                                 specialization.size_bytes(),
-                                                 specialization.data()};
-    if (!specialization.empty()) pipelineInfo.stage.pSpecializationInfo = &specializationInfo;
+    const SpecializationConstants constants(specialization);
+    pipelineInfo.stage.pSpecializationInfo = constants.info();
     pipelineInfo.layout = pipelineLayout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     if (VkResult result = vkCreateComputePipelines(vkDevice, VK_NULL_HANDLE, 1, &pipelineInfo,

@@ -2,8 +2,7 @@
 // One compute shader with its pipeline and a single descriptor set. Bindings are numbered in
 // the order given at creation. Callers submit and wait before rebinding (our passes do).
 // Specialisation constants (32-bit each, constant_id = position in the list) fix what a
-// pipeline does not use: lavapipe runs both sides of a branch, but not a branch specialised
-// away.
+// pipeline does not use (SpecializationConstants in ShaderModule.h).
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -48,7 +48,6 @@ struct GpuFrame {
     float toLight[4];
     float lightRadiance[4];
     float ambient[4];  // w: environment levels
-    float textured[4];
 };
 
 void store(float (&target)[4], const std::array<double, 3>& xyz, double w) {
@@ -74,7 +73,6 @@ GpuFrame toGpu(const SceneFrame& frame, const SceneSettings& scene,
     store(gpu.toLight, {toLight.x, toLight.y, toLight.z}, 0.0);
     store(gpu.lightRadiance, scene.lightRadiance, 0.0);
     store(gpu.ambient, ambientRadiance(scene), textures.environmentLevels());
-    store(gpu.textured, {textures.textured() ? 1.0 : 0.0, 0.0, 0.0}, 0.0);
     return gpu;
 }
 
@@ -155,8 +153,10 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
     return UniqueRenderPass(device, renderPass);
 }
 
+// The fragment stage is specialised for the textures and the environment the scene has.
 Result<UniquePipeline> createPipeline(VkDevice device, VkRenderPass renderPass,
-                                      VkPipelineLayout layout) {
+                                      VkPipelineLayout layout,
+                                      const GpuSceneTextures& textures) {
     auto vertexModule = createShaderModule(device, kSceneRasterVertexSpirv);
     if (!vertexModule) return vertexModule.error();
     auto fragmentModule = createShaderModule(device, kSceneRasterFragmentSpirv);
@@ -169,6 +169,10 @@ Result<UniquePipeline> createPipeline(VkDevice device, VkRenderPass renderPass,
     stages[1] = stages[0];
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].module = fragmentModule->get();
+    const uint32_t specialization[2] = {textures.textured() ? 1u : 0u,
+                                        textures.environmentLevels() > 0 ? 1u : 0u};
+    const SpecializationConstants constants(specialization);
+    stages[1].pSpecializationInfo = constants.info();
 
     const VkVertexInputBindingDescription vertexBinding{0, sizeof(MeshVertex),
                                                         VK_VERTEX_INPUT_RATE_VERTEX};
@@ -306,7 +310,8 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
         result != VK_SUCCESS)
         return vulkanError("creating a pipeline layout", result);
     renderer.pipelineLayout_ = UniquePipelineLayout(vkDevice, pipelineLayout);
-    auto pipeline = createPipeline(vkDevice, renderer.renderPass_.get(), pipelineLayout);
+    auto pipeline = createPipeline(vkDevice, renderer.renderPass_.get(), pipelineLayout,
+                                   renderer.textures_);
     if (!pipeline) return pipeline.error();
     renderer.pipeline_ = std::move(pipeline).value();
     return renderer;

@@ -11,6 +11,7 @@
 #include "color/Srgb.h"
 #include "common/MemoryBudget.h"
 #include "io/AtomicFile.h"
+#include "io/ExrHeaderCheck.h"
 #include "io/ImageLibrary.h"
 #include "io/ImageType.h"
 #include "io/InputFile.h"
@@ -106,9 +107,12 @@ Result<ImageFileContents> decodeImageFile(std::string_view bytes,
                                    "decoding " + std::to_string(width) + "x" +
                                        std::to_string(height) + " pixels");
     };
-    auto decoded = lowerCaseExtension(file) == ".png"
-                       ? decodePng(bytes, checkSize)
-                       : decodeWithImageLibrary(bytes, file, checkSize);
+    const std::string extension = lowerCaseExtension(file);
+    if (extension == ".exr")
+        if (auto headers = checkExrHeaders(bytes); !headers)
+            return fileError(file, "not a readable OpenEXR image: " + headers.error().message);
+    auto decoded = extension == ".png" ? decodePng(bytes, checkSize)
+                                       : decodeWithImageLibrary(bytes, file, checkSize);
     if (!decoded) return fileError(file, decoded.error().message);
 
     const bool hasAlpha = decoded->channels == 2 || decoded->channels == 4;

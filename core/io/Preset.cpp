@@ -55,8 +55,7 @@ GaSettings readGaSettings(JsonReader reader) {
 SceneSettings readScene(JsonReader reader) {
     SceneSettings scene;
     if (reader.has("mode"))
-        scene.mode =
-            readEnum(reader, "mode", parseSceneMode, "paper, ambient or environment");
+        scene.mode = readEnum(reader, "mode", parseSceneMode, "paper, ambient or environment");
     if (reader.has("environment")) scene.environment = reader.string("environment");
     if (reader.has("image_size")) scene.imageSize = int(reader.integer("image_size", 8, 4096));
     if (reader.has("camera_position"))
@@ -215,6 +214,13 @@ std::string serializePreset(const Preset& preset) {
         json["kept"] = kept;
     }
     return json.dump(2) + "\n";
+}
+
+std::vector<Genome> keptGenomesOfFamily(const Preset& preset) {
+    std::vector<Genome> genomes;
+    for (const KeptMaterial& kept : preset.kept)
+        if (kept.family == preset.family) genomes.push_back(kept.genome);
+    return genomes;
 }
 
 Status savePreset(const Preset& preset, const std::filesystem::path& file) {

@@ -43,6 +43,10 @@ struct Preset {
     bool operator==(const Preset&) const = default;
 };
 
+// The genomes of the kept materials evolved in the preset's current family, in the bin's
+// order: what the editor draws beside a run and what a variant set starts from.
+std::vector<Genome> keptGenomesOfFamily(const Preset& preset);
+
 struct LoadedPreset {
     Preset preset;
     std::vector<std::string> warnings;  // e.g. unknown fields, each naming file and field

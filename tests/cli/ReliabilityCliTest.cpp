@@ -156,7 +156,15 @@ TEST_F(ReliabilityCli, WorkPastTheMemoryLimitIsRefusedUpFront) {
                   "render: --size 8192 needs about");
     expectRefused(
         runCommand("MATEVO_MEMORY_LIMIT=10M " + kMatevo + " evolve --size 512 --out " + path("c")),
-        "evolve: --out at --size 512 needs about");
+        "evolve: --out at --size 512: 50 individuals, 5 generations needs about");
+    expectRefused(
+        runCommand("MATEVO_MEMORY_LIMIT=1G " + kMatevo +
+                   " variants --count 1000 --band 2,5 --size 4096"),
+        "variants: 1000 variants at 4096x4096, up to 1500 evaluations at 64x64 needs about");
+    expectRefused(runCommand("MATEVO_MEMORY_LIMIT=2G " + kMatevo +
+                             " experiment --runs 10 --size 4096 --out " + path("d")),
+                  "experiment: 30 GA runs scored at up to 4096x4096 needs about");
+    EXPECT_FALSE(fs::exists(folder_ / "d"));
 }
 
 // Starts `arguments` in the background, waits until its output folder `out` is claimed (the
@@ -171,6 +179,28 @@ CommandOutput interruptedRun(const std::string& arguments, const fs::path& out,
                       " & pid=$!; for i in $(seq 600); do ls -d \"" + staging +
                       "\".matevo-tmp-* >/dev/null 2>&1 && break; sleep 0.1; done; sleep " +
                       std::to_string(seconds) + "; kill -" + signal + " $pid; wait $pid; exit $?'");
+}
+
+// Large work says what it will cost as it starts, so that the user can stop it.
+TEST_F(ReliabilityCli, LargeWorkSaysWhatItWillCostBeforeItStarts) {
+    const CommandOutput evolve = interruptedRun(
+        "evolve --population 100000 --generations 100000 --size 16 --backend cpu --out " +
+            path("run"),
+        folder_ / "run", "INT", 0);
+    EXPECT_EQ(evolve.exitCode, 130) << evolve.err;
+    // (The signal may be noticed before or after the estimate is printed.)
+    EXPECT_NE(evolve.err.find("matevo evolve: --out at --size 16: 100000 individuals, 100000 "
+                              "generations: about "),
+              std::string::npos)
+        << evolve.err;
+    EXPECT_NE(evolve.err.find(" of processor time (estimated)\n"), std::string::npos)
+        << evolve.err;
+
+    // Small work goes ahead without a word.
+    const CommandOutput small =
+        runMatevo("render --backend cpu --size 32 --out " + path("small.png"));
+    EXPECT_EQ(small.exitCode, 0) << small.err;
+    EXPECT_EQ(small.err.find("estimated"), std::string::npos) << small.err;
 }
 
 TEST_F(ReliabilityCli, SigintStopsAnExperimentAndKeepsTheCompletedRunsMarkedPartial) {

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include "PanelLayout.h"
 #include "ScreenshotAnalysis.h"
@@ -221,6 +222,46 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     // which keeps each sphere apart from the window's lighter background.
     const auto tiles = spheres(shot, {60, 230, 1020, 385}, 3000, 30);
     EXPECT_EQ(tiles.size(), 5u) << "sphere tiles in the Variants window";
+    fs::remove_all(dir);
+}
+
+// The kept bin is where a variant set starts: the preset's kept materials of its family join
+// the set as they are (marked kept in the report); one kept in another family does not.
+TEST(EditorVariants, ASetStartsFromTheKeptBin) {
+    const fs::path dir = freshDirectory("variants_kept");
+    fs::create_directories(dir / "config");
+    std::ofstream(dir / "kept.json")
+        << R"({"name": "kept metal", "family": {"coat": "clearcoat", "base": "conductor",
+    "medium": false, "textured_layer": "none"},
+  "target": {"eta1": 1.2, "eta2": 0.8, "alpha1": 0.03, "alpha2": 0.1},
+  "base_kappa": [3.1, 2.9, 2.8], "ga": {"population": 12, "generations": 2, "seed": 1},
+  "kept": [
+    {"name": "first", "family": {"coat": "clearcoat", "base": "conductor", "medium": false,
+     "textured_layer": "none"}, "genome": {"eta1": 1.35, "eta2": 0.9, "alpha1": 0.04, "alpha2": 0.2}},
+    {"name": "second", "family": {"coat": "clearcoat", "base": "conductor", "medium": false,
+     "textured_layer": "none"}, "genome": {"eta1": 1.1, "eta2": 0.7, "alpha1": 0.05, "alpha2": 0.3}},
+    {"name": "elsewhere", "family": {"coat": "roughcoat", "base": "conductor", "medium": false,
+     "textured_layer": "none"}, "genome": {"eta1": 1.4, "eta2": 0.8, "alpha1": 0.2, "alpha2": 0.05}}
+  ]})";
+    std::ofstream(dir / "script.txt") << "wait 2\n"
+                                         "variants 3\n"
+                                         "wait-variants\n"
+                                         "save-variants "
+                                      << (dir / "set").string() << "\nwait 2\nquit\n";
+    const CommandOutput run =
+        runCommand("XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+                   "/matevo' edit '" + (dir / "kept.json").string() + "' --validate --script '" +
+                   (dir / "script.txt").string() + "' --frames 100000");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    std::ifstream reportFile(dir / "set/report.json");
+    const std::string report((std::istreambuf_iterator<char>(reportFile)), {});
+    ASSERT_FALSE(report.empty()) << "no report.json in the saved set";
+    const auto json = nlohmann::json::parse(report);
+    std::multiset<double> keptEta1;
+    for (const auto& variant : json.at("variants"))
+        if (variant.at("kept").get<bool>()) keptEta1.insert(variant.at("genome").at("eta1").get<double>());
+    EXPECT_EQ(keptEta1, (std::multiset<double>{1.1, 1.35})) << report;
+    EXPECT_EQ(json.at("variants").size(), 3u) << report;
     fs::remove_all(dir);
 }
 

@@ -13,15 +13,20 @@
 namespace matevo::editor {
 namespace {
 
-std::optional<EvolutionUpdate> finalUpdate(const gpu::Device& device, RenderBackend backend) {
+EvolutionJob metalJob() {
     auto loaded = loadPreset(MATEVO_SOURCE_DIR "/presets/validation_metal.json");
     EXPECT_TRUE(loaded.ok()) << loaded.error().message;
-    if (!loaded) return std::nullopt;
-    EvolutionJob job{loaded->preset, MATEVO_SOURCE_DIR "/presets/validation_metal.json"};
+    EvolutionJob job{loaded ? loaded->preset : Preset{},
+                     MATEVO_SOURCE_DIR "/presets/validation_metal.json"};
     job.preset.ga.population = 12;
     job.preset.ga.generations = 2;
+    return job;
+}
+
+std::optional<EvolutionUpdate> finalUpdate(const gpu::Device& device, RenderBackend backend,
+                                           EvolutionJob job) {
     EvolutionWorker worker([] {}, device, backend);
-    worker.submit(job);
+    worker.submit(std::move(job));
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     while (std::chrono::steady_clock::now() < deadline) {
         if (auto update = worker.takeLatest(); update && update->finished) return update;
@@ -43,7 +48,7 @@ TEST(EvolutionWorker, TilesAreImagesOnTheGivenDevice) {
     gpu::GpuContext* context = test::validatedContext();
     ASSERT_NE(context, nullptr);
     for (RenderBackend backend : {RenderBackend::Gpu, RenderBackend::Cpu}) {
-        const auto update = finalUpdate(context->device, backend);
+        const auto update = finalUpdate(context->device, backend, metalJob());
         ASSERT_TRUE(update.has_value());
         EXPECT_EQ(update->error, "");
         EXPECT_EQ(update->backend, backend == RenderBackend::Gpu
@@ -69,6 +74,25 @@ TEST(EvolutionWorker, TilesAreImagesOnTheGivenDevice) {
             EXPECT_GT(candidate.deltaE.pixels, 0u);
         }
     }
+    test::expectNoValidationMessages(*context);
+}
+
+// The live preview while a slider is dragged: the target alone, rendered, and no GA run (the
+// candidates follow on release).
+TEST(EvolutionWorker, ATargetOnlyJobRendersTheTargetAndRunsNoGa) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    EvolutionJob job = metalJob();
+    job.targetOnly = true;
+    job.preset.target[kAlpha2] = 0.3;
+    const auto update = finalUpdate(context->device, RenderBackend::Gpu, job);
+    ASSERT_TRUE(update.has_value());
+    EXPECT_EQ(update->error, "");
+    EXPECT_TRUE(update->targetOnly);
+    ASSERT_NE(update->target, nullptr);
+    expectOnDevice(context->device, update->target->render, EvolutionWorker::kTargetSize);
+    EXPECT_TRUE(update->candidates.empty());
+    EXPECT_TRUE(update->history.empty());
     test::expectNoValidationMessages(*context);
 }
 

@@ -1,5 +1,5 @@
-// Fault injection: kill -9 at random moments during a save and during `evolve --out`, at least
-// 50 times each. Whatever the moment, the file or folder must be one whole version: never
+// Fault injection: kill -9 at random moments during a save, `evolve --out` and `variants --out`,
+// at least 50 times each. Whatever the moment, the file or folder must be one whole version: never
 // truncated, never a mix of two runs; temporary files left by a kill are removed next time.
 #include <signal.h>
 #include <sys/wait.h>
@@ -8,6 +8,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <random>
 #include <string>
@@ -17,6 +18,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "io/GenomeJson.h"
 #include "io/ImageFile.h"
 #include "io/Preset.h"
 
@@ -88,34 +90,69 @@ TEST(KillDuringSave, ThePresetIsAlwaysOneWholeVersion) {
     fs::remove_all(folder);
 }
 
-struct EvolveRun {
-    int population = 0;
-    std::uint64_t seed = 0;
-};
+// A command to kill: `attempt` (-1 for the first, timed run) varies what it writes, `seed` names
+// the run so that its files can be told from another run's.
+using CommandFor = std::function<std::vector<std::string>(int attempt, std::uint64_t seed)>;
+// Checks that `out` holds one whole run and returns its seed.
+using WholeRunSeed = std::function<std::uint64_t(const fs::path& out, int attempt)>;
 
-std::vector<std::string> evolveCommand(const EvolveRun& run, const fs::path& out) {
-    return {std::string(MATEVO_BINARY_DIR) + "/matevo",
-            "evolve",
-            "--population",
-            std::to_string(run.population),
-            "--generations",
-            "2",
-            "--seed",
-            std::to_string(run.seed),
-            "--size",
-            "16",
-            "--backend",
-            "cpu",
-            "--force",
-            "--out",
-            out.string()};
+// Runs the command kTries times into `out`, each killed at a random moment between its start
+// and 1.3 times a whole run (so some runs finish); after each kill the folder must be one whole
+// run, the previous whole one or the killed one, with at most the killed run's staging folder
+// beside it. A last run to completion must clean that up.
+void killDuringRuns(const std::string& what, const fs::path& out, const CommandFor& commandFor,
+                    const WholeRunSeed& wholeRunSeed) {
+    const fs::path folder = out.parent_path();
+    const auto started = Clock::now();
+    ASSERT_TRUE(reap(spawn(commandFor(-1, 1))));
+    const auto runTime =
+        std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - started);
+    std::uint64_t lastWholeSeed = wholeRunSeed(out, -1);
+    ASSERT_EQ(lastWholeSeed, 1u);
+
+    std::mt19937 random(29);
+    std::uniform_real_distribution<double> fraction(0.0, 1.3);
+    int completed = 0;
+    for (int attempt = 0; attempt < kTries; ++attempt) {
+        const std::uint64_t runSeed = std::uint64_t(100 + attempt);
+        const pid_t pid = spawn(commandFor(attempt, runSeed));
+        killAfter(pid, std::chrono::microseconds(
+                           std::int64_t(fraction(random) * double(runTime.count()))));
+        const std::uint64_t seed = wholeRunSeed(out, attempt);
+        EXPECT_TRUE(seed == lastWholeSeed || seed == runSeed) << "attempt " << attempt;
+        if (seed == runSeed) ++completed;
+        lastWholeSeed = seed;
+        EXPECT_LE(entriesIn(folder), 2u) << "attempt " << attempt;
+    }
+    ASSERT_TRUE(reap(spawn(commandFor(kTries, 7))));
+    EXPECT_EQ(wholeRunSeed(out, kTries), 7u);
+    EXPECT_EQ(entriesIn(folder), 1u);
+    std::printf("kill -9 during %s: %d tries, %d had finished, run time %.2f s\n", what.c_str(),
+                kTries, completed, double(runTime.count()) * 1e-6);
+}
+
+std::vector<std::string> matevoCommand(std::vector<std::string> arguments, const fs::path& out) {
+    arguments.insert(arguments.begin(), std::string(MATEVO_BINARY_DIR) + "/matevo");
+    for (const char* argument : {"--backend", "cpu", "--force", "--out"})
+        arguments.emplace_back(argument);
+    arguments.push_back(out.string());
+    return arguments;
+}
+
+nlohmann::json readJsonFile(const fs::path& file) {
+    std::ifstream in(file);
+    return nlohmann::json::parse(in, nullptr, false);
+}
+
+void expectReadableImage(const fs::path& file, int attempt) {
+    auto image = readImage(file);
+    EXPECT_TRUE(image.ok()) << "attempt " << attempt << ": " << image.error().message;
 }
 
 // The folder is one whole run: its result.json, exactly its candidates and heatmaps, all
-// readable; returns the run's seed.
-std::uint64_t expectOneWholeRun(const fs::path& out, int attempt) {
-    std::ifstream in(out / "result.json");
-    const auto report = nlohmann::json::parse(in, nullptr, false);
+// readable.
+std::uint64_t wholeEvolveRunSeed(const fs::path& out, int attempt) {
+    const nlohmann::json report = readJsonFile(out / "result.json");
     EXPECT_FALSE(report.is_discarded()) << "attempt " << attempt << ": result.json torn";
     if (report.is_discarded()) return 0;
     const std::size_t population = report["population"].size();
@@ -123,47 +160,63 @@ std::uint64_t expectOneWholeRun(const fs::path& out, int attempt) {
     EXPECT_EQ(entriesIn(out / "candidates"), population) << "attempt " << attempt;
     EXPECT_EQ(entriesIn(out / "heatmaps"), population) << "attempt " << attempt;
     for (const auto& folder : {out / "candidates", out / "heatmaps"})
-        for (const auto& entry : fs::directory_iterator(folder)) {
-            auto image = readImage(entry.path());
-            EXPECT_TRUE(image.ok()) << "attempt " << attempt << ": " << image.error().message;
-        }
-    EXPECT_TRUE(readImage(out / "target.png").ok());
+        for (const auto& entry : fs::directory_iterator(folder))
+            expectReadableImage(entry.path(), attempt);
+    expectReadableImage(out / "target.png", attempt);
     return report["config"]["seed"].get<std::uint64_t>();
 }
 
 TEST(KillDuringEvolveOut, TheFolderIsAlwaysOneWholeRun) {
-    const fs::path folder = freshFolder("evolve");
-    const fs::path out = folder / "out";
-    // A first run to completion, timed to spread the kills over a whole run.
-    const auto started = Clock::now();
-    ASSERT_TRUE(reap(spawn(evolveCommand({30, 1}, out))));
-    const auto runTime =
-        std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - started);
-    std::uint64_t lastWholeSeed = expectOneWholeRun(out, -1);
+    const fs::path out = freshFolder("evolve") / "out";
+    // Populations differ from run to run, so a folder mixing two runs would show it.
+    killDuringRuns(
+        "evolve --out", out,
+        [&](int attempt, std::uint64_t seed) {
+            const int population = attempt < 0 ? 30 : 10 + 10 * (attempt % 3);
+            return matevoCommand(
+                {"evolve", "--population", std::to_string(population), "--generations", "2",
+                 "--seed", std::to_string(seed), "--size", "16"},
+                out);
+        },
+        wholeEvolveRunSeed);
+    fs::remove_all(out.parent_path());
+}
 
-    std::mt19937 random(29);
-    std::uniform_real_distribution<double> fraction(0.0, 1.3);
-    int completed = 0;
-    for (int attempt = 0; attempt < kTries; ++attempt) {
-        // Populations differ from run to run, so a folder mixing two runs would show it.
-        const EvolveRun run{10 + 10 * (attempt % 3), std::uint64_t(100 + attempt)};
-        const pid_t pid = spawn(evolveCommand(run, out));
-        killAfter(pid, std::chrono::microseconds(
-                           std::int64_t(fraction(random) * double(runTime.count()))));
-        const std::uint64_t seed = expectOneWholeRun(out, attempt);
-        EXPECT_TRUE(seed == lastWholeSeed || seed == run.seed) << "attempt " << attempt;
-        if (seed == run.seed) ++completed;
-        lastWholeSeed = seed;
-        // Beside the folder: at most the staging folder of the killed run.
-        EXPECT_LE(entriesIn(folder), 2u) << "attempt " << attempt;
+// The folder is one whole set: report.json, and for exactly its variants a material file with
+// the report's genome (so files of two runs cannot pass), a render and a heatmap, all readable.
+std::uint64_t wholeVariantSetSeed(const fs::path& out, int attempt) {
+    const nlohmann::json report = readJsonFile(out / "report.json");
+    EXPECT_FALSE(report.is_discarded()) << "attempt " << attempt << ": report.json torn";
+    if (report.is_discarded()) return 0;
+    const nlohmann::json& variants = report["variants"];
+    EXPECT_EQ(entriesIn(out / "variants"), 3 * variants.size()) << "attempt " << attempt;
+    for (const nlohmann::json& variant : variants) {
+        auto genome = loadGenome(out / variant["file"].get<std::string>());
+        EXPECT_TRUE(genome.ok()) << "attempt " << attempt << ": " << genome.error().message;
+        if (genome.ok()) {
+            EXPECT_EQ(genomeToJson(*genome), variant["genome"]) << "attempt " << attempt;
+        }
+        expectReadableImage(out / variant["image"].get<std::string>(), attempt);
+        expectReadableImage(out / variant["heatmap"].get<std::string>(), attempt);
     }
-    // The last run to finish cleans up what the kills left.
-    ASSERT_TRUE(reap(spawn(evolveCommand({20, 7}, out))));
-    EXPECT_EQ(expectOneWholeRun(out, kTries), 7u);
-    EXPECT_EQ(entriesIn(folder), 1u);
-    std::printf("kill -9 during evolve --out: %d tries, %d had finished, run time %.2f s\n", kTries,
-                completed, double(runTime.count()) * 1e-6);
-    fs::remove_all(folder);
+    expectReadableImage(out / "target.png", attempt);
+    expectReadableImage(out / "contact_sheet.png", attempt);
+    return report["seed"].get<std::uint64_t>();
+}
+
+TEST(KillDuringVariantsOut, TheFolderIsAlwaysOneWholeSet) {
+    const fs::path out = freshFolder("variants") / "out";
+    killDuringRuns(
+        "variants --out", out,
+        [&](int attempt, std::uint64_t seed) {
+            const int count = attempt < 0 ? 6 : 4 + attempt % 3;
+            return matevoCommand({"variants", "--count", std::to_string(count), "--band", "2,10",
+                                  "--min-apart", "1", "--seed", std::to_string(seed), "--size",
+                                  "48", "--fitness-size", "8", "--max-evaluations", "300"},
+                                 out);
+        },
+        wholeVariantSetSeed);
+    fs::remove_all(out.parent_path());
 }
 
 }  // namespace

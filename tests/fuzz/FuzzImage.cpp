@@ -1,5 +1,5 @@
-// libFuzzer target: our image reader (PNG through libpng, OpenEXR through OpenImageIO; decoded
-// from memory, with the size and finiteness checks). The first byte chooses the type. A header may claim any
+// libFuzzer target: our image reader (PNG through libpng, OpenEXR and Radiance HDR through
+// OpenImageIO; decoded from memory, with the size and finiteness checks). The first byte chooses the type. A header may claim any
 // size: the memory limit, set low here, is what keeps decoding bounded, as it does for users.
 #include <cmath>
 #include <cstdlib>
@@ -17,7 +17,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0) return 0;
     const std::string_view bytes(reinterpret_cast<const char*>(data) + 1, size - 1);
-    auto image = matevo::decodeImageFile(bytes, (data[0] & 1) ? "fuzz.exr" : "fuzz.png");
+    static constexpr const char* kNames[] = {"fuzz.png", "fuzz.exr", "fuzz.hdr"};
+    auto image = matevo::decodeImageFile(bytes, kNames[data[0] % 3]);
     if (image)
         for (float value : image->image.rgba)
             if (!std::isfinite(value)) __builtin_trap();

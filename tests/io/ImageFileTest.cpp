@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -180,6 +181,47 @@ TEST_F(ImageFileTest, MissingAndNonImageFilesGiveOneLineErrors) {
     read = readImage(exrNamedPng);
     ASSERT_FALSE(read.ok());
     expectOneLineErrorNaming(read.error(), exrNamedPng);
+}
+
+// OpenEXR allocates each header attribute at the size the file claims; a claim beyond the file's
+// end is refused before OpenEXR sees it (a 472-byte file once made it allocate 1.8 GB).
+TEST_F(ImageFileTest, ExrHeaderClaimingMoreThanTheFileIsRefusedBeforeDecoding) {
+    const auto valid = folder_ / "valid.exr";
+    ASSERT_TRUE(writeImage(randomImage(3, 2, 6), valid).ok());
+    std::ifstream in(valid, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_TRUE(decodeImageFile(bytes, valid).ok());
+
+    // The first attribute: its name and type, NUL-terminated, then its size (little-endian).
+    std::size_t at = bytes.find('\0', 8) + 1;
+    const std::string firstName = bytes.substr(8, at - 9);
+    at = bytes.find('\0', at) + 1;
+    const std::uint32_t claimed = 0x6e5b0000;  // about 1.8 GB
+    for (int i = 0; i < 4; ++i) bytes[at + std::size_t(i)] = char((claimed >> (8 * i)) & 0xff);
+    const auto forged = folder_ / "forged.exr";
+    auto read = decodeImageFile(bytes, forged);
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), forged);
+    EXPECT_NE(read.error().message.find("'" + firstName + "' claims 1851457536 bytes"),
+              std::string::npos)
+        << read.error().message;
+}
+
+// OpenEXR reads a channel list up to its empty name, whatever size the file declares, and reads
+// the next attribute from there: the check walks it the same way. This file (found by the
+// fuzzer) declares 73 bytes for 37 bytes of channels, and what OpenEXR then reads as the next
+// attribute claims far more than the file holds.
+TEST_F(ImageFileTest, ExrHeaderIsWalkedAsOpenExrReadsIt) {
+    std::ifstream in(
+        std::string(MATEVO_SOURCE_DIR) + "/tests/fuzz/corpus/image/exr-chlist-declared-size.bin",
+        std::ios::binary);
+    const std::string input((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(input.size(), 1u);
+    const auto file = folder_ / "found.exr";
+    auto read = decodeImageFile(std::string_view(input).substr(1), file);  // byte 0: the type
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), file);
+    EXPECT_NE(read.error().message.find("claims"), std::string::npos) << read.error().message;
 }
 
 TEST_F(ImageFileTest, WritesAreAtomicAndLeaveNoTemporaryFiles) {

@@ -1,0 +1,41 @@
+#pragma once
+// Up-front estimates of the memory and processor time of large work, so that the user sees the
+// cost before it is spent and work past the memory limit (common/MemoryBudget.h,
+// MATEVO_MEMORY_LIMIT) is refused before it starts instead of ending in the OOM killer.
+//
+// Times are processor seconds on the CPU renderer, from per-pixel costs measured on a two-core
+// x86-64 machine (lavapipe costs about the same; a real GPU renders much faster). They are
+// meant to tell a minute from an hour, not to the second.
+#include <cstdint>
+#include <string>
+
+namespace matevo::cli {
+
+struct WorkEstimate {
+    std::string what;         // what the user asked for, e.g. "--out: 2000 candidates at 256x256"
+    std::uint64_t bytes = 0;  // peak memory
+    double seconds = 0;       // processor time
+};
+
+// `render --size N`
+WorkEstimate renderEstimate(int size);
+// `evolve`, with --out at `size` when size > 0 (the GA alone otherwise).
+WorkEstimate evolveEstimate(int population, int generations, int size);
+// `variants`: the search at fitnessSize, then the set checked and written at size.
+WorkEstimate variantsEstimate(int count, int size, int fitnessSize, int maxEvaluations,
+                              int population);
+// `experiment`: gaRuns GA runs, each scored by one render at size.
+WorkEstimate experimentEstimate(long long gaRuns, int population, int generations, int size);
+// `compare` of two decoded width x height images (decoding is checked when each is read).
+WorkEstimate compareEstimate(int width, int height, bool flip);
+
+// Throws UsageError (exit 2, one line) when the estimate is past the memory limit; prints it
+// as a notice when the work is large (1 GiB or half a minute), so the user can stop it.
+void checkWorkEstimate(const WorkEstimate& estimate);
+
+// "12 MiB", "3.5 GiB"
+std::string describeBytes(std::uint64_t bytes);
+// "40 s", "12 min", "3.5 h"
+std::string describeDuration(double seconds);
+
+}  // namespace matevo::cli
