@@ -155,6 +155,12 @@ std::string imageOutputPath(CommandLine& args) {
     return *out;
 }
 
+OutputFolder claimOutputFolder(const std::filesystem::path& folder, bool replace) {
+    auto claimed = OutputFolder::claim(folder, replace);
+    if (!claimed) throw UsageError("--out: " + claimed.error().message);
+    return std::move(*claimed);
+}
+
 ImageSize parseImageSize(const std::string& text, const std::string& what, ImageSize minimum,
                          int maximum) {
     const auto x = text.find('x');

@@ -5,12 +5,14 @@
 // Bad usage and bad input throw UsageError; main() prints it in the one message format
 // ("matevo COMMAND: TEXT", Messages.h) and exits 2. TEXT does not repeat the command.
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "io/OutputFolder.h"
 #include "variants/DeltaEBand.h"
 
 namespace matevo::cli {
@@ -64,6 +66,10 @@ DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what);
 
 // The required `--out FILE.png|FILE.exr` of the commands that write one image.
 std::string imageOutputPath(CommandLine& args);
+
+// Claims an output folder before the work starts (io/OutputFolder.h: a folder holding other
+// files is refused unless `replace`); a refusal is a UsageError naming --out.
+OutputFolder claimOutputFolder(const std::filesystem::path& folder, bool replace);
 
 struct ImageSize {
     int width = 0;

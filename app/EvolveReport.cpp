@@ -2,6 +2,8 @@
 
 #include "genome/Genome.h"
 #include "io/GenomeJson.h"
+#include "io/MaterialFile.h"
+#include "io/PresetFieldsJson.h"
 #include "material/MaterialInstance.h"
 
 namespace matevo::cli {
@@ -9,23 +11,17 @@ namespace matevo::cli {
 namespace {
 
 nlohmann::json configJson(const Preset& preset) {
-    const GaSettings& ga = preset.ga;
-    return {{"preset", preset.name},
-            {"family", describe(preset.family)},
-            {"population", ga.population},
-            {"generations", ga.generations},
-            {"metric", toString(ga.metric)},
-            {"weights", ga.weights},
-            {"normalize_by_range", ga.normalizeByRange},
-            {"elitism", ga.elitism},
-            {"seed", ga.seed},
-            {"hue_variety", ga.kappaGenes == KappaGenes::On}};
+    nlohmann::json config = gaSettingsToJson(preset.ga);
+    config["preset"] = preset.name;
+    config["family"] = describe(preset.family);
+    config["hue_variety"] = preset.ga.kappaGenes == KappaGenes::On;
+    return config;
 }
 
 }  // namespace
 
-nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga,
-                            const std::vector<Individual>& ranked) {
+nlohmann::json evolveReport(const Preset& preset, const std::filesystem::path& presetFile,
+                            const GeneticAlgorithm& ga, const std::vector<Individual>& ranked) {
     nlohmann::json generations = nlohmann::json::array();
     for (const auto& stats : ga.history())
         generations.push_back({{"generation", stats.generation},
@@ -42,11 +38,15 @@ nlohmann::json evolveReport(const Preset& preset, const GeneticAlgorithm& ga,
         // Hue variety: the individual's own kappa.
         if (individual.genome.carriesKappa()) population.back()["base_kappa"] = material.baseKappa;
     }
-    return {{"target", genomeToJson(preset.target)},
-            {"config", configJson(preset)},
-            {"generations", std::move(generations)},
-            {"population", population},
-            {"best", population.empty() ? nlohmann::json() : population.front()}};
+    nlohmann::json report = {{"target", genomeToJson(preset.target)},
+                             {"config", configJson(preset)},
+                             {"generations", std::move(generations)},
+                             {"population", population},
+                             {"best", population.empty() ? nlohmann::json() : population.front()}};
+    if (!ranked.empty())
+        report["best_material"] = materialToJson(
+            materialFromPreset(preset, presetFile, ranked.front().genome, preset.name + " best"));
+    return report;
 }
 
 void addImageStatistics(nlohmann::json& report, const std::vector<CandidateImageStats>& stats) {

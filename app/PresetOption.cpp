@@ -37,7 +37,11 @@ PresetChoice loadDefaultPreset() {
 }
 
 PresetChoice loadPresetOption(CommandLine& args) {
-    if (auto preset = args.option("--preset")) return loadPresetFile(resolvePreset(*preset));
+    if (auto preset = args.option("--preset")) {
+        PresetChoice choice = loadPresetFile(resolvePreset(*preset));
+        choice.named = true;
+        return choice;
+    }
     return loadDefaultPreset();
 }
 

@@ -13,6 +13,7 @@ namespace matevo::cli {
 struct PresetChoice {
     Preset preset;
     std::filesystem::path file;  // textures are relative to its folder
+    bool named = false;          // given with --preset, not the default
 };
 
 // A path ("dir/x.json", "x.json") is taken as it is; anything else is a preset name, looked up

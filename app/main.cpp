@@ -36,6 +36,7 @@ constexpr Subcommand kSubcommands[] = {
     {"variants", runVariants, "N variants a chosen perceptible difference from the target"},
     {"presets", runPresets, "list the presets --preset NAME accepts (shipped and your own)"},
     {"bench", runBench, "measure the GA, CIEDE2000 and renderers; medians"},
+    {"export", runExport, "write materials for engines (glTF, MaterialX), fitted by dE00"},
     {"scene", runScene, "render many instances of a mesh, one variant each, to PNG or EXR"},
 };
 

@@ -12,15 +12,23 @@ packages=(
 )
 # GoogleTest, the validation layer every GPU test runs under, a virtual display and input for
 # the editor test, screenshots, the Python peers the tests and benchmarks compare with,
-# jsonschema for the presets' schema, and clang with its sanitizer runtimes for scripts/fuzz.sh.
+# jsonschema for the presets' schema, clang with its sanitizer runtimes for scripts/fuzz.sh, and
+# libxml2 to re-read exported MaterialX.
 test_packages=(
     libgtest-dev vulkan-validationlayers clang libclang-rt-14-dev
     xvfb xauth imagemagick xdotool
     python3-skimage python3-deap python3-numpy python3-jsonschema
+    libxml2-dev
 )
+tests=0
 case "${1:-}" in
     "") ;;
-    --tests) packages+=("${test_packages[@]}") ;;
+    --tests)
+        tests=1
+        packages+=("${test_packages[@]}")
+        # The Khronos glTF validator (tests/export) comes from npm; Debian's only when none is there.
+        command -v npm >/dev/null || packages+=(nodejs npm)
+        ;;
     *) echo "usage: scripts/install-deps.sh [--tests]" >&2; exit 2 ;;
 esac
 
@@ -36,4 +44,10 @@ if [[ ${#missing[@]} -gt 0 ]]; then
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends \
         "${missing[@]}"
+fi
+
+validator="$(dirname "$0")/../tests/export/gltf-validator"
+if [[ $tests == 1 && ! -d "$validator/node_modules/gltf-validator" ]]; then
+    echo "matevo: installing the glTF validator (npm) into tests/export/gltf-validator" >&2
+    npm ci --prefix "$validator" --no-audit --no-fund --loglevel=error
 fi

@@ -18,7 +18,7 @@
 #include "TargetPanel.h"
 #include "VariantsPanel.h"
 #include "genome/FamilyRules.h"
-#include "io/GenomeJson.h"
+#include "io/MaterialFile.h"
 
 namespace matevo::ui {
 namespace {
@@ -188,19 +188,24 @@ void EditorUi::dropFile(const std::filesystem::path& file) {
         requestOpen(file);
         return;
     }
-    auto genome = loadGenome(file);
-    if (!genome) {
-        state_.status.post("Dropped " + file.string() + ": neither a preset nor a genome file (" +
-                               genome.error().message + ")",
+    // Any material JSON matevo writes; a bare genome is read in the open preset's family.
+    auto material = loadMaterial(
+        file, materialFromPreset(state_.preset, state_.presetPath, state_.preset.target));
+    if (!material) {
+        state_.status.post("Dropped " + file.string() + ": neither a preset nor a material file (" +
+                               material.error().message + ")",
                            StatusKind::Error);
         return;
     }
-    if (auto problem = validateGenome(*genome, state_.preset.family)) {
-        state_.status.post("Dropped genome " + file.string() + " does not fit the family " +
-                               describe(state_.preset.family) + ": " + *problem,
+    const MaterialInstance& dropped = material->file.material;
+    if (dropped.family != state_.preset.family) {
+        state_.status.post("Dropped material " + file.string() + " is of the family " +
+                               describe(dropped.family) + ", not " +
+                               describe(state_.preset.family),
                            StatusKind::Error);
         return;
     }
+    const Genome* genome = &dropped.genome;
     recordEdits();
     state_.preset.target = *genome;
     state_.status.post("Target set from the genome in " + file.string() + " (Ctrl+Z undoes)");

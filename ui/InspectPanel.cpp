@@ -11,7 +11,7 @@
 #include "PixelReadout.h"
 #include "Widgets.h"
 #include "genome/FamilyRules.h"
-#include "io/GenomeJson.h"
+#include "io/MaterialFile.h"
 
 namespace matevo::ui {
 namespace {
@@ -75,7 +75,11 @@ bool drawActions(EditorState& state, const CandidateView& candidate) {
     }
     sameLineIfFits(buttonWidth("Copy JSON"));
     if (ImGui::Button("Copy JSON")) {
-        ImGui::SetClipboardText(genomeToJson(candidate.genome).dump(2).c_str());
+        // A whole material file, so that `render --genome` and `export` replay it on its own.
+        const MaterialFile material =
+            materialFromPreset(state.preset, state.presetPath, candidate.genome,
+                               state.preset.name + " candidate " + std::to_string(candidate.rank));
+        ImGui::SetClipboardText(materialToJson(material).dump(2).c_str());
         state.status.post("Copied candidate #" + std::to_string(candidate.rank) + " as JSON");
     }
     hoverHint("Copy the candidate's genome to the clipboard as JSON.");

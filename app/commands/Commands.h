@@ -11,6 +11,7 @@ int runCompare(CommandLine& args);
 int runExperiment(CommandLine& args);
 int runPresets(CommandLine& args);
 int runBench(CommandLine& args);
+int runExport(CommandLine& args);
 int runVariants(CommandLine& args);
 int runScene(CommandLine& args);
 

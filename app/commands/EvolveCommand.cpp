@@ -18,6 +18,7 @@
 #include "experiment/Experiment.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/AtomicFile.h"
+#include "io/GaCheckpoint.h"
 #include "io/OutputFolder.h"
 #include "scene/SceneTextures.h"
 #include "variants/ImageFitness.h"
@@ -32,7 +33,8 @@ constexpr const char* kHelp =
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
     "                     [--size N] [--format png|exr] [--heatmap de00|flip]\n"
     "                     [--backend gpu|cpu] [--force]\n"
-    "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N] [--hue]\n\n"
+    "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N] [--hue]\n"
+    "                     [--checkpoint FILE] [--resume FILE]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
     "override the preset's GA settings.\n"
@@ -56,6 +58,11 @@ constexpr const char* kHelp =
     "                 CPU when no Vulkan device is usable) or cpu\n"
     "  --force        replace DIR when it holds an earlier matevo output (else a folder with\n"
     "                 files is refused); DIR always holds one whole run\n"
+    "  --checkpoint FILE  after every generation, save the run's state (population, history,\n"
+    "                 random generator) to FILE, atomically\n"
+    "  --resume FILE  continue the run saved in FILE (same preset and settings; --generations\n"
+    "                 may be larger): the result equals the uninterrupted run's, bit for bit.\n"
+    "                 Both work with genotype fitness only\n"
     "  --fitness F    genotype (default: the paper's distance with --metric and --weights),\n"
     "                 image: each candidate's rendered mean CIEDE2000 from the target, or\n"
     "                 flip: its rendered mean LDR-FLIP from the target (sees spatial structure)\n"
@@ -99,6 +106,17 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
                          std::to_string(ga.population) + ")");
     if (auto seed = args.unsignedOption("--seed")) ga.seed = *seed;
     return ga;
+}
+
+void resume(GeneticAlgorithm& ga, const Preset& preset, const std::string& file) {
+    auto checkpoint = loadCheckpoint(file);
+    if (!checkpoint) throw UsageError("--resume: " + checkpoint.error().message);
+    if (auto mismatch = checkpointMismatch(*checkpoint, preset.family, preset.target,
+                                           preset.baseKappa, preset.ga))
+        throw UsageError("--resume: " + file + ": " + *mismatch);
+    if (!ga.restore(checkpoint->state))
+        throw UsageError("--resume: " + file +
+                         ": population: its size or history does not fit the settings");
 }
 
 }  // namespace
@@ -149,16 +167,18 @@ int runEvolve(CommandLine& args) {
     args.onlyWith("--heatmap", "--out");
     if (!imageFitness) args.onlyWith("--backend", "--out");
     args.onlyWith("--force", "--out");
+    const auto checkpointFile = args.option("--checkpoint");
+    const auto resumeFile = args.option("--resume");
+    // The image fitness is rebuilt from the options on resume, which a checkpoint does not hold.
+    if (imageFitness && (checkpointFile || resumeFile))
+        throw UsageError(std::string(checkpointFile ? "--checkpoint" : "--resume") +
+                         " works with genotype fitness only");
     args.finish();
 
     installStopSignalHandlers();
     // Everything that can be refused is refused before the work starts.
     std::optional<OutputFolder> output;
-    if (outDir) {
-        auto claimed = OutputFolder::claim(*outDir, replaceOutput);
-        if (!claimed) throw UsageError("--out: " + claimed.error().message);
-        output.emplace(std::move(*claimed));
-    }
+    if (outDir) output.emplace(claimOutputFolder(*outDir, replaceOutput));
     checkWorkEstimate(evolveEstimate(choice.preset.ga.population, choice.preset.ga.generations,
                                      outDir ? imageSize : 0));
 
@@ -181,9 +201,21 @@ int runEvolve(CommandLine& args) {
                                                      fitness->evaluator())
                                   : GeneticAlgorithm(preset.family, preset.target, preset.ga);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
-    ga.initialize();
+    if (resumeFile)
+        resume(ga, preset, *resumeFile);
+    else
+        ga.initialize();
+    auto saveState = [&] {
+        if (!checkpointFile) return;
+        const GaCheckpoint checkpoint{preset.family, preset.target, preset.baseKappa, preset.ga,
+                                      ga.state()};
+        if (auto saved = saveCheckpoint(checkpoint, *checkpointFile); !saved)
+            throw UsageError("--checkpoint: " + saved.error().message);
+    };
+    saveState();
     while (!ga.finished() && !stopRequested()) {
         ga.step();
+        saveState();
         if (showProgress)
             std::fprintf(stderr, "\r%sgeneration %d/%d", messagePrefix().c_str(),
                          ga.generation(), preset.ga.generations);
@@ -192,7 +224,7 @@ int runEvolve(CommandLine& args) {
     if (fitness && fitness->failure()) throw std::runtime_error(fitness->failure()->message);
 
     const auto ranked = ga.rankedPopulation();
-    nlohmann::json report = evolveReport(preset, ga, ranked);
+    nlohmann::json report = evolveReport(preset, choice.file, ga, ranked);
     report["config"]["fitness"] = fitnessName;
     if (imageFitness) {
         report["config"]["band"] = {band.low, band.high};

@@ -289,13 +289,12 @@ int runExperiment(CommandLine& args) {
     installStopSignalHandlers();
     // Refused before any run: a folder with other files, or one we cannot write beside, and
     // work past the memory limit.
-    auto output = OutputFolder::claim(request.outDir, request.replaceOutput);
-    if (!output) throw UsageError("--out: " + output.error().message);
+    OutputFolder output = claimOutputFolder(request.outDir, request.replaceOutput);
     checkWorkEstimate(estimateWork(request));
     try {
-        return runInto(request, *output);
+        return runInto(request, output);
     } catch (const UsageError& error) {
-        throw UsageError(output->userFacing(error.what()));
+        throw UsageError(output.userFacing(error.what()));
     }
 }
 

@@ -3,12 +3,11 @@
 #include <filesystem>
 #include <string>
 
-#include "PresetOption.h"
+#include "MaterialOption.h"
 #include "RenderBackend.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/GenomeJson.h"
 #include "io/ImageFile.h"
 #include "scene/LightingChoice.h"
 
@@ -21,43 +20,40 @@ int runRender(CommandLine& args) {
             "                     [--backend cpu|gpu] [--env paper|ambient|studio|FILE]\n"
             "                     --out FILE.png|FILE.exr\n\n"
             "Renders one material on the paper's test sphere (one light, transparent\n"
-            "background, alpha = coverage): the preset's target, or the genome in FILE.json\n"
-            "with the preset's family, base kappa, textures and scene. PNG is sRGB 8-bit,\n"
-            "EXR linear float. --size is the image side in pixels (default: the preset's).\n"
+            "background, alpha = coverage): the preset's target, or the material in FILE.json.\n"
+            "FILE.json is any material JSON matevo writes: a material file (variants, the\n"
+            "editor's copy), an evolve report (its best material) or a bare genome; a bare\n"
+            "genome takes family, base kappa, textures and scene from the preset. Values\n"
+            "outside the family's ranges (Table 2) are refused. PNG is sRGB 8-bit, EXR linear\n"
+            "float. --size is the image side in pixels (default: the material's scene).\n"
             "--env lights it: paper (the single light alone), ambient (the light plus a uniform\n"
             "environment), studio (the light plus matevo's generated studio) or a lat-long .hdr\n"
-            "or .exr FILE (the light plus that environment); default: the preset's scene.\n"
+            "or .exr FILE (the light plus that environment); default: the material's scene.\n"
             "--backend gpu (default) renders with Vulkan; with no usable Vulkan device it says\n"
             "so on stderr and renders on the CPU. --backend cpu is the reference renderer.\n"
             "--preset is a file or a name from matevo presets (default validation_metal).\n");
         return 0;
     }
-    const PresetChoice choice = loadPresetOption(args);
+    const MaterialSource source(args);
     const auto genomeFile = args.option("--genome");
-    const long long size =
-        args.integerOption("--size", 1, 8192).value_or(choice.preset.scene.imageSize);
+    const auto size = args.integerOption("--size", 1, 8192);
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
     const auto lighting = args.option("--env");
     const std::filesystem::path out = imageOutputPath(args);
     args.finish();
-    checkWorkEstimate(renderEstimate(int(size)));
-
-    MaterialInstance material{choice.preset.target, choice.preset.family, choice.preset.baseKappa};
-    if (genomeFile) {
-        auto genome = loadGenome(*genomeFile);
-        if (!genome) throw UsageError(genome.error().message);
-        material.genome = *genome;
-    }
-    auto textures = loadSceneTextures(choice.preset, choice.file);
+    const MaterialFile material = genomeFile ? source.load(*genomeFile) : source.presetMaterial();
+    const int imageSize = int(size.value_or(material.scene.imageSize));
+    checkWorkEstimate(renderEstimate(imageSize));
+    auto textures = loadSceneTextures(material, genomeFile.value_or(material.name));
     if (!textures) throw UsageError(textures.error().message);
-    SceneSettings scene = choice.preset.scene;
+    SceneSettings scene = material.scene;
     if (lighting)
         if (auto lit = applyLightingChoice(*lighting, scene, *textures); !lit)
             throw UsageError("--env: " + lit.error().message);
 
     auto renderer = gpu::createPopulationRenderer({backend, "matevo render"}, *textures);
-    auto images = renderer->render(std::span(&material, 1), scene, int(size));
+    auto images = renderer->render(std::span(&material.material, 1), scene, imageSize);
     if (!images) throw std::runtime_error(images.error().message);
     if (auto written = writeImage(images->front(), out); !written)
         throw UsageError("--out: " + written.error().message);

@@ -102,11 +102,7 @@ int runVariants(CommandLine& args) {
     // Refused before the search: a folder with other files, or one we cannot write beside,
     // and work past the memory limit.
     std::optional<OutputFolder> output;
-    if (outDir) {
-        auto claimed = OutputFolder::claim(*outDir, replaceOutput);
-        if (!claimed) throw UsageError("--out: " + claimed.error().message);
-        output.emplace(std::move(*claimed));
-    }
+    if (outDir) output.emplace(claimOutputFolder(*outDir, replaceOutput));
     checkWorkEstimate(variantsEstimate(request.count, size, fitnessSize, settings.maxEvaluations,
                                        settings.population));
 
@@ -155,7 +151,10 @@ int runVariants(CommandLine& args) {
     }
     if (output) {
         if (auto written =
-                writeVariantFiles(output->staging(), preset, *set, report, *heatmapMetric);
+                writeVariantFiles(
+                output->staging(),
+                materialFromPreset(preset, choice.file, preset.target, preset.name), *set,
+                report, *heatmapMetric);
             !written)
             throw UsageError("--out: " + output->userFacing(written.error().message));
         if (auto committed = output->commit(); !committed)

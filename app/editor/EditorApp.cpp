@@ -453,8 +453,11 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
         auto saveSet = [&]() -> Status {
             auto output = OutputFolder::claim(view.savePath, true);
             if (!output) return output.error();
-            if (auto written = writeVariantFiles(output->staging(), shown.preset, set,
-                                                 variantReport(shown.preset, shown.run, set));
+            if (auto written = writeVariantFiles(
+                    output->staging(),
+                    materialFromPreset(shown.preset, shown.presetFile, shown.preset.target,
+                                       shown.preset.name),
+                    set, variantReport(shown.preset, shown.run, set));
                 !written)
                 return Error{output->userFacing(written.error().message)};
             return output->commit();

@@ -22,7 +22,7 @@ bool VariantsWorker::start(VariantsJob job) {
 
 VariantsResult VariantsWorker::compute(const VariantsJob& job) {
     const auto started = std::chrono::steady_clock::now();
-    VariantsResult result{job.preset, {job.request, kOutputSize, kFitnessSize}, {}, {}};
+    VariantsResult result{job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, {}};
     auto textures = loadSceneTextures(job.preset, job.presetFile);
     if (!textures) {
         result.error = textures.error().message;

@@ -25,6 +25,7 @@ struct VariantsJob {
 
 struct VariantsResult {
     Preset preset;  // as the job had it: the set belongs to this target
+    std::filesystem::path presetFile;
     VariantRun run;
     VariantSet set;
     std::string error;  // the job could not run (e.g. a missing texture)

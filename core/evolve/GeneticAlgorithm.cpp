@@ -147,6 +147,24 @@ void GeneticAlgorithm::run() {
     while (!finished()) step();
 }
 
+GaState GeneticAlgorithm::state() const {
+    return {generation_, population_, history_, random_.state()};
+}
+
+bool GeneticAlgorithm::restore(const GaState& state) {
+    const auto count = static_cast<std::size_t>(settings_.population);
+    if (state.generation < 0 || state.population.size() != count ||
+        state.history.size() != static_cast<std::size_t>(state.generation) + 1 ||
+        state.random == Random::State{})
+        return false;
+    generation_ = state.generation;
+    population_ = state.population;
+    history_ = state.history;
+    random_ = Random::fromState(state.random);
+    offspring_.resize(count);
+    return true;
+}
+
 void GeneticAlgorithm::rescore() {
     offspring_.resize(population_.size());
     for (std::size_t i = 0; i < population_.size(); ++i) offspring_[i] = population_[i].genome;

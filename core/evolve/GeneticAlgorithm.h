@@ -22,6 +22,8 @@ namespace matevo {
 struct Individual {
     Genome genome;
     double fitness = 0;  // lower is fitter
+
+    bool operator==(const Individual&) const = default;
 };
 
 struct GenerationStats {
@@ -32,6 +34,19 @@ struct GenerationStats {
     // Root-mean-square distance over all pairs of individuals, each active chromosome divided
     // by its family range width (so every chromosome spans [0, 1]). 0 for one individual.
     double diversity = 0;
+
+    bool operator==(const GenerationStats&) const = default;
+};
+
+// Everything a run carries from one generation to the next: with it a run can stop after any
+// generation and resume to the same end, bit for bit (checkpoints, io/GaCheckpoint.h).
+struct GaState {
+    int generation = 0;
+    std::vector<Individual> population;
+    std::vector<GenerationStats> history;
+    Random::State random{};
+
+    bool operator==(const GaState&) const = default;
 };
 
 // Scores a batch of genomes (lower is fitter): fitness[i] for genomes[i]. Called once for the
@@ -76,6 +91,13 @@ public:
     // Scores the current population again, for a fitness that changes while the run goes on
     // (distance to a growing archive of variants, say). The history is left as recorded.
     void rescore();
+
+    // The run after initialize() or a step (generation() >= 0).
+    GaState state() const;
+    // Continues a run from `state`, which must come from a run with this family and these
+    // settings (the generations to run may differ). Returns false, changing nothing, when the
+    // state cannot belong to such a run (population size, generation, history length).
+    bool restore(const GaState& state);
 
     const FamilyRules& rules() const { return rules_; }
     // The settings in use: population >= 1, generations >= 0, elitism in [0, population].

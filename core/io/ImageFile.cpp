@@ -20,11 +20,12 @@
 namespace matevo {
 namespace {
 
-std::vector<unsigned char> encodeSrgb8(const Image& image) {
+std::vector<unsigned char> encode8(const Image& image, PngValues values) {
     std::vector<unsigned char> bytes(image.rgba.size());
     for (std::size_t i = 0; i < image.rgba.size(); ++i) {
         double value = std::clamp(double(image.rgba[i]), 0.0, 1.0);
-        if (i % 4 != 3) value = linearToSrgb(value);  // alpha is coverage, not light
+        // Alpha is coverage, not light.
+        if (i % 4 != 3 && values == PngValues::Srgb) value = linearToSrgb(value);
         bytes[i] = static_cast<unsigned char>(std::lround(value * 255.0));
     }
     return bytes;
@@ -130,7 +131,7 @@ Result<Image> readImage(const std::filesystem::path& file) {
 }
 
 Image quantizeAsPng(const Image& image) {
-    const std::vector<unsigned char> bytes = encodeSrgb8(image);
+    const std::vector<unsigned char> bytes = encode8(image, PngValues::Srgb);
     Image quantized(image.width, image.height);
     for (std::size_t i = 0; i < bytes.size(); ++i) {
         const float stored = float(bytes[i]) / 255.0f;  // what the PNG reader gives
@@ -142,6 +143,14 @@ Image quantizeAsPng(const Image& image) {
 bool isWritableImageType(const std::filesystem::path& file) {
     const std::string extension = lowerCaseExtension(file);
     return extension == ".png" || extension == ".exr";
+}
+
+Result<std::vector<unsigned char>> encodePng(const Image& image, PngValues values) {
+    if (image.width <= 0 || image.height <= 0 || image.rgba.size() != image.pixelCount() * 4)
+        return Error{"cannot encode an empty or malformed image as PNG"};
+    auto encoded = encodePngRgba8(encode8(image, values).data(), image.width, image.height);
+    if (!encoded) return Error{"cannot encode PNG: " + encoded.error().message};
+    return std::vector<unsigned char>(encoded->begin(), encoded->end());
 }
 
 Status writeImage(const Image& image, const std::filesystem::path& file) {
@@ -157,7 +166,7 @@ Status writeImage(const Image& image, const std::filesystem::path& file) {
     // Encoded in memory; the one atomic writer puts the bytes on disk.
     auto encoded =
         extension == ".png"
-            ? encodePngRgba8(encodeSrgb8(image).data(), image.width, image.height)
+            ? encodePngRgba8(encode8(image, PngValues::Srgb).data(), image.width, image.height)
             : encodeExrWithImageLibrary(image.rgba.data(), image.width, image.height);
     if (!encoded) return fileError(file, "cannot encode: " + encoded.error().message);
     return writeFileAtomically(file, *encoded);

@@ -5,6 +5,7 @@
 // linear. In memory an Image is always linear with straight (unassociated) alpha, so colour
 // values are stored as they are and alpha is never multiplied in.
 #include <filesystem>
+#include <vector>
 #include <string_view>
 
 #include "common/Image.h"
@@ -38,6 +39,11 @@ bool isWritableImageType(const std::filesystem::path& file);
 // Writes RGBA to .png (sRGB-encoded 8 bit, values clamped to [0, 1]) or .exr (32-bit float).
 // Atomic: written to a temporary file beside the target, then renamed over it.
 Status writeImage(const Image& image, const std::filesystem::path& file);
+
+// PNG file contents in memory (for files that embed images, such as glTF): 8-bit RGBA, the colour
+// sRGB-encoded (a colour texture) or stored as it is (data, such as roughness).
+enum class PngValues { Srgb, Linear };
+Result<std::vector<unsigned char>> encodePng(const Image& image, PngValues values);
 
 // The image as writeImage stores it in a PNG and readImage returns it (colour through 8-bit sRGB,
 // alpha through 8 bits), without the file: figures measured on it are the ones `matevo compare`

@@ -5,12 +5,16 @@
 // loaders turn it into a Result.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "common/Result.h"
 
 namespace matevo {
 
@@ -32,6 +36,10 @@ public:
     template <std::size_t N>
     std::array<double, N> numbers(const std::string& key, double min, double max);
     JsonReader object(const std::string& key);
+    // A string naming one value of an enumeration; `expected` lists them for the error.
+    template <typename Enum>
+    Enum enumeration(const std::string& key, std::optional<Enum> (*parse)(std::string_view),
+                     const char* expected);
     // An array of objects, one reader each; their errors name "key[i].field".
     std::vector<JsonReader> objects(const std::string& key);
 
@@ -53,6 +61,24 @@ private:
     std::set<std::string> read_;
 };
 
+// Parses a JSON document and reads it with `read(const nlohmann::json&)`, which may throw
+// JsonFieldError: a syntax error or a field error becomes an Error naming `sourceName`, and the
+// warnings gathered while reading are prefixed with it.
+template <typename T, typename Read>
+Result<T> readJsonDocument(const std::string& jsonText, const std::string& sourceName,
+                           std::vector<std::string>& warnings, Read&& read) {
+    try {
+        const auto json = nlohmann::json::parse(jsonText);
+        T value = read(json);
+        for (auto& warning : warnings) warning = sourceName + ": " + warning;
+        return value;
+    } catch (const nlohmann::json::exception& error) {
+        return Error{sourceName + ": not valid JSON (" + error.what() + ")"};
+    } catch (const JsonFieldError& error) {
+        return Error{sourceName + ": " + error.what()};
+    }
+}
+
 template <std::size_t N>
 std::array<double, N> JsonReader::numbers(const std::string& key, double min, double max) {
     const auto& value = field(key);
@@ -63,6 +89,15 @@ std::array<double, N> JsonReader::numbers(const std::string& key, double min, do
         result[i] =
             checkedNumber(value[i], fieldPath(key) + "[" + std::to_string(i) + "]", min, max);
     return result;
+}
+
+template <typename Enum>
+Enum JsonReader::enumeration(const std::string& key,
+                             std::optional<Enum> (*parse)(std::string_view), const char* expected) {
+    auto text = string(key);
+    auto value = parse(text);
+    if (!value) fail(key, "unknown value '" + text + "' (expected " + expected + ")");
+    return *value;
 }
 
 }  // namespace matevo

@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "io/GenomeJson.h"
+#include "io/JsonReader.h"
+#include "io/TextFile.h"
 
 namespace matevo {
 
@@ -22,7 +24,19 @@ Result<std::vector<VariantFile>> loadVariantFolder(const std::filesystem::path& 
     if (files.empty()) return Error{variants.string() + ": no genome .json files"};
     std::vector<VariantFile> loaded;
     for (const auto& file : files) {
-        auto genome = loadGenome(file);
+        auto text = readTextFile(file);
+        if (!text) return text.error();
+        // A material file (what `matevo variants` writes) holds the genome under "genome".
+        std::vector<std::string> ignored;
+        auto genome = readJsonDocument<Genome>(*text, file.string(), ignored,
+                                               [&](const nlohmann::json& json) {
+                                                   const auto& object = json.is_object() &&
+                                                                                json.contains("genome")
+                                                                            ? json["genome"]
+                                                                            : json;
+                                                   JsonReader reader(object, "", ignored);
+                                                   return readGenome(reader);
+                                               });
         if (!genome) return genome.error();
         loaded.push_back({file, *genome});
     }

@@ -10,17 +10,18 @@ namespace matevo {
 
 namespace {
 
-Result<Image> loadTexture(const std::filesystem::path& presetFile, const std::string& field,
-                          const std::string& name) {
-    if (name.empty()) return Image();
-    auto image = readImage(presetFile.parent_path() / name);
-    if (!image) return Error{presetFile.string() + ": " + field + ": " + image.error().message};
+// `source` names what asked for the texture (a preset or material file) in errors.
+Result<Image> loadTexture(const std::string& source, const std::string& field,
+                          const std::filesystem::path& file) {
+    if (file.empty()) return Image();
+    auto image = readImage(file);
+    if (!image) return Error{source + ": " + field + ": " + image.error().message};
     // Texels scale roughness or colour: an EXR may hold anything, the model needs [0, 1].
     for (std::size_t i = 0; i < image->rgba.size(); ++i) {
         const float value = image->rgba[i];
         if (value < 0.0f || value > 1.0f) {
             const std::size_t pixel = i / 4;
-            return Error{presetFile.string() + ": " + field + ": texel (" +
+            return Error{source + ": " + field + ": texel (" +
                          std::to_string(pixel % std::size_t(image->width)) + ", " +
                          std::to_string(pixel / std::size_t(image->width)) + ") value " +
                          std::to_string(value) + " outside [0, 1]"};
@@ -29,28 +30,55 @@ Result<Image> loadTexture(const std::filesystem::path& presetFile, const std::st
     return image;
 }
 
+Result<SceneTextures> loadTextures(const std::string& source,
+                                   const std::filesystem::path& roughnessFile,
+                                   const std::filesystem::path& baseColorFile) {
+    auto roughness = loadTexture(source, "textures.roughness", roughnessFile);
+    if (!roughness) return roughness.error();
+    auto baseColor = loadTexture(source, "textures.base_color", baseColorFile);
+    if (!baseColor) return baseColor.error();
+    return SceneTextures{std::move(roughness).value(), std::move(baseColor).value()};
+}
+
+// The environment mode's lighting: "studio", or a file (relative to `folder` unless absolute).
+Result<SceneTextures> withEnvironment(SceneTextures textures, const SceneSettings& scene,
+                                      const std::filesystem::path& folder,
+                                      const std::string& source) {
+    if (scene.mode != SceneMode::Environment) return textures;
+    const std::filesystem::path name(scene.environment);
+    const std::string file = scene.environment == "studio" || name.is_absolute()
+                                 ? scene.environment
+                                 : (folder / name).string();
+    auto environment = loadEnvironment(file);
+    if (!environment)
+        return Error{source + ": scene.environment: " + environment.error().message};
+    textures.environment = std::move(environment).value();
+    return textures;
+}
+
+std::filesystem::path besidePreset(const std::filesystem::path& presetFile,
+                                   const std::string& name) {
+    return name.empty() ? std::filesystem::path() : presetFile.parent_path() / name;
+}
+
 }  // namespace
 
 Result<SceneTextures> loadSceneTextures(const Preset& preset,
                                         const std::filesystem::path& presetFile) {
-    auto roughness = loadTexture(presetFile, "textures.roughness", preset.roughnessTexture);
-    if (!roughness) return roughness.error();
-    auto baseColor = loadTexture(presetFile, "textures.base_color", preset.baseColorTexture);
-    if (!baseColor) return baseColor.error();
-    SceneTextures textures{std::move(roughness).value(), std::move(baseColor).value(), {}};
-    if (preset.scene.mode == SceneMode::Environment) {
-        // "studio", or a file relative to the preset's folder.
-        const std::filesystem::path name(preset.scene.environment);
-        const std::string file = preset.scene.environment == "studio" || name.is_absolute()
-                                     ? preset.scene.environment
-                                     : (presetFile.parent_path() / name).string();
-        auto environment = loadEnvironment(file);
-        if (!environment)
-            return Error{presetFile.string() + ": scene.environment: " +
-                         environment.error().message};
-        textures.environment = std::move(environment).value();
-    }
-    return textures;
+    auto textures =
+        loadTextures(presetFile.string(), besidePreset(presetFile, preset.roughnessTexture),
+                     besidePreset(presetFile, preset.baseColorTexture));
+    if (!textures) return textures;
+    return withEnvironment(std::move(*textures), preset.scene, presetFile.parent_path(),
+                           presetFile.string());
+}
+
+Result<SceneTextures> loadSceneTextures(const MaterialFile& material,
+                                        const std::string& sourceName) {
+    auto textures =
+        loadTextures(sourceName, material.roughnessTexture, material.baseColorTexture);
+    if (!textures) return textures;
+    return withEnvironment(std::move(*textures), material.scene, {}, sourceName);
 }
 
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v) {

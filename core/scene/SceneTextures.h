@@ -7,6 +7,7 @@
 
 #include "common/Image.h"
 #include "common/Result.h"
+#include "io/MaterialFile.h"
 #include "io/Preset.h"
 #include "material/LayerStack.h"
 #include "scene/PrefilteredEnvironment.h"
@@ -24,6 +25,10 @@ struct SceneTextures {
 // image file.
 Result<SceneTextures> loadSceneTextures(const Preset& preset,
                                         const std::filesystem::path& presetFile);
+
+// Loads a material file's textures (absolute paths); errors name `sourceName` and the field.
+Result<SceneTextures> loadSceneTextures(const MaterialFile& material,
+                                        const std::string& sourceName);
 
 // Bilinear RGB at (u, v) with the wrap/clamp rule of SphereMapping.h.
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v);

@@ -53,13 +53,21 @@ struct Shader {
 };
 
 template <class LobesAt>
-Image renderSphere(const LobesAt& lobesAt, const SceneTextures& textures,
-                   const SceneSettings& scene, int size) {
-    Image image(size, size);
-    const SphereSamples samples = traceSphereSamples(scene, size);
+auto belcourShader(const LobesAt& lobesAt, const SceneTextures& textures,
+                   const SceneSettings& scene) {
     const Shader<LobesAt> shader{lobesAt, textures, glm::normalize(toVector(scene.lightDirection)),
                                  toVector(scene.lightRadiance),
                                  toVector(ambientRadiance(scene))};
+    return [shader](const glm::dvec3& normal, const glm::dvec3& toViewer) {
+        return shader.radiance(normal, toViewer);
+    };
+}
+
+// RadianceAt: (normal, toViewer) -> radiance towards the camera.
+template <class RadianceAt>
+Image renderSphere(const RadianceAt& radianceAt, const SceneSettings& scene, int size) {
+    Image image(size, size);
+    const SphereSamples samples = traceSphereSamples(scene, size);
     const int pixelCount = int(samples.pixels.size());
     auto renderPixels = [&](int chunk) {
         const int last = std::min(pixelCount, (chunk + 1) * kPixelsPerChunk);
@@ -69,7 +77,7 @@ Image renderSphere(const LobesAt& lobesAt, const SceneTextures& textures,
             for (int s = 0; s < covered.sampleCount; ++s) {
                 const SphereSurfacePoint& point =
                     samples.samples[std::size_t(covered.firstSample + s)];
-                radiance += shader.radiance(point.normal, point.toViewer);
+                radiance += radianceAt(point.normal, point.toViewer);
             }
             radiance /= double(covered.sampleCount);
             float* pixel = image.pixel(covered.x, covered.y);
@@ -90,7 +98,7 @@ Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& tex
     const auto lobesAt = [&](double cosView, const SurfaceTexels& texels) {
         return table.lobesAt(cosView, texels);
     };
-    return renderSphere(lobesAt, textures, scene, size);
+    return renderSphere(belcourShader(lobesAt, textures, scene), scene, size);
 }
 
 Image renderSphereCpuExact(const MaterialInstance& material, const SceneTextures& textures,
@@ -98,7 +106,11 @@ Image renderSphereCpuExact(const MaterialInstance& material, const SceneTextures
     const auto lobesAt = [&](double cosView, const SurfaceTexels& texels) {
         return computeLobes(makeLayerStack(material, texels), cosView, tables);
     };
-    return renderSphere(lobesAt, textures, scene, size);
+    return renderSphere(belcourShader(lobesAt, textures, scene), scene, size);
+}
+
+Image renderSphereImage(const SceneSettings& scene, int size, const SphereRadiance& radiance) {
+    return renderSphere(radiance, scene, size);
 }
 
 Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,

@@ -16,6 +16,10 @@
 // with the lobes at cos_view = n.v (Forward model) from the material's LobeTable (the adding
 // loop interpolated over cos_view and the roughness texel), textures sampled at sphereUv(n).
 // Output is linear RGB: no tone mapping, no exposure.
+#include <functional>
+
+#include <glm/vec3.hpp>
+
 #include "common/Image.h"
 #include "material/FgdTables.h"
 #include "material/LobeTable.h"
@@ -24,6 +28,13 @@
 #include "scene/SceneTextures.h"
 
 namespace matevo {
+
+// The scene's picture for any surface model (the glTF BRDF of core/export, for one): the same
+// camera, subsamples, coverage and threads, with `radiance(normal, toViewer)` giving the light
+// that leaves a sphere point towards the camera (world space, unit vectors).
+using SphereRadiance =
+    std::function<glm::dvec3(const glm::dvec3& normal, const glm::dvec3& toViewer)>;
+Image renderSphereImage(const SceneSettings& scene, int size, const SphereRadiance& radiance);
 
 // Multi-threaded over fixed row chunks; the result does not depend on the thread count.
 Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& textures,

@@ -154,7 +154,17 @@ Image contactSheet(const VariantSet& set) {
     return sheet;
 }
 
-Status writeVariantFiles(const std::filesystem::path& dir, const Preset& preset,
+MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant,
+                             std::size_t index) {
+    MaterialFile material = target;
+    material.name = (target.name.empty() ? std::string() : target.name + " ") + variantStem(index);
+    // The variant's own kappa when it carries kappa genes (hue variety), else the target's.
+    material.material =
+        materialOf(variant.genome, target.material.family, target.material.baseKappa);
+    return material;
+}
+
+Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
                          const VariantSet& set, const nlohmann::json& report,
                          ImageMetric heatmapMetric) {
     const std::filesystem::path folder = dir / "variants";
@@ -163,11 +173,7 @@ Status writeVariantFiles(const std::filesystem::path& dir, const Preset& preset,
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         const Variant& variant = set.variants[i];
         const std::string stem = variantStem(i);
-        const MaterialInstance material =
-            materialOf(variant.genome, preset.family, preset.baseKappa);
-        const nlohmann::json json =
-            materialToJson(material.genome, material.family, material.baseKappa);
-        if (auto written = writeFileAtomically(folder / (stem + ".json"), json.dump(2) + "\n");
+        if (auto written = saveMaterial(variantMaterial(target, variant, i), folder / (stem + ".json"));
             !written)
             return written;
         if (auto written = writeImage(variant.image, folder / (stem + ".png")); !written)

@@ -17,6 +17,7 @@
 #include "common/Image.h"
 #include "common/Result.h"
 #include "evolve/RenderGenomes.h"
+#include "io/MaterialFile.h"
 #include "io/Preset.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
@@ -54,9 +55,14 @@ std::string variantSummary(const VariantRun& run, const VariantSet& set);
 // to its nearest sibling, on a dark background.
 Image contactSheet(const VariantSet& set);
 
-// Writes every file listed above (atomically, each one), creating the folders, with heatmaps of
-// `heatmapMetric`; an Error names the file that could not be written.
-Status writeVariantFiles(const std::filesystem::path& dir, const Preset& preset,
+// The material file of variant `index`: `target` (the preset's target as a material file,
+// io/MaterialFile.h: family, kappa, textures, scene) with the variant's genome and name.
+MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant,
+                             std::size_t index);
+
+// Writes every file listed above (atomically, each one), creating the folders; an Error names
+// the file that could not be written. Heatmaps of `heatmapMetric`. `target` as for variantMaterial.
+Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
                          const VariantSet& set, const nlohmann::json& report,
                          ImageMetric heatmapMetric = ImageMetric::DeltaE00);
 

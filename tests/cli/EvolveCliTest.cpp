@@ -1,4 +1,6 @@
 // `matevo evolve` end to end: the real executable, its exit statuses and its JSON contract.
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -184,6 +186,40 @@ TEST(EvolveCli, HelpTellsTheOptions) {
     for (const char* option : {"--preset", "--population", "--generations", "--metric",
                                "--weights", "--seed", "--out", "--json"})
         EXPECT_NE(result.out.find(option), std::string::npos) << option;
+}
+
+}  // namespace
+}  // namespace matevo
+
+namespace matevo {
+namespace {
+
+// --checkpoint saves every generation; --resume continues. A run stopped after 3 of 7 generations
+// and resumed prints exactly what the uninterrupted run prints.
+TEST(EvolveCli, AResumedRunEqualsTheUninterruptedOne) {
+    const fs::path folder = fs::temp_directory_path() / ("matevo_resume_" +
+                                                         std::to_string(::getpid()));
+    fs::create_directories(folder);
+    const std::string checkpoint = (folder / "run.json").string();
+    const std::string settings = "--population 16 --seed 11 --elitism 1 --json ";
+    const auto uninterrupted = runMatevo("evolve " + settings + "--generations 7");
+    ASSERT_EQ(uninterrupted.exitCode, 0) << uninterrupted.err;
+    const auto stopped =
+        runMatevo("evolve " + settings + "--generations 3 --checkpoint '" + checkpoint + "'");
+    ASSERT_EQ(stopped.exitCode, 0) << stopped.err;
+    ASSERT_TRUE(fs::exists(checkpoint));
+    const auto resumed =
+        runMatevo("evolve " + settings + "--generations 7 --resume '" + checkpoint + "'");
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+    EXPECT_EQ(resumed.out, uninterrupted.out);
+
+    // A checkpoint of another run is refused, naming what differs.
+    const auto otherSeed = runMatevo("evolve --population 16 --seed 12 --elitism 1 "
+                                     "--generations 7 --resume '" + checkpoint + "'");
+    EXPECT_EQ(otherSeed.exitCode, 2);
+    EXPECT_NE(otherSeed.err.find("--resume: " + checkpoint + ": ga:"), std::string::npos)
+        << otherSeed.err;
+    fs::remove_all(folder);
 }
 
 }  // namespace

@@ -108,9 +108,9 @@ TEST_P(VariantsOnValidationPreset, TheWrittenSetHoldsBandAndDistanceAndReplays) 
     EXPECT_NEAR(compareCommandMean(out / "target.png", out / "variants/variant_000.png"),
                 report["variants"][0]["de00_to_target"].get<double>(), 1e-3);
 
-    // `render --genome` reproduces a written variant from its file alone and the preset.
+    // `render --genome` reproduces a written variant from its material file alone.
     const fs::path replay = out / "replay.png";
-    auto rendered = runMatevo("render --preset " + presetPath(preset) + " --genome '" +
+    auto rendered = runMatevo("render --genome '" +
                               (out / "variants/variant_000.json").string() + "' --out '" +
                               replay.string() + "'");
     ASSERT_EQ(rendered.exitCode, 0) << rendered.err;

@@ -6,7 +6,7 @@ repository's own folders (core/io/Preset.h, docs/scene.md, scripts/test.sh; a st
 for its .h/.cpp). Each must name a
 file or folder that exists: relative to the referring file, to the repository root, or (for a
 bare *.md name) to docs/. The repository must also stand alone, so nothing may point outside
-it (/work/..., ../shared/...).
+it (OUTSIDE below lists the forms such a pointer takes).
 
 usage: check_references.py SOURCE_DIR
 """

@@ -187,3 +187,45 @@ TEST(GeneticAlgorithm, AbsurdSettingsAreClampedNotFollowed) {
 
 }  // namespace
 }  // namespace matevo
+
+namespace matevo {
+namespace {
+
+// A run stopped after any generation and continued from its state ends exactly where the
+// uninterrupted run ends: the state holds everything that carries over, the generator included.
+TEST(GeneticAlgorithm, ARunResumedFromItsStateEqualsTheUninterruptedRun) {
+    for (const MaterialFamily& family : supportedFamilies()) {
+        Random random(7);
+        const Genome target = randomGenome(family, random);
+        GaSettings settings = settingsOf(30, 8, 91);
+        settings.elitism = 2;
+        GeneticAlgorithm uninterrupted(family, target, settings);
+        uninterrupted.run();
+        for (int stopAt : {0, 3, 7}) {
+            GeneticAlgorithm first(family, target, settings);
+            first.initialize();
+            while (first.generation() < stopAt) first.step();
+            GeneticAlgorithm resumed(family, target, settings);
+            ASSERT_TRUE(resumed.restore(first.state()));
+            while (!resumed.finished()) resumed.step();
+            EXPECT_EQ(resumed.state(), uninterrupted.state()) << "stopped at " << stopAt;
+        }
+    }
+}
+
+TEST(GeneticAlgorithm, RestoreRefusesAStateOfAnotherShape) {
+    const MaterialFamily family;
+    GeneticAlgorithm small(family, Genome{}, settingsOf(10, 3, 1));
+    small.initialize();
+    GeneticAlgorithm large(family, Genome{}, settingsOf(20, 3, 1));
+    large.initialize();
+    const GaState before = large.state();
+    EXPECT_FALSE(large.restore(small.state()));
+    GaState noHistory = large.state();
+    noHistory.history.clear();
+    EXPECT_FALSE(large.restore(noHistory));
+    EXPECT_EQ(large.state(), before);
+}
+
+}  // namespace
+}  // namespace matevo

@@ -1,12 +1,13 @@
-// libFuzzer target: the genome JSON reader (`render --genome`, result.json entries).
+// libFuzzer target: the material JSON reader (`render --genome`, `export --genome`): material
+// files, evolve reports and bare genomes, which take the default context's family.
 #include <cstddef>
 #include <cstdint>
-#include <string_view>
+#include <string>
 
-#include "io/GenomeJson.h"
+#include "io/MaterialFile.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    (void)matevo::parseGenome(std::string_view(reinterpret_cast<const char*>(data), size),
-                              "fuzz.json");
+    (void)matevo::parseMaterial(std::string(reinterpret_cast<const char*>(data), size),
+                                "fuzz.json", "/tmp", matevo::MaterialFile{});
     return 0;
 }

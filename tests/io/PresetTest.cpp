@@ -237,23 +237,6 @@ TEST(Preset, UnreadableFileNamesTheFile) {
     EXPECT_EQ(loaded.error().message, "/nonexistent/preset.json: cannot read: no such file");
 }
 
-TEST(GenomeJson, ReadsAResultFileOrABareGenome) {
-    auto dir = freshDirectory("genome");
-    std::ofstream(dir / "bare.json") << R"({"eta1": 1.3, "eta2": 0.9, "alpha1": 0.05,
-        "alpha2": 0.2, "depth": 2, "sigma_s": [0.1, 0.2, 0.3], "sigma_a": [0, 0, 1], "g": 0.9})";
-    std::ofstream(dir / "wrapped.json") << R"({"genome": {"eta1": 1.3, "eta2": 0.9,
-        "alpha1": 0.05, "alpha2": 0.2}, "fitness": 0.1})";
-    auto bare = loadGenome(dir / "bare.json");
-    ASSERT_TRUE(bare.ok()) << bare.error().message;
-    EXPECT_DOUBLE_EQ((*bare)[kSigmaSB], 0.3);
-    EXPECT_DOUBLE_EQ(bare->g(), 0.9);
-    auto wrapped = loadGenome(dir / "wrapped.json");
-    ASSERT_TRUE(wrapped.ok()) << wrapped.error().message;
-    EXPECT_DOUBLE_EQ(wrapped->eta1(), 1.3);
-    EXPECT_DOUBLE_EQ(wrapped->depth(), 0.0);
-    fs::remove_all(dir);
-}
-
 TEST(ShippedPresets, ValidationMetalLoadsWithoutWarnings) {
     auto loaded = loadPreset(fs::path(MATEVO_SOURCE_DIR) / "presets" / "validation_metal.json");
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;

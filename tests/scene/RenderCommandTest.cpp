@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "io/ImageFile.h"
 #include "support/RunCommand.h"
@@ -55,6 +56,55 @@ TEST_F(RenderCommandTest, GenomeFileReplacesTheTarget) {
               0);
     ASSERT_EQ(testing::runMatevo("render --size 24 --out '" + target.string() + "'").exitCode, 0);
     EXPECT_NE(readImage(withGenome)->rgba, readImage(target)->rgba);
+}
+
+// The issue's chain: `evolve --json > ev.json; render --genome ev.json` renders the best material
+// on its own (family, kappa, textures and scene from the file), the same picture as its bare
+// genome rendered with the preset.
+TEST_F(RenderCommandTest, EvolveJsonReplaysThroughRenderGenome) {
+    const auto preset =
+        (std::filesystem::path(MATEVO_SOURCE_DIR) / "presets/validation_painted_metal.json")
+            .string();
+    const auto evolved = testing::runMatevo("evolve --population 8 --generations 2 --json --preset '" +
+                                            preset + "'");
+    ASSERT_EQ(evolved.exitCode, 0) << evolved.err;
+    const auto report = directory_ / "ev.json";
+    std::ofstream(report) << evolved.out;
+    const auto replayed = directory_ / "replayed.exr";
+    const auto fromReport = testing::runMatevo("render --backend cpu --size 24 --genome '" +
+                                               report.string() + "' --out '" +
+                                               replayed.string() + "'");
+    ASSERT_EQ(fromReport.exitCode, 0) << fromReport.err;
+    EXPECT_TRUE(fromReport.err.empty()) << fromReport.err;
+
+    const auto bestGenome = directory_ / "best.json";
+    std::ofstream(bestGenome) << nlohmann::json::parse(evolved.out)["best"].dump();
+    const auto withPreset = directory_ / "with_preset.exr";
+    ASSERT_EQ(testing::runMatevo("render --backend cpu --size 24 --preset '" + preset +
+                                 "' --genome '" + bestGenome.string() + "' --out '" +
+                                 withPreset.string() + "'")
+                  .exitCode,
+              0);
+    EXPECT_EQ(readImage(replayed)->rgba, readImage(withPreset)->rgba);
+
+    // A self-contained file names its own family: a --preset beside it would do nothing.
+    const auto both = testing::runMatevo("render --preset '" + preset + "' --genome '" +
+                                         report.string() + "' --out '" + withPreset.string() + "'");
+    EXPECT_EQ(both.exitCode, 2);
+    EXPECT_NE(both.err.find("--preset: not used"), std::string::npos) << both.err;
+}
+
+TEST_F(RenderCommandTest, GenomeOutsideTable2IsRefusedNamingTheField) {
+    const auto genome = directory_ / "genome.json";
+    // validation metal is a clearcoat: alpha1 must stay below 0.1.
+    std::ofstream(genome) << R"({"eta1": 1.5, "eta2": 0.9, "alpha1": 0.5, "alpha2": 0.4, "x": 1})";
+    const auto out = directory_ / "x.png";
+    const auto result = testing::runMatevo("render --size 24 --genome '" + genome.string() +
+                                           "' --out '" + out.string() + "'");
+    EXPECT_EQ(result.exitCode, 2);
+    EXPECT_NE(result.err.find(genome.string() + ": alpha1 = 0.5"), std::string::npos)
+        << result.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 TEST_F(RenderCommandTest, BadUsageExitsWithTwoAndAOneLineMessage) {

@@ -1,0 +1,137 @@
+#include "export/ExportSet.h"
+
+#include "export/GltfRenderer.h"
+#include "export/GltfWriter.h"
+#include "export/MaterialXWriter.h"
+
+namespace matevo {
+
+std::optional<ExportFormat> parseExportFormat(std::string_view text) {
+    if (text == "gltf") return ExportFormat::Gltf;
+    if (text == "glb") return ExportFormat::Glb;
+    if (text == "mtlx") return ExportFormat::MaterialX;
+    return std::nullopt;
+}
+
+std::string_view toString(ExportFormat format) {
+    switch (format) {
+        case ExportFormat::Gltf: return "gltf";
+        case ExportFormat::Glb: return "glb";
+        case ExportFormat::MaterialX: return "mtlx";
+    }
+    return "gltf";
+}
+
+std::string_view fileExtension(ExportFormat format) {
+    switch (format) {
+        case ExportFormat::Gltf: return ".gltf";
+        case ExportFormat::Glb: return ".glb";
+        case ExportFormat::MaterialX: return ".mtlx";
+    }
+    return ".gltf";
+}
+
+Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
+                               PopulationRenderer& belcour, const ExportSettings& settings,
+                               const ExportProgress& progress) {
+    if (materials.empty()) return Error{"nothing to export"};
+    const MaterialFile& first = materials.front();
+    for (const auto& material : materials)
+        if (material.roughnessTexture != first.roughnessTexture ||
+            material.baseColorTexture != first.baseColorTexture)
+            return Error{material.name + ": its textures differ from " + first.name +
+                         "'s; export the materials of one preset at a time"};
+    auto textures = loadSceneTextures(first, first.name);
+    if (!textures) return textures.error();
+
+    if (auto status = belcour.setTextures(*textures); !status) return status.error();
+
+    FittedSet set{settings, std::move(*textures), {}};
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const MaterialFile& material = materials[i];
+        const auto renderAt = [&](int size) {
+            return belcour.render(std::span(&material.material, 1), material.scene, size);
+        };
+        auto target = renderAt(settings.fit.imageSize);
+        if (!target) return Error{material.name + ": " + target.error().message};
+        GltfFit fit = fitGltfMaterial(material.material, target->front(), set.textures,
+                                      material.scene, settings.fit);
+        auto reference = renderAt(settings.reportSize);
+        if (!reference) return Error{material.name + ": " + reference.error().message};
+        const Image approximation =
+            renderGltfSphere(fit.material, set.textures, material.scene, settings.reportSize);
+        auto difference = compareImages(approximation, reference->front());
+        if (!difference) return Error{material.name + ": " + difference.error().message};
+        set.variants.push_back({material.name, std::move(fit), std::move(*difference),
+                                std::move(reference->front()), approximation});
+        if (progress) progress(i + 1, materials.size());
+    }
+    return set;
+}
+
+Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
+                                 const std::filesystem::path& file) {
+    std::vector<NamedGltfMaterial> materials;
+    for (const auto& variant : set.variants)
+        materials.push_back({variant.name, variant.fit.material});
+    const Status written = format == ExportFormat::MaterialX
+                               ? writeMaterialX(materials, set.textures, file)
+                               : writeGltf(materials, set.textures, file);
+    if (!written) return written.error();
+    return ExportReport{format, file, set.settings, set.variants};
+}
+
+Result<ExportReport> exportMaterials(const std::vector<MaterialFile>& materials,
+                                     PopulationRenderer& belcour, ExportFormat format,
+                                     const std::filesystem::path& file,
+                                     const ExportSettings& settings,
+                                     const ExportProgress& progress) {
+    auto set = fitForExport(materials, belcour, settings, progress);
+    if (!set) return set.error();
+    return writeExport(*set, format, file);
+}
+
+namespace {
+
+nlohmann::ordered_json gltfParameters(const GltfMaterial& m) {
+    nlohmann::ordered_json json = {{"base_color", m.baseColor},
+                                   {"metallic", m.metallic},
+                                   {"roughness", m.roughness},
+                                   {"ior", m.ior},
+                                   {"specular", m.specular},
+                                   {"specular_color", m.specularColor},
+                                   {"clearcoat", m.clearcoat},
+                                   {"clearcoat_roughness", m.clearcoatRoughness},
+                                   {"base_color_texture", m.baseColorTextured}};
+    json["roughness_texture"] = m.roughnessTextured;
+    json["clearcoat_roughness_texture"] = m.clearcoatRoughnessTextured;
+    if (m.roughnessTextured || m.clearcoatRoughnessTextured)
+        json["roughness_texel_scale"] = m.roughnessTexelScale;
+    return json;
+}
+
+}  // namespace
+
+nlohmann::ordered_json exportReportJson(const ExportReport& report) {
+    nlohmann::ordered_json variants = nlohmann::ordered_json::array();
+    double sum = 0.0;
+    for (const auto& variant : report.variants) {
+        const DeltaEStats& stats = variant.deltaE.stats;
+        sum += stats.mean;
+        variants.push_back({{"name", variant.name},
+                            {"gltf", gltfParameters(variant.fit.material)},
+                            {"mean_de00", stats.mean},
+                            {"max_de00", stats.max},
+                            {"p95_de00", stats.p95},
+                            {"fit_mean_de00", variant.fit.meanDeltaE00},
+                            {"fit_renders", variant.fit.evaluations}});
+    }
+    return {{"format", toString(report.format)},
+            {"file", report.file.string()},
+            {"report_size", report.settings.reportSize},
+            {"fit_size", report.settings.fit.imageSize},
+            {"mean_de00", report.variants.empty() ? 0.0 : sum / double(report.variants.size())},
+            {"variants", std::move(variants)}};
+}
+
+}  // namespace matevo

@@ -1,0 +1,77 @@
+#pragma once
+// Export of one material or a set (all from one preset: the same textures) to an engine format:
+// each material is rendered with our Belcour model (through the one render interface), the glTF parameters are fitted to
+// that render (GltfFit.h), the fit is rendered again at the report size and compared, and the
+// file is written (GltfWriter.h, MaterialXWriter.h). Shared by `matevo export` and the editor.
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "color/ImageDifference.h"
+#include "common/Result.h"
+#include "export/GltfFit.h"
+#include "io/MaterialFile.h"
+#include "render/PopulationRenderer.h"
+
+namespace matevo {
+
+enum class ExportFormat { Gltf, Glb, MaterialX };
+std::optional<ExportFormat> parseExportFormat(std::string_view text);  // gltf, glb, mtlx
+std::string_view toString(ExportFormat format);
+std::string_view fileExtension(ExportFormat format);  // ".gltf", ".glb", ".mtlx"
+
+struct ExportSettings {
+    GltfFitSettings fit;
+    int reportSize = 128;  // side of the images whose ΔE00 the report gives
+};
+
+struct ExportedVariant {
+    std::string name;
+    GltfFit fit;        // the parameters and the ΔE00 at the fitting size
+    DeltaEMap deltaE;   // fitted glTF render vs Belcour render at the report size
+    Image matevoRender;  // the two renders at the report size, for a look
+    Image gltfRender;
+};
+
+// The fitted set, ready to be written in any format.
+struct FittedSet {
+    ExportSettings settings;
+    SceneTextures textures;  // shared by every material of the set
+    std::vector<ExportedVariant> variants;
+};
+
+struct ExportReport {
+    ExportFormat format;
+    std::filesystem::path file;
+    ExportSettings settings;
+    std::vector<ExportedVariant> variants;
+};
+
+// Called after each material is fitted: (done, count).
+using ExportProgress = std::function<void(std::size_t, std::size_t)>;
+
+// Fits every material (errors name the material). `materials` must share textures; `belcour`
+// draws our renders of them (it is given their textures).
+Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
+                               PopulationRenderer& belcour, const ExportSettings& settings = {},
+                               const ExportProgress& progress = {});
+// Writes the fitted set in `format` to `file`.
+Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
+                                 const std::filesystem::path& file);
+// Both steps.
+Result<ExportReport> exportMaterials(const std::vector<MaterialFile>& materials,
+                                     PopulationRenderer& belcour, ExportFormat format,
+                                     const std::filesystem::path& file,
+                                     const ExportSettings& settings = {},
+                                     const ExportProgress& progress = {});
+
+// Per variant: name, fitted glTF parameters, ΔE00 (mean, max, p95 at the report size; mean at
+// the fitting size), renders used; and their mean.
+nlohmann::ordered_json exportReportJson(const ExportReport& report);
+
+}  // namespace matevo

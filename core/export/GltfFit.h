@@ -1,0 +1,31 @@
+#pragma once
+// Chooses the glTF parameters (GltfMaterial.h) whose render in our scene is closest to our
+// Belcour render of the same material, by mean CIEDE2000 over the sphere: glTF cannot express the
+// Belcour stack (its coat IOR is fixed at 1.5, the coat does not absorb, alpha = roughness^2), so
+// a parameter-by-parameter conversion would be wrong by more than it needs to be.
+#include "common/Image.h"
+#include "export/GltfMaterial.h"
+#include "material/MaterialInstance.h"
+#include "scene/SceneSettings.h"
+#include "scene/SceneTextures.h"
+
+namespace matevo {
+
+struct GltfFitSettings {
+    int imageSize = 64;        // side of the images compared while fitting
+    int maxEvaluations = 900;  // renders, over all starts
+};
+
+struct GltfFit {
+    GltfMaterial material;
+    double meanDeltaE00 = 0.0;  // at the fitting size, against `target`
+    int evaluations = 0;
+};
+
+// `target` is the Belcour render of `material` at settings.imageSize (either back end).
+// Deterministic.
+GltfFit fitGltfMaterial(const MaterialInstance& material, const Image& target,
+                        const SceneTextures& textures, const SceneSettings& scene,
+                        const GltfFitSettings& settings = {});
+
+}  // namespace matevo

@@ -1,0 +1,256 @@
+// Export of the three validation presets to glTF and MaterialX: the files re-read by tinygltf
+// (the library that wrote them) field by field, the MaterialX document well-formed (libxml2)
+// with MaterialX 1.39's input names, and the reported ΔE00 recomputed here from our glTF BRDF
+// render against our Belcour render.
+#include "export/ExportSet.h"
+
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include "export/GltfRenderer.h"
+#include "io/Preset.h"
+#include "render/CpuPopulationRenderer.h"
+#include "scene/SphereRenderer.h"
+#include "support/RunCommand.h"
+#include "support/ScratchFolder.h"
+
+namespace matevo {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kPresets = fs::path(MATEVO_SOURCE_DIR) / "presets";
+
+MaterialFile presetTarget(const std::string& name, SceneMode mode = SceneMode::Paper) {
+    const fs::path file = kPresets / (name + ".json");
+    auto loaded = loadPreset(file);
+    EXPECT_TRUE(loaded.ok()) << loaded.error().message;
+    MaterialFile material = materialFromPreset(loaded->preset, file, loaded->preset.target, name);
+    material.scene.mode = mode;
+    return material;
+}
+
+// The fits are the slow part: each preset is fitted once for every test here, and written in
+// each format from that one fit.
+const ExportReport& exportedPreset(const std::string& name, ExportFormat format,
+                                   const fs::path& file, SceneMode mode = SceneMode::Paper) {
+    static std::map<std::string, FittedSet> fits;
+    static std::map<std::string, ExportReport> reports;
+    const std::string key = name + std::string(toString(mode));
+    auto fit = fits.find(key);
+    if (fit == fits.end()) {
+        CpuPopulationRenderer belcour({});
+        auto fitted = fitForExport({presetTarget(name, mode)}, belcour);
+        EXPECT_TRUE(fitted.ok()) << fitted.error().message;
+        fit = fits.emplace(key, std::move(*fitted)).first;
+    }
+    auto report = writeExport(fit->second, format, file);
+    EXPECT_TRUE(report.ok()) << report.error().message;
+    return reports.insert_or_assign(name + file.string(), std::move(*report)).first->second;
+}
+
+const char* const kValidationPresets[] = {"validation_metal", "validation_painted_metal",
+                                          "validation_metal_depth"};
+
+double numberOf(const tinygltf::Value& object, const std::string& key) {
+    return object.Get(key).GetNumberAsDouble();
+}
+
+TEST(ExportSet, GltfFilesReadBackFieldByField) {
+    testing::ScratchFolder folder("export");
+    for (const char* name : kValidationPresets) {
+        for (ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb}) {
+            const fs::path file = folder / (std::string(name) + std::string(fileExtension(format)));
+            const ExportReport& report = exportedPreset(name, format, file);
+            ASSERT_EQ(report.variants.size(), 1u);
+            const GltfMaterial& fitted = report.variants[0].fit.material;
+
+            tinygltf::TinyGLTF loader;
+            tinygltf::Model model;
+            std::string error, warning;
+            const bool loaded =
+                format == ExportFormat::Glb
+                    ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
+                    : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
+            ASSERT_TRUE(loaded) << error;
+            EXPECT_TRUE(warning.empty()) << warning;
+            if (format == ExportFormat::Gltf) {
+                EXPECT_TRUE(fs::exists(fs::path(file).replace_extension(".bin")));
+                EXPECT_EQ(model.buffers[0].uri, std::string(name) + ".bin");
+            }
+            ASSERT_EQ(model.materials.size(), 1u);
+            const auto& material = model.materials[0];
+            EXPECT_EQ(material.name, name);
+            const auto& pbr = material.pbrMetallicRoughness;
+            for (int c = 0; c < 3; ++c)
+                EXPECT_DOUBLE_EQ(pbr.baseColorFactor[std::size_t(c)], fitted.baseColor[c]);
+            EXPECT_DOUBLE_EQ(pbr.metallicFactor, fitted.metallic);
+            EXPECT_DOUBLE_EQ(pbr.roughnessFactor, fitted.roughness);
+            const auto& clearcoat = material.extensions.at("KHR_materials_clearcoat");
+            EXPECT_DOUBLE_EQ(numberOf(clearcoat, "clearcoatFactor"), fitted.clearcoat);
+            EXPECT_DOUBLE_EQ(numberOf(clearcoat, "clearcoatRoughnessFactor"),
+                             fitted.clearcoatRoughness);
+            EXPECT_DOUBLE_EQ(numberOf(material.extensions.at("KHR_materials_ior"), "ior"),
+                             fitted.ior);
+            if (fitted.specular != 1.0) {
+                EXPECT_DOUBLE_EQ(
+                    numberOf(material.extensions.at("KHR_materials_specular"), "specularFactor"),
+                    fitted.specular);
+            }
+            // Textures follow the preset: painted metal's roughness drives the coat's and the
+            // base's, metal depth's base colour texture the base colour.
+            const bool painted = std::string(name) == "validation_painted_metal";
+            EXPECT_EQ(clearcoat.Has("clearcoatRoughnessTexture"), painted);
+            EXPECT_EQ(pbr.metallicRoughnessTexture.index >= 0, painted);
+            EXPECT_EQ(pbr.baseColorTexture.index >= 0,
+                      std::string(name) == "validation_metal_depth");
+            for (const auto& image : model.images) EXPECT_GT(image.width, 0) << image.name;
+            // One sphere: positions on the unit sphere, as many UVs as positions.
+            ASSERT_EQ(model.meshes.size(), 1u);
+            const auto& primitive = model.meshes[0].primitives[0];
+            EXPECT_EQ(primitive.material, 0);
+            const auto& positions = model.accessors[std::size_t(primitive.attributes.at("POSITION"))];
+            EXPECT_EQ(model.accessors[std::size_t(primitive.attributes.at("TEXCOORD_0"))].count,
+                      positions.count);
+            EXPECT_EQ(model.nodes.size(), 1u);
+            for (const char* extension :
+                 {"KHR_materials_clearcoat", "KHR_materials_ior"})
+                EXPECT_NE(std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                                    extension),
+                          model.extensionsUsed.end())
+                    << extension;
+        }
+    }
+}
+
+// The report's ΔE00 is what our glTF render of the written parameters gives against our Belcour
+// render; returns it.
+double recomputedDeltaE(const std::string& name, SceneMode mode, const fs::path& folder) {
+    const ExportReport& report = exportedPreset(
+        name, ExportFormat::Glb, folder / (name + std::string(toString(mode)) + ".glb"), mode);
+    const MaterialFile material = presetTarget(name, mode);
+    auto textures = loadSceneTextures(material, name);
+    EXPECT_TRUE(textures.ok());
+    const int size = report.settings.reportSize;
+    const Image gltf =
+        renderGltfSphere(report.variants[0].fit.material, *textures, material.scene, size);
+    const Image belcour = renderSphereCpu(material.material, *textures, material.scene, size);
+    auto difference = compareImages(gltf, belcour);
+    EXPECT_TRUE(difference.ok());
+    EXPECT_NEAR(difference->stats.mean, report.variants[0].deltaE.stats.mean, 1e-9) << name;
+    std::printf("%s (%s scene): mean dE00 %.3f (p95 %.3f) at %d px, %d renders\n", name.c_str(),
+                std::string(toString(mode)).c_str(), difference->stats.mean,
+                difference->stats.p95, size, report.variants[0].fit.evaluations);
+    return difference->stats.mean;
+}
+
+TEST(ExportSet, ReportedDeltaEIsRecomputedFromTheGltfRender) {
+    testing::ScratchFolder folder("export");
+    double sum = 0.0;
+    for (const char* name : kValidationPresets) {
+        const double deltaE = recomputedDeltaE(name, SceneMode::Paper, folder.path());
+        // The goal: glTF reaches the Belcour look within ΔE00 2 (docs/export.md has the figures).
+        EXPECT_LT(deltaE, 2.0) << name;
+        sum += deltaE;
+    }
+    std::printf("mean over the validation presets: %.3f\n", sum / 3.0);
+}
+
+// With the ambient light the environment goes through the glTF BRDF's directional albedo.
+TEST(ExportSet, TheAmbientSceneIsFittedThroughTheAlbedo) {
+    testing::ScratchFolder folder("export");
+    EXPECT_LT(recomputedDeltaE("validation_metal", SceneMode::Ambient, folder.path()), 2.0);
+}
+
+// The official Khronos validator (npm gltf-validator, installed by scripts/install-deps.sh).
+TEST(ExportSet, KhronosValidatorFindsNoErrors) {
+    testing::ScratchFolder folder("export");
+    std::string files;
+    for (const char* name : kValidationPresets) {
+        for (ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb}) {
+            const fs::path file = folder / (std::string(name) + std::string(fileExtension(format)));
+            exportedPreset(name, format, file);
+            files += " '" + file.string() + "'";
+        }
+    }
+    const fs::path script = fs::path(MATEVO_SOURCE_DIR) / "tests/export/gltf-validator/validate.js";
+    const auto result = testing::runCommand(std::string(MATEVO_NODE) + " '" + script.string() +
+                                            "'" + files);
+    EXPECT_EQ(result.exitCode, 0) << result.out << result.err;
+    std::size_t reports = 0;
+    std::istringstream lines(result.out);
+    for (std::string line; std::getline(lines, line);) {
+        const auto report = nlohmann::json::parse(line);
+        EXPECT_EQ(report["errors"], 0) << line;
+        ++reports;
+    }
+    EXPECT_EQ(reports, 6u) << result.err;
+}
+
+// MaterialX 1.39's gltf_pbr inputs and the nodes we use, named as its standard library does.
+const std::set<std::string> kGltfPbrInputs = {"base_color", "metallic", "roughness",
+                                              "specular", "specular_color", "ior",
+                                              "clearcoat", "clearcoat_roughness"};
+
+TEST(ExportSet, MaterialXIsWellFormedWithMaterialXInputNames) {
+    testing::ScratchFolder folder("export");
+    for (const char* name : kValidationPresets) {
+        const fs::path file = folder / (std::string(name) + ".mtlx");
+        const ExportReport& report = exportedPreset(name, ExportFormat::MaterialX, file);
+        ASSERT_EQ(report.variants.size(), 1u);
+        xmlDocPtr document = xmlReadFile(file.c_str(), nullptr, XML_PARSE_NONET);
+        ASSERT_NE(document, nullptr) << file;
+        xmlNodePtr root = xmlDocGetRootElement(document);
+        EXPECT_STREQ(reinterpret_cast<const char*>(root->name), "materialx");
+        xmlChar* version = xmlGetProp(root, BAD_CAST "version");
+        EXPECT_STREQ(reinterpret_cast<const char*>(version), "1.39");
+        xmlFree(version);
+        std::map<std::string, std::string> shaderInputs;
+        std::set<std::string> nodeNames;
+        int materials = 0;
+        for (xmlNodePtr node = root->children; node; node = node->next) {
+            if (node->type != XML_ELEMENT_NODE) continue;
+            const std::string element = reinterpret_cast<const char*>(node->name);
+            xmlChar* nodeName = xmlGetProp(node, BAD_CAST "name");
+            EXPECT_TRUE(nodeNames.insert(reinterpret_cast<const char*>(nodeName)).second);
+            xmlFree(nodeName);
+            if (element == "surfacematerial") ++materials;
+            if (element != "gltf_pbr") continue;
+            for (xmlNodePtr input = node->children; input; input = input->next) {
+                if (input->type != XML_ELEMENT_NODE) continue;
+                xmlChar* inputName = xmlGetProp(input, BAD_CAST "name");
+                xmlChar* value = xmlGetProp(input, BAD_CAST "value");
+                xmlChar* connected = xmlGetProp(input, BAD_CAST "nodename");
+                const std::string key = reinterpret_cast<const char*>(inputName);
+                EXPECT_TRUE(kGltfPbrInputs.count(key)) << key;
+                shaderInputs[key] = value ? reinterpret_cast<const char*>(value) : "(connected)";
+                EXPECT_TRUE(value || connected) << key;
+                if (connected) {
+                    EXPECT_TRUE(nodeNames.count(reinterpret_cast<const char*>(connected)));
+                }
+                xmlFree(inputName);
+                xmlFree(value);
+                xmlFree(connected);
+            }
+        }
+        EXPECT_EQ(materials, 1);
+        EXPECT_EQ(shaderInputs.size(), kGltfPbrInputs.size());
+        EXPECT_NEAR(std::stod(shaderInputs.at("metallic")),
+                    report.variants[0].fit.material.metallic, 1e-5);
+        xmlFreeDoc(document);
+    }
+}
+
+}  // namespace
+}  // namespace matevo
