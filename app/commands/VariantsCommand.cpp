@@ -16,8 +16,7 @@
 #include "gpu/PopulationRendererFactory.h"
 #include "io/OutputFolder.h"
 #include "variants/VariantFiles.h"
-#include "variants/VariantSearch.h"
-#include "variants/VariantSet.h"
+#include "variants/FindVariants.h"
 
 namespace matevo::cli {
 namespace {
@@ -119,31 +118,26 @@ int runVariants(CommandLine& args) {
         return asStoredInPng(
             renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, side));
     };
-    auto search =
-        VariantSearch::start({preset.target, preset.family, preset.baseKappa}, request, settings,
-                             renderAt(fitnessSize));
-    if (!search) throw std::runtime_error(search.error().message);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
-    while (!(*search)->finished() && !stopRequested()) {
-        if (auto stepped = (*search)->step(); !stepped)
-            throw std::runtime_error(stepped.error().message);
-        if (showProgress) {
-            const auto& progress = (*search)->progress();
+    VariantSearchHooks hooks;
+    hooks.stop = [] { return stopRequested() != 0; };
+    if (showProgress)
+        hooks.onGeneration = [](const VariantSearchProgress& progress) {
             std::fprintf(stderr, "\r%s%zu evaluations, %zu in the archive",
                          messagePrefix().c_str(), progress.evaluations, progress.archived);
-        }
-    }
+        };
+    auto found = findVariants({preset.target, preset.family, preset.baseKappa}, request, settings,
+                              renderAt(fitnessSize), renderAt(size), hooks);
     if (showProgress) std::fputc('\n', stderr);
+    if (!found) throw std::runtime_error(found.error().message);
+    const VariantSet& set = found->set;
 
-    auto set = chooseVariantSet((*search)->archive(), request, preset.target, renderAt(size));
-    if (!set) throw std::runtime_error(set.error().message);
-
-    const VariantSearchProgress& progress = (*search)->progress();
+    const VariantSearchProgress& progress = found->progress;
     VariantRun run{request,           size, fitnessSize, progress.evaluations, progress.archived,
                    progress.closestDeltaE, 0.0};
     run.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    nlohmann::json report = variantReport(preset, run, *set);
+    nlohmann::json report = variantReport(preset, run, set);
     const int signal = stopRequested();
     if (signal) {
         report["partial"] = true;
@@ -153,7 +147,7 @@ int runVariants(CommandLine& args) {
         if (auto written =
                 writeVariantFiles(
                 output->staging(),
-                materialFromPreset(preset, choice.file, preset.target, preset.name), *set,
+                materialFromPreset(preset, choice.file, preset.target, preset.name), set,
                 report, *heatmapMetric);
             !written)
             throw UsageError("--out: " + output->userFacing(written.error().message));
@@ -161,13 +155,13 @@ int runVariants(CommandLine& args) {
             throw UsageError("--out: " + committed.error().message);
     }
     if (asJson) std::printf("%s\n", report.dump(2).c_str());
-    const std::string summary = variantSummary(run, *set);
+    const std::string summary = variantSummary(run, set);
     if (signal) {
         printMessage("stopped by " + signalName(signal) + ": " + summary +
                      (outDir ? "; what was found is written, marked partial" : ""));
         return stoppedExitStatus(signal);
     }
-    if (!fulfils(*set, request)) {
+    if (!fulfils(set, request)) {
         printMessage("request not met: " + summary + (outDir ? "; what was found is written" : ""));
         return exitCode(ExitStatus::RequestNotMet);
     }
