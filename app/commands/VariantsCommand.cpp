@@ -31,7 +31,7 @@ namespace {
 
 constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
-    "                       [--size N] [--fitness-size N] [--max-evaluations N]\n"
+    "                       [--size N] [--fitness-size N] [--max-evaluations N] [--hue]\n"
     "                       [--backend gpu|cpu] [--out DIR] [--force] [--heatmap de00|flip]\n"
     "                       [--json] [--block B [--shard I/K]]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
@@ -42,6 +42,8 @@ constexpr const char* kHelp =
     "  --size N             output image side in pixels, where the set is checked (default 256)\n"
     "  --fitness-size N     image side the search renders at (default 64)\n"
     "  --max-evaluations N  fitness renders before giving up (default 1500)\n"
+    "  --hue                hue variety, beyond the paper: evolve the conductor base's kappa\n"
+    "                       too (RGB, each in [1, 4]), so variants may differ in colour\n"
     "  --backend B          gpu (default; falls back to the CPU when no Vulkan device is usable)\n"
     "                       or cpu\n"
     "  --out DIR            write DIR/report.json, DIR/target.png, DIR/contact_sheet.png and per\n"
@@ -108,8 +110,9 @@ struct FoundSet {
 
 FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
                  const std::string& progressLabel) {
-    auto search = VariantSearch::start(job.preset.family, job.preset.target, request,
-                                       job.settings, job.fitnessRender);
+    auto search = VariantSearch::start(
+        {job.preset.target, job.preset.family, job.preset.baseKappa}, request, job.settings,
+        job.fitnessRender);
     if (!search) throw std::runtime_error(search.error().message);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
     while (!(*search)->finished() && !stopRequested()) {
@@ -197,7 +200,7 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
         const std::string label = "block " + std::to_string(block + 1) + " of " +
                                   std::to_string(plan.blocks()) + ": ";
         FoundSet found = findSet(job, blockRequest(job.request, plan, block), label);
-        addBlock(parts, found.run, found.set, plan, block);
+        addBlock(parts, job.preset, found.run, found.set, plan, block);
         if (job.output) {
             if (auto written = writeVariantBlock(job.output->staging(), job.target, found.set,
                                                  plan, block, job.heatmapMetric);
@@ -255,6 +258,7 @@ int runVariants(CommandLine& args) {
         settings.maxEvaluations = int(*budget);
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    if (args.flag("--hue")) request.kappaGenes = KappaGenes::On;
     const auto outDir = args.option("--out");
     const std::string heatmapName = args.option("--heatmap").value_or("de00");
     const auto heatmapMetric = parseImageMetric(heatmapName);
@@ -272,6 +276,9 @@ int runVariants(CommandLine& args) {
         shardText ? std::optional<Shard>(parseShard(*shardText)) : std::nullopt;
     const std::vector<int> blocks = blocksOfShard(plan, shard.value_or(Shard{}));
 
+    if (request.kappaGenes == KappaGenes::On && choice.preset.family.base != Base::Conductor)
+        throw UsageError("--hue: the preset's base is a dielectric; hue variety evolves a "
+                         "conductor's kappa");
     installStopSignalHandlers();
     // Refused before the search: a folder with other files, or one we cannot write beside,
     // and work past the memory limit.

@@ -34,8 +34,8 @@ BlockReport blockReportHeader(const Preset& preset, const VariantRun& whole,
             {}};
 }
 
-void addBlock(BlockReport& report, const VariantRun& run, const VariantSet& set,
-              const VariantBlocks& plan, int block) {
+void addBlock(BlockReport& report, const Preset& preset, const VariantRun& run,
+              const VariantSet& set, const VariantBlocks& plan, int block) {
     const std::size_t first = std::size_t(plan.firstIndex(block));
     report.blocks.push_back({{"index", block},
                              {"seed", run.request.seed},
@@ -52,7 +52,8 @@ void addBlock(BlockReport& report, const VariantRun& run, const VariantSet& set,
                              {"contact_sheet", blockContactSheet(block)}});
     const std::vector<double> nearest = set.nearestSibling();
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
-        nlohmann::json entry = variantEntry(set, i, first + i, std::size_t(plan.count), nearest);
+        nlohmann::json entry =
+            variantEntry(preset, set, i, first + i, std::size_t(plan.count), nearest);
         entry["block"] = block;
         report.variants.push_back(std::move(entry));
     }
@@ -61,12 +62,14 @@ void addBlock(BlockReport& report, const VariantRun& run, const VariantSet& set,
 nlohmann::json assembleBlockReport(BlockReport parts, const std::optional<Shard>& shard) {
     sortByIndex(parts.blocks);
     sortByIndex(parts.variants);
-    // A genome found by two blocks: the later index is the copy.
+    // A material found by two blocks (the genome, and its own kappa with hue variety): the
+    // later index is the copy.
     nlohmann::json duplicates = nlohmann::json::array();
     std::map<std::string, std::size_t> firstWithGenome;
     for (const auto& variant : parts.variants) {
-        const auto [found, inserted] =
-            firstWithGenome.emplace(variant.at("genome").dump(), indexOf(variant));
+        const std::string identity =
+            variant.at("genome").dump() + variant.value("base_kappa", nlohmann::json()).dump();
+        const auto [found, inserted] = firstWithGenome.emplace(identity, indexOf(variant));
         if (!inserted) duplicates.push_back({found->second, indexOf(variant)});
     }
     int asked = 0;

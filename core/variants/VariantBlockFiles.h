@@ -36,9 +36,9 @@ struct BlockReport {
 // The header of a request cut into `plan`'s blocks; `whole` is the request of the whole set.
 BlockReport blockReportHeader(const Preset& preset, const VariantRun& whole,
                               const VariantBlocks& plan);
-// Adds block `block`: `run` and `set` are its search and its set.
-void addBlock(BlockReport& report, const VariantRun& run, const VariantSet& set,
-              const VariantBlocks& plan, int block);
+// Adds block `block` of the preset's set: `run` and `set` are its search and its set.
+void addBlock(BlockReport& report, const Preset& preset, const VariantRun& run,
+              const VariantSet& set, const VariantBlocks& plan, int block);
 // The report: the header; blocks and variants in index order; identical genomes in different
 // blocks ("duplicates", pairs of indices); whether every block met its request and no genome
 // repeats, with a one-line summary; the totals. A share's report also says which share it is.

@@ -65,18 +65,22 @@ std::string variantStem(std::size_t index, std::size_t count) {
     return name;
 }
 
-nlohmann::json variantEntry(const VariantSet& set, std::size_t member, std::size_t index,
-                            std::size_t count, const std::vector<double>& nearest) {
+nlohmann::json variantEntry(const Preset& preset, const VariantSet& set, std::size_t member,
+                            std::size_t index, std::size_t count,
+                            const std::vector<double>& nearest) {
     const Variant& variant = set.variants[member];
+    const MaterialInstance material = materialOf(variant.genome, preset.family, preset.baseKappa);
     const std::string stem = "variants/" + variantStem(index, count);
-    return {{"index", index},
-            {"file", stem + ".json"},
-            {"image", stem + ".png"},
-            {"heatmap", stem + "_heatmap.png"},
-            {"de00_to_target", variant.deltaEToTarget},
-            {"de00_to_nearest_sibling", nearest[member]},
-            {"kept", variant.kept},
-            {"genome", genomeToJson(variant.genome)}};
+    nlohmann::json entry = {{"index", index},
+                            {"file", stem + ".json"},
+                            {"image", stem + ".png"},
+                            {"heatmap", stem + "_heatmap.png"},
+                            {"de00_to_target", variant.deltaEToTarget},
+                            {"de00_to_nearest_sibling", nearest[member]},
+                            {"kept", variant.kept},
+                            {"genome", genomeToJson(material.genome)}};
+    if (variant.genome.carriesKappa()) entry["base_kappa"] = material.baseKappa;
+    return entry;
 }
 
 nlohmann::json requestJson(const VariantRun& run) {
@@ -85,6 +89,7 @@ nlohmann::json requestJson(const VariantRun& run) {
             {"band", {request.band.low, request.band.high}},
             {"min_apart", request.minApart},
             {"seed", request.seed},
+            {"hue_variety", request.kappaGenes == KappaGenes::On},
             {"size", run.size},
             {"fitness_size", run.fitnessSize}};
 }
@@ -93,7 +98,7 @@ nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const 
     const std::vector<double> nearest = set.nearestSibling();
     nlohmann::json variants = nlohmann::json::array();
     for (std::size_t i = 0; i < set.variants.size(); ++i)
-        variants.push_back(variantEntry(set, i, i, 0, nearest));
+        variants.push_back(variantEntry(preset, set, i, i, 0, nearest));
     const VariantRequest& request = run.request;
     const bool met = fulfils(set, request);
     return {{"preset", preset.name},
@@ -166,7 +171,9 @@ MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant,
     MaterialFile material = target;
     material.name = (target.name.empty() ? std::string() : target.name + " ") +
                     variantStem(index, count);
-    material.material.genome = variant.genome;
+    // The variant's own kappa when it carries kappa genes (hue variety), else the target's.
+    material.material =
+        materialOf(variant.genome, target.material.family, target.material.baseKappa);
     return material;
 }
 

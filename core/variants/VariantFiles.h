@@ -45,12 +45,14 @@ RenderGenomes asStoredInPng(RenderGenomes render);
 std::string variantStem(std::size_t index, std::size_t count = 0);
 
 // One variant's entry in a report: its index in the whole set, its files, ΔE00 to the target
-// and to its nearest sibling (`nearest`, VariantSet::nearestSibling), kept or not, genome.
-// `member` is its place in `set`.
-nlohmann::json variantEntry(const VariantSet& set, std::size_t member, std::size_t index,
-                            std::size_t count, const std::vector<double>& nearest);
+// and to its nearest sibling (`nearest`, VariantSet::nearestSibling), kept or not, genome (and
+// its own kappa when it carries kappa genes). `member` is its place in `set`.
+nlohmann::json variantEntry(const Preset& preset, const VariantSet& set, std::size_t member,
+                            std::size_t index, std::size_t count,
+                            const std::vector<double>& nearest);
 
-// The request as a report states it: count, band, distance, seed and the two image sizes.
+// The request as a report states it: count, band, distance, seed, hue variety and the two image
+// sizes.
 nlohmann::json requestJson(const VariantRun& run);
 
 // The report: request, per variant (file, ΔE00 to the target, to its nearest sibling, genome),

@@ -109,6 +109,15 @@ TEST(VariantBlockReport, AGenomeRepeatedAcrossBlocksIsReportedAndNotMet) {
     EXPECT_NE(report["summary"].get<std::string>().find("repeated"), std::string::npos);
 }
 
+TEST(VariantBlockReport, HueVariantsDifferingOnlyInKappaAreNotDuplicates) {
+    BlockReport parts = twoBlocks(0.8);  // variant 3 has variant 0's genome...
+    parts.variants[1]["base_kappa"] = {3.1, 1.5, 2.8};  // ...but its own kappa
+    parts.variants[2]["base_kappa"] = {3.1, 1.9, 2.8};
+    const nlohmann::json report = assembleBlockReport(parts, std::nullopt);
+    EXPECT_TRUE(report["duplicates"].empty());
+    EXPECT_TRUE(report["met"].get<bool>());
+}
+
 TEST(VariantBlockReport, AShareSaysWhichShareItIs) {
     const nlohmann::json report = assembleBlockReport(twoBlocks(0.6), Shard{1, 3});
     EXPECT_EQ(report["shard"]["index"], 1);
