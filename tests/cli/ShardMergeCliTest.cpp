@@ -89,6 +89,28 @@ TEST(ShardMerge, SharesMergedAreByteForByteOneRun) {
     }
 }
 
+// Hue variety: variants that differ only in their own kappa are different materials.
+TEST(ShardMerge, HueVariantsShareAndMergeToo) {
+    testing::ScratchFolder folder("shards");
+    const std::string request =
+        "variants --preset validation_metal --hue --count 5 --block 2 --band 2,10 --min-apart 1"
+        " --seed 3 --size 32 --fitness-size 16 --max-evaluations 200 --backend cpu";
+    ASSERT_EQ(runMatevo(request + " --out " + shellQuoted(folder / "whole")).exitCode, 0);
+    for (int index : {0, 1})
+        ASSERT_EQ(runMatevo(request + " --shard " + std::to_string(index) + "/2 --out " +
+                            shellQuoted(folder / std::to_string(index)))
+                      .exitCode,
+                  0);
+    const auto joined = runMatevo("merge " + shellQuoted(folder / "1") + " " +
+                                  shellQuoted(folder / "0") + " --out " +
+                                  shellQuoted(folder / "merged"));
+    ASSERT_EQ(joined.exitCode, 0) << joined.err;
+    expectSameFiles(folder / "whole", folder / "merged");
+    const auto report = nlohmann::json::parse(std::ifstream(folder / "merged/report.json"));
+    EXPECT_TRUE(report["duplicates"].empty());
+    EXPECT_TRUE(report["variants"][0].contains("base_kappa"));
+}
+
 TEST(ShardMerge, OneBlockIsThePlainSet) {
     testing::ScratchFolder folder("shards");
     const std::string plain =
