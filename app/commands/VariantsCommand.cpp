@@ -20,11 +20,10 @@
 #include "io/AtomicFile.h"
 #include "io/ImageFile.h"
 #include "io/OutputFolder.h"
+#include "variants/FindVariants.h"
 #include "variants/VariantBlockFiles.h"
 #include "variants/VariantBlocks.h"
 #include "variants/VariantFiles.h"
-#include "variants/VariantSearch.h"
-#include "variants/VariantSet.h"
 
 namespace matevo::cli {
 namespace {
@@ -110,27 +109,21 @@ struct FoundSet {
 
 FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
                  const std::string& progressLabel) {
-    auto search = VariantSearch::start(
-        {job.preset.target, job.preset.family, job.preset.baseKappa}, request, job.settings,
-        job.fitnessRender);
-    if (!search) throw std::runtime_error(search.error().message);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
-    while (!(*search)->finished() && !stopRequested()) {
-        if (auto stepped = (*search)->step(); !stepped)
-            throw std::runtime_error(stepped.error().message);
-        if (showProgress) {
-            const auto& progress = (*search)->progress();
+    VariantSearchHooks hooks;
+    hooks.stop = [] { return stopRequested() != 0; };
+    if (showProgress)
+        hooks.onGeneration = [&progressLabel](const VariantSearchProgress& progress) {
             std::fprintf(stderr, "\r%s%s%zu evaluations, %zu in the archive",
                          messagePrefix().c_str(), progressLabel.c_str(), progress.evaluations,
                          progress.archived);
-        }
-    }
+        };
+    auto found = findVariants({job.preset.target, job.preset.family, job.preset.baseKappa},
+                              request, job.settings, job.fitnessRender, job.outputRender, hooks);
     if (showProgress) std::fputc('\n', stderr);
-    auto set = chooseVariantSet((*search)->archive(), request, job.preset.target,
-                                job.outputRender);
-    if (!set) throw std::runtime_error(set.error().message);
-    const VariantSearchProgress& progress = (*search)->progress();
-    return {std::move(*set),
+    if (!found) throw std::runtime_error(found.error().message);
+    const VariantSearchProgress& progress = found->progress;
+    return {std::move(found->set),
             VariantRun{request, job.size, job.fitnessSize, progress.evaluations,
                        progress.archived, progress.closestDeltaE, 0.0}};
 }
