@@ -27,14 +27,22 @@ void clampAndReport(int& value, int low, int high, const char* name, StatusLog& 
     value = clamped;
 }
 
-void drawMetric(DistanceMetric& metric) {
+// The paper's three genotype distances, then the image-space fitness (beyond the paper).
+void drawMetric(DistanceMetric& metric, bool& imageFitness) {
     constexpr DistanceMetric kMetrics[] = {DistanceMetric::Chebyshev, DistanceMetric::Euclidean,
                                            DistanceMetric::Manhattan};
     constexpr const char* kLabels[] = {"Chebyshev", "Euclidean", "Manhattan"};
     for (int i = 0; i < 3; ++i) {
         if (i > 0) sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), kLabels[i]));
-        if (ImGui::RadioButton(kLabels[i], metric == kMetrics[i])) metric = kMetrics[i];
+        if (ImGui::RadioButton(kLabels[i], !imageFitness && metric == kMetrics[i])) {
+            metric = kMetrics[i];
+            imageFitness = false;
+        }
     }
+    sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Image ΔE00"));
+    if (ImGui::RadioButton("Image ΔE00", imageFitness)) imageFitness = true;
+    hoverHint("Beyond the paper: each candidate rendered (64 px) and ranked by its mean ΔE00 from "
+              "the target, what is seen, instead of a distance between genotypes.");
 }
 
 // Two columns with the name inside each slider. Only the family's active chromosomes: the
@@ -79,7 +87,8 @@ std::uint64_t nextSeed(std::uint64_t seed) {
     return z ^ (z >> 31);
 }
 
-void drawGaControls(GaSettings& settings, const MaterialFamily& family, StatusLog& status) {
+void drawGaControls(GaSettings& settings, const MaterialFamily& family, bool& imageFitness,
+                    StatusLog& status) {
     sectionHeader("Genetic algorithm");
     if (editFinished(sliderInt("Population", &settings.population, 2, kSliderMaxPopulation)))
         clampAndReport(settings.population, 2, kMaxPopulation, "Population", status);
@@ -101,7 +110,7 @@ void drawGaControls(GaSettings& settings, const MaterialFamily& family, StatusLo
     }
 
     ImGui::TextUnformatted("Fitness metric");
-    drawMetric(settings.metric);
+    drawMetric(settings.metric, imageFitness);
     ImGui::Checkbox("Normalise by range", &settings.normalizeByRange);
     hoverHint("Divide each chromosome's difference by its Table 2 range before weighting.");
 

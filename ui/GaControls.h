@@ -14,7 +14,9 @@ inline constexpr int kSliderMaxGenerations = 100;
 
 // Typed values beyond a slider's drag range are kept when presets allow them; values no preset
 // allows are clamped, and `status` says what was changed.
-void drawGaControls(GaSettings& settings, const MaterialFamily& family, StatusLog& status);
+// `imageFitness`: the GA view's image-space fitness instead of settings.metric (EditorState).
+void drawGaControls(GaSettings& settings, const MaterialFamily& family, bool& imageFitness,
+                    StatusLog& status);
 
 // The seed that "new seed" picks: a fixed scramble of the current one, so a session can be
 // replayed (no clock, no hardware randomness).

@@ -33,6 +33,7 @@ constexpr const char* kHelp =
     "usage: matevo experiment [--preset P | --all] [--runs N] [--population N]\n"
     "                         [--generations N] [--sweep] [--metric M|all] [--seed S]\n"
     "                         [--runs-per-seed N] [--size N] [--scene paper|ambient]\n"
+    "                         [--fitness-size N]\n"
     "                         [--backend gpu|cpu] [--out DIR] [--force]\n\n"
     "The experiment of Bernardi et al. (2020) section 5: for the target material and each\n"
     "distance metric, N GA runs (default 36) at a population and generation count (default 50\n"
@@ -43,7 +44,11 @@ constexpr const char* kHelp =
     "  --all              the three validation presets (metal, painted metal, metal depth)\n"
     "  --sweep            the paper's sizes instead of --population/--generations: (50,5),\n"
     "                     (100,10), (300,20), and (500,50) for a material with a medium\n"
-    "  --metric M         chebyshev, euclidean, manhattan or all (default all)\n"
+    "  --metric M         chebyshev, euclidean, manhattan or all (default all: the paper's\n"
+    "                     three genotype distances), or image: beyond the paper, the GA\n"
+    "                     scored by each candidate's rendered mean CIEDE2000 from the\n"
+    "                     target (on the same seeds; its CSV fitness is that mean)\n"
+    "  --fitness-size N   with --metric image: image side it renders at (default 64)\n"
     "  --seed S           first seed (default 1). The seed changes every --runs-per-seed runs\n"
     "                     (default 9): block b has seed S+b, and run k of a block takes the\n"
     "                     (k+1)-th SplitMix64 draw of its block seed as its GA seed (the CSV's\n"
@@ -70,14 +75,18 @@ constexpr const char* kHelp =
 const char* const kValidationPresets[] = {"validation_metal.json", "validation_painted_metal.json",
                                           "validation_metal_depth.json"};
 
-std::vector<DistanceMetric> parseMetrics(const std::optional<std::string>& text) {
-    if (!text || *text == "all")
-        return {DistanceMetric::Chebyshev, DistanceMetric::Euclidean, DistanceMetric::Manhattan};
-    auto metric = parseDistanceMetric(*text);
+std::vector<ExperimentMetric> parseMetrics(const std::optional<std::string>& text) {
+    if (!text || *text == "all") return paperMetrics();
+    auto metric = parseExperimentMetric(*text);
     if (!metric)
         throw UsageError("--metric: unknown metric '" + *text +
-                         "' (expected chebyshev, euclidean, manhattan or all)");
+                         "' (expected chebyshev, euclidean, manhattan, image or all)");
     return {*metric};
+}
+
+bool usesImageMetric(const ExperimentSettings& settings) {
+    return std::find(settings.metrics.begin(), settings.metrics.end(), ExperimentMetric::Image) !=
+           settings.metrics.end();
 }
 
 std::vector<PresetChoice> choosePresets(CommandLine& args) {
@@ -119,6 +128,11 @@ Request parseRequest(CommandLine& args) {
     if (auto perSeed = args.integerOption("--runs-per-seed", 1, kMaxExperimentRuns))
         settings.runsPerSeed = int(*perSeed);
     settings.metrics = parseMetrics(args.option("--metric"));
+    if (auto fitnessSize = args.integerOption("--fitness-size", 8, 1024)) {
+        if (!usesImageMetric(settings))
+            throw UsageError("--fitness-size does nothing without --metric image");
+        settings.fitnessSize = int(*fitnessSize);
+    }
     if (auto seed = args.unsignedOption("--seed")) settings.seed = *seed;
     if (auto size = args.integerOption("--size", 8, 4096)) request.imageSize = int(*size);
     if (auto text = args.option("--scene")) {
@@ -233,6 +247,10 @@ int runInto(const Request& request, OutputFolder& output) {
             const Preset& preset = choice.preset;
             const RenderGenomes render =
                 makeExperimentRenderer(choice, request.imageSize, request.backend);
+            const RenderGenomes fitnessRender =
+                usesImageMetric(request.settings)
+                    ? makeExperimentRenderer(choice, request.settings.fitnessSize, request.backend)
+                    : RenderGenomes{};
             const ExperimentTarget target{preset.name, preset.family, preset.target, preset.ga};
             const std::vector<GaSize> sizes =
                 request.sweep ? paperSweep(preset.family) : std::vector{request.settings.size};
@@ -241,9 +259,10 @@ int runInto(const Request& request, OutputFolder& output) {
                 ExperimentSettings settings = request.settings;
                 settings.size = size;
                 const std::string label = preset.name + " " + sizeLabel(size);
-                auto records = runExperiment(target, settings, render, [&](int done, int) {
-                    progress.update(finishedWork + done, label);
-                });
+                auto records = runExperiment(
+                    target, settings, render,
+                    [&](int done, int) { progress.update(finishedWork + done, label); },
+                    fitnessRender);
                 if (!records) throw std::runtime_error(records.error().message);
                 finishedWork += int(records->size()) * 2;
                 allRecords.insert(allRecords.end(), records->begin(), records->end());

@@ -46,9 +46,15 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
     settings.seed = preset.ga.seed;
     const ExperimentTarget experimentTarget{preset.name, preset.family, preset.target, preset.ga};
     // Progress: the GA runs are the first half, the renders the second.
-    result.records = evolveRuns(experimentTarget, settings, [&](int done, int total) {
+    // The paper's three genotype metrics only: nothing to render while evolving.
+    auto evolved = evolveRuns(experimentTarget, settings, [&](int done, int total) {
         job_.reportProgress(0.5f * float(done) / float(total));
     });
+    if (!evolved) {
+        result.error = evolved.error().message;
+        return result;
+    }
+    result.records = std::move(evolved).value();
     result.renders.resize(result.records.size());
     const auto scored = scoreRuns(
         result.records, target->front(), render, 16,

@@ -140,6 +140,7 @@ private:
     ScriptPlayer script_;
     EditorTimings timings_;
     std::optional<Preset> submittedPreset_;
+    bool submittedImageFitness_ = false;
     std::optional<Preset> previewedPreset_;  // the target shown while a slider is dragged
     std::string title_;
     std::string failure_;
@@ -530,10 +531,14 @@ void EditorApp::submitChangesToWorker() {
         p.kept.clear();
         return p;
     };
-    if (!previewed && submittedPreset_ && withoutKept(*submittedPreset_) == withoutKept(preset))
+    const bool imageFitness = ui_.state().imageFitness;
+    if (!previewed && submittedPreset_ && withoutKept(*submittedPreset_) == withoutKept(preset) &&
+        submittedImageFitness_ == imageFitness)
         return;
     submittedPreset_ = preset;
-    const std::uint64_t jobId = worker_->submit({preset, ui_.state().presetPath});
+    submittedImageFitness_ = imageFitness;
+    const std::uint64_t jobId =
+        worker_->submit({preset, ui_.state().presetPath, false, imageFitness});
     ui_.state().evolution.running = true;
     timings_.changeSubmitted(jobId, Clock::now());
 }

@@ -10,6 +10,10 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include "experiment/Experiment.h"
+#include "scene/SceneTextures.h"
+#include "variants/ImageFitness.h"
+
 namespace matevo::editor {
 namespace {
 
@@ -139,6 +143,8 @@ void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
     request.backend = backend;
     request.who = "matevo edit";
     request.cancelled = [this] { return cancelled(runningJobId_.load()); };
+    gpu::RendererRequest fitnessRenderer = request;
+    fitnessRenderer.device = &device;
     CandidateRenderCache renderCache(kTileSize, kTargetSize, kRenderCacheSize, device,
                                      std::move(request));
     for (;;) {
@@ -157,7 +163,7 @@ void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
         // Nothing may escape a thread (std::terminate would end the editor and lose the
         // user's document): a failure becomes the job's error, shown in the window.
         try {
-            evolve(job, jobId, renderCache);
+            evolve(job, jobId, renderCache, fitnessRenderer);
         } catch (const std::exception& error) {
             publishFailure(jobId, error.what());
         } catch (...) {
@@ -172,7 +178,8 @@ void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
 }
 
 void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
-                             CandidateRenderCache& renderCache) {
+                             CandidateRenderCache& renderCache,
+                             const gpu::RendererRequest& fitnessRenderer) {
     const Preset& preset = job.preset;
     EvolutionUpdate update;
     update.jobId = jobId;
@@ -192,11 +199,30 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
         return;
     }
 
-    GeneticAlgorithm ga(preset.family, preset.target, preset.ga);
+    auto failed = [&](const std::string& what) {
+        update.finished = true;
+        update.error = what;
+        publish(std::move(update));
+    };
+    std::optional<ImageSpaceFitness> fitness;
+    if (job.imageFitness) {
+        auto textures = loadSceneTextures(preset, job.presetFile);
+        if (!textures) return failed(textures.error().message);
+        auto cache = GenomeRenderCache::create(
+            renderGenomesWith(gpu::createPopulationRenderer(fitnessRenderer, *textures),
+                              preset.family, preset.baseKappa, preset.scene, kImageFitnessSize),
+            preset.target);
+        if (!cache) return cancelled(jobId) ? void() : failed(cache.error().message);
+        fitness.emplace(std::move(cache).value());
+    }
+    GeneticAlgorithm ga = fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga,
+                                                     fitness->evaluator())
+                                  : GeneticAlgorithm(preset.family, preset.target, preset.ga);
     ga.initialize();
     const std::vector<Genome> kept = keptGenomesOfFamily(preset);
     for (;;) {
         if (cancelled(jobId)) return;
+        if (fitness && fitness->failure()) return failed(fitness->failure()->message);
         const std::vector<Individual> ranked = ga.rankedPopulation();
         const bool last = ga.finished();
         // While the GA runs, the best distinct genomes; once it is done, the whole population,

@@ -30,6 +30,9 @@ struct EvolutionJob {
     // Only the target, no GA run: the live preview while a slider is dragged (the candidates
     // follow on release, with a full job).
     bool targetOnly = false;
+    // Beyond the paper: the GA ranks by each candidate's rendered mean ΔE00 from the target
+    // (at kImageFitnessSize) instead of the preset's genotype metric.
+    bool imageFitness = false;
 };
 
 struct CandidateResult {
@@ -68,6 +71,7 @@ public:
     static constexpr int kTargetSize = 320;
     static constexpr std::size_t kRenderCacheSize = 128;  // tiles (~50 MB)
     static constexpr int kWorkerNiceness = 5;
+    static constexpr int kImageFitnessSize = 64;  // as `evolve --fitness image`
 
     // Tiles are images on `device` (the window's, which must outlive the worker), rendered
     // there on `backend` (with the CPU, uploaded).
@@ -86,7 +90,8 @@ public:
 
 private:
     void run(const gpu::Device& device, RenderBackend backend);
-    void evolve(const EvolutionJob& job, std::uint64_t jobId, CandidateRenderCache& renderCache);
+    void evolve(const EvolutionJob& job, std::uint64_t jobId, CandidateRenderCache& renderCache,
+                const gpu::RendererRequest& fitnessRenderer);
     bool cancelled(std::uint64_t jobId) const;
     void publish(EvolutionUpdate update);
     void publishFailure(std::uint64_t jobId, const std::string& what);

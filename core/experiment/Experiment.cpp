@@ -8,43 +8,83 @@
 #include "evolve/GeneticAlgorithm.h"
 #include "experiment/RunSeeds.h"
 #include "material/ParallelFor.h"
+#include "variants/ImageFitness.h"
 
 namespace matevo {
 
+namespace {
+
+// One run of the image metric: the GA scored by rendered mean ΔE00 to the target.
+Result<Individual> imageFitnessRun(const ExperimentTarget& target, const GaSettings& ga,
+                                   const RenderGenomes& fitnessRender) {
+    auto cache = GenomeRenderCache::create(fitnessRender, target.genome);
+    if (!cache) return cache.error();
+    ImageSpaceFitness fitness(std::move(cache).value());
+    GeneticAlgorithm algorithm(target.family, target.genome, ga, fitness.evaluator());
+    algorithm.run();
+    if (fitness.failure()) return *fitness.failure();
+    return algorithm.rankedPopulation().front();
+}
+
+}  // namespace
+
 GaSettings runGaSettings(const ExperimentTarget& target, const ExperimentSettings& settings,
-                         DistanceMetric metric, int run) {
+                         ExperimentMetric metric, int run) {
     GaSettings ga = target.ga;
     ga.population = settings.size.population;
     ga.generations = settings.size.generations;
-    ga.metric = metric;
+    if (auto genotype = genotypeMetric(metric)) ga.metric = *genotype;
     ga.seed = runSeed(settings.seed, run, settings.runsPerSeed);
     return ga;
 }
 
-std::vector<RunRecord> evolveRuns(const ExperimentTarget& target,
-                                  const ExperimentSettings& settings,
-                                  const ExperimentProgress& progress) {
+Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,
+                                          const ExperimentSettings& settings,
+                                          const ExperimentProgress& progress,
+                                          const RenderGenomes& fitnessRender) {
     const int runCount = settings.runs * int(settings.metrics.size());
     std::vector<RunRecord> records(std::size_t(std::max(runCount, 0)));
     std::vector<char> finished(records.size(), 0);
+    auto record = [&](int chunk, const GaSettings& ga, const Individual& best) {
+        const ExperimentMetric metric = settings.metrics[std::size_t(chunk / settings.runs)];
+        records[std::size_t(chunk)] = {target.name,  metric, settings.size, ga.seed,
+                                       chunk % settings.runs, best.fitness, 0.0, best.genome};
+        finished[std::size_t(chunk)] = 1;
+    };
+    auto gaSettingsOf = [&](int chunk) {
+        return runGaSettings(target, settings, settings.metrics[std::size_t(chunk / settings.runs)],
+                             chunk % settings.runs);
+    };
+    std::vector<int> imageRuns;
+    std::vector<int> genotypeRuns;
+    for (int chunk = 0; chunk < runCount; ++chunk)
+        (genotypeMetric(settings.metrics[std::size_t(chunk / settings.runs)]) ? genotypeRuns
+                                                                              : imageRuns)
+            .push_back(chunk);
+    if (!imageRuns.empty() && !fitnessRender)
+        return Error{"experiment: the image metric needs a renderer"};
     // One chunk per run: a run is a whole GA, far heavier than the scheduling.
     parallelForChunks(
-        runCount,
-        [&](int chunk) {
+        int(genotypeRuns.size()),
+        [&](int index) {
             if (stopRequested()) return;  // runs started are finished; the rest are skipped
-            const DistanceMetric metric = settings.metrics[std::size_t(chunk / settings.runs)];
-            const int run = chunk % settings.runs;
-            const GaSettings ga = runGaSettings(target, settings, metric, run);
+            const int chunk = genotypeRuns[std::size_t(index)];
+            const GaSettings ga = gaSettingsOf(chunk);
             GeneticAlgorithm algorithm(target.family, target.genome, ga);
             algorithm.run();
-            const Individual best = algorithm.rankedPopulation().front();
-            records[std::size_t(chunk)] = {target.name, metric,       settings.size, ga.seed,
-                                           run,         best.fitness, 0.0,           best.genome};
-            finished[std::size_t(chunk)] = 1;
+            record(chunk, ga, algorithm.rankedPopulation().front());
         },
         [&](int done) {
             if (progress) progress(done, runCount);
         });
+    // The renderer parallelises each generation's batch itself.
+    for (std::size_t index = 0; index < imageRuns.size() && !stopRequested(); ++index) {
+        const GaSettings ga = gaSettingsOf(imageRuns[index]);
+        auto best = imageFitnessRun(target, ga, fitnessRender);
+        if (!best) return best.error();
+        record(imageRuns[index], ga, *best);
+        if (progress) progress(int(genotypeRuns.size() + index + 1), runCount);
+    }
     if (stopRequested()) {
         std::size_t kept = 0;
         for (std::size_t i = 0; i < records.size(); ++i)
@@ -96,19 +136,22 @@ Result<ScoredRuns> scoreRuns(std::span<RunRecord> records, const Image& targetIm
 Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
                                              const ExperimentSettings& settings,
                                              const RenderGenomes& render,
-                                             const ExperimentProgress& progress) {
+                                             const ExperimentProgress& progress,
+                                             const RenderGenomes& fitnessRender) {
     auto targetImages = render(std::span<const Genome>(&target.genome, 1));
     if (!targetImages) return targetImages.error();
     if (targetImages->size() != 1)
         return Error{"experiment: the renderer returned no image for the target"};
 
     const int total = 2 * settings.runs * int(settings.metrics.size());
-    std::vector<RunRecord> records = evolveRuns(target, settings, [&](int done, int) {
-        if (progress) progress(done, total);
-    });
-    const int evolved = int(records.size());
+    auto evolved = evolveRuns(
+        target, settings, [&](int done, int) { if (progress) progress(done, total); },
+        fitnessRender);
+    if (!evolved) return evolved.error();
+    std::vector<RunRecord> records = std::move(evolved).value();
+    const int evolvedCount = int(records.size());
     auto scored = scoreRuns(records, targetImages->front(), render, 64, [&](int done, int) {
-        if (progress) progress(evolved + done, total);
+        if (progress) progress(evolvedCount + done, total);
     });
     if (!scored) return scored.error();
     records.resize(scored->count);

@@ -45,17 +45,21 @@ struct ExperimentTarget {
     GaSettings ga;
 };
 
-// The GA settings of one run.
+// The GA settings of one run (the image metric keeps the target's genotype metric, unused).
 GaSettings runGaSettings(const ExperimentTarget& target, const ExperimentSettings& settings,
-                         DistanceMetric metric, int run);
+                         ExperimentMetric metric, int run);
 
 // Every metric's runs, metric by metric in settings order, each run's best individual and
-// fitness; meanDeltaE00 is left 0. Runs in parallel on up to hardware_concurrency() threads.
-// After a stop request (SIGINT, SIGTERM) the runs not yet started are left out, and the
-// experiment returns only the runs that were completed and scored.
-std::vector<RunRecord> evolveRuns(const ExperimentTarget& target,
-                                  const ExperimentSettings& settings,
-                                  const ExperimentProgress& progress = {});
+// fitness; meanDeltaE00 is left 0. Runs of a genotype metric go in parallel on up to
+// hardware_concurrency() threads; runs of the image metric one after another, each generation
+// rendered in one batch by `fitnessRender` (at settings.fitnessSize; needed only for the image
+// metric), on the same seeds. After a stop request (SIGINT, SIGTERM) the runs not yet started
+// are left out, and the experiment returns only the runs that were completed and scored.
+// An Error when the image metric is asked for without a renderer or a render failed.
+Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,
+                                          const ExperimentSettings& settings,
+                                          const ExperimentProgress& progress = {},
+                                          const RenderGenomes& fitnessRender = {});
 
 // How many records, from the first, scoreRuns scored: all of them unless a stop was requested.
 struct ScoredRuns {
@@ -70,9 +74,11 @@ Result<ScoredRuns> scoreRuns(std::span<RunRecord> records, const Image& targetIm
                              const RenderedRun& onRendered = {});
 
 // Renders the target, evolves and scores every run. progress counts GA runs, then scored runs.
+// `fitnessRender` as for evolveRuns.
 Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
                                              const ExperimentSettings& settings,
                                              const RenderGenomes& render,
-                                             const ExperimentProgress& progress = {});
+                                             const ExperimentProgress& progress = {},
+                                             const RenderGenomes& fitnessRender = {});
 
 }  // namespace matevo

@@ -26,7 +26,7 @@ std::string subtitle(const RunSummary& summary) {
     return text;
 }
 
-std::vector<double> valuesOf(std::span<const RunRecord> records, DistanceMetric metric) {
+std::vector<double> valuesOf(std::span<const RunRecord> records, ExperimentMetric metric) {
     std::vector<double> values;
     for (const auto& record : records)
         if (record.metric == metric) values.push_back(record.meanDeltaE00);

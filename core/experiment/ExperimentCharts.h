@@ -16,7 +16,7 @@ namespace matevo {
 std::vector<ChartBand> perceptualChartBands();
 
 struct MetricChart {
-    DistanceMetric metric = DistanceMetric::Euclidean;
+    ExperimentMetric metric = ExperimentMetric::Euclidean;
     Image image;
 };
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "evolve/GaSettings.h"
+#include "experiment/ExperimentMetric.h"
 #include "genome/MaterialFamily.h"
 
 namespace matevo {
@@ -20,8 +21,9 @@ struct ExperimentSettings {
     int runs = 36;
     int runsPerSeed = 9;
     GaSize size;
-    std::vector<DistanceMetric> metrics = {DistanceMetric::Chebyshev, DistanceMetric::Euclidean,
-                                           DistanceMetric::Manhattan};
+    std::vector<ExperimentMetric> metrics = paperMetrics();
+    // Image side the image-space fitness renders at (ExperimentMetric::Image only).
+    int fitnessSize = 64;
     std::uint64_t seed = 1;  // the first block's seed (see RunSeeds.h)
 
     bool operator==(const ExperimentSettings&) const = default;

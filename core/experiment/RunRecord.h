@@ -5,6 +5,7 @@
 #include <string>
 
 #include "evolve/GaSettings.h"
+#include "experiment/ExperimentMetric.h"
 #include "experiment/ExperimentSettings.h"
 #include "genome/Genome.h"
 
@@ -12,11 +13,13 @@ namespace matevo {
 
 struct RunRecord {
     std::string preset;
-    DistanceMetric metric = DistanceMetric::Euclidean;
+    ExperimentMetric metric = ExperimentMetric::Euclidean;
     GaSize size;
     std::uint64_t seed = 0;  // the GA seed of this run (RunSeeds.h)
     int run = 0;             // 0-based index within its metric
-    double fitness = 0;      // genotype distance of the best individual (lower is fitter)
+    // The best individual's fitness (lower is fitter): its genotype distance, or with the
+    // image metric its mean ΔE00 at the fitness resolution.
+    double fitness = 0;
     double meanDeltaE00 = 0;
     Genome genome;
 

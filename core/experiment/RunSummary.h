@@ -15,7 +15,7 @@ namespace matevo {
 
 struct RunSummary {
     std::string preset;
-    DistanceMetric metric = DistanceMetric::Euclidean;
+    ExperimentMetric metric = ExperimentMetric::Euclidean;
     GaSize size;
     int runs = 0;
     double median = 0;  // of the runs' mean ΔE00; the mean of the middle two for an even count

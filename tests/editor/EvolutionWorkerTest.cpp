@@ -120,5 +120,35 @@ TEST(EvolutionWorker, ATargetOnlyJobRendersTheTargetAndRunsNoGa) {
     test::expectNoValidationMessages(*context);
 }
 
+// The GA view's image-space fitness (beyond the paper) ranks the grid by what is seen: each
+// candidate's fitness is its rendered mean ΔE00 (at 64 px; the tile's is at 128 px), best
+// first; on the same seed the genotype metric's best candidate lies farther from the target.
+TEST(EvolutionWorker, ImageFitnessRanksTheGridByRenderedDeltaE00) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    const std::string file = MATEVO_SOURCE_DIR "/presets/validation_metal_depth.json";
+    auto loaded = loadPreset(file);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    EvolutionJob job{loaded->preset, file};
+    job.preset.ga.population = 24;
+    job.preset.ga.generations = 3;
+    const auto genotype = finalUpdate(context->device, RenderBackend::Gpu, job);
+    job.imageFitness = true;
+    const auto image = finalUpdate(context->device, RenderBackend::Gpu, job);
+    ASSERT_TRUE(genotype && image);
+    EXPECT_EQ(image->error, "");
+    ASSERT_GE(image->candidates.size(), 3u);
+    double smallest = 1e9;
+    for (const CandidateResult& candidate : image->candidates) {
+        EXPECT_NEAR(candidate.individual.fitness, candidate.deltaE.mean, 0.5);
+        smallest = std::min(smallest, candidate.deltaE.mean);
+    }
+    EXPECT_LT(image->candidates.front().deltaE.mean, smallest + 0.5) << "best first";
+    EXPECT_LT(image->candidates.front().deltaE.mean,
+              genotype->candidates.front().deltaE.mean)
+        << "the choice changes the outcome";
+    test::expectNoValidationMessages(*context);
+}
+
 }  // namespace
 }  // namespace matevo::editor

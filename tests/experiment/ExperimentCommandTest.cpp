@@ -88,6 +88,26 @@ TEST_F(ExperimentCommand, WritesOneCsvRowPerRunAndOneHistogramPerMetric) {
         EXPECT_NE(result.out.find(metric), std::string::npos) << result.out;
 }
 
+// The image metric, beyond the paper: the runs' GA scored by rendered mean ΔE00; the CSV's
+// fitness is that mean at the fitness size, so with the fitness size equal to the render size
+// it is the run's mean_de00.
+TEST_F(ExperimentCommand, TheImageMetricIsSelectableAndItsFitnessIsTheRenderedDeltaE00) {
+    const auto result = runSmall(out_, "--metric image --fitness-size 24");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    const auto rows = lines(readFile(out_ / "results.csv"));
+    ASSERT_EQ(rows.size(), 1u + 3u);
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        std::vector<std::string> fields;
+        std::stringstream row(rows[i]);
+        for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+        ASSERT_GE(fields.size(), 8u) << rows[i];
+        EXPECT_EQ(fields[1], "image") << rows[i];
+        EXPECT_NEAR(std::stod(fields[6]), std::stod(fields[7]), 1e-6) << rows[i];
+    }
+    EXPECT_TRUE(fs::exists(out_ / "validation_metal_p6_g2_image.png"));
+    EXPECT_NE(result.out.find("image"), std::string::npos) << result.out;
+}
+
 TEST_F(ExperimentCommand, SameSeedGivesTheSameCsvAndAnotherSeedADifferentOne) {
     ASSERT_EQ(runSmall(out_ / "a", "--seed 11").exitCode, 0);
     ASSERT_EQ(runSmall(out_ / "b", "--seed 11").exitCode, 0);
@@ -171,6 +191,7 @@ TEST_F(ExperimentCommand, BadInputExitsWithStatusTwoAndOneLineNamingTheProblem) 
         {"--runs 0", "--runs"}, {"--metric cosine", "--metric"}, {"--backend abacus", "--backend"},
         {"--sweep", "--sweep"},  // with --population from runSmall
         {"--bogus", "--bogus"}, {"--scene studio", "--scene"},
+        {"--fitness-size 16", "--fitness-size"},  // without --metric image
     };
     for (const auto& [arguments, named] : cases) {
         const auto result = runSmall(out_, arguments);

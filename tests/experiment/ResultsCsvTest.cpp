@@ -29,7 +29,7 @@ double parseDouble(const std::string& text) {
 RunRecord sampleRecord() {
     RunRecord record;
     record.preset = "validation metal";
-    record.metric = DistanceMetric::Manhattan;
+    record.metric = ExperimentMetric::Manhattan;
     record.size = {100, 10};
     record.seed = 0x9e3779b97f4a7c15ULL;
     record.run = 7;

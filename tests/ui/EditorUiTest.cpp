@@ -59,6 +59,16 @@ TEST_F(EditorUiTest, ClickingAMetricSwitchesIt) {
     EXPECT_EQ(ui.state().preset.ga.metric, DistanceMetric::Chebyshev);
     ui.undo();
     EXPECT_EQ(ui.state().preset.ga.metric, DistanceMetric::Manhattan);
+
+    // The image-space fitness beside them: a view choice, off by default, not a preset edit.
+    EXPECT_FALSE(ui.state().imageFitness);
+    const Preset before = ui.state().preset;
+    imgui.click(locate("Controls", "Image ΔE00"), draw);
+    EXPECT_TRUE(ui.state().imageFitness);
+    EXPECT_EQ(ui.state().preset, before);
+    imgui.click(locate("Controls", "Euclidean"), draw);
+    EXPECT_FALSE(ui.state().imageFitness);
+    EXPECT_EQ(ui.state().preset.ga.metric, DistanceMetric::Euclidean);
 }
 
 TEST_F(EditorUiTest, TargetSlidersStayInsideTable2) {
