@@ -46,7 +46,8 @@ Result<GpuImage> GpuImage::create(const Device& device, const GpuImageSpec& spec
     }
     image.memory_ = UniqueMemory(vkDevice, memory);
     image.image_ = UniqueImage(vkDevice, handle);
-    vkBindImageMemory(vkDevice, handle, memory, 0);
+    if (VkResult result = vkBindImageMemory(vkDevice, handle, memory, 0); result != VK_SUCCESS)
+        return vulkanError("binding image memory", result);
 
     VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     viewInfo.image = handle;
