@@ -14,7 +14,6 @@ namespace {
 // Drag ranges for interactive use. Presets hold more (kMaxPopulation, kMaxGenerations), which
 // Ctrl+click typing reaches: sliders do not clamp typed values to their drag range.
 constexpr int kSliderMaxPopulation = 400;
-constexpr int kSliderMaxGenerations = 100;
 constexpr float kMaxWeight = 5.0f;
 
 // Keeps `value` in [low, high]; when it was outside, says so.
@@ -40,12 +39,12 @@ void drawMetric(DistanceMetric& metric) {
 
 // Two columns with the name inside each slider. Only the family's active chromosomes: the
 // others play no part in its materials, so their weights change nothing.
-void drawWeights(std::array<double, kChromosomeCount>& weights, const MaterialFamily& family,
+void drawWeights(std::array<double, kPaperChromosomeCount>& weights, const MaterialFamily& family,
                  StatusLog& status) {
     const FamilyRules rules = familyRules(family);
     if (!ImGui::BeginTable("weights", 2)) return;
     int unused = 0;
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) {
         if (!rules.ranges[i].active) {
             ++unused;
             continue;

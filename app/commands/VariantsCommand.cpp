@@ -16,15 +16,14 @@
 #include "gpu/PopulationRendererFactory.h"
 #include "io/OutputFolder.h"
 #include "variants/VariantFiles.h"
-#include "variants/VariantSearch.h"
-#include "variants/VariantSet.h"
+#include "variants/FindVariants.h"
 
 namespace matevo::cli {
 namespace {
 
 constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
-    "                       [--size N] [--fitness-size N] [--max-evaluations N]\n"
+    "                       [--size N] [--fitness-size N] [--max-evaluations N] [--hue]\n"
     "                       [--backend gpu|cpu] [--out DIR] [--force] [--heatmap de00|flip]\n"
     "                       [--json]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
@@ -35,6 +34,8 @@ constexpr const char* kHelp =
     "  --size N             output image side in pixels, where the set is checked (default 256)\n"
     "  --fitness-size N     image side the search renders at (default 64)\n"
     "  --max-evaluations N  fitness renders before giving up (default 1500)\n"
+    "  --hue                hue variety, beyond the paper: evolve the conductor base's kappa\n"
+    "                       too (RGB, each in [1, 4]), so variants may differ in colour\n"
     "  --backend B          gpu (default; falls back to the CPU when no Vulkan device is usable)\n"
     "                       or cpu\n"
     "  --out DIR            write DIR/report.json, DIR/target.png, DIR/contact_sheet.png and per\n"
@@ -81,6 +82,7 @@ int runVariants(CommandLine& args) {
         settings.maxEvaluations = int(*budget);
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    if (args.flag("--hue")) request.kappaGenes = KappaGenes::On;
     const auto outDir = args.option("--out");
     const std::string heatmapName = args.option("--heatmap").value_or("de00");
     const auto heatmapMetric = parseImageMetric(heatmapName);
@@ -92,6 +94,9 @@ int runVariants(CommandLine& args) {
     args.onlyWith("--force", "--out");
     args.finish();
 
+    if (request.kappaGenes == KappaGenes::On && choice.preset.family.base != Base::Conductor)
+        throw UsageError("--hue: the preset's base is a dielectric; hue variety evolves a "
+                         "conductor's kappa");
     installStopSignalHandlers();
     // Refused before the search: a folder with other files, or one we cannot write beside,
     // and work past the memory limit.
@@ -113,30 +118,26 @@ int runVariants(CommandLine& args) {
         return asStoredInPng(
             renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, side));
     };
-    auto search =
-        VariantSearch::start(preset.family, preset.target, request, settings, renderAt(fitnessSize));
-    if (!search) throw std::runtime_error(search.error().message);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
-    while (!(*search)->finished() && !stopRequested()) {
-        if (auto stepped = (*search)->step(); !stepped)
-            throw std::runtime_error(stepped.error().message);
-        if (showProgress) {
-            const auto& progress = (*search)->progress();
+    VariantSearchHooks hooks;
+    hooks.stop = [] { return stopRequested() != 0; };
+    if (showProgress)
+        hooks.onGeneration = [](const VariantSearchProgress& progress) {
             std::fprintf(stderr, "\r%s%zu evaluations, %zu in the archive",
                          messagePrefix().c_str(), progress.evaluations, progress.archived);
-        }
-    }
+        };
+    auto found = findVariants({preset.target, preset.family, preset.baseKappa}, request, settings,
+                              renderAt(fitnessSize), renderAt(size), hooks);
     if (showProgress) std::fputc('\n', stderr);
+    if (!found) throw std::runtime_error(found.error().message);
+    const VariantSet& set = found->set;
 
-    auto set = chooseVariantSet((*search)->archive(), request, preset.target, renderAt(size));
-    if (!set) throw std::runtime_error(set.error().message);
-
-    const VariantSearchProgress& progress = (*search)->progress();
+    const VariantSearchProgress& progress = found->progress;
     VariantRun run{request,           size, fitnessSize, progress.evaluations, progress.archived,
                    progress.closestDeltaE, 0.0};
     run.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    nlohmann::json report = variantReport(preset, run, *set);
+    nlohmann::json report = variantReport(preset, run, set);
     const int signal = stopRequested();
     if (signal) {
         report["partial"] = true;
@@ -146,7 +147,7 @@ int runVariants(CommandLine& args) {
         if (auto written =
                 writeVariantFiles(
                 output->staging(),
-                materialFromPreset(preset, choice.file, preset.target, preset.name), *set,
+                materialFromPreset(preset, choice.file, preset.target, preset.name), set,
                 report, *heatmapMetric);
             !written)
             throw UsageError("--out: " + output->userFacing(written.error().message));
@@ -154,13 +155,13 @@ int runVariants(CommandLine& args) {
             throw UsageError("--out: " + committed.error().message);
     }
     if (asJson) std::printf("%s\n", report.dump(2).c_str());
-    const std::string summary = variantSummary(run, *set);
+    const std::string summary = variantSummary(run, set);
     if (signal) {
         printMessage("stopped by " + signalName(signal) + ": " + summary +
                      (outDir ? "; what was found is written, marked partial" : ""));
         return stoppedExitStatus(signal);
     }
-    if (!fulfils(*set, request)) {
+    if (!fulfils(set, request)) {
         printMessage("request not met: " + summary + (outDir ? "; what was found is written" : ""));
         return exitCode(ExitStatus::RequestNotMet);
     }

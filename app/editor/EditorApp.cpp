@@ -381,7 +381,7 @@ void EditorApp::applyEvolutionResults() {
         failure_ = shown.error().message;
     if (runDone)
         if (auto advice = ui::adviceForFarCandidates(state.evolution, state.preset.ga))
-            state.status.post(*advice, ui::StatusKind::Warning);
+            state.status.post(advice->text, ui::StatusKind::Warning);
 }
 
 void EditorApp::applyCompareMetricsResults() {
@@ -425,6 +425,7 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
     request.band = {double(view.low), double(view.high)};
     request.minApart = double(view.minApart);
     request.seed = std::uint64_t(view.seed);
+    if (view.hueVariety) request.kappaGenes = KappaGenes::On;
     if (actions.run) {
         // The kept bin is where a set starts: its materials join as they are.
         if (view.startFromKept) request.keep = keptGenomesOfFamily(state.preset);

@@ -12,6 +12,7 @@
 // thread count.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <unordered_map>
@@ -23,6 +24,7 @@
 #include "evolve/RenderGenomes.h"
 #include "genome/Genome.h"
 #include "genome/MaterialFamily.h"
+#include "material/MaterialInstance.h"
 #include "variants/DeltaEBand.h"
 #include "variants/GenomeRenderCache.h"
 #include "variants/VariantArchive.h"
@@ -39,6 +41,10 @@ struct VariantRequest {
     std::vector<Genome> keep;
     // Variants the user discarded: never offered again.
     std::vector<Genome> exclude;
+    // Hue variety, beyond the paper: the conductor base's kappa is evolved too (three more
+    // genes, in FamilyRules' bounds, under the same operators), so variants may differ in
+    // colour. Off, every variant has the preset's kappa.
+    KappaGenes kappaGenes = KappaGenes::Off;
 };
 
 // How the search runs; the defaults are chosen by measurement (docs/variants.md).
@@ -66,12 +72,21 @@ struct VariantSearchProgress {
     double closestDeltaE = 0;
 };
 
+// A caller's say in run(): how it stops the search and follows its progress.
+struct VariantSearchHooks {
+    // Asked before every generation; true ends the search there.
+    std::function<bool()> stop;
+    // Told after every generation.
+    std::function<void(const VariantSearchProgress&)> onGeneration;
+};
+
 class VariantSearch {
 public:
     // Renders the target and the kept variants, then the initial population. The render
-    // function's images all have one size (the fitness resolution).
-    static Result<std::unique_ptr<VariantSearch>> start(const MaterialFamily& family,
-                                                        const Genome& target,
+    // function's images all have one size (the fitness resolution) and honour the kappa genes
+    // (materialOf). With hue variety the population starts from the target's kappa, brought
+    // into the genes' bounds.
+    static Result<std::unique_ptr<VariantSearch>> start(const MaterialInstance& target,
                                                         const VariantRequest& request,
                                                         const VariantSearchSettings& settings,
                                                         RenderGenomes render);
@@ -80,8 +95,8 @@ public:
     Status step();
     // Enough archive members, or the evaluations are spent.
     bool finished() const;
-    // step() until finished().
-    Status run();
+    // step() until finished() or hooks.stop(); the one loop of every caller (FindVariants.h).
+    Status run(const VariantSearchHooks& hooks = {});
 
     const VariantArchive& archive() const { return archive_; }
     const VariantSearchProgress& progress() const { return progress_; }
@@ -100,8 +115,8 @@ private:
         std::uint64_t checkedUpTo = 0;  // every member with an id up to this one was measured
     };
 
-    VariantSearch(const MaterialFamily& family, const VariantRequest& request,
-                  const VariantSearchSettings& settings, GenomeRenderCache cache);
+    VariantSearch(const VariantRequest& request, const VariantSearchSettings& settings,
+                  GenomeRenderCache cache);
     void score(std::span<const Genome> genomes, std::span<double> fitness);
     double novelty(const Genome& genome, const LabImage& lab);
     // Offspring already rendered (or twice in one generation) are mutated again until new, so
