@@ -136,7 +136,7 @@ int runVariants(CommandLine& args) {
                    progress.closestDeltaE, 0.0};
     run.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    nlohmann::json report = variantReport(preset, run, *set);
+    nlohmann::ordered_json report = variantReport(preset, run, *set);
     const int signal = stopRequested();
     if (signal) {
         report["partial"] = true;

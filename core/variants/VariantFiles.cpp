@@ -63,9 +63,10 @@ std::string variantStem(std::size_t index) {
     return name;
 }
 
-nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const VariantSet& set) {
+nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
+                                     const VariantSet& set) {
     const std::vector<double> nearest = set.nearestSibling();
-    nlohmann::json variants = nlohmann::json::array();
+    nlohmann::ordered_json variants = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         const Variant& variant = set.variants[i];
         variants.push_back({{"index", i},
@@ -159,7 +160,7 @@ MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant,
 }
 
 Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
-                         const VariantSet& set, const nlohmann::json& report,
+                         const VariantSet& set, const nlohmann::ordered_json& report,
                          ImageMetric heatmapMetric) {
     const std::filesystem::path folder = dir / "variants";
     if (auto created = createFolder(folder); !created) return created;

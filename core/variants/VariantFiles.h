@@ -45,7 +45,8 @@ std::string variantStem(std::size_t index);
 // The report: request, per variant (file, ΔE00 to the target, to its nearest sibling, genome),
 // the pairwise ΔE00 matrix, the smallest pairwise distance, evaluations, wall time, seed, and
 // whether the request was met with a one-line summary.
-nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const VariantSet& set);
+nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
+                                     const VariantSet& set);
 
 // "12 of 12 variants in band 2-5, at least 2 apart (smallest pairwise 2.31), 412 evaluations"
 // or, when short, what was achieved.
@@ -63,7 +64,7 @@ MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant,
 // Writes every file listed above (atomically, each one), creating the folders; an Error names
 // the file that could not be written. Heatmaps of `heatmapMetric`. `target` as for variantMaterial.
 Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
-                         const VariantSet& set, const nlohmann::json& report,
+                         const VariantSet& set, const nlohmann::ordered_json& report,
                          ImageMetric heatmapMetric = ImageMetric::DeltaE00);
 
 }  // namespace matevo
