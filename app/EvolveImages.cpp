@@ -70,7 +70,7 @@ std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
         const std::size_t count = std::min<std::size_t>(kEvolveImageBatch, ranked.size() - first);
         std::vector<MaterialInstance> candidates;
         for (std::size_t i = first; i < first + count; ++i)
-            candidates.push_back({ranked[i].genome, preset.family, preset.baseKappa});
+            candidates.push_back(materialOf(ranked[i].genome, preset.family, preset.baseKappa));
         auto evaluation = renderer->evaluate(target, candidates, preset.scene, size, options);
         if (!evaluation) throw std::runtime_error(evaluation.error().message);
         if (first == 0) {

@@ -4,6 +4,7 @@
 #include "io/GenomeJson.h"
 #include "io/MaterialFile.h"
 #include "io/PresetFieldsJson.h"
+#include "material/MaterialInstance.h"
 
 namespace matevo::cli {
 
@@ -12,6 +13,7 @@ namespace {
 nlohmann::ordered_json configJson(const Preset& preset) {
     nlohmann::ordered_json config = {{"preset", preset.name}, {"family", describe(preset.family)}};
     config.update(gaSettingsToJson(preset.ga));
+    config["hue_variety"] = preset.ga.kappaGenes == KappaGenes::On;
     return config;
 }
 
@@ -28,9 +30,14 @@ nlohmann::ordered_json evolveReport(const Preset& preset, const std::filesystem:
                                {"worst", stats.worst},
                                {"diversity", stats.diversity}});
     nlohmann::ordered_json population = nlohmann::ordered_json::array();
-    for (const auto& individual : ranked)
+    for (const auto& individual : ranked) {
+        const MaterialInstance material =
+            materialOf(individual.genome, preset.family, preset.baseKappa);
         population.push_back(
-            {{"genome", genomeToJson(individual.genome)}, {"fitness", individual.fitness}});
+            {{"genome", genomeToJson(material.genome)}, {"fitness", individual.fitness}});
+        // Hue variety: the individual's own kappa.
+        if (individual.genome.carriesKappa()) population.back()["base_kappa"] = material.baseKappa;
+    }
     nlohmann::ordered_json report = {
         {"target", genomeToJson(preset.target)},
         {"config", configJson(preset)},
@@ -76,7 +83,9 @@ void printEvolveSummary(const Preset& preset, const GeneticAlgorithm& ga,
                      stats.mean, stats.worst, stats.diversity);
     if (ranked.empty()) return;
     std::fprintf(out, "best (fitness %.6f):", ranked.front().fitness);
-    for (std::size_t i = 0; i < kChromosomeCount; ++i)
+    const std::size_t shown =
+        ranked.front().genome.carriesKappa() ? kChromosomeCount : kPaperChromosomeCount;
+    for (std::size_t i = 0; i < shown; ++i)
         std::fprintf(out, " %s=%.4g", std::string(chromosomeName(i)).c_str(),
                      ranked.front().genome[i]);
     std::fputc('\n', out);

@@ -48,8 +48,8 @@ Outcome measure(const Preset& preset, const SceneTextures& textures, bool novelt
         VariantSearchSettings settings;
         settings.novelty = novelty;
         const auto start = std::chrono::steady_clock::now();
-        auto search = VariantSearch::start(preset.family, preset.target, request, settings,
-                                           renderAt(kFitnessSize));
+        auto search = VariantSearch::start({preset.target, preset.family, preset.baseKappa},
+                                           request, settings, renderAt(kFitnessSize));
         if (!search || !(*search)->run()) throw std::runtime_error("variant search failed");
         auto set = chooseVariantSet((*search)->archive(), request, preset.target,
                                     renderAt(kOutputSize));

@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """The variants goal, measured as a user meets it (docs/variants.md, README).
 
-For each validation preset, in one run:
-- time: wall time of the whole `matevo variants --count 12 --band 2,5 --min-apart 2` process
-  (median of --repeats runs), and the report's own wall_time_s;
+For each validation preset, in one run, without and with hue variety (`--hue`):
+- time: wall time and CPU time (user + system) of the whole `matevo variants --count 12
+  --band 2,5 --min-apart 2` process (medians of --repeats runs), the report's own wall_time_s,
+  and the load average when the preset's runs started (the machine is shared: on two cores a
+  process gets about 2 / load of them once the load passes 2);
 - success: every delivered variant rendered again on its own, from its variant_NNN.json, at
   256^2 on the CPU reference renderer (`matevo render --backend cpu`, independent of the search's
   renders), and measured with scikit-image's CIEDE2000 (independent of matevo's) over the pixels
@@ -18,6 +20,7 @@ import csv
 import json
 import math
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -47,20 +50,33 @@ def mean_de00(a, b):
     return float(deltaE_ciede2000(lab_a, lab_b)[both].mean())
 
 
-def measure_preset(matevo, root, preset, repeats, work):
+def children_cpu_seconds():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def measure_preset(matevo, root, preset, hue, repeats, work):
     preset_file = os.path.join(root, "presets", preset + ".json")
-    times, reports = [], []
+    name = preset + ("_hue" if hue else "")
+    load_at_start = os.getloadavg()[0]
+    times, cpu_times, reports = [], [], []
     for repeat in range(repeats):
-        out = os.path.join(work, f"{preset}_{repeat}")
-        start = time.perf_counter()
-        run([matevo, "variants", "--preset", preset_file, "--count", str(COUNT), "--band",
-             f"{LOW},{HIGH}", "--min-apart", str(APART), "--seed", "1", "--out", out])
+        out = os.path.join(work, f"{name}_{repeat}")
+        start, cpu_start = time.perf_counter(), children_cpu_seconds()
+        # Exit 3 (request not met) still writes the set: measure what was delivered.
+        result = subprocess.run(
+            [matevo, "variants", "--preset", preset_file, "--count", str(COUNT), "--band",
+             f"{LOW},{HIGH}", "--min-apart", str(APART), "--seed", "1", "--out", out]
+            + (["--hue"] if hue else []), capture_output=True, text=True)
+        if result.returncode not in (0, 3):
+            raise RuntimeError(result.stderr)
         times.append(time.perf_counter() - start)
+        cpu_times.append(children_cpu_seconds() - cpu_start)
         with open(os.path.join(out, "report.json")) as file:
             reports.append(json.load(file))
-    report, out = reports[0], os.path.join(work, f"{preset}_0")
+    report, out = reports[0], os.path.join(work, f"{name}_0")
 
-    independent = os.path.join(work, f"{preset}_independent")
+    independent = os.path.join(work, f"{name}_independent")
     os.makedirs(independent)
     target_png = os.path.join(independent, "target.png")
     run([matevo, "render", "--preset", preset_file, "--size", "256", "--backend", "cpu",
@@ -79,7 +95,7 @@ def measure_preset(matevo, root, preset, repeats, work):
 
     evaluations = report["evaluations"]
     generations = max(1, math.ceil(evaluations / 50) - 1)
-    experiment_dir = os.path.join(work, f"{preset}_paper")
+    experiment_dir = os.path.join(work, f"{name}_paper")
     run([matevo, "experiment", "--preset", preset_file, "--runs", "36", "--population", "50",
          "--generations", str(generations), "--metric", "euclidean", "--out", experiment_dir])
     with open(os.path.join(experiment_dir, "results.csv")) as file:
@@ -87,10 +103,13 @@ def measure_preset(matevo, root, preset, repeats, work):
     paper_in_band = sum(LOW <= value <= HIGH for value in paper)
 
     return {
+        "load_average_at_start": round(load_at_start, 1),
         "process_s_median": statistics.median(times),
+        "process_cpu_s_median": statistics.median(cpu_times),
         "report_wall_time_s_median": statistics.median(r["wall_time_s"] for r in reports),
         "delivered": len(renders),
-        "in_band_share": in_band / COUNT,
+        "met": report["met"],
+        "in_band_share": in_band / len(renders) if renders else 0.0,
         "smallest_pairwise_de00": min(pairwise) if pairwise else 0.0,
         "evaluations": evaluations,
         "paper_population": 50,
@@ -109,7 +128,9 @@ def main():
     results = {}
     with tempfile.TemporaryDirectory(prefix="matevo_variants_bench_") as work:
         for preset in PRESETS:
-            results[preset] = measure_preset(matevo, root, preset, args.repeats, work)
+            for hue in (False, True):
+                results[preset + (" --hue" if hue else "")] = measure_preset(
+                    matevo, root, preset, hue, args.repeats, work)
     json.dump(results, sys.stdout, indent=2)
     print()
 

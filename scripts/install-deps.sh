@@ -12,13 +12,13 @@ packages=(
 )
 # GoogleTest, the validation layer every GPU test runs under, a virtual display and input for
 # the editor test, screenshots, the Python peers the tests and benchmarks compare with,
-# jsonschema for the presets' schema, clang with its sanitizer runtimes for scripts/fuzz.sh, and
-# libxml2 to re-read exported MaterialX.
+# jsonschema for the presets' schema, clang with its sanitizer runtimes for scripts/fuzz.sh,
+# libxml2 to re-read exported MaterialX, and GNU parallel for docs/batch.md's examples.
 test_packages=(
     libgtest-dev vulkan-validationlayers clang libclang-rt-14-dev
     xvfb xauth imagemagick xdotool
     python3-skimage python3-deap python3-numpy python3-jsonschema
-    libxml2-dev
+    libxml2-dev parallel
 )
 tests=0
 case "${1:-}" in

@@ -40,12 +40,12 @@ void drawMetric(DistanceMetric& metric) {
 
 // Two columns with the name inside each slider. Only the family's active chromosomes: the
 // others play no part in its materials, so their weights change nothing.
-void drawWeights(std::array<double, kChromosomeCount>& weights, const MaterialFamily& family,
+void drawWeights(std::array<double, kPaperChromosomeCount>& weights, const MaterialFamily& family,
                  StatusLog& status) {
     const FamilyRules rules = familyRules(family);
     if (!ImGui::BeginTable("weights", 2)) return;
     int unused = 0;
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) {
         if (!rules.ranges[i].active) {
             ++unused;
             continue;

@@ -30,8 +30,10 @@ void drawChromosomeTable(const MaterialFamily& family, const Genome& target,
     ImGui::TableSetupColumn("this");
     ImGui::TableSetupColumn("Δ");
     ImGui::TableHeadersRow();
+    // The family's active chromosomes, and the kappa genes when hue variety is in use.
+    const bool kappaGenes = target.carriesKappa() || candidate.carriesKappa();
     for (std::size_t i = 0; i < kChromosomeCount; ++i) {
-        if (!rules.ranges[i].active) continue;
+        if (!rules.ranges[i].active && !(kappaGenes && i >= kPaperChromosomeCount)) continue;
         const double difference = candidate[i] - target[i];
         ImGui::TableNextRow();
         ImGui::TableNextColumn();

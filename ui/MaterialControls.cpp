@@ -66,7 +66,7 @@ bool drawFamily(MaterialFamily& family) {
 void drawChromosomeSliders(const MaterialFamily& family, Genome& target, StatusLog& status) {
     const FamilyRules rules = familyRules(family);
     int pinned = 0;
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) {
         const ChromosomeRange range = rangeForTarget(rules, target, i);
         // The family has no slot for it (the medium of a family without one): nothing to edit.
         if (!range.active) {

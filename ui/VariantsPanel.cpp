@@ -44,6 +44,11 @@ void drawRequest(VariantsView& view, VariantsActions& actions) {
     ImGui::SetNextItemWidth(90.0f);
     ImGui::InputInt("Seed", &view.seed);
     view.seed = std::max(view.seed, 0);
+    ImGui::SameLine();
+    ImGui::Checkbox("Hue variety", &view.hueVariety);
+    hoverHint("Beyond the paper: evolve the metal's extinction (kappa, RGB, each in [1, 4]) "
+              "too, so variants may differ in colour. Off: every variant keeps the preset's "
+              "kappa");
     if (view.running) {
         char overlay[32];
         std::snprintf(overlay, sizeof overlay, "%.0f%%", view.progress * 100.0f);

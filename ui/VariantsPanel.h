@@ -30,6 +30,8 @@ struct VariantsView {
     int count = 12;
     float minApart = 2.0f;
     int seed = 1;
+    // Beyond the paper: evolve the conductor base's kappa too, so variants may differ in colour.
+    bool hueVariety = false;
     bool running = false;
     float progress = 0.0f;  // of the running search, in [0, 1]
     std::string summary;    // what the last run achieved, or why it failed

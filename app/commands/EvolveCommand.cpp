@@ -33,7 +33,7 @@ constexpr const char* kHelp =
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
     "                     [--size N] [--format png|exr] [--heatmap de00|flip]\n"
     "                     [--backend gpu|cpu] [--force]\n"
-    "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N]\n"
+    "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N] [--hue]\n"
     "                     [--checkpoint FILE] [--resume FILE]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
@@ -69,6 +69,8 @@ constexpr const char* kHelp =
     "  --band LO,HI   with image or flip fitness: how far outside the band of the mean a\n"
     "                 candidate lies (0 inside: the objective is met)\n"
     "  --fitness-size N  image side the image fitness renders at (default 64)\n"
+    "  --hue          with image or flip fitness, beyond the paper: evolve the conductor base's kappa\n"
+    "                 too (RGB, each in [1, 4]), so candidates may differ in colour\n"
     "Progress goes to stderr. Ctrl-C (SIGINT) or SIGTERM stops after the current generation or\n"
     "batch of images and writes what is complete, marked \"partial\" (exit 130 or 143).\n";
 
@@ -86,10 +88,10 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     }
     if (auto weights = args.option("--weights")) {
         auto values = parseNumberList(*weights, "--weights");
-        if (values.size() != kChromosomeCount)
+        if (values.size() != kPaperChromosomeCount)
             throw UsageError("--weights: expected 12 comma-separated numbers, got " +
                              std::to_string(values.size()));
-        for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+        for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) {
             if (values[i] < 0)
                 throw UsageError("--weights: weight of " +
                                  std::string(chromosomeName(i)) + " must not be negative");
@@ -148,9 +150,15 @@ int runEvolve(CommandLine& args) {
         throw UsageError("--heatmap: expected de00 or flip, got '" + heatmapName + "'");
     const auto bandText = args.option("--band");
     const auto fitnessSizeOption = args.integerOption("--fitness-size", 8, 1024);
-    if (!imageFitness && (bandText || fitnessSizeOption))
-        throw UsageError(std::string(bandText ? "--band" : "--fitness-size") +
+    const bool hue = args.flag("--hue");
+    if (!imageFitness && (bandText || fitnessSizeOption || hue))
+        throw UsageError(std::string(bandText ? "--band" : fitnessSizeOption ? "--fitness-size"
+                                                                            : "--hue") +
                          " does nothing without --fitness image or flip");
+    if (hue && choice.preset.family.base != Base::Conductor)
+        throw UsageError("--hue: the preset's base is a dielectric; hue variety evolves a "
+                         "conductor's kappa");
+    if (hue) choice.preset.ga.kappaGenes = KappaGenes::On;
     const DeltaEBand band = parseDeltaEBand(bandText.value_or("0,0"), "--band");
     const int fitnessSize = int(fitnessSizeOption.value_or(64));
     // Images are rendered only for --out and image fitness.

@@ -24,7 +24,7 @@ namespace {
 
 constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
-    "                       [--size N] [--fitness-size N] [--max-evaluations N]\n"
+    "                       [--size N] [--fitness-size N] [--max-evaluations N] [--hue]\n"
     "                       [--backend gpu|cpu] [--out DIR] [--force] [--heatmap de00|flip]\n"
     "                       [--json]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
@@ -35,6 +35,8 @@ constexpr const char* kHelp =
     "  --size N             output image side in pixels, where the set is checked (default 256)\n"
     "  --fitness-size N     image side the search renders at (default 64)\n"
     "  --max-evaluations N  fitness renders before giving up (default 1500)\n"
+    "  --hue                hue variety, beyond the paper: evolve the conductor base's kappa\n"
+    "                       too (RGB, each in [1, 4]), so variants may differ in colour\n"
     "  --backend B          gpu (default; falls back to the CPU when no Vulkan device is usable)\n"
     "                       or cpu\n"
     "  --out DIR            write DIR/report.json, DIR/target.png, DIR/contact_sheet.png and per\n"
@@ -81,6 +83,7 @@ int runVariants(CommandLine& args) {
         settings.maxEvaluations = int(*budget);
     const RenderBackend backend =
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    if (args.flag("--hue")) request.kappaGenes = KappaGenes::On;
     const auto outDir = args.option("--out");
     const std::string heatmapName = args.option("--heatmap").value_or("de00");
     const auto heatmapMetric = parseImageMetric(heatmapName);
@@ -92,6 +95,9 @@ int runVariants(CommandLine& args) {
     args.onlyWith("--force", "--out");
     args.finish();
 
+    if (request.kappaGenes == KappaGenes::On && choice.preset.family.base != Base::Conductor)
+        throw UsageError("--hue: the preset's base is a dielectric; hue variety evolves a "
+                         "conductor's kappa");
     installStopSignalHandlers();
     // Refused before the search: a folder with other files, or one we cannot write beside,
     // and work past the memory limit.
@@ -114,7 +120,8 @@ int runVariants(CommandLine& args) {
             renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, side));
     };
     auto search =
-        VariantSearch::start(preset.family, preset.target, request, settings, renderAt(fitnessSize));
+        VariantSearch::start({preset.target, preset.family, preset.baseKappa}, request, settings,
+                             renderAt(fitnessSize));
     if (!search) throw std::runtime_error(search.error().message);
     const bool showProgress = ::isatty(STDERR_FILENO) != 0;
     while (!(*search)->finished() && !stopRequested()) {

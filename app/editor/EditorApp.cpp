@@ -425,6 +425,7 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
     request.band = {double(view.low), double(view.high)};
     request.minApart = double(view.minApart);
     request.seed = std::uint64_t(view.seed);
+    if (view.hueVariety) request.kappaGenes = KappaGenes::On;
     if (actions.run) {
         // The kept bin is where a set starts: its materials join as they are.
         if (view.startFromKept) request.keep = keptGenomesOfFamily(state.preset);

@@ -45,6 +45,7 @@ const std::map<std::string, Grammar>& grammar() {
         {"check-layout", {Kind::CheckLayout, 0, false}},
         {"screenshot", {Kind::Screenshot, 0, true}},
         {"save", {Kind::Save, 0, true}},
+        {"variants-hue", {Kind::VariantsHue, 0, true}},
         {"variants", {Kind::Variants, 1, false, 1, 48}},
         {"wait-variants", {Kind::WaitVariants, 0, false}},
         {"discard-variant", {Kind::DiscardVariant, 1, false, 0, 47}},
@@ -73,6 +74,8 @@ std::string validateText(const ScriptAction& action) {
     if (action.kind == Kind::Heatmap && action.text != "on" && action.text != "off" &&
         action.text != "toggle")
         return "expected on, off or toggle, got '" + shortText(action.text, 40) + "'";
+    if (action.kind == Kind::VariantsHue && action.text != "on" && action.text != "off")
+        return "expected on or off, got '" + shortText(action.text, 40) + "'";
     if (action.kind == Kind::Scene && action.text != "open" && action.text != "close")
         return "expected open or close, got '" + shortText(action.text, 40) + "'";
     return {};

@@ -17,6 +17,7 @@
 //   check-layout            fail (exit 1) if a panel cuts off a control at its right edge
 //   screenshot PATH         PNG of the window, as F12
 //   save PATH               save the preset
+//   variants-hue on|off     the Variants window's "Hue variety" (evolve the metal's kappa too)
 //   variants N              open the Variants window and find N variants (its band and spacing)
 //   wait-variants           draw until the variant search is finished and shown (120 s at most)
 //   discard-variant I       drop variant I from the set
@@ -49,6 +50,7 @@ struct ScriptAction {
         CheckLayout,
         Screenshot,
         Save,
+        VariantsHue,
         Variants,
         WaitVariants,
         DiscardVariant,

@@ -50,6 +50,9 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::WaitVariants:
             return waitFor(settled.variants, action, "wait-variants: the variant search",
                            effects);
+        case Kind::VariantsHue:
+            state.variants.hueVariety = action.text == "on";
+            return true;
         case Kind::Idle:
             if (!idleUntil_) {
                 idleUntil_ =

@@ -37,8 +37,8 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job) {
             renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, size));
     };
     VariantSearchSettings settings;
-    auto search = VariantSearch::start(preset.family, preset.target, job.request, settings,
-                                       renderAt(kFitnessSize));
+    auto search = VariantSearch::start({preset.target, preset.family, preset.baseKappa},
+                                       job.request, settings, renderAt(kFitnessSize));
     if (!search) {
         result.error = search.error().message;
         return result;

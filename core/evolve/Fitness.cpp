@@ -11,21 +11,21 @@ double scaledDistance(const Genome& a, const Genome& b, DistanceMetric metric,
     double result = 0;
     switch (metric) {
         case DistanceMetric::Chebyshev:
-            for (std::size_t i = 0; i < kChromosomeCount; ++i) result = std::max(result, term(i));
+            for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) result = std::max(result, term(i));
             return result;
         case DistanceMetric::Manhattan:
-            for (std::size_t i = 0; i < kChromosomeCount; ++i) result += term(i);
+            for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) result += term(i);
             return result;
         case DistanceMetric::Euclidean:
             break;
     }
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) result += term(i) * term(i);
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) result += term(i) * term(i);
     return std::sqrt(result);
 }
 
 ChromosomeScales distanceScales(const FamilyRules& rules, const GaSettings& settings) {
     ChromosomeScales scales{};
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) {
         const ChromosomeRange& range = rules.ranges[i];
         if (!range.active) continue;
         if (!settings.normalizeByRange) {

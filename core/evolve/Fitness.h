@@ -2,6 +2,7 @@
 // The paper's fitness (§4.4, Eq. 4-6): a distance between an individual's genome and the target
 // genome. Lower is fitter. Each chromosome's |difference| is multiplied by a scale: its weight,
 // divided by the family's range width when normalising, and 0 when the chromosome is inactive.
+// Over the paper's 12 chromosomes: the kappa genes of hue variety are not part of it.
 #include <array>
 
 #include "evolve/GaSettings.h"
@@ -10,7 +11,7 @@
 
 namespace matevo {
 
-using ChromosomeScales = std::array<double, kChromosomeCount>;
+using ChromosomeScales = std::array<double, kPaperChromosomeCount>;
 
 // Chebyshev max_i s_i|a_i - b_i|, Euclidean sqrt(sum_i (s_i|a_i - b_i|)^2), Manhattan
 // sum_i s_i|a_i - b_i|.

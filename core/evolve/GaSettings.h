@@ -5,6 +5,7 @@
 #include <optional>
 #include <string_view>
 
+#include "genome/FamilyRules.h"
 #include "genome/Genome.h"
 
 namespace matevo {
@@ -18,13 +19,16 @@ struct GaSettings {
     int population = 50;
     int generations = 5;
     DistanceMetric metric = DistanceMetric::Euclidean;
-    std::array<double, kChromosomeCount> weights = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+    std::array<double, kPaperChromosomeCount> weights = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
     // Divide each chromosome's difference by its family range before weighting, so that
     // h in [0.05, 40] does not swamp the rest. Off by default: the paper uses raw distances.
     bool normalizeByRange = false;
     // Individuals copied unchanged into the next generation. The paper has none.
     int elitism = 0;
     std::uint64_t seed = 1;
+    // Hue variety, beyond the paper: evolve the conductor base's kappa too (FamilyRules.h).
+    // Never on in the paper's reproduction; the genotype distances ignore these genes.
+    KappaGenes kappaGenes = KappaGenes::Off;
 
     bool operator==(const GaSettings&) const = default;
 };

@@ -63,11 +63,11 @@ double diversity(const std::vector<Individual>& population, const FamilyRules& r
 GeneticAlgorithm::GeneticAlgorithm(const MaterialFamily& family, const Genome& target,
                                    const GaSettings& settings)
     : GeneticAlgorithm(family, target, settings,
-                       genotypeEvaluator(target, familyRules(family), settings)) {}
+                       genotypeEvaluator(target, familyRules(family, settings.kappaGenes), settings)) {}
 
 GeneticAlgorithm::GeneticAlgorithm(const MaterialFamily& family, const Genome& /*target*/,
                                    const GaSettings& settings, FitnessEvaluator evaluate)
-    : rules_(familyRules(family)),
+    : rules_(familyRules(family, settings.kappaGenes)),
       settings_(usableSettings(settings)),
       evaluate_(std::move(evaluate)),
       random_(settings.seed) {}

@@ -61,7 +61,7 @@ RenderGenomes renderGenomesWith(std::shared_ptr<PopulationRenderer> renderer,
             size](std::span<const Genome> genomes) {
         std::vector<MaterialInstance> materials;
         materials.reserve(genomes.size());
-        for (const Genome& genome : genomes) materials.push_back({genome, family, kappa});
+        for (const Genome& genome : genomes) materials.push_back(materialOf(genome, family, kappa));
         return renderer->render(materials, scene, size);
     };
 }

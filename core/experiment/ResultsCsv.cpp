@@ -29,7 +29,7 @@ std::string csvField(const std::string& text) {
 
 std::string resultsCsvHeader() {
     std::string header = "preset,metric,population,generations,seed,run,fitness,mean_de00";
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) {
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) {
         header += ',';
         header += chromosomeName(i);
     }
@@ -49,7 +49,8 @@ std::string resultsCsvRow(const RunRecord& record) {
     addField(std::to_string(record.run));
     addField(exactNumber(record.fitness));
     addField(exactNumber(record.meanDeltaE00));
-    for (double value : record.genome.values) addField(exactNumber(value));
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i)
+        addField(exactNumber(record.genome[i]));
     return row;
 }
 

@@ -3,6 +3,7 @@
 #include "export/GltfRenderer.h"
 #include "export/GltfWriter.h"
 #include "export/MaterialXWriter.h"
+#include "io/AtomicFile.h"
 
 namespace matevo {
 
@@ -74,6 +75,8 @@ Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
     std::vector<NamedGltfMaterial> materials;
     for (const auto& variant : set.variants)
         materials.push_back({variant.name, variant.fit.material});
+    // Temporary files of an export killed earlier (io/AtomicFile.h).
+    removeStaleTemporaryFiles(file.has_parent_path() ? file.parent_path() : ".");
     const Status written = format == ExportFormat::MaterialX
                                ? writeMaterialX(materials, set.textures, file)
                                : writeGltf(materials, set.textures, file);

@@ -10,6 +10,7 @@
 
 #include "mesh/GeneratedMeshes.h"
 #include "io/AtomicFile.h"
+#include "io/CompanionFiles.h"
 #include "io/ImageFile.h"
 
 namespace matevo {
@@ -248,17 +249,14 @@ Status writeGltf(const std::vector<NamedGltfMaterial>& materials, const SceneTex
         return Error{file.string() + ": tinygltf could not serialise the asset"};
     if (binary) return writeFileAtomically(file, stream.str());
 
-    // tinygltf streams the buffer as a data URI; a .gltf keeps it in a .bin beside the JSON.
-    std::filesystem::path binFile = file;
-    binFile.replace_extension(".bin");
-    auto json = nlohmann::ordered_json::parse(stream.str());
-    json["buffers"][0]["uri"] = binFile.filename().string();
+    // tinygltf streams the buffer as a data URI; a .gltf keeps it in a .bin beside the JSON,
+    // named after its contents so that the pair is replaced as one (io/CompanionFiles.h).
     const auto& bytes = model->buffers[0].data;
-    if (auto written = writeFileAtomically(
-            binFile, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-        !written)
-        return written;
-    return writeFileAtomically(file, json.dump(2) + "\n");
+    const CompanionFile bin{"", ".bin",
+                            std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size())};
+    auto json = nlohmann::ordered_json::parse(stream.str());
+    json["buffers"][0]["uri"] = companionFileName(file, bin);
+    return writeWithCompanions(file, json.dump(2) + "\n", {bin});
 }
 
 }  // namespace matevo

@@ -3,9 +3,9 @@
 // variant on its own sphere (mesh/GeneratedMeshes.h), the spheres side by side on a grid so that any viewer
 // shows the set. Metallic-roughness core plus KHR_materials_clearcoat and KHR_materials_ior, and
 // KHR_materials_specular where the fit moved specular from its default. `.glb` is one binary
-// file; `.gltf` is the JSON with a `.bin` of the same name beside it. Textures (the scene's base
-// colour; the roughness texture as GltfMaterial.h derives it) are PNGs inside the buffer. Each
-// file is written atomically (io/AtomicFile.h).
+// file, written atomically; `.gltf` is the JSON with its buffer beside it in NAME.HASH.bin,
+// the pair replaced as one (io/CompanionFiles.h). Textures (the scene's base colour; the
+// roughness texture as GltfMaterial.h derives it) are PNGs inside the buffer.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -5,7 +5,7 @@
 #include <set>
 #include <sstream>
 
-#include "io/AtomicFile.h"
+#include "io/CompanionFiles.h"
 #include "io/ImageFile.h"
 
 namespace matevo {
@@ -143,24 +143,26 @@ Status writeMaterialX(const std::vector<NamedGltfMaterial>& materials,
             roughnessTexelScale = m.roughnessTexelScale;
         }
     }
-    const std::string stem = file.stem().string();
-    const std::string baseColorFile = stem + "_base_color.png";
-    const std::string roughnessFile = stem + "_roughness.png";
-    const auto folder = file.parent_path();
-    if (anyBaseColor)
-        if (auto written = writeImage(textures.baseColor, folder / baseColorFile); !written)
-            return written;
+    // Named after their contents, so that the document and its textures are replaced as one
+    // (io/CompanionFiles.h).
+    CompanionFile baseColor{"_base_color", ".png", {}};
+    CompanionFile roughness{"_roughness", ".png", {}};
+    if (anyBaseColor) {
+        auto png = encodePng(textures.baseColor, PngValues::Srgb);
+        if (!png) return Error{file.string() + ": " + png.error().message};
+        baseColor.contents.assign(png->begin(), png->end());
+    }
     if (anyRoughness) {
         auto png = encodePng(gltfRoughnessTexture(textures.roughness, roughnessTexelScale),
                              PngValues::Linear);
         if (!png) return Error{file.string() + ": " + png.error().message};
-        if (auto written = writeFileAtomically(
-                folder / roughnessFile,
-                std::string_view(reinterpret_cast<const char*>(png->data()), png->size()));
-            !written)
-            return written;
+        roughness.contents.assign(png->begin(), png->end());
     }
-    return writeFileAtomically(file, materialXDocument(materials, baseColorFile, roughnessFile));
+    return writeWithCompanions(
+        file,
+        materialXDocument(materials, companionFileName(file, baseColor),
+                          companionFileName(file, roughness)),
+        {baseColor, roughness});
 }
 
 }  // namespace matevo

@@ -153,7 +153,7 @@ std::vector<MaterialFamily> supportedFamilies() {
     return families;
 }
 
-FamilyRules familyRules(const MaterialFamily& family) {
+FamilyRules familyRules(const MaterialFamily& family, KappaGenes kappaGenes) {
     const CoatBaseRules& cell = coatBaseRules(family.coat, family.base);
     FamilyRules rules;
     rules.etaRelation = cell.etaRelation;
@@ -175,6 +175,9 @@ FamilyRules familyRules(const MaterialFamily& family) {
         if (family.base == Base::Conductor)
             rules.ranges[kEta2] = intersect(cell.eta2, kConductorEta2WithMedium);
     }
+    if (kappaGenes == KappaGenes::On && family.base == Base::Conductor)
+        for (std::size_t i = kKappaR; i <= kKappaB; ++i)
+            rules.ranges[i] = closed(kKappaGeneMin, kKappaGeneMax);
     return rules;
 }
 
@@ -186,8 +189,10 @@ std::optional<std::string> validateGenome(const Genome& genome, const FamilyRule
     for (std::size_t i = 0; i < kChromosomeCount; ++i) {
         const ChromosomeRange& range = rules.ranges[i];
         if (!range.active && genome[i] != range.min)
-            return std::string(chromosomeName(i)) + " = " + formatNumber(genome[i]) +
-                   " but the family has no medium: it must be " + formatNumber(range.min);
+            return std::string(chromosomeName(i)) + " = " + formatNumber(genome[i]) + " but " +
+                   (i >= kPaperChromosomeCount ? "the kappa genes are off"
+                                               : "the family has no medium") +
+                   ": it must be " + formatNumber(range.min);
         if (!range.contains(genome[i])) return outOfRangeMessage(i, genome[i], range);
     }
     const EtaRelation& relation = rules.etaRelation;

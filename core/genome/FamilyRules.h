@@ -68,13 +68,25 @@ struct FamilyRules {
     }
 };
 
+// Hue variety, beyond the paper: whether the conductor base's kappa genes are evolved.
+enum class KappaGenes { Off, On };
+
+// The bounds of each kappa gene when they are on: every channel stays a conductor (kappa_rel =
+// kappa / eta1 >= 0.5 for eta1 <= 2) and inside the FGD table (kappa_rel <= 4 since eta1 > 1).
+// At the validation presets' eta2 / eta1 = 2/3 that spans a normal-incidence reflectance of
+// 0.29 (kappa 1) to 0.86 (kappa 4) per channel.
+inline constexpr double kKappaGeneMin = 1.0;
+inline constexpr double kKappaGeneMax = 4.0;
+
 // Table 2 pairs texturing with the coat: a roughcoat textures its rough top layer, a clearcoat
 // its rough bottom layer. nullopt for a supported family, else why it is not.
 std::optional<std::string> validateFamily(const MaterialFamily& family);
 // Every family validateFamily accepts (16: coat x base x medium x {none, the rough layer}).
 std::vector<MaterialFamily> supportedFamilies();
 
-FamilyRules familyRules(const MaterialFamily& family);
+// With KappaGenes::On and a conductor base, the kappa genes are active in [kKappaGeneMin,
+// kKappaGeneMax]; otherwise they are inactive (pinned to 0) like an absent medium.
+FamilyRules familyRules(const MaterialFamily& family, KappaGenes kappaGenes = KappaGenes::Off);
 ChromosomeRange chromosomeRange(const MaterialFamily& family, std::size_t index);
 
 // nullopt when the genome satisfies Table 2 for the family, else a message naming the

@@ -84,7 +84,7 @@ MaterialFile materialFromPreset(const Preset& preset, const fs::path& presetFile
                                 const Genome& genome, std::string name) {
     const fs::path folder = presetFile.parent_path();
     MaterialFile material{std::move(name),
-                          {genome, preset.family, preset.baseKappa},
+                          materialOf(genome, preset.family, preset.baseKappa),
                           resolvedTexture(folder, preset.roughnessTexture),
                           resolvedTexture(folder, preset.baseColorTexture),
                           preset.scene};

@@ -35,7 +35,8 @@ struct MaterialFile {
     bool operator==(const MaterialFile&) const = default;
 };
 
-// `genome` in the preset's context; texture paths become absolute.
+// `genome` in the preset's context (with hue variety's kappa genes, its own kappa: materialOf);
+// texture paths become absolute.
 MaterialFile materialFromPreset(const Preset& preset, const std::filesystem::path& presetFile,
                                 const Genome& genome, std::string name = {});
 

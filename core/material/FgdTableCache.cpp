@@ -11,6 +11,7 @@
 #include <system_error>
 #include <vector>
 
+#include "common/Fnv1a.h"
 #include "io/AtomicFile.h"
 #include "io/InputFile.h"
 
@@ -35,15 +36,6 @@ void appendRaw(Bytes& bytes, const void* data, std::size_t size) {
 template <typename T>
 void append(Bytes& bytes, const T& value) {
     appendRaw(bytes, &value, sizeof(T));
-}
-
-std::uint64_t fnv1a(const unsigned char* data, std::size_t size) {
-    std::uint64_t hash = 14695981039346656037ull;
-    for (std::size_t i = 0; i < size; ++i) {
-        hash ^= data[i];
-        hash *= 1099511628211ull;
-    }
-    return hash;
 }
 
 // Everything that identifies a table file's content, in file order.

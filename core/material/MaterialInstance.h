@@ -4,6 +4,7 @@
 // has none).
 #include <array>
 
+#include "genome/FamilyRules.h"
 #include "genome/Genome.h"
 #include "genome/MaterialFamily.h"
 
@@ -16,5 +17,15 @@ struct MaterialInstance {
 
     bool operator==(const MaterialInstance&) const = default;
 };
+
+// The material a genome stands for: with the kappa genes of hue variety, its own kappa (the
+// genes then cleared, so the instance holds kappa in one place); else the preset's kappa.
+inline MaterialInstance materialOf(Genome genome, const MaterialFamily& family,
+                                   const std::array<double, 3>& presetKappa) {
+    if (!genome.carriesKappa()) return {genome, family, presetKappa};
+    const std::array<double, 3> kappa = genome.kappa();
+    for (std::size_t i = kKappaR; i <= kKappaB; ++i) genome[i] = kInactiveChromosomeValue;
+    return {genome, family, kappa};
+}
 
 }  // namespace matevo

@@ -69,6 +69,8 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
     nlohmann::ordered_json variants = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         const Variant& variant = set.variants[i];
+        const MaterialInstance material =
+            materialOf(variant.genome, preset.family, preset.baseKappa);
         variants.push_back({{"index", i},
                             {"file", "variants/" + variantStem(i) + ".json"},
                             {"image", "variants/" + variantStem(i) + ".png"},
@@ -76,7 +78,8 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
                             {"de00_to_target", variant.deltaEToTarget},
                             {"de00_to_nearest_sibling", nearest[i]},
                             {"kept", variant.kept},
-                            {"genome", genomeToJson(variant.genome)}});
+                            {"genome", genomeToJson(material.genome)}});
+        if (variant.genome.carriesKappa()) variants.back()["base_kappa"] = material.baseKappa;
     }
     const VariantRequest& request = run.request;
     const bool met = fulfils(set, request);
@@ -88,6 +91,7 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
               {"band", {request.band.low, request.band.high}},
               {"min_apart", request.minApart},
               {"seed", request.seed},
+              {"hue_variety", request.kappaGenes == KappaGenes::On},
               {"size", run.size},
               {"fitness_size", run.fitnessSize}}},
             {"met", met},
@@ -155,7 +159,9 @@ MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant,
                              std::size_t index) {
     MaterialFile material = target;
     material.name = (target.name.empty() ? std::string() : target.name + " ") + variantStem(index);
-    material.material.genome = variant.genome;
+    // The variant's own kappa when it carries kappa genes (hue variety), else the target's.
+    material.material =
+        materialOf(variant.genome, target.material.family, target.material.baseKappa);
     return material;
 }
 

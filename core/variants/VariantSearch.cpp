@@ -30,10 +30,23 @@ Genome mutantOf(const Genome& target, const FamilyRules& rules, Random& random) 
     return mutant;
 }
 
+// A genome as the GA starts from it: with the kappa genes active and not yet carried (the
+// target, a variant kept from a set without hue variety), they take the preset's kappa, brought
+// into their bounds, so that it renders as before.
+Genome withKappaGenes(Genome genome, const std::array<double, 3>& presetKappa,
+                      const FamilyRules& rules) {
+    if (genome.carriesKappa()) return genome;
+    for (std::size_t i = kKappaR; i <= kKappaB; ++i)
+        if (rules.ranges[i].active)
+            genome[i] = std::clamp(presetKappa[i - kKappaR], rules.ranges[i].min,
+                                   rules.ranges[i].max);
+    return genome;
+}
+
 }  // namespace
 
-VariantSearch::VariantSearch(const MaterialFamily& /*family*/, const VariantRequest& request,
-                             const VariantSearchSettings& settings, GenomeRenderCache cache)
+VariantSearch::VariantSearch(const VariantRequest& request, const VariantSearchSettings& settings,
+                             GenomeRenderCache cache)
     : request_(request),
       settings_(settings),
       searchBand_(request.band.inset(settings.bandMargin)),
@@ -42,15 +55,14 @@ VariantSearch::VariantSearch(const MaterialFamily& /*family*/, const VariantRequ
     progress_.closestDeltaE = std::numeric_limits<double>::quiet_NaN();
 }
 
-Result<std::unique_ptr<VariantSearch>> VariantSearch::start(const MaterialFamily& family,
-                                                            const Genome& target,
+Result<std::unique_ptr<VariantSearch>> VariantSearch::start(const MaterialInstance& target,
                                                             const VariantRequest& request,
                                                             const VariantSearchSettings& settings,
                                                             RenderGenomes render) {
-    auto cache = GenomeRenderCache::create(std::move(render), target);
+    auto cache = GenomeRenderCache::create(std::move(render), target.genome);
     if (!cache) return cache.error();
     std::unique_ptr<VariantSearch> search(
-        new VariantSearch(family, request, settings, std::move(cache).value()));
+        new VariantSearch(request, settings, std::move(cache).value()));
 
     if (auto rendered = search->cache_.renderMissing(request.keep); !rendered)
         return rendered.error();
@@ -69,16 +81,21 @@ Result<std::unique_ptr<VariantSearch>> VariantSearch::start(const MaterialFamily
     ga.generations = std::max(1, kGenerationsPerPopulationOfEvaluations *
                                      std::max(settings.maxEvaluations, 0) / ga.population);
     ga.elitism = 0;
-    search->ga_.emplace(family, target, ga,
+    ga.kappaGenes = request.kappaGenes;
+    const Genome origin =
+        withKappaGenes(target.genome, target.baseKappa, familyRules(target.family, ga.kappaGenes));
+    search->ga_.emplace(target.family, origin, ga,
                         [self = search.get()](std::span<const Genome> genomes,
                                               std::span<double> fitness) {
                             self->score(genomes, fitness);
                         });
     const FamilyRules& rules = search->ga_->rules();
-    std::vector<Genome> initial = request.keep;
-    initial.resize(std::min<std::size_t>(initial.size(), std::size_t(ga.population)));
+    std::vector<Genome> initial;
+    for (const Genome& kept : request.keep)
+        if (initial.size() < std::size_t(ga.population))
+            initial.push_back(withKappaGenes(kept, target.baseKappa, rules));
     while (initial.size() < std::size_t(ga.population))
-        initial.push_back(mutantOf(target, rules, initialRandom));
+        initial.push_back(mutantOf(origin, rules, initialRandom));
     search->ga_->setOffspringHook([self = search.get()](std::span<Genome> offspring,
                                                         Random& random) {
         self->renewSeen(offspring, random);

@@ -23,6 +23,7 @@
 #include "evolve/RenderGenomes.h"
 #include "genome/Genome.h"
 #include "genome/MaterialFamily.h"
+#include "material/MaterialInstance.h"
 #include "variants/DeltaEBand.h"
 #include "variants/GenomeRenderCache.h"
 #include "variants/VariantArchive.h"
@@ -39,6 +40,10 @@ struct VariantRequest {
     std::vector<Genome> keep;
     // Variants the user discarded: never offered again.
     std::vector<Genome> exclude;
+    // Hue variety, beyond the paper: the conductor base's kappa is evolved too (three more
+    // genes, in FamilyRules' bounds, under the same operators), so variants may differ in
+    // colour. Off, every variant has the preset's kappa.
+    KappaGenes kappaGenes = KappaGenes::Off;
 };
 
 // How the search runs; the defaults are chosen by measurement (docs/variants.md).
@@ -69,9 +74,10 @@ struct VariantSearchProgress {
 class VariantSearch {
 public:
     // Renders the target and the kept variants, then the initial population. The render
-    // function's images all have one size (the fitness resolution).
-    static Result<std::unique_ptr<VariantSearch>> start(const MaterialFamily& family,
-                                                        const Genome& target,
+    // function's images all have one size (the fitness resolution) and honour the kappa genes
+    // (materialOf). With hue variety the population starts from the target's kappa, brought
+    // into the genes' bounds.
+    static Result<std::unique_ptr<VariantSearch>> start(const MaterialInstance& target,
                                                         const VariantRequest& request,
                                                         const VariantSearchSettings& settings,
                                                         RenderGenomes render);
@@ -100,8 +106,8 @@ private:
         std::uint64_t checkedUpTo = 0;  // every member with an id up to this one was measured
     };
 
-    VariantSearch(const MaterialFamily& family, const VariantRequest& request,
-                  const VariantSearchSettings& settings, GenomeRenderCache cache);
+    VariantSearch(const VariantRequest& request, const VariantSearchSettings& settings,
+                  GenomeRenderCache cache);
     void score(std::span<const Genome> genomes, std::span<double> fitness);
     double novelty(const Genome& genome, const LabImage& lab);
     // Offspring already rendered (or twice in one generation) are mutated again until new, so

@@ -48,7 +48,7 @@ TEST(JsonOrder, EvolveReportAndItsFile) {
     EXPECT_EQ(keysOf(report["target"]), kGenomeKeys);
     EXPECT_EQ(keysOf(report["config"]),
               (Keys{"preset", "family", "population", "generations", "metric", "weights",
-                    "normalize_by_range", "elitism", "seed", "fitness"}));
+                    "normalize_by_range", "elitism", "seed", "hue_variety", "fitness"}));
     EXPECT_EQ(keysOf(report["generations"][0]),
               (Keys{"generation", "best", "mean", "worst", "diversity"}));
     EXPECT_EQ(keysOf(report["population"][0]),

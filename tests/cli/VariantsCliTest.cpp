@@ -166,6 +166,53 @@ TEST(VariantsCli, TheSetDoesNotDependOnTheThreadCount) {
               withoutWallTime(nlohmann::json::parse(gpuDefault.out)));
 }
 
+// Hue variety: each variant file carries its own kappa, inside the genes' bounds, and the set
+// still holds the band and the spacing on the written PNGs.
+TEST(VariantsCli, HueVarietyGivesEachVariantItsOwnKappaInsideTheBounds) {
+    testing::ScratchFolder scratch("variants_cli_hue");
+    auto result = runMatevo("variants --hue --preset " + presetPath("validation_metal") +
+                            " --count 4 --band 2,5 --min-apart 2 --seed 3 --out '" +
+                            scratch.path().string() + "'");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    const nlohmann::json report = readJson(scratch / "report.json");
+    EXPECT_TRUE(report["request"]["hue_variety"].get<bool>());
+    const Image target = readPng(scratch / "target.png");
+    std::set<std::vector<double>> kappas;
+    for (const auto& entry : report["variants"]) {
+        const nlohmann::json material = readJson(scratch / entry["file"].get<std::string>());
+        const auto kappa = material["base_kappa"].get<std::vector<double>>();
+        ASSERT_EQ(kappa.size(), 3u);
+        for (double channel : kappa) {
+            EXPECT_GE(channel, 1.0);
+            EXPECT_LE(channel, 4.0);
+        }
+        EXPECT_EQ(entry["base_kappa"].get<std::vector<double>>(), kappa);
+        EXPECT_FALSE(material["genome"].contains("kappa_r"));  // the paper's genome, as before
+        kappas.insert(kappa);
+        const double toTarget =
+            meanDeltaE(target, readPng(scratch / entry["image"].get<std::string>()));
+        EXPECT_GE(toTarget, kLow);
+        EXPECT_LE(toTarget, kHigh);
+    }
+    EXPECT_GT(kappas.size(), 1u) << "every variant has one kappa";
+
+    // Without --hue every variant keeps the preset's kappa; --hue needs a conductor base.
+    auto plain = runMatevo("variants --json --count 2 --band 2,5 --fitness-size 32 --size 64");
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    const auto plainReport = nlohmann::json::parse(plain.out);
+    EXPECT_FALSE(plainReport["request"]["hue_variety"].get<bool>());
+    for (const auto& entry : plainReport["variants"]) EXPECT_FALSE(entry.contains("base_kappa"));
+    const fs::path dielectric = scratch / "glass.json";
+    std::ofstream(dielectric) << R"({"name": "glass", "family": {"coat": "clearcoat",
+        "base": "dielectric", "medium": false, "textured_layer": "none"},
+        "target": {"eta1": 1.5, "eta2": 2.0, "alpha1": 0.005, "alpha2": 0.2},
+        "ga": {"population": 50, "generations": 5}})";
+    auto refused = runMatevo("variants --hue --count 2 --band 2,5 --preset '" +
+                             dielectric.string() + "'");
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_NE(refused.err.find("--hue"), std::string::npos) << refused.err;
+}
+
 TEST(VariantsCli, AnUnreachableBandExitsThreeAndStillWrites) {
     testing::ScratchFolder scratch("variants_cli_unreachable");
     auto result = runMatevo("variants --count 3 --band 60,80 --max-evaluations 150 --out '" +
@@ -244,8 +291,20 @@ TEST(EvolveImageFitness, ScoresRendersAndTheBandAndIsOffByDefault) {
     ASSERT_EQ(paper.exitCode, 0) << paper.err;
     EXPECT_EQ(nlohmann::json::parse(paper.out)["config"]["fitness"], "genotype");
 
+    // Hue variety: each individual's own kappa, inside the genes' bounds.
+    auto hue = runMatevo("evolve --json --fitness image --hue --population 8 --generations 1 "
+                         "--seed 3 --backend cpu --fitness-size 16");
+    ASSERT_EQ(hue.exitCode, 0) << hue.err;
+    const auto hueJson = nlohmann::json::parse(hue.out);
+    EXPECT_TRUE(hueJson["config"]["hue_variety"].get<bool>());
+    for (const auto& individual : hueJson["population"])
+        for (double channel : individual["base_kappa"].get<std::vector<double>>()) {
+            EXPECT_GE(channel, 1.0);
+            EXPECT_LE(channel, 4.0);
+        }
+
     for (const char* arguments : {"--band 2,5", "--fitness-size 32", "--fitness pixels",
-                                  "--fitness image --band 5,2"}) {
+                                  "--fitness image --band 5,2", "--hue"}) {
         auto bad = runMatevo(std::string("evolve ") + arguments);
         EXPECT_EQ(bad.exitCode, 2) << arguments << ": " << bad.err;
     }

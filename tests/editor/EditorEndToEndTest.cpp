@@ -168,40 +168,38 @@ INSTANTIATE_TEST_SUITE_P(WindowSizes, EditorEndToEnd,
                                     std::to_string(suiteParam.param.height);
                          });
 
-// The Variants mode end to end: find a set, discard one, refill, save, and check the saved set
-// as `matevo variants --out` would have written it; the screenshot shows the set's tiles.
+// The Variants mode end to end: find a set, discard one, refill with hue variety on (the kept
+// grey variants stay, the new one may take its own kappa), save, and check the saved set as
+// `matevo variants --out` would have written it; the screenshot shows the set's tiles.
 TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     const fs::path dir = freshDirectory("variants");
     fs::create_directories(dir / "config");
-    std::ofstream(dir / "script.txt") << "wait 2\n"
-                                         "resize "
-                                      << kWidth << " " << kHeight
-                                      << "\n"
-                                         "variants 4\n"
-                                         "wait-variants\n"
-                                         "discard-variant 0\n"
-                                         "refill-variants\n"
-                                         "wait-variants\n"
-                                         "wait 2\n"
-                                         "screenshot "
-                                      << (dir / "variants.png").string()
-                                      << "\n"
-                                         "save-variants "
-                                      << (dir / "set").string()
-                                      << "\n"
-                                         "wait 2\n"
-                                         "quit\n";
-    const CommandOutput run = runCommand("XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" +
-                                         MATEVO_BINARY_DIR + "/matevo' edit '" + MATEVO_SOURCE_DIR +
-                                         "/presets/validation_metal_depth.json' "
-                                         "--validate --script '" +
-                                         (dir / "script.txt").string() + "' --frames 100000");
+    std::ofstream(dir / "script.txt")
+        << "wait 2\n"
+           "resize " << kWidth << " " << kHeight << "\n"
+           "variants 4\n"
+           "wait-variants\n"
+           "discard-variant 0\n"
+           "variants-hue on\n"
+           "refill-variants\n"
+           "wait-variants\n"
+           "wait 2\n"
+           "screenshot " << (dir / "variants.png").string() << "\n"
+           "save-variants " << (dir / "set").string() << "\n"
+           "wait 2\n"
+           "quit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+        "/matevo' edit '" + MATEVO_SOURCE_DIR + "/presets/validation_metal_depth.json' "
+        "--validate --script '" + (dir / "script.txt").string() + "' --frames 100000");
     ASSERT_EQ(run.exitCode, 0) << run.err;
 
     std::ifstream reportFile(dir / "set/report.json");
     const std::string report((std::istreambuf_iterator<char>(reportFile)), {});
     ASSERT_FALSE(report.empty()) << "no report.json in the saved set";
     EXPECT_NE(report.find("\"met\": true"), std::string::npos) << report;
+    EXPECT_NE(report.find("\"hue_variety\": true"), std::string::npos) << report;
+    EXPECT_NE(report.find("\"base_kappa\""), std::string::npos) << "a variant of its own kappa";
     for (int i = 0; i < 4; ++i) {
         const std::string stem = "set/variants/variant_00" + std::to_string(i);
         EXPECT_TRUE(fs::is_regular_file(dir / (stem + ".png"))) << stem;

@@ -47,7 +47,8 @@ TEST(Mutation, AnOffspringMutatesWithProbabilityFourTenths) {
 }
 
 TEST(Mutation, EachChromosomeMutatesWithProbabilityOneTenth) {
-    const FamilyRules rules = familyRules(kMetalDepth);
+    // With hue variety on, all 15 genes are active: the kappa genes go through the same operator.
+    const FamilyRules rules = familyRules(kMetalDepth, KappaGenes::On);
     Random random(33);
     constexpr int kTrials = 20000;
     std::array<long, kChromosomeCount> mutations{};

@@ -35,17 +35,17 @@ RunRecord sampleRecord() {
     record.run = 7;
     record.fitness = 0.1 + 0.2;  // not exactly 0.3: the CSV must keep every bit
     record.meanDeltaE00 = 2.0 / 3.0;
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) record.genome[i] = 1.0 / double(i + 3);
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) record.genome[i] = 1.0 / double(i + 3);
     return record;
 }
 
 TEST(ResultsCsv, HeaderNamesTheRunColumnsThenTheTwelveChromosomes) {
     const auto fields = splitFields(resultsCsvHeader());
-    ASSERT_EQ(fields.size(), 8 + kChromosomeCount);
+    ASSERT_EQ(fields.size(), 8 + kPaperChromosomeCount);
     const std::vector<std::string> leading = {"preset", "metric", "population", "generations",
                                               "seed",   "run",    "fitness",    "mean_de00"};
     for (std::size_t i = 0; i < leading.size(); ++i) EXPECT_EQ(fields[i], leading[i]);
-    for (std::size_t i = 0; i < kChromosomeCount; ++i) EXPECT_EQ(fields[8 + i], chromosomeName(i));
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) EXPECT_EQ(fields[8 + i], chromosomeName(i));
 }
 
 TEST(ResultsCsv, RowHasOneParseableFieldPerColumnAndKeepsEveryBit) {
@@ -60,7 +60,7 @@ TEST(ResultsCsv, RowHasOneParseableFieldPerColumnAndKeepsEveryBit) {
     EXPECT_EQ(parseDouble(fields[5]), 7);
     EXPECT_EQ(parseDouble(fields[6]), record.fitness);
     EXPECT_EQ(parseDouble(fields[7]), record.meanDeltaE00);
-    for (std::size_t i = 0; i < kChromosomeCount; ++i)
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i)
         EXPECT_EQ(parseDouble(fields[8 + i]), record.genome[i]) << chromosomeName(i);
 }
 

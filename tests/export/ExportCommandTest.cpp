@@ -1,8 +1,14 @@
 // `matevo export` end to end through the real executable: what evolve and variant sets write goes
 // in; a glTF/MaterialX file and a report come out; mistakes exit 2 with one line.
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+
+#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -54,39 +60,128 @@ TEST(ExportCommand, EvolveJsonExportsToGlbWithAReport) {
         EXPECT_TRUE(fs::exists(folder / "look" / (stem + suffix))) << suffix;
 }
 
-TEST(ExportCommand, AVariantFolderBecomesOneAssetWithAMaterialPerVariant) {
-    testing::ScratchFolder folder("export_cli");
-    fs::create_directories(folder / "set/variants");
-    // Two variants as `matevo variants --out` writes them: material files named variant_NNN.
-    const auto evolved = testing::runMatevo(
-        "evolve --population 8 --generations 1 --json --preset " + shellQuoted(kPaintedMetal));
-    ASSERT_EQ(evolved.exitCode, 0) << evolved.err;
-    std::ofstream(folder / "ev.json") << evolved.out;
-    auto best = loadMaterial(folder / "ev.json", MaterialFile{});
-    ASSERT_TRUE(best.ok()) << best.error().message;
-    for (int i = 0; i < 2; ++i) {
-        MaterialFile variant = best->file;
-        variant.name = "variant " + std::to_string(i);
-        variant.material.genome[kAlpha1] = 1.0 + i;
-        ASSERT_TRUE(saveMaterial(variant, folder / ("set/variants/variant_00" +
-                                                    std::to_string(i) + ".json"))
-                        .ok());
-    }
-    const auto out = folder / "set.gltf";
-    const auto exported =
-        testing::runMatevo("export --variants " + shellQuoted(folder / "set") + " --format gltf --out " +
-                           shellQuoted(out) + " --fit-size 24 --fit-renders 120 --report-size 32");
-    ASSERT_EQ(exported.exitCode, 0) << exported.err;
-    EXPECT_NE(exported.out.find("variant 1"), std::string::npos) << exported.out;
+std::string contentsOf(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
-    tinygltf::TinyGLTF loader;
-    tinygltf::Model model;
-    std::string error, warning;
-    ASSERT_TRUE(loader.LoadASCIIFromFile(&model, &error, &warning, out.string())) << error;
-    ASSERT_EQ(model.materials.size(), 2u);
-    EXPECT_EQ(model.materials[1].name, "variant 1");
-    EXPECT_EQ(model.nodes.size(), 2u);
-    EXPECT_NE(model.nodes[0].translation, model.nodes[1].translation);
+// The file stem `export --images` gives a material's name.
+std::string imageStem(const std::string& name) {
+    std::string stem;
+    for (unsigned char c : name) stem += std::isalnum(c) || c == '-' || c == '_' ? char(c) : '_';
+    return stem;
+}
+
+// The materials of a MaterialX document: surfacematerial names, and per gltf_pbr the value of
+// its metallic input; every image node's file must exist beside the document.
+struct MaterialXContents {
+    std::vector<std::string> materials;
+    std::vector<double> metallic;
+};
+
+MaterialXContents readMaterialX(const fs::path& file) {
+    MaterialXContents contents;
+    xmlDocPtr document = xmlReadFile(file.c_str(), nullptr, XML_PARSE_NONET);
+    EXPECT_NE(document, nullptr) << file;
+    if (!document) return contents;
+    const auto property = [](xmlNodePtr node, const char* name) {
+        xmlChar* value = xmlGetProp(node, BAD_CAST name);
+        std::string text = value ? reinterpret_cast<const char*>(value) : "";
+        xmlFree(value);
+        return text;
+    };
+    for (xmlNodePtr node = xmlDocGetRootElement(document)->children; node; node = node->next) {
+        if (node->type != XML_ELEMENT_NODE) continue;
+        const std::string element = reinterpret_cast<const char*>(node->name);
+        if (element == "surfacematerial") contents.materials.push_back(property(node, "name"));
+        for (xmlNodePtr input = node->children; input; input = input->next) {
+            if (input->type != XML_ELEMENT_NODE) continue;
+            if (element == "gltf_pbr" && property(input, "name") == "metallic")
+                contents.metallic.push_back(std::stod(property(input, "value")));
+            if (element == "image" && property(input, "name") == "file") {
+                EXPECT_TRUE(fs::is_regular_file(file.parent_path() / property(input, "value")))
+                    << property(input, "value");
+            }
+        }
+    }
+    xmlFreeDoc(document);
+    return contents;
+}
+
+// The round trip as a user makes it: `variants --out DIR` writes a set, `export --variants DIR`
+// takes it to glTF and to MaterialX. The material files must carry the whole material (family,
+// kappa, textures, scene): export's own render of each variant equals, byte for byte, the render
+// `variants` wrote; the written assets hold one material per variant, in the set's order, with
+// the reported fitted values.
+TEST(ExportCommand, AVariantsSetExportsToGltfAndMaterialX) {
+    testing::ScratchFolder folder("export_cli");
+    const auto set = folder / "set";
+    const auto made = testing::runMatevo(
+        "variants --preset " + shellQuoted(kPaintedMetal) +
+        " --count 3 --band 2,10 --min-apart 1 --seed 5 --size 48 --fitness-size 16"
+        " --backend cpu --out " + shellQuoted(set));
+    ASSERT_EQ(made.exitCode, 0) << made.err;
+    std::ifstream reportFile(set / "report.json");
+    const auto variantsReport = nlohmann::json::parse(reportFile);
+    const auto& variants = variantsReport["variants"];
+    ASSERT_EQ(variants.size(), 3u);
+    std::vector<std::string> names;
+    for (const auto& variant : variants) {
+        auto material = loadMaterial(set / variant["file"].get<std::string>(), MaterialFile{});
+        ASSERT_TRUE(material.ok()) << material.error().message;
+        names.push_back(material->file.name);
+    }
+
+    for (const std::string format : {"gltf", "mtlx"}) {
+        SCOPED_TRACE(format);
+        const auto out = folder / ("set." + format);
+        const auto look = folder / ("look_" + format);
+        const auto exported = testing::runMatevo(
+            "export --variants " + shellQuoted(set) + " --out " + shellQuoted(out) +
+            " --backend cpu --fit-size 16 --fit-renders 60 --report-size 48 --json --images " +
+            shellQuoted(look));
+        ASSERT_EQ(exported.exitCode, 0) << exported.err;
+        const auto report = nlohmann::json::parse(exported.out);
+        EXPECT_EQ(report["format"], format);
+        ASSERT_EQ(report["variants"].size(), variants.size());
+        for (std::size_t i = 0; i < variants.size(); ++i) {
+            const auto& fitted = report["variants"][i];
+            EXPECT_EQ(fitted["name"], names[i]);
+            EXPECT_EQ(contentsOf(look / (imageStem(names[i]) + "_matevo.png")),
+                      contentsOf(set / variants[i]["image"].get<std::string>()))
+                << names[i] << ": export did not render the material variants wrote";
+            EXPECT_LE(fitted["mean_de00"].get<double>(), 10.0) << names[i];
+        }
+
+        if (format == "gltf") {
+            tinygltf::TinyGLTF loader;
+            tinygltf::Model model;
+            std::string error, warning;
+            ASSERT_TRUE(loader.LoadASCIIFromFile(&model, &error, &warning, out.string()))
+                << error;
+            ASSERT_EQ(model.materials.size(), variants.size());
+            ASSERT_EQ(model.nodes.size(), variants.size());  // a sphere each, side by side
+            EXPECT_NE(model.nodes[0].translation, model.nodes[1].translation);
+            for (std::size_t i = 0; i < variants.size(); ++i) {
+                const auto& fitted = report["variants"][i]["gltf"];
+                const auto& material = model.materials[i];
+                EXPECT_EQ(material.name, names[i]);
+                EXPECT_DOUBLE_EQ(material.pbrMetallicRoughness.metallicFactor,
+                                 fitted["metallic"].get<double>());
+                EXPECT_DOUBLE_EQ(material.pbrMetallicRoughness.roughnessFactor,
+                                 fitted["roughness"].get<double>());
+                // Painted metal textures its roughness: the texture travels in the buffer.
+                EXPECT_GE(material.pbrMetallicRoughness.metallicRoughnessTexture.index, 0);
+            }
+        } else {
+            const MaterialXContents document = readMaterialX(out);
+            ASSERT_EQ(document.materials.size(), variants.size());
+            ASSERT_EQ(document.metallic.size(), variants.size());
+            for (std::size_t i = 0; i < variants.size(); ++i)
+                EXPECT_NEAR(document.metallic[i],
+                            report["variants"][i]["gltf"]["metallic"].get<double>(), 1e-5);
+        }
+    }
 }
 
 TEST(ExportCommand, MistakesExitTwoWithOneLine) {

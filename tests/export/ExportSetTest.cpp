@@ -8,6 +8,7 @@
 #include <libxml/tree.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -86,8 +87,11 @@ TEST(ExportSet, GltfFilesReadBackFieldByField) {
             ASSERT_TRUE(loaded) << error;
             EXPECT_TRUE(warning.empty()) << warning;
             if (format == ExportFormat::Gltf) {
-                EXPECT_TRUE(fs::exists(fs::path(file).replace_extension(".bin")));
-                EXPECT_EQ(model.buffers[0].uri, std::string(name) + ".bin");
+                // NAME.HASH.bin (io/CompanionFiles.h), beside the JSON.
+                const std::string& uri = model.buffers[0].uri;
+                EXPECT_EQ(uri.rfind(std::string(name) + ".", 0), 0u) << uri;
+                EXPECT_EQ(uri.size(), std::strlen(name) + 1 + 16 + 4) << uri;
+                EXPECT_EQ(fs::file_size(folder / uri), model.buffers[0].data.size());
             }
             ASSERT_EQ(model.materials.size(), 1u);
             const auto& material = model.materials[0];
@@ -203,6 +207,24 @@ const std::set<std::string> kGltfPbrInputs = {"base_color", "metallic", "roughne
                                               "specular", "specular_color", "ior",
                                               "clearcoat", "clearcoat_roughness"};
 
+// An `image` node's file input names a file beside the document.
+void expectTextureFileExists(xmlNodePtr image, const fs::path& folder) {
+    bool named = false;
+    for (xmlNodePtr input = image->children; input; input = input->next) {
+        if (input->type != XML_ELEMENT_NODE) continue;
+        xmlChar* inputName = xmlGetProp(input, BAD_CAST "name");
+        xmlChar* value = xmlGetProp(input, BAD_CAST "value");
+        if (inputName && value && std::string(reinterpret_cast<const char*>(inputName)) == "file") {
+            named = true;
+            EXPECT_TRUE(fs::is_regular_file(folder / reinterpret_cast<const char*>(value)))
+                << reinterpret_cast<const char*>(value);
+        }
+        xmlFree(inputName);
+        xmlFree(value);
+    }
+    EXPECT_TRUE(named);
+}
+
 TEST(ExportSet, MaterialXIsWellFormedWithMaterialXInputNames) {
     testing::ScratchFolder folder("export");
     for (const char* name : kValidationPresets) {
@@ -218,7 +240,7 @@ TEST(ExportSet, MaterialXIsWellFormedWithMaterialXInputNames) {
         xmlFree(version);
         std::map<std::string, std::string> shaderInputs;
         std::set<std::string> nodeNames;
-        int materials = 0;
+        int materials = 0, images = 0;
         for (xmlNodePtr node = root->children; node; node = node->next) {
             if (node->type != XML_ELEMENT_NODE) continue;
             const std::string element = reinterpret_cast<const char*>(node->name);
@@ -226,6 +248,8 @@ TEST(ExportSet, MaterialXIsWellFormedWithMaterialXInputNames) {
             EXPECT_TRUE(nodeNames.insert(reinterpret_cast<const char*>(nodeName)).second);
             xmlFree(nodeName);
             if (element == "surfacematerial") ++materials;
+            if (element == "image") ++images;
+            if (element == "image") expectTextureFileExists(node, folder.path());
             if (element != "gltf_pbr") continue;
             for (xmlNodePtr input = node->children; input; input = input->next) {
                 if (input->type != XML_ELEMENT_NODE) continue;
@@ -245,6 +269,8 @@ TEST(ExportSet, MaterialXIsWellFormedWithMaterialXInputNames) {
             }
         }
         EXPECT_EQ(materials, 1);
+        // Painted metal textures its roughnesses, metal depth its base colour.
+        EXPECT_EQ(images > 0, std::string(name) != "validation_metal") << name;
         EXPECT_EQ(shaderInputs.size(), kGltfPbrInputs.size());
         EXPECT_NEAR(std::stod(shaderInputs.at("metallic")),
                     report.variants[0].fit.material.metallic, 1e-5);

@@ -1,6 +1,7 @@
-// Fault injection: kill -9 at random moments during a save, `evolve --out` and `variants --out`,
-// at least 50 times each. Whatever the moment, the file or folder must be one whole version: never
-// truncated, never a mix of two runs; temporary files left by a kill are removed next time.
+// Fault injection: kill -9 at random moments during a save, `evolve --out`, `variants --out` and
+// `export` (glTF and MaterialX), at least 50 times each. Whatever the moment, the file or folder
+// must be one whole version: never truncated, never a mix of two runs; temporary files left by a
+// kill are removed next time.
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <map>
 #include <random>
 #include <string>
 #include <thread>
@@ -221,6 +223,115 @@ TEST(KillDuringVariantsOut, TheFolderIsAlwaysOneWholeSet) {
         },
         wholeVariantSetSeed);
     fs::remove_all(out.parent_path());
+}
+
+// A folder's regular files and temporaries: name -> bytes.
+using FileSet = std::map<std::string, std::string>;
+
+FileSet filesIn(const fs::path& folder) {
+    FileSet files;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        std::ifstream in(entry.path(), std::ios::binary);
+        files[entry.path().filename().string()] = {std::istreambuf_iterator<char>(in),
+                                                   std::istreambuf_iterator<char>()};
+    }
+    return files;
+}
+
+bool isTemporaryFile(const std::string& name) {
+    return name.rfind('.', 0) == 0 && name.find(".matevo-tmp-") != std::string::npos;
+}
+
+// True when `files` holds every file of `whole` with the same bytes.
+bool holdsWhole(const FileSet& files, const FileSet& whole) {
+    for (const auto& [name, bytes] : whole) {
+        const auto found = files.find(name);
+        if (found == files.end() || found->second != bytes) return false;
+    }
+    return true;
+}
+
+// `export` of one of the three validation presets to OUT, at small sizes so that a run is short.
+std::vector<std::string> exportCommand(int preset, const fs::path& out) {
+    static const char* const kPresets[] = {"validation_metal", "validation_painted_metal",
+                                           "validation_metal_depth"};
+    return {std::string(MATEVO_BINARY_DIR) + "/matevo",
+            "export",
+            "--preset",
+            std::string(MATEVO_SOURCE_DIR) + "/presets/" + kPresets[preset] + ".json",
+            "--backend",
+            "cpu",
+            "--fit-size",
+            "16",
+            "--fit-renders",
+            "20",
+            "--report-size",
+            "16",
+            "--out",
+            out.string()};
+}
+
+// Each try exports another preset over the last whole export and is killed at a random moment
+// between its start and 1.3 times a whole run. The three presets' exports differ in their
+// companions (metal: none in MaterialX; painted metal: a roughness texture; metal depth: a base
+// colour texture; every .gltf its own .bin). After each kill the folder must hold, byte for byte,
+// the files of the previous whole export or of the killed one, the main file included; anything
+// else may only be a whole companion file of the killed export or a temporary file. A last run
+// to completion leaves exactly its own files.
+void killDuringExport(const std::string& extension) {
+    const fs::path folder = freshFolder("export" + extension);
+    std::vector<FileSet> wholeExports;
+    for (int preset = 0; preset < 3; ++preset) {
+        const fs::path reference = folder / ("reference" + std::to_string(preset));
+        fs::create_directories(reference);
+        ASSERT_TRUE(reap(spawn(exportCommand(preset, reference / ("set" + extension)))));
+        wholeExports.push_back(filesIn(reference));
+        ASSERT_GE(wholeExports.back().size(), 1u);
+    }
+    const fs::path out = folder / "out";
+    fs::create_directories(out);
+    const fs::path file = out / ("set" + extension);
+    const auto started = Clock::now();
+    ASSERT_TRUE(reap(spawn(exportCommand(0, file))));
+    const auto runTime =
+        std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - started);
+    ASSERT_EQ(filesIn(out), wholeExports[0]);
+
+    std::mt19937 random(31);
+    std::uniform_real_distribution<double> fraction(0.0, 1.3);
+    int lastWhole = 0, completed = 0, mainFileUntouched = 0;
+    for (int attempt = 0; attempt < kTries; ++attempt) {
+        const int preset = (attempt + 1) % 3;
+        const pid_t pid = spawn(exportCommand(preset, file));
+        killAfter(pid, std::chrono::microseconds(
+                           std::int64_t(fraction(random) * double(runTime.count()))));
+        const FileSet files = filesIn(out);
+        const int whole = holdsWhole(files, wholeExports[std::size_t(preset)]) ? preset
+                          : holdsWhole(files, wholeExports[std::size_t(lastWhole)]) ? lastWhole
+                                                                                  : -1;
+        ASSERT_NE(whole, -1) << "attempt " << attempt << ": neither export is whole";
+        for (const auto& [name, bytes] : files) {
+            if (wholeExports[std::size_t(whole)].count(name) || isTemporaryFile(name)) continue;
+            const auto& killed = wholeExports[std::size_t(preset)];
+            EXPECT_TRUE(killed.count(name) && killed.at(name) == bytes)
+                << "attempt " << attempt << ": " << name << " belongs to neither export";
+        }
+        (whole == preset ? completed : mainFileUntouched) += 1;
+        lastWhole = whole;
+    }
+    ASSERT_TRUE(reap(spawn(exportCommand(0, file))));
+    EXPECT_EQ(filesIn(out), wholeExports[0]);
+    std::printf("kill -9 during export %s: %d tries, %d had finished, %d left the previous "
+                "export, run time %.2f s\n",
+                extension.c_str(), kTries, completed, mainFileUntouched,
+                double(runTime.count()) * 1e-6);
+    fs::remove_all(folder);
+}
+
+TEST(KillDuringExport, AGltfAndItsBufferAreAlwaysOneWholeExport) { killDuringExport(".gltf"); }
+
+TEST(KillDuringExport, AMaterialXAndItsTexturesAreAlwaysOneWholeExport) {
+    killDuringExport(".mtlx");
 }
 
 }  // namespace

@@ -53,7 +53,7 @@ TEST(FamilyRules, Table2RangesPerCoatAndBase) {
 }
 
 TEST(FamilyRules, WithoutAMediumTheMediumChromosomesArePinnedToZero) {
-    for (std::size_t i = kDepth; i < kChromosomeCount; ++i) {
+    for (std::size_t i = kDepth; i < kPaperChromosomeCount; ++i) {
         const ChromosomeRange range = chromosomeRange(kClearcoatConductor, i);
         EXPECT_FALSE(range.active) << chromosomeName(i);
         EXPECT_EQ(range.min, 0.0);
@@ -63,6 +63,35 @@ TEST(FamilyRules, WithoutAMediumTheMediumChromosomesArePinnedToZero) {
     Genome genome = genomeOf(1.2, 0.8, 0.03, 0.1);
     genome[kG] = 0.8;
     expectRejected(genome, kClearcoatConductor, "g", "no medium");
+}
+
+// Hue variety: the kappa genes are off (pinned to 0) unless asked for, and then active in
+// their stated bounds for a conductor base only.
+TEST(FamilyRules, KappaGenesAreOffByDefaultAndBoundedWhenOn) {
+    for (const MaterialFamily& family : supportedFamilies()) {
+        const FamilyRules paper = familyRules(family);
+        const FamilyRules hue = familyRules(family, KappaGenes::On);
+        for (std::size_t i = 0; i < kPaperChromosomeCount; ++i)
+            EXPECT_EQ(describe(paper.ranges[i]), describe(hue.ranges[i])) << chromosomeName(i);
+        for (std::size_t i = kKappaR; i <= kKappaB; ++i) {
+            EXPECT_FALSE(paper.ranges[i].active) << describe(family);
+            EXPECT_EQ(paper.ranges[i].min, 0.0);
+            EXPECT_EQ(hue.ranges[i].active, family.base == Base::Conductor) << describe(family);
+            if (family.base == Base::Conductor) {
+                EXPECT_EQ(describe(hue.ranges[i]), "[1, 4]");
+            }
+        }
+    }
+    Genome tinted = genomeOf(1.2, 0.8, 0.03, 0.1);
+    tinted[kKappaG] = 2.0;
+    expectRejected(tinted, kClearcoatConductor, "kappa_g", "kappa genes are off");
+    const FamilyRules hue = familyRules(kClearcoatConductor, KappaGenes::On);
+    tinted[kKappaR] = tinted[kKappaB] = 1.0;
+    EXPECT_EQ(validateGenome(tinted, hue), std::nullopt);
+    tinted[kKappaB] = 4.5;
+    ASSERT_TRUE(validateGenome(tinted, hue));
+    EXPECT_NE(validateGenome(tinted, hue)->find("kappa_b = 4.5 is outside [1, 4]"),
+              std::string::npos);
 }
 
 TEST(FamilyRules, EachRangeEndIsInclusiveOrExclusiveAsTable2Says) {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <set>
 
 #include "color/ImageDifference.h"
 #include "../genome/TestGenomes.h"
@@ -13,16 +15,21 @@
 namespace matevo {
 namespace {
 
-// Validation metal on the CPU reference renderer (the same scene as every back end).
-RenderGenomes cpuRenderer(int size) {
-    return [size](std::span<const Genome> genomes) -> Result<std::vector<Image>> {
+constexpr std::array<double, 3> kPresetKappa = {3.1, 2.9, 2.8};
+
+// Genomes of a family on the CPU reference renderer (the same scene as every back end), with
+// the preset's kappa unless they carry their own (hue variety).
+RenderGenomes cpuRenderer(int size, const MaterialFamily& family = kClearcoatConductor) {
+    return [size, family](std::span<const Genome> genomes) -> Result<std::vector<Image>> {
         std::vector<Image> images;
         for (const Genome& genome : genomes)
-            images.push_back(renderSphereCpu({genome, kClearcoatConductor, {3.1, 2.9, 2.8}},
+            images.push_back(renderSphereCpu(materialOf(genome, family, kPresetKappa),
                                              SceneTextures{}, SceneSettings{}, size));
         return images;
     };
 }
+
+const MaterialInstance kValidationMetal{validationMetal(), kClearcoatConductor, kPresetKappa};
 
 constexpr int kFitnessSize = 32;
 constexpr int kOutputSize = 64;
@@ -38,8 +45,8 @@ VariantRequest smallRequest() {
 
 std::unique_ptr<VariantSearch> runSearch(const VariantRequest& request,
                                          const VariantSearchSettings& settings = {}) {
-    auto search = VariantSearch::start(kClearcoatConductor, validationMetal(), request, settings,
-                                       cpuRenderer(kFitnessSize));
+    auto search =
+        VariantSearch::start(kValidationMetal, request, settings, cpuRenderer(kFitnessSize));
     EXPECT_TRUE(search.ok());
     if (!search) return nullptr;
     EXPECT_TRUE((*search)->run().ok());
@@ -108,15 +115,8 @@ TEST(VariantSearch, SameSeedSameSetOtherSeedOtherSet) {
 
 // The paper's operators and Table 2 hold for every individual the search makes.
 TEST(VariantSearch, EveryIndividualSatisfiesTable2) {
-    auto search = VariantSearch::start(kMetalDepth, validationMetalDepth(), smallRequest(), {},
-                                       [](std::span<const Genome> genomes) {
-                                           std::vector<Image> images;
-                                           for (const Genome& genome : genomes)
-                                               images.push_back(renderSphereCpu(
-                                                   {genome, kMetalDepth, {3.1, 2.9, 2.8}},
-                                                   SceneTextures{}, SceneSettings{}, 16));
-                                           return Result<std::vector<Image>>(std::move(images));
-                                       });
+    auto search = VariantSearch::start({validationMetalDepth(), kMetalDepth, kPresetKappa},
+                                       smallRequest(), {}, cpuRenderer(16, kMetalDepth));
     ASSERT_TRUE(search.ok());
     int checked = 0;
     do {
@@ -126,6 +126,48 @@ TEST(VariantSearch, EveryIndividualSatisfiesTable2) {
         }
     } while (!(*search)->finished() && (*search)->step().ok());
     EXPECT_GT(checked, 100);
+}
+
+// Hue variety: the kappa genes go through the same operators, inside their bounds, for every
+// individual, and the paper's 12 chromosomes still satisfy Table 2.
+TEST(VariantSearch, HueVarietyKeepsEveryKappaGeneInsideItsBounds) {
+    VariantRequest request = smallRequest();
+    request.kappaGenes = KappaGenes::On;
+    request.count = 40;  // more than the band holds at this spacing: the search runs long
+    auto search = VariantSearch::start({validationMetalDepth(), kMetalDepth, kPresetKappa},
+                                       request, {}, cpuRenderer(16, kMetalDepth));
+    ASSERT_TRUE(search.ok());
+    const FamilyRules hueRules = familyRules(kMetalDepth, KappaGenes::On);
+    std::set<std::array<double, 3>> kappas;
+    int checked = 0;
+    do {
+        for (const Individual& individual : (*search)->ga().population()) {
+            const Genome& genome = individual.genome;
+            const auto problem = validateGenome(genome, hueRules);
+            ASSERT_FALSE(problem) << *problem;
+            for (std::size_t i = kKappaR; i <= kKappaB; ++i) {
+                ASSERT_GE(genome[i], kKappaGeneMin);
+                ASSERT_LE(genome[i], kKappaGeneMax);
+            }
+            ASSERT_TRUE(satisfiesTable2(materialOf(genome, kMetalDepth, kPresetKappa).genome,
+                                        kMetalDepth));
+            kappas.insert(genome.kappa());
+            ++checked;
+        }
+    } while (!(*search)->finished() && (*search)->step().ok());
+    EXPECT_GT(checked, 100);
+    EXPECT_GT(kappas.size(), 10u) << "the operators vary kappa";
+}
+
+TEST(VariantSearch, HueVarietyIsOffByDefault) {
+    EXPECT_EQ(VariantRequest{}.kappaGenes, KappaGenes::Off);
+    auto search = runSearch(smallRequest());
+    ASSERT_TRUE(search);
+    EXPECT_FALSE(search->rules().ranges[kKappaR].active);
+    for (const auto& member : search->archive().members())
+        EXPECT_FALSE(member.genome.carriesKappa());
+    for (const Individual& individual : search->ga().population())
+        EXPECT_FALSE(individual.genome.carriesKappa());
 }
 
 TEST(VariantSearch, KeptVariantsStayAndDiscardedOnesNeverReturn) {
@@ -180,8 +222,7 @@ TEST(VariantSearch, ARenderFailureIsAnError) {
         if (++calls > 1) return Error{"device lost"};
         return cpuRenderer(8)(genomes);
     };
-    auto search =
-        VariantSearch::start(kClearcoatConductor, validationMetal(), smallRequest(), {}, failing);
+    auto search = VariantSearch::start(kValidationMetal, smallRequest(), {}, failing);
     ASSERT_FALSE(search.ok());
     EXPECT_EQ(search.error().message, "device lost");
 }
