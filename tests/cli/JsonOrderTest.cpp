@@ -71,7 +71,7 @@ TEST(JsonOrder, VariantsReportAndMaterialFiles) {
                     "pairwise_de00", "smallest_pairwise_de00", "evaluations", "archived",
                     "output_renders", "wall_time_s", "seed"}));
     EXPECT_EQ(keysOf(report["request"]),
-              (Keys{"count", "band", "min_apart", "seed", "size", "fitness_size"}));
+              (Keys{"count", "band", "min_apart", "seed", "hue_variety", "size", "fitness_size"}));
     ASSERT_FALSE(report["variants"].empty());
     EXPECT_EQ(keysOf(report["variants"][0]),
               (Keys{"index", "file", "image", "heatmap", "de00_to_target",
