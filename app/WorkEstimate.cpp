@@ -56,7 +56,7 @@ WorkEstimate evolveEstimate(int population, int generations, int size) {
 }
 
 WorkEstimate variantsEstimate(int count, int size, int fitnessSize, int maxEvaluations,
-                              int population) {
+                              int population, int blocks) {
     const std::uint64_t members = std::uint64_t(count + kVariantSpare + 1);  // and the target
     const std::uint64_t outputPixels = pixels(size, size);
     const std::uint64_t searchPixels = pixels(fitnessSize, fitnessSize);
@@ -72,6 +72,10 @@ WorkEstimate variantsEstimate(int count, int size, int fitnessSize, int maxEvalu
             (kRenderSecondsPerPixel + kDeltaESecondsPerPixel) +
         double(members) * double(outputPixels) * kWrittenCandidateSecondsPerPixel +
         double(members) * double(members) / 2 * double(outputPixels) * kDeltaESecondsPerPixel;
+    if (blocks > 1) {
+        estimate.what = std::to_string(blocks) + " blocks of " + estimate.what;
+        estimate.seconds *= double(blocks);
+    }
     return estimate;
 }
 

@@ -21,9 +21,10 @@ struct WorkEstimate {
 WorkEstimate renderEstimate(int size);
 // `evolve`, with --out at `size` when size > 0 (the GA alone otherwise).
 WorkEstimate evolveEstimate(int population, int generations, int size);
-// `variants`: the search at fitnessSize, then the set checked and written at size.
+// `variants`: the search at fitnessSize, then the set checked and written at size; in
+// `blocks` blocks of `count` variants, one after another (memory of one, time of all).
 WorkEstimate variantsEstimate(int count, int size, int fitnessSize, int maxEvaluations,
-                              int population);
+                              int population, int blocks = 1);
 // `experiment`: gaRuns GA runs, each scored by one render at size.
 WorkEstimate experimentEstimate(long long gaRuns, int population, int generations, int size);
 // `compare` of two decoded width x height images (decoding is checked when each is read).

@@ -34,6 +34,7 @@ constexpr Subcommand kSubcommands[] = {
     {"compare", runCompare, "per-pixel CIEDE2000 between two images"},
     {"experiment", runExperiment, "the paper's section 5 experiment: metrics x runs"},
     {"variants", runVariants, "N variants a chosen perceptible difference from the target"},
+    {"merge", runMerge, "join the shares of a variants --shard run into one set"},
     {"presets", runPresets, "list the presets --preset NAME accepts (shipped and your own)"},
     {"bench", runBench, "measure the GA, CIEDE2000 and renderers; medians"},
     {"export", runExport, "write materials for engines (glTF, MaterialX), fitted by dE00"},

@@ -15,8 +15,7 @@
 #include "io/ResourcePaths.h"
 #include "render/CpuPopulationRenderer.h"
 #include "scene/SceneTextures.h"
-#include "variants/VariantSearch.h"
-#include "variants/VariantSet.h"
+#include "variants/FindVariants.h"
 
 namespace matevo::bench {
 namespace {
@@ -48,17 +47,14 @@ Outcome measure(const Preset& preset, const SceneTextures& textures, bool novelt
         VariantSearchSettings settings;
         settings.novelty = novelty;
         const auto start = std::chrono::steady_clock::now();
-        auto search = VariantSearch::start({preset.target, preset.family, preset.baseKappa},
-                                           request, settings, renderAt(kFitnessSize));
-        if (!search || !(*search)->run()) throw std::runtime_error("variant search failed");
-        auto set = chooseVariantSet((*search)->archive(), request, preset.target,
-                                    renderAt(kOutputSize));
-        if (!set) throw std::runtime_error(set.error().message);
+        auto found = findVariants({preset.target, preset.family, preset.baseKappa}, request,
+                                  settings, renderAt(kFitnessSize), renderAt(kOutputSize));
+        if (!found) throw std::runtime_error(found.error().message);
         milliseconds.push_back(std::chrono::duration<double, std::milli>(
                                    std::chrono::steady_clock::now() - start)
                                    .count());
-        delivered.push_back(double(set->variants.size()));
-        evaluations.push_back(double((*search)->progress().evaluations));
+        delivered.push_back(double(found->set.variants.size()));
+        evaluations.push_back(double(found->progress.evaluations));
     }
     return {median(delivered), median(evaluations), median(milliseconds)};
 }

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
+#include "GaControls.h"
 #include "HeatmapControls.h"
 #include "ImageView.h"
 #include "KeptBin.h"
@@ -15,9 +17,13 @@ namespace matevo::ui {
 namespace {
 
 constexpr float kMinTileSize = 64.0f;
+// The advice's suggestion: enough for every shipped preset to converge (validation metal depth
+// needs 30), and never past the generations slider's range.
+constexpr int kConvergingGenerations = 30;
+constexpr int kAdviceMaxGenerations = kSliderMaxGenerations;
 constexpr float kMaxTileSize = 512.0f;
 
-void drawStatusLine(const EvolutionView& evolution, std::size_t shown) {
+void drawStatusLine(const EvolutionView& evolution, std::size_t shown, bool hideDuplicates) {
     const int done = evolution.history.empty() ? 0 : evolution.history.back().generation;
     if (evolution.tableBuildProgress >= 0.0) {
         ImGui::TextColored(kAccentColor,
@@ -34,7 +40,8 @@ void drawStatusLine(const EvolutionView& evolution, std::size_t shown) {
         ImGui::TextColored(kAccentColor, "Drawing the whole population: %zu of %d distinct",
                            evolution.candidates.size(), evolution.distinctGenomes);
     else
-        mutedText(std::to_string(shown) + " of " + std::to_string(evolution.candidates.size()) +
+        mutedText(std::to_string(shown) + (hideDuplicates ? "" : " tiles (one per individual)") +
+                  " of " + std::to_string(evolution.candidates.size()) +
                   " distinct candidates shown, after " + std::to_string(done) + " generations" +
                   (int(evolution.candidates.size()) < evolution.distinctGenomes
                        ? " (the best of " + std::to_string(evolution.distinctGenomes) + ")"
@@ -80,16 +87,24 @@ void drawGridToolbar(GridView& view, HeatmapView& heatmap) {
     hoverHint(
         "Show only candidates whose mean ΔE00 from the target lies in one of the paper's "
         "bands (2-10: perceptible at a glance).");
+    sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Hide duplicates"));
+    ImGui::Checkbox("Hide duplicates", &view.hideDuplicates);
+    hoverHint(
+        "On: identical individuals of the population share one tile, labelled with their "
+        "count (#3 ×5). Off: every individual has its own tile.");
 }
 
-void drawTooltip(const CandidateView& candidate) {
+void drawTooltip(const GridTile& tile) {
+    const CandidateView& candidate = *tile.candidate;
     const PerceptualBand band = classifyDeltaE(candidate.meanDeltaE00);
     ImGui::BeginTooltip();
-    ImGui::Text("Candidate #%d", candidate.rank);
-    if (candidate.copies > 1) {
+    ImGui::Text("Candidate #%d", tile.rank);
+    if (tile.copies > 1) {
         ImGui::SameLine();
-        ImGui::TextColored(kMutedTextColor, "(%d identical individuals, one tile)",
-                           candidate.copies);
+        ImGui::TextColored(kMutedTextColor, "(%d identical individuals, one tile)", tile.copies);
+    } else if (candidate.copies > 1) {
+        ImGui::SameLine();
+        ImGui::TextColored(kMutedTextColor, "(one of %d identical individuals)", candidate.copies);
     }
     ImGui::Text("fitness %.4f   mean ΔE00 %.2f", candidate.fitness, candidate.meanDeltaE00);
     ImGui::TextColored(kMutedTextColor, "ΔE00 band %s: %s",
@@ -106,27 +121,30 @@ struct TileClicks {
     bool doubleClicked = false;
 };
 
-TileClicks drawTile(const CandidateView& candidate, const HeatmapView& heatmap, float size,
-                    bool selected, bool marked) {
+float tileHeight(float size) { return size + 2.0f * ImGui::GetTextLineHeight(); }
+
+TileClicks drawTile(const GridTile& tile, const HeatmapView& heatmap, float size, bool selected,
+                    bool marked) {
+    const CandidateView& candidate = *tile.candidate;
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
     const ImVec2 topLeft = ImGui::GetCursorScreenPos();
     const float lineHeight = ImGui::GetTextLineHeight();
-    ImGui::PushID(candidate.rank);
+    ImGui::PushID(tile.rank);
     TileClicks clicks;
-    clicks.clicked = ImGui::InvisibleButton("tile", ImVec2(size, size + 2.0f * lineHeight));
+    clicks.clicked = ImGui::InvisibleButton("tile", ImVec2(size, tileHeight(size)));
     clicks.doubleClicked = ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(0);
     const bool hovered = ImGui::IsItemHovered();
     ImGui::PopID();
-    if (hovered) drawTooltip(candidate);
+    if (hovered) drawTooltip(tile);
 
     drawImage(drawList, topLeft, size, candidate.image,
               heatmap.enabled ? candidate.heatmap : nullptr, heatmap.opacity);
     const ImVec2 labelAt(topLeft.x + 2.0f, topLeft.y + size + 1.0f);
     char rankText[32];
-    if (candidate.copies > 1)
-        std::snprintf(rankText, sizeof rankText, "#%d ×%d", candidate.rank, candidate.copies);
+    if (tile.copies > 1)
+        std::snprintf(rankText, sizeof rankText, "#%d ×%d", tile.rank, tile.copies);
     else
-        std::snprintf(rankText, sizeof rankText, "#%d", candidate.rank);
+        std::snprintf(rankText, sizeof rankText, "#%d", tile.rank);
     drawList.AddText(labelAt, ImGui::GetColorU32(kAccentColor), rankText);
     char fitnessText[48];
     std::snprintf(fitnessText, sizeof fitnessText, "fit %.4f", candidate.fitness);
@@ -151,46 +169,94 @@ TileClicks drawTile(const CandidateView& candidate, const HeatmapView& heatmap, 
     return clicks;
 }
 
+// Under the status line of a finished run far from the target: why, and a button that runs
+// again with the generations it suggests.
+void drawAdvice(EditorState& state) {
+    if (state.evolution.running) return;
+    const auto advice = adviceForFarCandidates(state.evolution, state.preset.ga);
+    if (!advice) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, kWarningColor);
+    ImGui::TextWrapped("%s", advice->text.c_str());
+    ImGui::PopStyleColor();
+    if (advice->generations == 0) return;
+    const std::string label = "Run " + std::to_string(advice->generations) + " generations";
+    if (ImGui::Button(label.c_str())) {
+        state.status.post("Generations " + std::to_string(state.preset.ga.generations) + " → " +
+                          std::to_string(advice->generations) + ": running again (Ctrl+Z undoes)");
+        state.preset.ga.generations = advice->generations;
+    }
+}
+
+// Scrolls the tile child so that `row` is in view.
+void scrollToRow(int row, float rowHeight) {
+    const float top = float(row) * rowHeight;
+    const float shown = ImGui::GetWindowHeight();
+    if (top < ImGui::GetScrollY())
+        ImGui::SetScrollY(top);
+    else if (top + rowHeight > ImGui::GetScrollY() + shown)
+        ImGui::SetScrollY(top + rowHeight - shown);
+}
+
 void drawPopulation(EditorState& state) {
     const EvolutionView& evolution = state.evolution;
-    const std::vector<const CandidateView*> shown = visibleCandidates(evolution, state.grid);
-    drawStatusLine(evolution, shown.size());
+    const std::vector<GridTile> shown = visibleTiles(evolution, state.grid);
+    drawStatusLine(evolution, shown.size(), state.grid.hideDuplicates);
+    drawAdvice(state);
     ImGui::BeginChild("tiles");
-    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    const ImVec2 spacing = ImGui::GetStyle().ItemSpacing;
     const float available = ImGui::GetContentRegionAvail().x;
     // The user's size, shrunk only when not even one tile would fit.
     const float tileSize = std::clamp(state.grid.tileSize, 16.0f, std::max(16.0f, available));
-    const int columns = std::max(1, int(std::floor((available + spacing) / (tileSize + spacing))));
+    const int columns =
+        std::max(1, int(std::floor((available + spacing.x) / (tileSize + spacing.x))));
     state.gridColumns = columns;
-    for (std::size_t i = 0; i < shown.size(); ++i) {
-        if (i % std::size_t(columns) != 0) ImGui::SameLine();
-        const CandidateView& candidate = *shown[i];
-        const bool selected = state.selected == candidate.genome;
-        auto& marked = state.marked;
-        const auto mark = std::find(marked.begin(), marked.end(), candidate.genome);
-        const TileClicks clicks =
-            drawTile(candidate, state.heatmap, tileSize, selected, mark != marked.end());
-        if (clicks.clicked && ImGui::GetIO().KeyCtrl) {
-            if (mark != marked.end())
-                marked.erase(mark);
-            else
-                marked.push_back(candidate.genome);
-        } else if (clicks.clicked || clicks.doubleClicked) {
-            marked.assign(1, candidate.genome);
+    const int rows = (int(shown.size()) + columns - 1) / columns;
+    const float rowHeight = tileHeight(tileSize) + spacing.y;
+    if (std::exchange(state.revealSelected, false))
+        for (std::size_t i = 0; i < shown.size(); ++i)
+            if (shown[i].candidate->genome == state.selected) {
+                scrollToRow(int(i) / columns, rowHeight);
+                break;
+            }
+    // Only the rows in view are drawn: the whole population may be hundreds of tiles.
+    ImGuiListClipper clipper;
+    clipper.Begin(rows, rowHeight);
+    while (clipper.Step()) {
+        for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
+            const std::size_t first = std::size_t(row) * std::size_t(columns);
+            const std::size_t last = std::min(shown.size(), first + std::size_t(columns));
+            for (std::size_t i = first; i < last; ++i) {
+                if (i != first) ImGui::SameLine();
+                const GridTile& tile = shown[i];
+                const Genome& genome = tile.candidate->genome;
+                const bool selected = state.selected == genome;
+                auto& marked = state.marked;
+                const auto mark = std::find(marked.begin(), marked.end(), genome);
+                const TileClicks clicks =
+                    drawTile(tile, state.heatmap, tileSize, selected, mark != marked.end());
+                if (clicks.clicked && ImGui::GetIO().KeyCtrl) {
+                    if (mark != marked.end())
+                        marked.erase(mark);
+                    else
+                        marked.push_back(genome);
+                } else if (clicks.clicked || clicks.doubleClicked) {
+                    marked.assign(1, genome);
+                }
+                if (clicks.clicked || clicks.doubleClicked) {
+                    state.selected = genome;
+                    state.inspectShowsTarget = false;
+                }
+                if (clicks.doubleClicked) state.enlarged = true;
+            }
         }
-        if (clicks.clicked || clicks.doubleClicked) {
-            state.selected = candidate.genome;
-            state.inspectShowsTarget = false;
-        }
-        if (clicks.doubleClicked) state.enlarged = true;
     }
     ImGui::EndChild();
 }
 
 }  // namespace
 
-std::optional<std::string> adviceForFarCandidates(const EvolutionView& evolution,
-                                                  const GaSettings& ga) {
+std::optional<FarFromTargetAdvice> adviceForFarCandidates(const EvolutionView& evolution,
+                                                          const GaSettings& ga) {
     if (evolution.candidates.empty()) return std::nullopt;
     std::vector<double> deltaE;
     for (const CandidateView& candidate : evolution.candidates)
@@ -200,27 +266,49 @@ std::optional<std::string> adviceForFarCandidates(const EvolutionView& evolution
     if (*middle <= kFarFromTargetDeltaE) return std::nullopt;
     char median[16];
     std::snprintf(median, sizeof median, "%.1f", *middle);
-    return "The candidates are far from the target (median ΔE00 " + std::string(median) +
-           "): " + std::to_string(ga.generations) +
-           " generations are too few for this material to converge; try 30 (validation metal "
-           "depth: median 13 at 5, 1-3 at 30). For variants a set distance from the target, "
-           "use Variants: it searches by rendered ΔE00.";
+    FarFromTargetAdvice advice;
+    // Past the slider's range more generations rarely help: the population has converged.
+    if (ga.generations < kAdviceMaxGenerations)
+        advice.generations =
+            std::min(kAdviceMaxGenerations, std::max(kConvergingGenerations, 2 * ga.generations));
+    const std::string variants =
+        "For variants at a set distance from the target, use Variants: it searches by rendered "
+        "ΔE00.";
+    if (advice.generations == 0)
+        advice.text = "The candidates are far from the target (median ΔE00 " + std::string(median) +
+                      ") even after " + std::to_string(ga.generations) +
+                      " generations: a larger population or another metric may help. " + variants;
+    else
+        advice.text = "The candidates are far from the target (median ΔE00 " + std::string(median) +
+                      "): " + std::to_string(ga.generations) +
+                      " generations are too few for this material to converge; try " +
+                      std::to_string(advice.generations) +
+                      " (validation metal depth: median 13 at 5, 1-3 at 30). " + variants;
+    return advice;
 }
 
-std::vector<const CandidateView*> visibleCandidates(const EvolutionView& evolution,
-                                                    const GridView& view) {
-    std::vector<const CandidateView*> shown;
+std::vector<GridTile> visibleTiles(const EvolutionView& evolution, const GridView& view) {
+    std::vector<const CandidateView*> candidates;
     for (const CandidateView& candidate : evolution.candidates) {
         if (view.band >= 0 &&
             classifyDeltaE(candidate.meanDeltaE00) != kPerceptualBands[std::size_t(view.band)])
             continue;
-        shown.push_back(&candidate);
+        candidates.push_back(&candidate);
     }
     if (view.order == TileOrder::DeltaE)
-        std::stable_sort(shown.begin(), shown.end(), [](const auto* a, const auto* b) {
+        std::stable_sort(candidates.begin(), candidates.end(), [](const auto* a, const auto* b) {
             return a->meanDeltaE00 < b->meanDeltaE00;
         });
-    return shown;
+    std::vector<GridTile> tiles;
+    for (const CandidateView* candidate : candidates) {
+        if (view.hideDuplicates) {
+            tiles.push_back({candidate, candidate->rank, candidate->copies});
+            continue;
+        }
+        for (int copy = 0; copy < std::max(1, candidate->copies); ++copy)
+            tiles.push_back({candidate, candidate->rank + copy, 1});
+    }
+    return tiles;
 }
 
 void drawCandidateGrid(EditorState& state) {

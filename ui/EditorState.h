@@ -38,6 +38,7 @@ struct GridView {
     float tileSize = 120.0f;  // pixels; the user's choice, kept when the window grows
     TileOrder order = TileOrder::Fitness;
     int band = -1;  // show only this PerceptualBand (index); -1: all
+    bool hideDuplicates = true;  // identical individuals as one tile with a count
 
     bool operator==(const GridView&) const = default;
 };
@@ -106,6 +107,7 @@ struct EditorState {
     float wipePosition = 0.5f;        // Wipe: the split, 0 = all candidate, 1 = all target
     bool inspectShowsTarget = false;  // Flip: the target instead of the candidate (Space)
     int gridColumns = 1;              // as last drawn, for the arrow keys
+    bool revealSelected = false;      // scroll the grid to the selected tile (arrow keys)
     StatusLog status;                 // every action's outcome; the status bar shows the newest
     bool statusLogOpen = false;       // the window listing the recent messages
     std::vector<std::filesystem::path> recentFiles;  // newest first, remembered in imgui.ini

@@ -130,13 +130,23 @@ void EditorUi::handleGridKeys() {
                      : pressed(ImGuiKey_DownArrow)  ? columns
                                                     : 0;
     if (step == 0) return;
-    const auto shown = visibleCandidates(state_.evolution, state_.grid);
+    const std::vector<GridTile> shown = visibleTiles(state_.evolution, state_.grid);
     if (shown.empty()) return;
+    // From the selected genome's first tile backwards, from its last forwards: with duplicates
+    // shown, its copies are one step.
     int index = 0;
-    if (const CandidateView* current = state_.inspectedCandidate())
+    if (const CandidateView* current = state_.inspectedCandidate()) {
+        int first = -1, last = -1;
         for (std::size_t i = 0; i < shown.size(); ++i)
-            if (shown[i] == current) index = int(i) + step;
-    state_.selected = shown[std::size_t(std::clamp(index, 0, int(shown.size()) - 1))]->genome;
+            if (shown[i].candidate == current) {
+                if (first < 0) first = int(i);
+                last = int(i);
+            }
+        if (first >= 0) index = (step < 0 ? first : last) + step;
+    }
+    state_.selected =
+        shown[std::size_t(std::clamp(index, 0, int(shown.size()) - 1))].candidate->genome;
+    state_.revealSelected = true;
 }
 
 void EditorUi::drawDialogs() {
@@ -200,8 +210,7 @@ void EditorUi::dropFile(const std::filesystem::path& file) {
     const MaterialInstance& dropped = material->file.material;
     if (dropped.family != state_.preset.family) {
         state_.status.post("Dropped material " + file.string() + " is of the family " +
-                               describe(dropped.family) + ", not " +
-                               describe(state_.preset.family),
+                               describe(dropped.family) + ", not " + describe(state_.preset.family),
                            StatusKind::Error);
         return;
     }

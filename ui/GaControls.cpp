@@ -14,7 +14,6 @@ namespace {
 // Drag ranges for interactive use. Presets hold more (kMaxPopulation, kMaxGenerations), which
 // Ctrl+click typing reaches: sliders do not clamp typed values to their drag range.
 constexpr int kSliderMaxPopulation = 400;
-constexpr int kSliderMaxGenerations = 100;
 constexpr float kMaxWeight = 5.0f;
 
 // Keeps `value` in [low, high]; when it was outside, says so.

@@ -9,6 +9,9 @@
 
 namespace matevo::ui {
 
+// The generations slider's drag range ends here; typing (Ctrl+click) reaches kMaxGenerations.
+inline constexpr int kSliderMaxGenerations = 100;
+
 // Typed values beyond a slider's drag range are kept when presets allow them; values no preset
 // allows are clamped, and `status` says what was changed.
 void drawGaControls(GaSettings& settings, const MaterialFamily& family, StatusLog& status);

@@ -10,9 +10,9 @@ namespace {
 ImVec4 colorOf(StatusKind kind) {
     switch (kind) {
         case StatusKind::Warning:
-            return {1.0f, 0.78f, 0.35f, 1.0f};
+            return kWarningColor;
         case StatusKind::Error:
-            return {1.0f, 0.45f, 0.42f, 1.0f};
+            return kErrorColor;
         case StatusKind::Info:
             break;
     }

@@ -39,6 +39,7 @@ void readLine(ImGuiContext*, ImGuiSettingsHandler*, void* entry, const char* lin
             std::strcmp(word, "delta_e") == 0 ? TileOrder::DeltaE : TileOrder::Fitness;
     if (std::sscanf(line, "band=%d", &flag) == 1)
         state.grid.band = std::clamp(flag, -1, kPerceptualBandCount - 1);
+    if (std::sscanf(line, "hide_duplicates=%d", &flag) == 1) state.grid.hideDuplicates = flag != 0;
     if (std::sscanf(line, "plot_from_zero=%d", &flag) == 1) state.plotFromZero = flag != 0;
     if (std::sscanf(line, "split_controls=%f", &number) == 1)
         state.splits.controlsWidth = std::max(0.0f, number);
@@ -65,7 +66,8 @@ void writeAll(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out
     out->appendf("tile_size=%g\nsort=%s\nband=%d\ncompare=%s\n", double(state.grid.tileSize),
                  state.grid.order == TileOrder::DeltaE ? "delta_e" : "fitness", state.grid.band,
                  kCompare[int(state.compareMode)]);
-    out->appendf("plot_from_zero=%d\n", int(state.plotFromZero));
+    out->appendf("hide_duplicates=%d\nplot_from_zero=%d\n", int(state.grid.hideDuplicates),
+                 int(state.plotFromZero));
     out->appendf("split_controls=%g\nsplit_target=%g\nsplit_grid=%g\n",
                  double(state.splits.controlsWidth), double(state.splits.targetWidth),
                  double(state.splits.gridFraction));

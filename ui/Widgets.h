@@ -37,5 +37,7 @@ void sameLineIfFits(float width);
 
 inline const ImVec4 kAccentColor = {0.45f, 0.72f, 1.0f, 1.0f};
 inline const ImVec4 kMutedTextColor = {0.62f, 0.64f, 0.68f, 1.0f};
+inline const ImVec4 kWarningColor = {1.0f, 0.78f, 0.35f, 1.0f};
+inline const ImVec4 kErrorColor = {1.0f, 0.45f, 0.42f, 1.0f};
 
 }  // namespace matevo::ui

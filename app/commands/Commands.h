@@ -13,6 +13,7 @@ int runPresets(CommandLine& args);
 int runBench(CommandLine& args);
 int runExport(CommandLine& args);
 int runVariants(CommandLine& args);
+int runMerge(CommandLine& args);
 int runScene(CommandLine& args);
 
 }  // namespace matevo::cli

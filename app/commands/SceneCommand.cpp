@@ -7,11 +7,11 @@
 #include "PresetOption.h"
 #include "color/ToneMap.h"
 #include "commands/Commands.h"
-#include "genome/FamilyRules.h"
 #include "gpu/GpuContext.h"
 #include "gpu/GpuSceneRenderer.h"
 #include "io/ImageFile.h"
 #include "io/ImageType.h"
+#include "io/MaterialFile.h"
 #include "io/VariantFolder.h"
 #include "material/FgdTableCache.h"
 #include "mesh/MeshFile.h"
@@ -30,32 +30,39 @@ constexpr const char* kHelp =
     "(4x MSAA; the same BSDF as the sphere renders). Needs a Vulkan device.\n"
     "  --preset P     family, base kappa, textures and light (default: validation metal)\n"
     "  --mesh M       a built-in mesh or a .obj / .gltf / .glb file (default shaderball)\n"
-    "  --variants DIR genome .json files: DIR/variants/ as `matevo variants --out DIR` writes\n"
-    "                 them, or DIR itself; instance i wears variant i mod count (default: the\n"
-    "                 preset's target on every instance)\n"
+    "  --variants DIR material .json files: DIR/variants/ as `matevo variants --out DIR` writes\n"
+    "                 them, or DIR itself, each with its own kappa (a bare genome takes the\n"
+    "                 preset's); instance i wears variant i mod count (default: the preset's\n"
+    "                 target on every instance)\n"
     "  --instances N  default: one per variant, at least 1\n"
     "  --layout L     grid (rows on the floor, default) or crowd (scattered, each turned)\n"
     "  --env E        studio: the paper's light plus the generated studio environment (default);\n"
-    "                 FILE: the light plus a lat-long .hdr or .exr environment; ambient: the light\n"
+    "                 FILE: the light plus a lat-long .hdr or .exr environment; ambient: the "
+    "light\n"
     "                 plus a uniform environment; paper: the paper's single light alone\n"
     "  --exposure S   in stops (default 0); --tonemap aces (ACES filmic, Narkowicz 2015 fit;\n"
     "                 default) or none\n"
     "  --size WxH     image size (default 1280x720); --seed S the crowd's layout (default 1)\n"
     "PNG is sRGB 8-bit after exposure and tone mapping; EXR is linear, before them.\n";
 
-// The variants as materials of the preset's family; errors name the file and the rule.
+// The variants as materials of the preset's family, each with its own kappa (hue variety); a
+// bare genome takes the preset's. Errors name the file and the rule.
 std::vector<MaterialInstance> loadMaterials(const std::optional<std::string>& folder,
-                                            const Preset& preset) {
-    const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
-    if (!folder) return {target};
-    auto variants = loadVariantFolder(*folder);
+                                            const PresetChoice& choice) {
+    const Preset& preset = choice.preset;
+    const MaterialFile target = materialFromPreset(preset, choice.file, preset.target, preset.name);
+    if (!folder) return {target.material};
+    auto variants = loadVariantFolder(*folder, target);
     if (!variants) throw UsageError("--variants: " + variants.error().message);
     std::vector<MaterialInstance> materials;
     for (const VariantFile& variant : *variants) {
-        if (auto invalid = validateGenome(variant.genome, preset.family))
-            throw UsageError("--variants: " + variant.file.string() + ": " + *invalid +
-                             " (family of " + preset.name + ")");
-        materials.push_back({variant.genome, preset.family, preset.baseKappa});
+        for (const auto& warning : variant.warnings) printWarning(warning);
+        // The scene's textures and light come from the preset, so the family must be its own.
+        if (variant.material.material.family != preset.family)
+            throw UsageError("--variants: " + variant.file.string() + ": family " +
+                             describe(variant.material.material.family) + ", but " + preset.name +
+                             " is " + describe(preset.family));
+        materials.push_back(variant.material.material);
     }
     return materials;
 }
@@ -85,7 +92,7 @@ int runScene(CommandLine& args) {
     const std::filesystem::path out = imageOutputPath(args);
     args.finish();
 
-    const std::vector<MaterialInstance> materials = loadMaterials(variantFolder, choice.preset);
+    const std::vector<MaterialInstance> materials = loadMaterials(variantFolder, choice);
     auto mesh = loadMesh(meshName);
     if (!mesh) throw UsageError("--mesh: " + mesh.error().message);
     auto textures = loadSceneTextures(choice.preset, choice.file);

@@ -1,9 +1,12 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "Messages.h"
 #include "PresetOption.h"
@@ -14,10 +17,13 @@
 #include "common/StopRequest.h"
 #include "experiment/Experiment.h"
 #include "gpu/PopulationRendererFactory.h"
+#include "io/AtomicFile.h"
+#include "io/ImageFile.h"
 #include "io/OutputFolder.h"
+#include "variants/FindVariants.h"
+#include "variants/VariantBlockFiles.h"
+#include "variants/VariantBlocks.h"
 #include "variants/VariantFiles.h"
-#include "variants/VariantSearch.h"
-#include "variants/VariantSet.h"
 
 namespace matevo::cli {
 namespace {
@@ -26,7 +32,7 @@ constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
     "                       [--size N] [--fitness-size N] [--max-evaluations N] [--hue]\n"
     "                       [--backend gpu|cpu] [--out DIR] [--force] [--heatmap de00|flip]\n"
-    "                       [--json]\n\n"
+    "                       [--json] [--block B [--shard I/K]]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
     "whose renders lie LO to HI mean CIEDE2000 from the target's and at least D from each other.\n"
     "The paper's bands: 0,1 not perceptible; 1,2 close observation; 2,10 at a glance.\n"
@@ -47,12 +53,169 @@ constexpr const char* kHelp =
     "  --heatmap M          what the heatmaps show: de00 (default; 0-10 viridis) or flip\n"
     "                       (per-pixel LDR-FLIP, 0-1 magma)\n"
     "  --json               print the report as JSON\n"
+    "  --block B            cut the set into blocks of B variants, each an independent search\n"
+    "                       seeded by the seed and the block's index: variants are at least D\n"
+    "                       apart within a block, not across blocks; allows --count up to\n"
+    "                       10000; writes DIR/contact_sheets/block_BBB.png per block, and the\n"
+    "                       report holds no wall time (docs/batch.md)\n"
+    "  --shard I/K          compute only share I of K (0 <= I < K) of the blocks: blocks I,\n"
+    "                       I+K, I+2K, ...; `matevo merge` joins the K shares' folders into\n"
+    "                       exactly the folder one run without --shard writes (needs --block\n"
+    "                       and --out)\n"
     "Exit status 3 when the request cannot be met (a band the family cannot reach, or more\n"
     "variants than fit D apart): a one-line message says what was found, and it is still\n"
     "written. SIGINT or SIGTERM stops the search at the next generation: the set found so\n"
     "far is chosen and written, marked partial (exit 130 or 143).\n";
 
-constexpr int kMaxCount = 1000;
+constexpr int kMaxCount = 1000;          // in one search
+constexpr int kMaxBlockedCount = 10000;  // in blocks (a share's report stays well under 16 MiB)
+
+// "I/K" with 0 <= I < K.
+Shard parseShard(const std::string& text) {
+    const auto slash = text.find('/');
+    if (slash == std::string::npos)
+        throw UsageError("--shard: expected I/K (share I of K, from 0), got '" + text + "'");
+    Shard shard;
+    shard.count = int(parseInteger(text.substr(slash + 1), "--shard K", 1, kMaxBlockedCount));
+    shard.index = int(parseInteger(text.substr(0, slash), "--shard I", 0, shard.count - 1));
+    return shard;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point started) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+// What one run needs, whether one search or a share of blocks.
+struct VariantsJob {
+    const Preset& preset;
+    MaterialFile target;  // the preset's target as a material file, for the variant files
+    VariantRequest request;
+    VariantSearchSettings settings;
+    int size = 256;
+    int fitnessSize = 64;
+    RenderGenomes fitnessRender;
+    RenderGenomes outputRender;
+    std::optional<OutputFolder>& output;
+    ImageMetric heatmapMetric = ImageMetric::DeltaE00;
+    bool asJson = false;
+    std::chrono::steady_clock::time_point started;
+};
+
+// One search and the set chosen from it: the whole set, or one block.
+struct FoundSet {
+    VariantSet set;
+    VariantRun run;
+};
+
+FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
+                 const std::string& progressLabel) {
+    const bool showProgress = ::isatty(STDERR_FILENO) != 0;
+    VariantSearchHooks hooks;
+    hooks.stop = [] { return stopRequested() != 0; };
+    if (showProgress)
+        hooks.onGeneration = [&progressLabel](const VariantSearchProgress& progress) {
+            std::fprintf(stderr, "\r%s%s%zu evaluations, %zu in the archive",
+                         messagePrefix().c_str(), progressLabel.c_str(), progress.evaluations,
+                         progress.archived);
+        };
+    auto found = findVariants({job.preset.target, job.preset.family, job.preset.baseKappa}, request,
+                              job.settings, job.fitnessRender, job.outputRender, hooks);
+    if (showProgress) std::fputc('\n', stderr);
+    if (!found) throw std::runtime_error(found.error().message);
+    const VariantSearchProgress& progress = found->progress;
+    return {std::move(found->set),
+            VariantRun{request, job.size, job.fitnessSize, progress.evaluations, progress.archived,
+                       progress.closestDeltaE, 0.0}};
+}
+
+void commit(std::optional<OutputFolder>& output) {
+    if (!output) return;
+    if (auto committed = output->commit(); !committed)
+        throw UsageError("--out: " + committed.error().message);
+}
+
+// The exit: stopped by `signal` (0: none), request not met (3), or met.
+int finish(int signal, const std::string& summary, bool met, bool wroteFiles, bool asJson,
+           double seconds) {
+    if (signal) {
+        printMessage("stopped by " + signalName(signal) + ": " + summary +
+                     (wroteFiles ? "; what was found is written, marked partial" : ""));
+        return stoppedExitStatus(signal);
+    }
+    if (!met) {
+        printMessage("request not met: " + summary +
+                     (wroteFiles ? "; what was found is written" : ""));
+        return exitCode(ExitStatus::RequestNotMet);
+    }
+    if (!asJson) std::printf("%s (%.2f s)\n", summary.c_str(), seconds);
+    return 0;
+}
+
+// Marks the report partial when a signal stopped the work; returns the signal (0: none).
+int markPartial(nlohmann::ordered_json& report) {
+    const int signal = stopRequested();
+    if (signal) {
+        report["partial"] = true;
+        report["stopped_by"] = signalName(signal);
+    }
+    return signal;
+}
+
+// The whole set in one search (VariantSearch.h).
+int runOneSet(const VariantsJob& job) {
+    FoundSet found = findSet(job, job.request, "");
+    found.run.wallSeconds = secondsSince(job.started);
+    nlohmann::ordered_json report = variantReport(job.preset, found.run, found.set);
+    const int signal = markPartial(report);
+    if (job.output) {
+        if (auto written = writeVariantFiles(job.output->staging(), job.target, found.set, report,
+                                             job.heatmapMetric);
+            !written)
+            throw UsageError("--out: " + job.output->userFacing(written.error().message));
+        commit(job.output);
+    }
+    if (job.asJson) std::printf("%s\n", report.dump(2).c_str());
+    return finish(signal, variantSummary(found.run, found.set), fulfils(found.set, job.request),
+                  job.output.has_value(), job.asJson, found.run.wallSeconds);
+}
+
+// The set in blocks (VariantBlocks.h): `blocks` are the ones this process computes, all of
+// them or one share's. Each block's files are written as soon as it is found.
+int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vector<int>& blocks,
+              const std::optional<Shard>& shard) {
+    const VariantRun whole{job.request, job.size, job.fitnessSize, 0, 0, 0, 0};
+    BlockReport parts = blockReportHeader(job.preset, whole, plan);
+    // Rendered here, not taken from a block: a share may have no block at all.
+    auto target = job.outputRender(std::span(&job.preset.target, 1));
+    if (!target) throw std::runtime_error(target.error().message);
+    for (const int block : blocks) {
+        if (stopRequested()) break;
+        const std::string label =
+            "block " + std::to_string(block + 1) + " of " + std::to_string(plan.blocks()) + ": ";
+        FoundSet found = findSet(job, blockRequest(job.request, plan, block), label);
+        addBlock(parts, job.preset, found.run, found.set, plan, block);
+        if (job.output) {
+            if (auto written = writeVariantBlock(job.output->staging(), job.target, found.set, plan,
+                                                 block, job.heatmapMetric);
+                !written)
+                throw UsageError("--out: " + job.output->userFacing(written.error().message));
+        }
+    }
+    nlohmann::ordered_json report = assembleBlockReport(std::move(parts), shard);
+    const int signal = markPartial(report);
+    if (job.output) {
+        const auto staging = job.output->staging();
+        if (auto written = writeImage(target->front(), staging / "target.png"); !written)
+            throw UsageError("--out: " + job.output->userFacing(written.error().message));
+        if (auto written = writeFileAtomically(staging / "report.json", report.dump(2) + "\n");
+            !written)
+            throw UsageError("--out: " + job.output->userFacing(written.error().message));
+        commit(job.output);
+    }
+    if (job.asJson) std::printf("%s\n", report.dump(2).c_str());
+    return finish(signal, report["summary"].get<std::string>(), report["met"].get<bool>(),
+                  job.output.has_value(), job.asJson, secondsSince(job.started));
+}
 
 }  // namespace
 
@@ -64,9 +227,14 @@ int runVariants(CommandLine& args) {
     const auto started = std::chrono::steady_clock::now();
     const PresetChoice choice = loadPresetOption(args);
     VariantRequest request;
-    const auto count = args.integerOption("--count", 1, kMaxCount);
+    const auto count = args.integerOption("--count", 1, kMaxBlockedCount);
     if (!count) throw UsageError("--count N is required");
     request.count = int(*count);
+    const auto blockSize = args.integerOption("--block", 1, kMaxBlockedCount);
+    const auto shardText = args.option("--shard");
+    if (!blockSize && request.count > kMaxCount)
+        throw UsageError("--count: at most " + std::to_string(kMaxCount) +
+                         " variants in one search; --block B cuts a larger set into blocks");
     const auto band = args.option("--band");
     if (!band) throw UsageError("--band LO,HI is required");
     request.band = parseDeltaEBand(*band, "--band");
@@ -93,7 +261,13 @@ int runVariants(CommandLine& args) {
     const bool replaceOutput = args.flag("--force");
     const bool asJson = args.flag("--json");
     args.onlyWith("--force", "--out");
+    args.onlyWith("--shard", "--block");
+    args.onlyWith("--shard", "--out");
     args.finish();
+    const VariantBlocks plan{request.count, int(blockSize.value_or(request.count))};
+    const std::optional<Shard> shard =
+        shardText ? std::optional<Shard>(parseShard(*shardText)) : std::nullopt;
+    const std::vector<int> blocks = blocksOfShard(plan, shard.value_or(Shard{}));
 
     if (request.kappaGenes == KappaGenes::On && choice.preset.family.base != Base::Conductor)
         throw UsageError("--hue: the preset's base is a dielectric; hue variety evolves a "
@@ -103,8 +277,9 @@ int runVariants(CommandLine& args) {
     // and work past the memory limit.
     std::optional<OutputFolder> output;
     if (outDir) output.emplace(claimOutputFolder(*outDir, replaceOutput));
-    checkWorkEstimate(variantsEstimate(request.count, size, fitnessSize, settings.maxEvaluations,
-                                       settings.population));
+    checkWorkEstimate(variantsEstimate(std::min(request.count, plan.blockSize), size, fitnessSize,
+                                       settings.maxEvaluations, settings.population,
+                                       int(blocks.size())));
 
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);
@@ -119,60 +294,19 @@ int runVariants(CommandLine& args) {
         return asStoredInPng(
             renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, side));
     };
-    auto search =
-        VariantSearch::start({preset.target, preset.family, preset.baseKappa}, request, settings,
-                             renderAt(fitnessSize));
-    if (!search) throw std::runtime_error(search.error().message);
-    const bool showProgress = ::isatty(STDERR_FILENO) != 0;
-    while (!(*search)->finished() && !stopRequested()) {
-        if (auto stepped = (*search)->step(); !stepped)
-            throw std::runtime_error(stepped.error().message);
-        if (showProgress) {
-            const auto& progress = (*search)->progress();
-            std::fprintf(stderr, "\r%s%zu evaluations, %zu in the archive",
-                         messagePrefix().c_str(), progress.evaluations, progress.archived);
-        }
-    }
-    if (showProgress) std::fputc('\n', stderr);
-
-    auto set = chooseVariantSet((*search)->archive(), request, preset.target, renderAt(size));
-    if (!set) throw std::runtime_error(set.error().message);
-
-    const VariantSearchProgress& progress = (*search)->progress();
-    VariantRun run{request,           size, fitnessSize, progress.evaluations, progress.archived,
-                   progress.closestDeltaE, 0.0};
-    run.wallSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    nlohmann::ordered_json report = variantReport(preset, run, *set);
-    const int signal = stopRequested();
-    if (signal) {
-        report["partial"] = true;
-        report["stopped_by"] = signalName(signal);
-    }
-    if (output) {
-        if (auto written =
-                writeVariantFiles(
-                output->staging(),
-                materialFromPreset(preset, choice.file, preset.target, preset.name), *set,
-                report, *heatmapMetric);
-            !written)
-            throw UsageError("--out: " + output->userFacing(written.error().message));
-        if (auto committed = output->commit(); !committed)
-            throw UsageError("--out: " + committed.error().message);
-    }
-    if (asJson) std::printf("%s\n", report.dump(2).c_str());
-    const std::string summary = variantSummary(run, *set);
-    if (signal) {
-        printMessage("stopped by " + signalName(signal) + ": " + summary +
-                     (outDir ? "; what was found is written, marked partial" : ""));
-        return stoppedExitStatus(signal);
-    }
-    if (!fulfils(*set, request)) {
-        printMessage("request not met: " + summary + (outDir ? "; what was found is written" : ""));
-        return exitCode(ExitStatus::RequestNotMet);
-    }
-    if (!asJson) std::printf("%s (%.2f s)\n", summary.c_str(), run.wallSeconds);
-    return 0;
+    const VariantsJob job{preset,
+                          materialFromPreset(preset, choice.file, preset.target, preset.name),
+                          request,
+                          settings,
+                          size,
+                          fitnessSize,
+                          renderAt(fitnessSize),
+                          renderAt(size),
+                          output,
+                          *heatmapMetric,
+                          asJson,
+                          started};
+    return blockSize ? runBlocks(job, plan, blocks, shard) : runOneSet(job);
 }
 
 }  // namespace matevo::cli

@@ -381,7 +381,7 @@ void EditorApp::applyEvolutionResults() {
         failure_ = shown.error().message;
     if (runDone)
         if (auto advice = ui::adviceForFarCandidates(state.evolution, state.preset.ga))
-            state.status.post(*advice, ui::StatusKind::Warning);
+            state.status.post(advice->text, ui::StatusKind::Warning);
 }
 
 void EditorApp::applyCompareMetricsResults() {

@@ -36,37 +36,28 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job) {
         return asStoredInPng(
             renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, size));
     };
-    VariantSearchSettings settings;
-    auto search = VariantSearch::start({preset.target, preset.family, preset.baseKappa},
-                                       job.request, settings, renderAt(kFitnessSize));
-    if (!search) {
-        result.error = search.error().message;
-        return result;
-    }
+    const VariantSearchSettings settings;
     const double wanted = double(job.request.count + settings.spare);
-    while (!(*search)->finished()) {
-        if (job_.stopping()) {
-            result.error = "stopped";
-            return result;
-        }
-        if (auto stepped = (*search)->step(); !stepped) {
-            result.error = stepped.error().message;
-            return result;
-        }
-        const VariantSearchProgress& progress = (*search)->progress();
+    VariantSearchHooks hooks;
+    hooks.stop = [this] { return job_.stopping(); };
+    hooks.onGeneration = [&](const VariantSearchProgress& progress) {
         job_.reportProgress(float(std::max(double(progress.archived) / wanted,
                                            double(progress.evaluations) / settings.maxEvaluations)));
-    }
-    auto set = chooseVariantSet((*search)->archive(), job.request, preset.target,
-                                renderAt(kOutputSize));
-    if (!set) {
-        result.error = set.error().message;
+    };
+    auto found = findVariants({preset.target, preset.family, preset.baseKappa}, job.request,
+                              settings, renderAt(kFitnessSize), renderAt(kOutputSize), hooks);
+    if (job_.stopping()) {
+        result.error = "stopped";
         return result;
     }
-    result.set = std::move(set).value();
-    result.run.evaluations = (*search)->progress().evaluations;
-    result.run.archived = (*search)->progress().archived;
-    result.run.closestDeltaE = (*search)->progress().closestDeltaE;
+    if (!found) {
+        result.error = found.error().message;
+        return result;
+    }
+    result.set = std::move(found->set);
+    result.run.evaluations = found->progress.evaluations;
+    result.run.archived = found->progress.archived;
+    result.run.closestDeltaE = found->progress.closestDeltaE;
     result.run.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return result;

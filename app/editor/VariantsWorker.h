@@ -11,9 +11,8 @@
 
 #include "gpu/PopulationRendererFactory.h"
 #include "io/Preset.h"
+#include "variants/FindVariants.h"
 #include "variants/VariantFiles.h"
-#include "variants/VariantSearch.h"
-#include "variants/VariantSet.h"
 
 namespace matevo::editor {
 

@@ -57,43 +57,55 @@ RenderGenomes asStoredInPng(RenderGenomes render) {
     };
 }
 
-std::string variantStem(std::size_t index) {
-    char name[32];
-    std::snprintf(name, sizeof name, "variant_%03zu", index);
+std::string variantStem(std::size_t index, std::size_t count) {
+    int digits = 3;
+    for (std::size_t last = count > 0 ? count - 1 : 0; last >= 1000; last /= 10) ++digits;
+    char name[48];
+    std::snprintf(name, sizeof name, "variant_%0*zu", digits, index);
     return name;
+}
+
+nlohmann::ordered_json variantEntry(const Preset& preset, const VariantSet& set, std::size_t member,
+                                    std::size_t index, std::size_t count,
+                                    const std::vector<double>& nearest) {
+    const Variant& variant = set.variants[member];
+    const MaterialInstance material = materialOf(variant.genome, preset.family, preset.baseKappa);
+    const std::string stem = "variants/" + variantStem(index, count);
+    nlohmann::ordered_json entry = {{"index", index},
+                                    {"file", stem + ".json"},
+                                    {"image", stem + ".png"},
+                                    {"heatmap", stem + "_heatmap.png"},
+                                    {"de00_to_target", variant.deltaEToTarget},
+                                    {"de00_to_nearest_sibling", nearest[member]},
+                                    {"kept", variant.kept},
+                                    {"genome", genomeToJson(material.genome)}};
+    if (variant.genome.carriesKappa()) entry["base_kappa"] = material.baseKappa;
+    return entry;
+}
+
+nlohmann::ordered_json requestJson(const VariantRun& run) {
+    const VariantRequest& request = run.request;
+    return {{"count", request.count},
+            {"band", {request.band.low, request.band.high}},
+            {"min_apart", request.minApart},
+            {"seed", request.seed},
+            {"hue_variety", request.kappaGenes == KappaGenes::On},
+            {"size", run.size},
+            {"fitness_size", run.fitnessSize}};
 }
 
 nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
                                      const VariantSet& set) {
     const std::vector<double> nearest = set.nearestSibling();
     nlohmann::ordered_json variants = nlohmann::ordered_json::array();
-    for (std::size_t i = 0; i < set.variants.size(); ++i) {
-        const Variant& variant = set.variants[i];
-        const MaterialInstance material =
-            materialOf(variant.genome, preset.family, preset.baseKappa);
-        variants.push_back({{"index", i},
-                            {"file", "variants/" + variantStem(i) + ".json"},
-                            {"image", "variants/" + variantStem(i) + ".png"},
-                            {"heatmap", "variants/" + variantStem(i) + "_heatmap.png"},
-                            {"de00_to_target", variant.deltaEToTarget},
-                            {"de00_to_nearest_sibling", nearest[i]},
-                            {"kept", variant.kept},
-                            {"genome", genomeToJson(material.genome)}});
-        if (variant.genome.carriesKappa()) variants.back()["base_kappa"] = material.baseKappa;
-    }
+    for (std::size_t i = 0; i < set.variants.size(); ++i)
+        variants.push_back(variantEntry(preset, set, i, i, 0, nearest));
     const VariantRequest& request = run.request;
     const bool met = fulfils(set, request);
     return {{"preset", preset.name},
             {"family", describe(preset.family)},
             {"target", genomeToJson(preset.target)},
-            {"request",
-             {{"count", request.count},
-              {"band", {request.band.low, request.band.high}},
-              {"min_apart", request.minApart},
-              {"seed", request.seed},
-              {"hue_variety", request.kappaGenes == KappaGenes::On},
-              {"size", run.size},
-              {"fitness_size", run.fitnessSize}}},
+            {"request", requestJson(run)},
             {"met", met},
             {"summary", variantSummary(run, set)},
             {"variants", std::move(variants)},
@@ -121,7 +133,7 @@ std::string variantSummary(const VariantRun& run, const VariantSet& set) {
     return text;
 }
 
-Image contactSheet(const VariantSet& set) {
+Image contactSheet(const VariantSet& set, std::size_t firstIndex, std::size_t count) {
     const int tile = std::max(set.target.width, 1);
     const int labelHeight = 2 * Canvas::textHeight(kLabelScale) + 3 * kSheetGap / 2;
     const int cells = int(set.variants.size()) + 1;
@@ -140,8 +152,9 @@ Image contactSheet(const VariantSet& set) {
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         auto [x, y] = origin(int(i) + 1);
         const int textY = y + tile + kSheetGap / 2;
-        canvas.drawText(x, textY, variantStem(i).substr(8) + "  DE " +
-                                      format("%.2f", set.variants[i].deltaEToTarget),
+        canvas.drawText(x, textY,
+                        variantStem(firstIndex + i, count).substr(8) + "  DE " +
+                            format("%.2f", set.variants[i].deltaEToTarget),
                         kLabelColour, kLabelScale);
         canvas.drawText(x, textY + lineHeight, "NEAREST " + format("%.2f", nearest[i]),
                         kLabelColour, kLabelScale);
@@ -155,26 +168,28 @@ Image contactSheet(const VariantSet& set) {
     return sheet;
 }
 
-MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant,
-                             std::size_t index) {
+MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant, std::size_t index,
+                             std::size_t count) {
     MaterialFile material = target;
-    material.name = (target.name.empty() ? std::string() : target.name + " ") + variantStem(index);
+    material.name =
+        (target.name.empty() ? std::string() : target.name + " ") + variantStem(index, count);
     // The variant's own kappa when it carries kappa genes (hue variety), else the target's.
     material.material =
         materialOf(variant.genome, target.material.family, target.material.baseKappa);
     return material;
 }
 
-Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
-                         const VariantSet& set, const nlohmann::ordered_json& report,
-                         ImageMetric heatmapMetric) {
+Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile& target,
+                           const VariantSet& set, std::size_t firstIndex, std::size_t count,
+                           ImageMetric heatmapMetric) {
     const std::filesystem::path folder = dir / "variants";
     if (auto created = createFolder(folder); !created) return created;
-    if (auto written = writeImage(set.target, dir / "target.png"); !written) return written;
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         const Variant& variant = set.variants[i];
-        const std::string stem = variantStem(i);
-        if (auto written = saveMaterial(variantMaterial(target, variant, i), folder / (stem + ".json"));
+        const std::size_t index = firstIndex + i;
+        const std::string stem = variantStem(index, count);
+        if (auto written = saveMaterial(variantMaterial(target, variant, index, count),
+                                        folder / (stem + ".json"));
             !written)
             return written;
         if (auto written = writeImage(variant.image, folder / (stem + ".png")); !written)
@@ -184,6 +199,15 @@ Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& t
         if (auto written = writeImage(*heatmap, folder / (stem + "_heatmap.png")); !written)
             return written;
     }
+    return Ok{};
+}
+
+Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
+                         const VariantSet& set, const nlohmann::ordered_json& report,
+                         ImageMetric heatmapMetric) {
+    if (auto written = writeVariantMembers(dir, target, set, 0, 0, heatmapMetric); !written)
+        return written;
+    if (auto written = writeImage(set.target, dir / "target.png"); !written) return written;
     if (auto written = writeImage(contactSheet(set), dir / "contact_sheet.png"); !written)
         return written;
     return writeFileAtomically(dir / "report.json", report.dump(2) + "\n");

@@ -10,6 +10,7 @@
 //                                         (or LDR-ꟻLIP, 0-1 magma)
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -39,8 +40,20 @@ struct VariantRun {
 // them reports the figures `matevo compare` finds in its files.
 RenderGenomes asStoredInPng(RenderGenomes render);
 
-// "variant_007"
-std::string variantStem(std::size_t index);
+// "variant_007": the index in the whole set, with three digits, or as many as the last index
+// of a set of `count` needs (a set of 1001 to 10000 variants: "variant_0007").
+std::string variantStem(std::size_t index, std::size_t count = 0);
+
+// One variant's entry in a report: its index in the whole set, its files, ΔE00 to the target
+// and to its nearest sibling (`nearest`, VariantSet::nearestSibling), kept or not, genome (and
+// its own kappa when it carries kappa genes). `member` is its place in `set`.
+nlohmann::ordered_json variantEntry(const Preset& preset, const VariantSet& set, std::size_t member,
+                                    std::size_t index, std::size_t count,
+                                    const std::vector<double>& nearest);
+
+// The request as a report states it: count, band, distance, seed, hue variety and the two image
+// sizes.
+nlohmann::ordered_json requestJson(const VariantRun& run);
 
 // The report: request, per variant (file, ΔE00 to the target, to its nearest sibling, genome),
 // the pairwise ΔE00 matrix, the smallest pairwise distance, evaluations, wall time, seed, and
@@ -52,14 +65,22 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
 // or, when short, what was achieved.
 std::string variantSummary(const VariantRun& run, const VariantSet& set);
 
-// The target (top left) and the variants in rows, each labelled with its ΔE00 to the target and
-// to its nearest sibling, on a dark background.
-Image contactSheet(const VariantSet& set);
+// The target (top left) and the variants in rows, each labelled with its index (the set's
+// members are the variants firstIndex, firstIndex + 1, … of a whole of `count`), its ΔE00 to
+// the target and to its nearest sibling, on a dark background.
+Image contactSheet(const VariantSet& set, std::size_t firstIndex = 0, std::size_t count = 0);
 
-// The material file of variant `index`: `target` (the preset's target as a material file,
-// io/MaterialFile.h: family, kappa, textures, scene) with the variant's genome and name.
-MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant,
-                             std::size_t index);
+// The material file of variant `index` of a whole of `count`: `target` (the preset's target as a
+// material file, io/MaterialFile.h: family, kappa, textures, scene) with the variant's genome
+// and name.
+MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant, std::size_t index,
+                             std::size_t count = 0);
+
+// Writes the set's members as variants firstIndex, firstIndex + 1, … of a whole of `count`:
+// DIR/variants/variant_NNN.json, .png and _heatmap.png, creating DIR/variants.
+Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile& target,
+                           const VariantSet& set, std::size_t firstIndex, std::size_t count,
+                           ImageMetric heatmapMetric);
 
 // Writes every file listed above (atomically, each one), creating the folders; an Error names
 // the file that could not be written. Heatmaps of `heatmapMetric`. `target` as for variantMaterial.

@@ -197,9 +197,12 @@ bool VariantSearch::finished() const {
            cache_.renderCount() >= std::size_t(std::max(settings_.maxEvaluations, 0));
 }
 
-Status VariantSearch::run() {
-    while (!finished())
+Status VariantSearch::run(const VariantSearchHooks& hooks) {
+    while (!finished()) {
+        if (hooks.stop && hooks.stop()) break;
         if (auto stepped = step(); !stepped) return stepped;
+        if (hooks.onGeneration) hooks.onGeneration(progress_);
+    }
     return Ok{};
 }
 

@@ -12,6 +12,7 @@
 // thread count.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <unordered_map>
@@ -71,6 +72,14 @@ struct VariantSearchProgress {
     double closestDeltaE = 0;
 };
 
+// A caller's say in run(): how it stops the search and follows its progress.
+struct VariantSearchHooks {
+    // Asked before every generation; true ends the search there.
+    std::function<bool()> stop;
+    // Told after every generation.
+    std::function<void(const VariantSearchProgress&)> onGeneration;
+};
+
 class VariantSearch {
 public:
     // Renders the target and the kept variants, then the initial population. The render
@@ -86,8 +95,8 @@ public:
     Status step();
     // Enough archive members, or the evaluations are spent.
     bool finished() const;
-    // step() until finished().
-    Status run();
+    // step() until finished() or hooks.stop(); the one loop of every caller (FindVariants.h).
+    Status run(const VariantSearchHooks& hooks = {});
 
     const VariantArchive& archive() const { return archive_; }
     const VariantSearchProgress& progress() const { return progress_; }

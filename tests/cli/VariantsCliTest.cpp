@@ -3,6 +3,7 @@
 // the exit statuses of a request that cannot be met and of bad usage.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -37,6 +38,11 @@ nlohmann::json readJson(const fs::path& file) {
     std::stringstream text;
     text << in.rdbuf();
     return nlohmann::json::parse(text.str());
+}
+
+std::string fileContents(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 Image readPng(const fs::path& file) {
@@ -195,6 +201,35 @@ TEST(VariantsCli, HueVarietyGivesEachVariantItsOwnKappaInsideTheBounds) {
         EXPECT_LE(toTarget, kHigh);
     }
     EXPECT_GT(kappas.size(), 1u) << "every variant has one kappa";
+
+    // Every consumer draws a hue variant with its own kappa, as `variants` did: `render --genome`
+    // reproduces its PNG and its reported distance to the target; `export --variants` renders
+    // each file byte for byte as `variants` wrote it (`scene --variants`: SceneCommandTest).
+    for (const auto& entry : report["variants"]) {
+        const fs::path file = scratch / entry["file"].get<std::string>();
+        const fs::path replay = scratch / ("replay_" + file.stem().string() + ".png");
+        auto rendered =
+            runMatevo("render --genome '" + file.string() + "' --out '" + replay.string() + "'");
+        ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
+        EXPECT_LT(meanDeltaE(readPng(replay), readPng(scratch / entry["image"].get<std::string>())),
+                  0.01)
+            << file;
+        EXPECT_NEAR(meanDeltaE(target, readPng(replay)), entry["de00_to_target"].get<double>(),
+                    0.01)
+            << file;
+    }
+    const fs::path look = scratch / "look";
+    auto exported = runMatevo("export --variants '" + scratch.path().string() + "' --out '" +
+                              (scratch / "set.gltf").string() +
+                              "' --fit-size 16 --fit-renders 20 --report-size 256 --images '" +
+                              look.string() + "'");
+    ASSERT_EQ(exported.exitCode, 0) << exported.err;
+    for (const auto& entry : report["variants"]) {
+        const std::string stem = fs::path(entry["file"].get<std::string>()).stem().string();
+        EXPECT_EQ(fileContents(look / ("validation_metal_" + stem + "_matevo.png")),
+                  fileContents(scratch / entry["image"].get<std::string>()))
+            << stem << ": export did not render the variant with its own kappa";
+    }
 
     // Without --hue every variant keeps the preset's kappa; --hue needs a conductor base.
     auto plain = runMatevo("variants --json --count 2 --band 2,5 --fitness-size 32 --size 64");

@@ -7,9 +7,10 @@ Each fenced block after a line `<!-- example: NAME -->` is run in WORK_FOLDER/NA
 on the PATH. That `matevo` is a small wrapper around the built binary which adds small image
 sizes and the CPU back end, so the examples run in seconds; the commands themselves are the
 page's, unchanged. `parallel-*` blocks run with bash (GNU parallel from Debian); `slurm-*` blocks
-are job scripts, run once per array task with the variables Slurm sets. Then the outputs are
-checked: every set and export exists, and the same seed gave the same files under both
-schedulers.
+are job scripts, run once per array task with the variables Slurm sets, and the merge job's
+`--wrap` command after them. Then the outputs are checked: every set and export exists, the
+same seed gave the same files under both schedulers, and the shares merged under either are
+byte for byte the set one process writes.
 """
 import os
 import re
@@ -20,7 +21,7 @@ from pathlib import Path
 
 # Added by the wrapper, per command: small renders and fits, the CPU back end.
 SMALL = {
-    "variants": ["--size", "32", "--fitness-size", "16", "--max-evaluations", "300",
+    "variants": ["--size", "32", "--fitness-size", "16", "--max-evaluations", "120",
                  "--backend", "cpu"],
     "export": ["--fit-size", "16", "--fit-renders", "30", "--report-size", "16",
                "--backend", "cpu"],
@@ -108,6 +109,37 @@ def main():
             sys.exit(f"seed {seed}: the two schedulers wrote different .glb files")
     print(f"batch examples: {len(seeds)} sets and exports under GNU parallel and as a Slurm "
           f"array, identical")
+
+    # One set in shares: under GNU parallel, as a Slurm array then the merge job's command,
+    # and in one process; the three folders must be the same bytes.
+    for name in ("parallel-shares", "slurm-shares", "one-run"):
+        if name not in found:
+            sys.exit(f"{page}: no example '{name}'")
+    merge_job = re.search(r"--wrap '([^']*)'", page.read_text())
+    if not merge_job:
+        sys.exit(f"{page}: no merge job (sbatch --wrap '...')")
+    folders = {}
+    for name in ("parallel-shares", "slurm-shares", "one-run"):
+        folder = work / name
+        folder.mkdir()
+        if name == "slurm-shares":
+            (folder / "shares.sbatch").write_text(found[name])
+            for task in array_range(found[name]):
+                run("bash shares.sbatch", folder,
+                    dict(env, SLURM_ARRAY_TASK_ID=str(task), SLURM_CPUS_PER_TASK="1"),
+                    f"slurm-shares task {task}")
+            run(merge_job.group(1), folder, env, "slurm-shares merge job")
+        else:
+            run(found[name], folder, env, name)
+        folders[name] = files_under(folder / "world_set")
+    if not folders["one-run"]:
+        sys.exit("one-run: wrote nothing")
+    for name in ("parallel-shares", "slurm-shares"):
+        if folders[name] != folders["one-run"]:
+            differing = sorted(set(folders[name].items()) ^ set(folders["one-run"].items()))
+            sys.exit(f"{name}: the merged set differs from one run: {differing[:3]}")
+    print(f"batch examples: one set of {len(folders['one-run'])} files, merged from shares "
+          f"under GNU parallel and a Slurm array, identical to one run")
     shutil.rmtree(work, ignore_errors=True)
 
 

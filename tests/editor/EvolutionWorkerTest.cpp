@@ -77,6 +77,30 @@ TEST(EvolutionWorker, TilesAreImagesOnTheGivenDevice) {
     test::expectNoValidationMessages(*context);
 }
 
+// Once the run is done the whole population is drawn, not only the 24 tiles of the running
+// grid: a population of 80 after one generation holds more distinct genomes than that, and each
+// has its tile; together they account for every individual.
+TEST(EvolutionWorker, AFinishedRunDrawsTheWholePopulation) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    EvolutionJob job = metalJob();
+    job.preset.ga.population = 80;
+    job.preset.ga.generations = 1;
+    const auto update = finalUpdate(context->device, RenderBackend::Gpu, job);
+    ASSERT_TRUE(update.has_value());
+    EXPECT_EQ(update->error, "");
+    EXPECT_GT(update->distinctGenomes, EvolutionWorker::kGridTiles);
+    ASSERT_EQ(update->candidates.size(), std::size_t(update->distinctGenomes));
+    int individuals = 0;
+    for (const CandidateResult& candidate : update->candidates) {
+        individuals += candidate.copies;
+        ASSERT_NE(candidate.tile, nullptr);
+        EXPECT_GT(candidate.deltaE.pixels, 0u);
+    }
+    EXPECT_EQ(individuals, 80);
+    test::expectNoValidationMessages(*context);
+}
+
 // The live preview while a slider is dragged: the target alone, rendered, and no GA run (the
 // candidates follow on release).
 TEST(EvolutionWorker, ATargetOnlyJobRendersTheTargetAndRunsNoGa) {

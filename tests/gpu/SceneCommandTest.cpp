@@ -12,6 +12,7 @@
 #include "evolve/GenomeSampling.h"
 #include "io/GenomeJson.h"
 #include "io/ImageFile.h"
+#include "io/MaterialFile.h"
 #include "io/Preset.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
@@ -80,6 +81,53 @@ TEST_F(SceneCommand, InstancesDifferAsTheirMaterialsDo) {
     ASSERT_TRUE(imageA.ok() && imageB.ok());
     EXPECT_LT(halfDifference(*imageA, *imageB, false), 1e-3) << "same material, same pixels";
     EXPECT_GT(halfDifference(*imageA, *imageB, true), 1.0) << "another material shows";
+}
+
+// A material file's own kappa (hue variety) reaches its instance; a bare genome takes the
+// preset's. Left column: the same genome and kappa both ways; right column: another kappa.
+TEST_F(SceneCommand, EachVariantFileWearsItsOwnKappa) {
+    auto loaded = loadPreset(presetFile());
+    ASSERT_TRUE(loaded.ok());
+    const Preset& preset = loaded->preset;
+    Random random(11);
+    const Genome genome = randomGenome(preset.family, random);
+    MaterialFile presetKappa = materialFromPreset(preset, presetFile(), genome, "preset kappa");
+    MaterialFile ownKappa = presetKappa;
+    ownKappa.name = "own kappa";
+    ownKappa.material.baseKappa = {1.2, 2.4, 3.9};
+    const auto files = folder / "files";
+    std::filesystem::create_directories(files);
+    ASSERT_TRUE(saveMaterial(presetKappa, files / "variant_000.json").ok());
+    ASSERT_TRUE(saveMaterial(ownKappa, files / "variant_001.json").ok());
+    const auto bare = writeVariants("bare", {genome, genome});
+    const std::string common = "--mesh sphere --instances 4 --size 160x96 --env paper ";
+    const auto a = scene(common + "--variants '" + files.string() + "' --out '" +
+                         (folder / "files.exr").string() + "'");
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    EXPECT_EQ(a.err, "");
+    const auto b = scene(common + "--variants '" + bare.string() + "' --out '" +
+                         (folder / "bare.exr").string() + "'");
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    auto imageA = readImage(folder / "files.exr");
+    auto imageB = readImage(folder / "bare.exr");
+    ASSERT_TRUE(imageA.ok() && imageB.ok());
+    EXPECT_LT(halfDifference(*imageA, *imageB, false), 1e-3) << "the preset's kappa both ways";
+    EXPECT_GT(halfDifference(*imageA, *imageB, true), 1.0) << "the file's own kappa shows";
+
+    // A file of another family is refused: the scene's textures and light are the preset's.
+    auto painted =
+        loadPreset(std::string(MATEVO_SOURCE_DIR) + "/presets/validation_painted_metal.json");
+    ASSERT_TRUE(painted.ok());
+    const auto other = folder / "other";
+    std::filesystem::create_directories(other);
+    ASSERT_TRUE(
+        saveMaterial(materialFromPreset(painted->preset, presetFile(), painted->preset.target),
+                     other / "variant_000.json")
+            .ok());
+    const auto refused =
+        scene("--variants '" + other.string() + "' --out '" + (folder / "x.png").string() + "'");
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_NE(refused.err.find("family"), std::string::npos) << refused.err;
 }
 
 TEST_F(SceneCommand, StudioCrowdIsOpaqueAndToneMapped) {

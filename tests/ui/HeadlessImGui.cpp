@@ -10,11 +10,17 @@ HeadlessImGui::HeadlessImGui(ImVec2 displaySize) : context_(ImGui::CreateContext
     io.IniFilename = nullptr;
     io.DisplaySize = displaySize;
     io.DeltaTime = 1.0f / 60.0f;
-    // Letters map to their ASCII codes, as GLFW numbers them; Enter and Escape as in GLFW.
+    // Letters and Space map to their ASCII codes, as GLFW numbers them; Enter, Escape and the
+    // arrows as in GLFW.
     for (ImGuiKey key : {ImGuiKey_A, ImGuiKey_C, ImGuiKey_V, ImGuiKey_X, ImGuiKey_Y, ImGuiKey_Z})
         io.KeyMap[key] = "ACVXYZ"[key - ImGuiKey_A];
     io.KeyMap[ImGuiKey_Enter] = 257;
     io.KeyMap[ImGuiKey_Escape] = 256;
+    io.KeyMap[ImGuiKey_Space] = ' ';
+    io.KeyMap[ImGuiKey_RightArrow] = 262;
+    io.KeyMap[ImGuiKey_LeftArrow] = 263;
+    io.KeyMap[ImGuiKey_DownArrow] = 264;
+    io.KeyMap[ImGuiKey_UpArrow] = 265;
     unsigned char* pixels = nullptr;
     int width = 0, height = 0;
     io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);

@@ -6,9 +6,10 @@
 #include <array>
 #include <set>
 
-#include "color/ImageDifference.h"
 #include "../genome/TestGenomes.h"
+#include "color/ImageDifference.h"
 #include "scene/SphereRenderer.h"
+#include "variants/FindVariants.h"
 #include "variants/ImageFitness.h"
 #include "variants/VariantSet.h"
 
@@ -214,6 +215,41 @@ TEST(VariantSearch, AnUnreachableBandEndsWithNothingAndSaysHowCloseItGot) {
     ASSERT_TRUE(set.ok());
     EXPECT_TRUE(set->variants.empty());
     EXPECT_FALSE(fulfils(*set, request));
+}
+
+// The one function every caller runs: the search, then the set chosen at the output size; the
+// caller follows each generation and may stop early, and still gets the set found so far.
+TEST(VariantSearch, FindVariantsIsTheSearchThenTheChoiceAndStopsWhenAsked) {
+    const VariantRequest request = smallRequest();
+    int generations = 0;
+    VariantSearchHooks hooks;
+    hooks.onGeneration = [&](const VariantSearchProgress& progress) {
+        EXPECT_EQ(progress.generation, ++generations);
+    };
+    auto found = findVariants(kValidationMetal, request, {}, cpuRenderer(kFitnessSize),
+                              cpuRenderer(kOutputSize), hooks);
+    ASSERT_TRUE(found.ok()) << found.error().message;
+    EXPECT_EQ(found->progress.generation, generations);
+    EXPECT_GT(generations, 0);
+    auto search = runSearch(request);
+    ASSERT_TRUE(search);
+    auto set =
+        chooseVariantSet(search->archive(), request, validationMetal(), cpuRenderer(kOutputSize));
+    ASSERT_TRUE(set.ok());
+    ASSERT_EQ(found->set.variants.size(), set->variants.size());
+    for (std::size_t i = 0; i < set->variants.size(); ++i)
+        EXPECT_EQ(found->set.variants[i].genome, set->variants[i].genome);
+    EXPECT_EQ(found->progress.evaluations, search->progress().evaluations);
+
+    hooks.stop = [&] { return generations >= 1; };
+    generations = 0;
+    auto stopped = findVariants(kValidationMetal, request, {}, cpuRenderer(kFitnessSize),
+                                cpuRenderer(kOutputSize), hooks);
+    ASSERT_TRUE(stopped.ok());
+    EXPECT_EQ(stopped->progress.generation, 1);
+    EXPECT_LT(stopped->progress.evaluations, found->progress.evaluations);
+    for (const Variant& variant : stopped->set.variants)
+        EXPECT_TRUE(request.band.contains(variant.deltaEToTarget)) << variant.deltaEToTarget;
 }
 
 TEST(VariantSearch, ARenderFailureIsAnError) {

@@ -1,0 +1,27 @@
+#pragma once
+// A whole variant request, the one way every caller runs it (`matevo variants`, the editor's
+// Variants mode, the bench): the quality-diversity search (VariantSearch::run) at the fitness
+// resolution until it is finished or the caller stops it (hooks), then the set
+// chosen from its archive and checked at the output resolution (chooseVariantSet). A stopped
+// search still gives the set its archive holds, so a caller can deliver it, marked partial.
+#include "common/Result.h"
+#include "evolve/RenderGenomes.h"
+#include "material/MaterialInstance.h"
+#include "variants/VariantSearch.h"
+#include "variants/VariantSet.h"
+
+namespace matevo {
+
+struct FoundVariants {
+    VariantSet set;
+    VariantSearchProgress progress;  // the search's at its end
+};
+
+// `fitnessRender` draws at the fitness resolution, `outputRender` at the output resolution (as
+// for VariantSearch::start and chooseVariantSet); an Error when rendering failed.
+Result<FoundVariants> findVariants(const MaterialInstance& target, const VariantRequest& request,
+                                   const VariantSearchSettings& settings,
+                                   RenderGenomes fitnessRender, const RenderGenomes& outputRender,
+                                   const VariantSearchHooks& hooks = {});
+
+}  // namespace matevo

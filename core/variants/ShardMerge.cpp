@@ -1,0 +1,192 @@
+#include "variants/ShardMerge.h"
+
+#include <algorithm>
+#include <string>
+
+#include "io/AtomicFile.h"
+#include "io/InputFile.h"
+#include "io/MaterialFile.h"
+#include "io/TextFile.h"
+#include "variants/VariantBlockFiles.h"
+#include "variants/VariantBlocks.h"
+#include "variants/VariantFiles.h"
+
+namespace matevo {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The fields that say which whole a share belongs to; every share must have them equal.
+constexpr const char* kHeaderFields[] = {"preset", "family", "target", "request"};
+
+struct ShareReport {
+    fs::path folder;
+    nlohmann::ordered_json report;
+    Shard shard;
+};
+
+Error fieldError(const fs::path& folder, const std::string& field, const std::string& problem) {
+    return Error{displayPath(folder / "report.json") + ": " + field + ": " + problem};
+}
+
+Result<ShareReport> readShare(const fs::path& folder) {
+    auto text = readTextFile(folder / "report.json");
+    if (!text) return text.error();
+    ShareReport share{folder, nlohmann::ordered_json::parse(*text, nullptr, false), {}};
+    if (!share.report.is_object())
+        return Error{displayPath(folder / "report.json") + ": not a JSON object"};
+    if (!share.report.contains("shard"))
+        return fieldError(folder, "shard", "missing (not written by matevo variants --shard I/K)");
+    try {
+        for (const char* field : kHeaderFields)
+            if (!share.report.contains(field)) return fieldError(folder, field, "missing");
+        share.shard = {share.report.at("shard").at("index").get<int>(),
+                       share.report.at("shard").at("count").get<int>()};
+        for (const char* field : {"blocks", "variants"})
+            if (!share.report.at(field).is_array())
+                return fieldError(folder, field, "must be an array");
+    } catch (const nlohmann::ordered_json::exception& error) {
+        return fieldError(folder, "shard", error.what());
+    }
+    return share;
+}
+
+Status copyFile(const fs::path& from, const fs::path& to) {
+    auto bytes = readInputFile(from, kMaxImageFileBytes);
+    if (!bytes) return bytes.error();
+    return writeFileAtomically(to, *bytes);
+}
+
+// A share's material file saved again from `dir`, so that its texture paths (relative to the
+// file) are right where it now lies.
+Status copyMaterial(const fs::path& from, const fs::path& to) {
+    auto loaded = loadMaterial(from, MaterialFile{});
+    if (!loaded) return loaded.error();
+    if (loaded->fromContext)
+        return Error{displayPath(from) + ": a bare genome, not a variant's material file"};
+    return saveMaterial(loaded->file, to);
+}
+
+// Copies the variants and contact sheets of one share into `dir`; checks that they are its own.
+Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::path& dir,
+                 BlockReport& joined) {
+    std::vector<int> blocks;
+    try {
+        for (const auto& block : share.report.at("blocks")) {
+            blocks.push_back(block.at("index").get<int>());
+            joined.blocks.push_back(block);
+        }
+        if (blocks != blocksOfShard(plan, share.shard))
+            return fieldError(share.folder, "blocks",
+                              "not the blocks of share " + std::to_string(share.shard.index) + "/" +
+                                  std::to_string(share.shard.count));
+        for (const auto& variant : share.report.at("variants")) {
+            const auto index = variant.at("index").get<int>();
+            const int block = variant.at("block").get<int>();
+            if (std::find(blocks.begin(), blocks.end(), block) == blocks.end() ||
+                index < plan.firstIndex(block) ||
+                index >= plan.firstIndex(block) + plan.countIn(block))
+                return fieldError(
+                    share.folder, "variants",
+                    "variant " + std::to_string(index) + " is not in one of this share's blocks");
+            const std::string stem =
+                "variants/" + variantStem(std::size_t(index), std::size_t(plan.count));
+            if (auto copied = copyMaterial(share.folder / (stem + ".json"), dir / (stem + ".json"));
+                !copied)
+                return copied;
+            for (const char* suffix : {".png", "_heatmap.png"})
+                if (auto copied = copyFile(share.folder / (stem + suffix), dir / (stem + suffix));
+                    !copied)
+                    return copied;
+            joined.variants.push_back(variant);
+        }
+    } catch (const nlohmann::ordered_json::exception& error) {
+        return fieldError(share.folder, "blocks/variants", error.what());
+    }
+    for (const int block : blocks)
+        if (auto copied =
+                copyFile(share.folder / blockContactSheet(block), dir / blockContactSheet(block));
+            !copied)
+            return copied;
+    return Ok{};
+}
+
+}  // namespace
+
+Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
+                                           const fs::path& dir) {
+    if (folders.empty()) return Error{"no share folders given"};
+    std::vector<ShareReport> shares;
+    for (const fs::path& folder : folders) {
+        auto share = readShare(folder);
+        if (!share) return share.error();
+        shares.push_back(std::move(*share));
+    }
+    const ShareReport& first = shares.front();
+    const int shareCount = first.shard.count;
+    VariantBlocks plan;
+    try {
+        plan = {first.report.at("request").at("count").get<int>(),
+                first.report.at("request").at("block").get<int>()};
+    } catch (const nlohmann::ordered_json::exception& error) {
+        return fieldError(first.folder, "request", error.what());
+    }
+    if (plan.count < 1 || plan.blockSize < 1 || shareCount < 1)
+        return fieldError(first.folder, "request", "count, block and shares must be at least 1");
+
+    std::vector<const ShareReport*> byIndex(std::size_t(shareCount), nullptr);
+    for (const ShareReport& share : shares) {
+        for (const char* field : kHeaderFields)
+            if (share.report[field] != first.report[field])
+                return fieldError(share.folder, field,
+                                  "differs from " + displayPath(first.folder) +
+                                      "'s: the shares are not of one request");
+        if (share.shard.count != shareCount || share.shard.index < 0 ||
+            share.shard.index >= shareCount)
+            return fieldError(share.folder, "shard",
+                              std::to_string(share.shard.index) + "/" +
+                                  std::to_string(share.shard.count) + " is not a share of " +
+                                  std::to_string(shareCount));
+        const ShareReport*& slot = byIndex[std::size_t(share.shard.index)];
+        if (slot)
+            return fieldError(share.folder, "shard",
+                              "share " + std::to_string(share.shard.index) + " is also in " +
+                                  displayPath(slot->folder));
+        slot = &share;
+    }
+    for (int index = 0; index < shareCount; ++index)
+        if (!byIndex[std::size_t(index)])
+            return Error{"share " + std::to_string(index) + "/" + std::to_string(shareCount) +
+                         " is missing"};
+
+    auto target = readInputFile(first.folder / "target.png", kMaxImageFileBytes);
+    if (!target) return target.error();
+    for (const ShareReport* share : byIndex) {
+        auto bytes = readInputFile(share->folder / "target.png", kMaxImageFileBytes);
+        if (!bytes) return bytes.error();
+        if (*bytes != *target)
+            return Error{displayPath(share->folder / "target.png") + ": differs from " +
+                         displayPath(first.folder / "target.png") +
+                         " (rendered by another back end or version?)"};
+    }
+
+    for (const fs::path& folder : {dir / "variants", (dir / blockContactSheet(0)).parent_path()}) {
+        std::error_code error;
+        fs::create_directories(folder, error);
+        if (error)
+            return Error{"cannot create folder '" + folder.string() + "' (" + error.message() +
+                         ")"};
+    }
+    BlockReport joined;
+    for (const char* field : kHeaderFields) joined.header[field] = first.report[field];
+    for (const ShareReport* share : byIndex)
+        if (auto copied = copyShare(*share, plan, dir, joined); !copied) return copied.error();
+    if (auto written = writeFileAtomically(dir / "target.png", *target); !written)
+        return written.error();
+    nlohmann::ordered_json report = assembleBlockReport(std::move(joined), std::nullopt);
+    if (auto written = writeFileAtomically(dir / "report.json", report.dump(2) + "\n"); !written)
+        return written.error();
+    return report;
+}
+
+}  // namespace matevo

@@ -1,0 +1,155 @@
+// `matevo variants --block B --shard I/K` and `matevo merge` end to end through the real
+// executable: K shares merged (in any order) are byte for byte the folder one run without
+// --shard writes; one block is the plain set; mistakes are refused before anything is written.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/RunCommand.h"
+#include "support/ScratchFolder.h"
+
+namespace matevo {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::runMatevo;
+using testing::shellQuoted;
+
+// Small renders and a short search, so that a run takes a fraction of a second. Painted metal:
+// its material files name a texture by a path relative to the file, which merge must keep right.
+const std::string kRequest =
+    "variants --preset '" + std::string(MATEVO_SOURCE_DIR) +
+    "/presets/validation_painted_metal.json' --count 7 --block 2 --band 2,10 --min-apart 1"
+    " --seed 11 --size 32 --fitness-size 16 --max-evaluations 300 --backend cpu";
+
+// Every file under `folder`, by relative path.
+std::map<std::string, std::string> filesUnder(const fs::path& folder) {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+        if (!entry.is_regular_file()) continue;
+        std::ifstream in(entry.path(), std::ios::binary);
+        files[fs::relative(entry.path(), folder).string()] = {std::istreambuf_iterator<char>(in),
+                                                              std::istreambuf_iterator<char>()};
+    }
+    return files;
+}
+
+void expectSameFiles(const fs::path& a, const fs::path& b) {
+    const auto filesA = filesUnder(a), filesB = filesUnder(b);
+    ASSERT_FALSE(filesA.empty());
+    for (const auto& [name, bytes] : filesA) {
+        const auto found = filesB.find(name);
+        if (found == filesB.end()) {
+            ADD_FAILURE() << name << " is missing from " << b;
+            continue;
+        }
+        EXPECT_TRUE(found->second == bytes) << name << " differs";
+    }
+    EXPECT_EQ(filesA.size(), filesB.size());
+}
+
+testing::CommandOutput share(const fs::path& folder, int index, int count,
+                             const std::string& extra = "") {
+    return runMatevo(kRequest + extra + " --shard " + std::to_string(index) + "/" +
+                     std::to_string(count) + " --out " + shellQuoted(folder));
+}
+
+TEST(ShardMerge, SharesMergedAreByteForByteOneRun) {
+    testing::ScratchFolder folder("shards");
+    const auto whole = runMatevo(kRequest + " --out " + shellQuoted(folder / "whole"));
+    ASSERT_EQ(whole.exitCode, 0) << whole.err;
+    const auto report = nlohmann::json::parse(std::ifstream(folder / "whole/report.json"));
+    ASSERT_EQ(report["blocks"].size(), 4u);  // 2 + 2 + 2 + 1
+    EXPECT_EQ(report["found"], 7);
+    EXPECT_TRUE(fs::is_regular_file(folder / "whole/variants/variant_006.json"));
+    EXPECT_TRUE(fs::is_regular_file(folder / "whole/contact_sheets/block_003.png"));
+
+    // Three shares (one of two blocks, two of one) and five (one with no block at all).
+    for (int count : {3, 5}) {
+        SCOPED_TRACE(count);
+        const fs::path shares = folder / ("shares" + std::to_string(count));
+        std::string names;
+        for (int index = count - 1; index >= 0; --index) {  // merged in reverse order
+            const fs::path out = shares / std::to_string(index);
+            const auto result = share(out, index, count);
+            ASSERT_EQ(result.exitCode, 0) << result.err;
+            names += ' ';  // appended piecewise: GCC 12 warns falsely (-Wrestrict) otherwise
+            names += shellQuoted(out);
+        }
+        const fs::path merged = folder / ("merged" + std::to_string(count));
+        const auto joined = runMatevo("merge" + names + " --out " + shellQuoted(merged));
+        ASSERT_EQ(joined.exitCode, 0) << joined.err;
+        expectSameFiles(folder / "whole", merged);
+    }
+}
+
+// Hue variety: variants that differ only in their own kappa are different materials.
+TEST(ShardMerge, HueVariantsShareAndMergeToo) {
+    testing::ScratchFolder folder("shards");
+    const std::string request =
+        "variants --preset validation_metal --hue --count 5 --block 2 --band 2,10 --min-apart 1"
+        " --seed 3 --size 32 --fitness-size 16 --max-evaluations 200 --backend cpu";
+    ASSERT_EQ(runMatevo(request + " --out " + shellQuoted(folder / "whole")).exitCode, 0);
+    for (int index : {0, 1})
+        ASSERT_EQ(runMatevo(request + " --shard " + std::to_string(index) + "/2 --out " +
+                            shellQuoted(folder / std::to_string(index)))
+                      .exitCode,
+                  0);
+    const auto joined =
+        runMatevo("merge " + shellQuoted(folder / "1") + " " + shellQuoted(folder / "0") +
+                  " --out " + shellQuoted(folder / "merged"));
+    ASSERT_EQ(joined.exitCode, 0) << joined.err;
+    expectSameFiles(folder / "whole", folder / "merged");
+    const auto report = nlohmann::json::parse(std::ifstream(folder / "merged/report.json"));
+    EXPECT_TRUE(report["duplicates"].empty());
+    EXPECT_TRUE(report["variants"][0].contains("base_kappa"));
+}
+
+TEST(ShardMerge, OneBlockIsThePlainSet) {
+    testing::ScratchFolder folder("shards");
+    const std::string plain =
+        "variants --preset validation_metal_depth --count 3 --band 2,10 --min-apart 1 --seed 4"
+        " --size 32 --fitness-size 16 --max-evaluations 300 --backend cpu --out ";
+    ASSERT_EQ(runMatevo(plain + shellQuoted(folder / "plain")).exitCode, 0);
+    ASSERT_EQ(runMatevo(plain + shellQuoted(folder / "block") + " --block 3").exitCode, 0);
+    expectSameFiles(folder / "plain/variants", folder / "block/variants");
+}
+
+TEST(ShardMerge, MistakesExitTwoWithOneLineAndWriteNothing) {
+    testing::ScratchFolder folder("shards");
+    ASSERT_EQ(share(folder / "a0", 0, 2).exitCode, 0);
+    ASSERT_EQ(share(folder / "a1", 1, 2).exitCode, 0);
+    ASSERT_EQ(share(folder / "b1", 1, 2, " --min-apart 1.5").exitCode, 0);
+    ASSERT_EQ(runMatevo(kRequest + " --out " + shellQuoted(folder / "whole")).exitCode, 0);
+    const auto a0 = shellQuoted(folder / "a0"), a1 = shellQuoted(folder / "a1");
+    const auto out = folder / "merged";
+    for (const std::string& arguments :
+         {"merge " + a0 + " --out " + shellQuoted(out),             // a share missing
+          "merge " + a0 + " " + a0 + " --out " + shellQuoted(out),  // a share twice
+          "merge " + a0 + " " + shellQuoted(folder / "b1") + " --out " + shellQuoted(out),
+          "merge " + a0 + " " + shellQuoted(folder / "whole") + " --out " + shellQuoted(out),
+          "merge " + a0 + " " + shellQuoted(folder / "nowhere") + " --out " + shellQuoted(out),
+          "merge " + a0 + " " + a1,   // no --out
+          kRequest + " --shard 0/2",  // no --out
+          kRequest + " --shard 2/2 --out " + shellQuoted(out),
+          kRequest + " --shard 1 --out " + shellQuoted(out),
+          "variants --count 4 --band 2,5 --shard 0/2 --out " + shellQuoted(out),  // no --block
+          std::string("variants --count 1001 --band 2,5")}) {
+        const auto result = runMatevo(arguments);
+        EXPECT_EQ(result.exitCode, 2) << arguments << "\n" << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_FALSE(fs::exists(out)) << arguments;
+    }
+    // And the right shares join.
+    EXPECT_EQ(runMatevo("merge " + a1 + " " + a0 + " --out " + shellQuoted(out)).exitCode, 0);
+    expectSameFiles(folder / "whole", out);
+}
+
+}  // namespace
+}  // namespace matevo
