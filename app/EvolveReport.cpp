@@ -10,26 +10,26 @@ namespace matevo::cli {
 
 namespace {
 
-nlohmann::json configJson(const Preset& preset) {
-    nlohmann::json config = gaSettingsToJson(preset.ga);
-    config["preset"] = preset.name;
-    config["family"] = describe(preset.family);
+nlohmann::ordered_json configJson(const Preset& preset) {
+    nlohmann::ordered_json config = {{"preset", preset.name}, {"family", describe(preset.family)}};
+    config.update(gaSettingsToJson(preset.ga));
     config["hue_variety"] = preset.ga.kappaGenes == KappaGenes::On;
     return config;
 }
 
 }  // namespace
 
-nlohmann::json evolveReport(const Preset& preset, const std::filesystem::path& presetFile,
-                            const GeneticAlgorithm& ga, const std::vector<Individual>& ranked) {
-    nlohmann::json generations = nlohmann::json::array();
+nlohmann::ordered_json evolveReport(const Preset& preset, const std::filesystem::path& presetFile,
+                                    const GeneticAlgorithm& ga,
+                                    const std::vector<Individual>& ranked) {
+    nlohmann::ordered_json generations = nlohmann::ordered_json::array();
     for (const auto& stats : ga.history())
         generations.push_back({{"generation", stats.generation},
                                {"best", stats.best},
                                {"mean", stats.mean},
                                {"worst", stats.worst},
                                {"diversity", stats.diversity}});
-    nlohmann::json population = nlohmann::json::array();
+    nlohmann::ordered_json population = nlohmann::ordered_json::array();
     for (const auto& individual : ranked) {
         const MaterialInstance material =
             materialOf(individual.genome, preset.family, preset.baseKappa);
@@ -38,18 +38,20 @@ nlohmann::json evolveReport(const Preset& preset, const std::filesystem::path& p
         // Hue variety: the individual's own kappa.
         if (individual.genome.carriesKappa()) population.back()["base_kappa"] = material.baseKappa;
     }
-    nlohmann::json report = {{"target", genomeToJson(preset.target)},
-                             {"config", configJson(preset)},
-                             {"generations", std::move(generations)},
-                             {"population", population},
-                             {"best", population.empty() ? nlohmann::json() : population.front()}};
+    nlohmann::ordered_json report = {
+        {"target", genomeToJson(preset.target)},
+        {"config", configJson(preset)},
+        {"generations", std::move(generations)},
+        {"population", population},
+        {"best", population.empty() ? nlohmann::ordered_json() : population.front()}};
     if (!ranked.empty())
         report["best_material"] = materialToJson(
             materialFromPreset(preset, presetFile, ranked.front().genome, preset.name + " best"));
     return report;
 }
 
-void addImageStatistics(nlohmann::json& report, const std::vector<CandidateImageStats>& stats) {
+void addImageStatistics(nlohmann::ordered_json& report,
+                        const std::vector<CandidateImageStats>& stats) {
     auto& population = report["population"];
     for (std::size_t rank = 0; rank < stats.size() && rank < population.size(); ++rank) {
         const DeltaEStats& deltaE = stats[rank].deltaE;

@@ -79,15 +79,22 @@ WorkEstimate variantsEstimate(int count, int size, int fitnessSize, int maxEvalu
     return estimate;
 }
 
-WorkEstimate experimentEstimate(long long gaRuns, int population, int generations, int size) {
+WorkEstimate experimentEstimate(long long gaRuns, int population, int generations, int size,
+                                long long imageRuns, int fitnessSize) {
     WorkEstimate estimate;
     estimate.what = std::to_string(gaRuns) + " GA runs scored at " + sideBySide(size);
-    // A batch of renders, read back and as Lab, at once.
-    estimate.bytes = (kExperimentBatch + 1) * pixels(size, size) * kSearchBytesPerPixel;
+    // A batch of renders, read back and as Lab, at once; an image run's generation likewise.
+    const std::uint64_t generationPixels =
+        imageRuns > 0 ? std::uint64_t(population) * pixels(fitnessSize, fitnessSize) : 0;
+    estimate.bytes = std::max((kExperimentBatch + 1) * pixels(size, size), generationPixels) *
+                     kSearchBytesPerPixel;
+    const double individuals = double(population) * double(generations + 1);
     estimate.seconds =
         double(gaRuns) *
-        (double(population) * double(generations + 1) * kGaSecondsPerIndividual +
-         double(pixels(size, size)) * (kRenderSecondsPerPixel + kDeltaESecondsPerPixel));
+            (individuals * kGaSecondsPerIndividual +
+             double(pixels(size, size)) * (kRenderSecondsPerPixel + kDeltaESecondsPerPixel)) +
+        double(imageRuns) * individuals * double(pixels(fitnessSize, fitnessSize)) *
+            (kRenderSecondsPerPixel + kDeltaESecondsPerPixel);
     return estimate;
 }
 

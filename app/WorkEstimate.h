@@ -25,8 +25,10 @@ WorkEstimate evolveEstimate(int population, int generations, int size);
 // `blocks` blocks of `count` variants, one after another (memory of one, time of all).
 WorkEstimate variantsEstimate(int count, int size, int fitnessSize, int maxEvaluations,
                               int population, int blocks = 1);
-// `experiment`: gaRuns GA runs, each scored by one render at size.
-WorkEstimate experimentEstimate(long long gaRuns, int population, int generations, int size);
+// `experiment`: gaRuns GA runs, each scored by one render at size; imageRuns of them (--metric
+// image) also render every individual at fitnessSize.
+WorkEstimate experimentEstimate(long long gaRuns, int population, int generations, int size,
+                                long long imageRuns = 0, int fitnessSize = 0);
 // `compare` of two decoded width x height images (decoding is checked when each is read).
 WorkEstimate compareEstimate(int width, int height, bool flip);
 

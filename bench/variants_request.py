@@ -74,6 +74,7 @@ def measure_preset(matevo, root, preset, hue, repeats, work):
         cpu_times.append(children_cpu_seconds() - cpu_start)
         with open(os.path.join(out, "report.json")) as file:
             reports.append(json.load(file))
+    load_after_timing = os.getloadavg()[0]
     report, out = reports[0], os.path.join(work, f"{name}_0")
 
     independent = os.path.join(work, f"{name}_independent")
@@ -85,8 +86,10 @@ def measure_preset(matevo, root, preset, hue, repeats, work):
     renders = []
     for entry in report["variants"]:
         png = os.path.join(independent, os.path.basename(entry["image"]))
-        run([matevo, "render", "--preset", preset_file, "--genome",
-             os.path.join(out, entry["file"]), "--size", "256", "--backend", "cpu", "--out", png])
+        # The material file names its own family, kappa (with --hue, the variant's own),
+        # textures and scene: no --preset beside it.
+        run([matevo, "render", "--genome", os.path.join(out, entry["file"]), "--size", "256",
+             "--backend", "cpu", "--out", png])
         renders.append(load(png))
     to_target = [mean_de00(target, render) for render in renders]
     pairwise = [mean_de00(renders[i], renders[j])
@@ -104,6 +107,8 @@ def measure_preset(matevo, root, preset, hue, repeats, work):
 
     return {
         "load_average_at_start": round(load_at_start, 1),
+        "load_average_after_timing": round(load_after_timing, 1),
+        "process_s_all": [round(t, 2) for t in times],
         "process_s_median": statistics.median(times),
         "process_cpu_s_median": statistics.median(cpu_times),
         "report_wall_time_s_median": statistics.median(r["wall_time_s"] for r in reports),

@@ -31,10 +31,8 @@ for target in "${targets[@]}"; do
     mkdir -p "$corpus"
     log=$build_dir/$target.log
     # -rss_limit_mb: our readers must stay bounded; -timeout: no input may hang a parser. A
-    # small ASan quarantine, so that freed memory does not count towards the RSS limit. The
-    # image reader's leak suppression (OpenImageIO's own) needs full stacks at malloc.
+    # small ASan quarantine, so that freed memory does not count towards the RSS limit.
     asan_options=quarantine_size_mb=16
-    [[ $target == fuzz_image ]] && asan_options+=:fast_unwind_on_malloc=0
     if ! ASAN_OPTIONS=$asan_options LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt" \
             "$build_dir/$target" -max_total_time="$seconds" -timeout=10 \
             -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \

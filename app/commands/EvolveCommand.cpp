@@ -224,7 +224,7 @@ int runEvolve(CommandLine& args) {
     if (fitness && fitness->failure()) throw std::runtime_error(fitness->failure()->message);
 
     const auto ranked = ga.rankedPopulation();
-    nlohmann::json report = evolveReport(preset, choice.file, ga, ranked);
+    nlohmann::ordered_json report = evolveReport(preset, choice.file, ga, ranked);
     report["config"]["fitness"] = fitnessName;
     if (imageFitness) {
         report["config"]["band"] = {band.low, band.high};

@@ -175,7 +175,9 @@ WorkEstimate estimateWork(const Request& request) {
             const long long runs =
                 (long long)request.settings.runs * (long long)request.settings.metrics.size();
             const WorkEstimate part =
-                experimentEstimate(runs, size.population, size.generations, imageSize);
+                experimentEstimate(runs, size.population, size.generations, imageSize,
+                                   usesImageMetric(request.settings) ? request.settings.runs : 0,
+                                   request.settings.fitnessSize);
             total.bytes = std::max(total.bytes, part.bytes);  // one preset's renders at a time
             total.seconds += part.seconds;
             gaRuns += runs;

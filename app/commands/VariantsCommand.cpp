@@ -118,14 +118,14 @@ FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
                          messagePrefix().c_str(), progressLabel.c_str(), progress.evaluations,
                          progress.archived);
         };
-    auto found = findVariants({job.preset.target, job.preset.family, job.preset.baseKappa},
-                              request, job.settings, job.fitnessRender, job.outputRender, hooks);
+    auto found = findVariants({job.preset.target, job.preset.family, job.preset.baseKappa}, request,
+                              job.settings, job.fitnessRender, job.outputRender, hooks);
     if (showProgress) std::fputc('\n', stderr);
     if (!found) throw std::runtime_error(found.error().message);
     const VariantSearchProgress& progress = found->progress;
     return {std::move(found->set),
-            VariantRun{request, job.size, job.fitnessSize, progress.evaluations,
-                       progress.archived, progress.closestDeltaE, 0.0}};
+            VariantRun{request, job.size, job.fitnessSize, progress.evaluations, progress.archived,
+                       progress.closestDeltaE, 0.0}};
 }
 
 void commit(std::optional<OutputFolder>& output) {
@@ -152,7 +152,7 @@ int finish(int signal, const std::string& summary, bool met, bool wroteFiles, bo
 }
 
 // Marks the report partial when a signal stopped the work; returns the signal (0: none).
-int markPartial(nlohmann::json& report) {
+int markPartial(nlohmann::ordered_json& report) {
     const int signal = stopRequested();
     if (signal) {
         report["partial"] = true;
@@ -165,11 +165,11 @@ int markPartial(nlohmann::json& report) {
 int runOneSet(const VariantsJob& job) {
     FoundSet found = findSet(job, job.request, "");
     found.run.wallSeconds = secondsSince(job.started);
-    nlohmann::json report = variantReport(job.preset, found.run, found.set);
+    nlohmann::ordered_json report = variantReport(job.preset, found.run, found.set);
     const int signal = markPartial(report);
     if (job.output) {
-        if (auto written = writeVariantFiles(job.output->staging(), job.target, found.set,
-                                             report, job.heatmapMetric);
+        if (auto written = writeVariantFiles(job.output->staging(), job.target, found.set, report,
+                                             job.heatmapMetric);
             !written)
             throw UsageError("--out: " + job.output->userFacing(written.error().message));
         commit(job.output);
@@ -190,18 +190,18 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
     if (!target) throw std::runtime_error(target.error().message);
     for (const int block : blocks) {
         if (stopRequested()) break;
-        const std::string label = "block " + std::to_string(block + 1) + " of " +
-                                  std::to_string(plan.blocks()) + ": ";
+        const std::string label =
+            "block " + std::to_string(block + 1) + " of " + std::to_string(plan.blocks()) + ": ";
         FoundSet found = findSet(job, blockRequest(job.request, plan, block), label);
         addBlock(parts, job.preset, found.run, found.set, plan, block);
         if (job.output) {
-            if (auto written = writeVariantBlock(job.output->staging(), job.target, found.set,
-                                                 plan, block, job.heatmapMetric);
+            if (auto written = writeVariantBlock(job.output->staging(), job.target, found.set, plan,
+                                                 block, job.heatmapMetric);
                 !written)
                 throw UsageError("--out: " + job.output->userFacing(written.error().message));
         }
     }
-    nlohmann::json report = assembleBlockReport(std::move(parts), shard);
+    nlohmann::ordered_json report = assembleBlockReport(std::move(parts), shard);
     const int signal = markPartial(report);
     if (job.output) {
         const auto staging = job.output->staging();
@@ -277,8 +277,8 @@ int runVariants(CommandLine& args) {
     // and work past the memory limit.
     std::optional<OutputFolder> output;
     if (outDir) output.emplace(claimOutputFolder(*outDir, replaceOutput));
-    checkWorkEstimate(variantsEstimate(std::min(request.count, plan.blockSize), size,
-                                       fitnessSize, settings.maxEvaluations, settings.population,
+    checkWorkEstimate(variantsEstimate(std::min(request.count, plan.blockSize), size, fitnessSize,
+                                       settings.maxEvaluations, settings.population,
                                        int(blocks.size())));
 
     const Preset& preset = choice.preset;

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "VulkanContext.h"
+#include "gpu/GraphicsPipeline.h"
 #include "gpu/HeatmapColormap.h"
 #include "gpu/VulkanError.h"
 // SPIR-V generated at build time (app/editor/CMakeLists.txt); the arrays need <cstdint> first.
@@ -40,19 +41,6 @@ Result<gpu::UniqueSampler> createSampler(VkDevice device, VkFilter filter) {
         !s)
         return s.error();
     return gpu::UniqueSampler(device, sampler);
-}
-
-Result<gpu::UniqueShaderModule> createShader(VkDevice device, const std::uint32_t* code,
-                                             std::size_t bytes) {
-    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = bytes;
-    info.pCode = code;
-    VkShaderModule module = VK_NULL_HANDLE;
-    if (Status s = gpu::checkVulkan(vkCreateShaderModule(device, &info, nullptr, &module),
-                                    "creating a shader module");
-        !s)
-        return s.error();
-    return gpu::UniqueShaderModule(device, module);
 }
 
 }  // namespace
@@ -123,89 +111,22 @@ Status ImageBridge::createLayouts() {
 }
 
 Status ImageBridge::createPipeline(VkRenderPass renderPass) {
-    auto vertex = createShader(device_, kImageVertSpirv, sizeof kImageVertSpirv);
-    if (!vertex) return vertex.error();
-    auto fragment = createShader(device_, kImageFragSpirv, sizeof kImageFragSpirv);
-    if (!fragment) return fragment.error();
-    VkPipelineShaderStageCreateInfo stages[2] = {};
-    stages[0].sType = stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = vertex->get();
-    stages[0].pName = "main";
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = fragment->get();
-    stages[1].pName = "main";
-
-    const VkVertexInputBindingDescription binding{0, sizeof(ImDrawVert),
-                                                  VK_VERTEX_INPUT_RATE_VERTEX};
     const VkVertexInputAttributeDescription attributes[3] = {
         {0, 0, VK_FORMAT_R32G32_SFLOAT, std::uint32_t(offsetof(ImDrawVert, pos))},
         {1, 0, VK_FORMAT_R32G32_SFLOAT, std::uint32_t(offsetof(ImDrawVert, uv))},
         {2, 0, VK_FORMAT_R8G8B8A8_UNORM, std::uint32_t(offsetof(ImDrawVert, col))}};
-    VkPipelineVertexInputStateCreateInfo vertexInput{
-        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    vertexInput.vertexBindingDescriptionCount = 1;
-    vertexInput.pVertexBindingDescriptions = &binding;
-    vertexInput.vertexAttributeDescriptionCount = 3;
-    vertexInput.pVertexAttributeDescriptions = attributes;
-    VkPipelineInputAssemblyStateCreateInfo assembly{
-        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{
-        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{
-        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo multisample{
-        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    // Straight-alpha "over", as ImGui blends.
-    VkPipelineColorBlendAttachmentState blend{};
-    blend.blendEnable = VK_TRUE;
-    blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-    blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-    blend.colorBlendOp = VK_BLEND_OP_ADD;
-    blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-    blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-    blend.alphaBlendOp = VK_BLEND_OP_ADD;
-    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                           VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    VkPipelineColorBlendStateCreateInfo blendState{
-        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blendState.attachmentCount = 1;
-    blendState.pAttachments = &blend;
-    VkPipelineDepthStencilStateCreateInfo depth{
-        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    const VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = 2;
-    dynamic.pDynamicStates = dynamicStates;
-
-    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    info.stageCount = 2;
-    info.pStages = stages;
-    info.pVertexInputState = &vertexInput;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = &depth;
-    info.pColorBlendState = &blendState;
-    info.pDynamicState = &dynamic;
-    info.layout = pipelineLayout_.get();
-    info.renderPass = renderPass;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    if (Status s = gpu::checkVulkan(
-            vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-            "creating the image pipeline");
-        !s)
-        return s;
-    pipeline_ = gpu::UniquePipeline(device_, pipeline);
+    gpu::GraphicsPipelineSpec spec;
+    spec.vertexSpirv = kImageVertSpirv;
+    spec.fragmentSpirv = kImageFragSpirv;
+    spec.vertexBinding = {0, sizeof(ImDrawVert), VK_VERTEX_INPUT_RATE_VERTEX};
+    spec.vertexAttributes = attributes;
+    spec.alphaBlended = true;
+    spec.layout = pipelineLayout_.get();
+    spec.renderPass = renderPass;
+    spec.name = "image";
+    auto pipeline = gpu::createGraphicsPipeline(device_, spec);
+    if (!pipeline) return pipeline.error();
+    pipeline_ = std::move(pipeline).value();
     return Ok{};
 }
 

@@ -31,7 +31,9 @@ Result<Buffer> Buffer::create(const Device& device, VkDeviceSize size, VkBufferU
         result != VK_SUCCESS)
         return vulkanError("allocating " + std::to_string(requirements.size) + " bytes", result);
     buffer.memory_ = UniqueMemory(device.handle(), memory);
-    vkBindBufferMemory(device.handle(), handle, memory, 0);
+    if (VkResult result = vkBindBufferMemory(device.handle(), handle, memory, 0);
+        result != VK_SUCCESS)
+        return vulkanError("binding buffer memory", result);
 
     if (use != MemoryUse::DeviceLocal) {
         if (VkResult result = vkMapMemory(device.handle(), memory, 0, VK_WHOLE_SIZE, 0,

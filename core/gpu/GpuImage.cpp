@@ -27,26 +27,22 @@ Result<GpuImage> GpuImage::create(const Device& device, const GpuImageSpec& spec
     if (VkResult result = vkCreateImage(vkDevice, &imageInfo, nullptr, &handle);
         result != VK_SUCCESS)
         return vulkanError("creating an image", result);
+    image.image_ = UniqueImage(vkDevice, handle);  // owned from here, whatever fails next
 
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(vkDevice, handle, &requirements);
     auto memoryType = device.memoryTypeFor(requirements.memoryTypeBits, MemoryUse::DeviceLocal);
-    if (!memoryType) {
-        vkDestroyImage(vkDevice, handle, nullptr);
-        return memoryType.error();
-    }
+    if (!memoryType) return memoryType.error();
     VkMemoryAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     allocateInfo.allocationSize = requirements.size;
     allocateInfo.memoryTypeIndex = *memoryType;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     if (VkResult result = vkAllocateMemory(vkDevice, &allocateInfo, nullptr, &memory);
-        result != VK_SUCCESS) {
-        vkDestroyImage(vkDevice, handle, nullptr);
+        result != VK_SUCCESS)
         return vulkanError("allocating image memory", result);
-    }
     image.memory_ = UniqueMemory(vkDevice, memory);
-    image.image_ = UniqueImage(vkDevice, handle);
-    vkBindImageMemory(vkDevice, handle, memory, 0);
+    if (VkResult result = vkBindImageMemory(vkDevice, handle, memory, 0); result != VK_SUCCESS)
+        return vulkanError("binding image memory", result);
 
     VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     viewInfo.image = handle;

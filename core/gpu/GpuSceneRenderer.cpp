@@ -13,6 +13,7 @@
 #include <shaders/kSceneRasterFragmentSpirv.h>
 #include <shaders/kSceneRasterVertexSpirv.h>
 
+#include "gpu/GraphicsPipeline.h"
 #include "gpu/ShaderModule.h"
 #include "gpu/VulkanError.h"
 #include "mesh/MeshSimplification.h"
@@ -157,88 +158,28 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
 Result<UniquePipeline> createPipeline(VkDevice device, VkRenderPass renderPass,
                                       VkPipelineLayout layout,
                                       const GpuSceneTextures& textures) {
-    auto vertexModule = createShaderModule(device, kSceneRasterVertexSpirv);
-    if (!vertexModule) return vertexModule.error();
-    auto fragmentModule = createShaderModule(device, kSceneRasterFragmentSpirv);
-    if (!fragmentModule) return fragmentModule.error();
-    VkPipelineShaderStageCreateInfo stages[2]{};
-    stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = vertexModule->get();
-    stages[0].pName = "main";
-    stages[1] = stages[0];
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = fragmentModule->get();
     const uint32_t specialization[2] = {textures.textured() ? 1u : 0u,
                                         textures.environmentLevels() > 0 ? 1u : 0u};
     const SpecializationConstants constants(specialization);
-    stages[1].pSpecializationInfo = constants.info();
-
-    const VkVertexInputBindingDescription vertexBinding{0, sizeof(MeshVertex),
-                                                        VK_VERTEX_INPUT_RATE_VERTEX};
     const VkVertexInputAttributeDescription attributes[3] = {
         {0, 0, VK_FORMAT_R32G32B32_SFLOAT, uint32_t(offsetof(MeshVertex, position))},
         {1, 0, VK_FORMAT_R32G32B32_SFLOAT, uint32_t(offsetof(MeshVertex, normal))},
         {2, 0, VK_FORMAT_R32G32_SFLOAT, uint32_t(offsetof(MeshVertex, uv))},
     };
-    VkPipelineVertexInputStateCreateInfo vertexInput{
-        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    vertexInput.vertexBindingDescriptionCount = 1;
-    vertexInput.pVertexBindingDescriptions = &vertexBinding;
-    vertexInput.vertexAttributeDescriptionCount = 3;
-    vertexInput.pVertexAttributeDescriptions = attributes;
-    VkPipelineInputAssemblyStateCreateInfo inputAssembly{
-        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    inputAssembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo rasterization{
-        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    rasterization.polygonMode = VK_POLYGON_MODE_FILL;
-    rasterization.cullMode = VK_CULL_MODE_BACK_BIT;
-    // Counter-clockwise seen from outside (core/mesh/Mesh.h); the projection's y flip keeps
-    // that orientation on screen.
-    rasterization.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    rasterization.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo multisample{
-        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = GpuSceneRenderer::kSamples;
-    VkPipelineDepthStencilStateCreateInfo depthStencil{
-        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depthStencil.depthTestEnable = VK_TRUE;
-    depthStencil.depthWriteEnable = VK_TRUE;
-    depthStencil.depthCompareOp = VK_COMPARE_OP_LESS;
-    VkPipelineColorBlendAttachmentState blendAttachment{};
-    blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                     VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = 1;
-    blend.pAttachments = &blendAttachment;
-    const VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = 2;
-    dynamic.pDynamicStates = dynamicStates;
-
-    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    info.stageCount = 2;
-    info.pStages = stages;
-    info.pVertexInputState = &vertexInput;
-    info.pInputAssemblyState = &inputAssembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &rasterization;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = &depthStencil;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamic;
-    info.layout = layout;
-    info.renderPass = renderPass;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    if (VkResult result =
-            vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
-        result != VK_SUCCESS)
-        return vulkanError("creating the scene pipeline", result);
-    return UniquePipeline(device, pipeline);
+    GraphicsPipelineSpec spec;
+    spec.vertexSpirv = kSceneRasterVertexSpirv;
+    spec.fragmentSpirv = kSceneRasterFragmentSpirv;
+    spec.fragmentSpecialization = constants.info();
+    spec.vertexBinding = {0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX};
+    spec.vertexAttributes = attributes;
+    // The projection's y flip keeps the mesh's counter-clockwise front faces so on screen.
+    spec.cullMode = VK_CULL_MODE_BACK_BIT;
+    spec.samples = GpuSceneRenderer::kSamples;
+    spec.depthTested = true;
+    spec.layout = layout;
+    spec.renderPass = renderPass;
+    spec.name = "scene";
+    return createGraphicsPipeline(device, spec);
 }
 
 Status requireMultisampling(const Device& device) {

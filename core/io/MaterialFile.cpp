@@ -24,11 +24,7 @@ std::string writtenTexture(const fs::path& texture, const fs::path& folder) {
 }
 
 MaterialFile readMaterialFile(JsonReader& root, const fs::path& folder) {
-    const auto version = root.integer("format_version", 1, 1000000);
-    if (version > kMaterialFormatVersion)
-        root.fail("format_version", "version " + std::to_string(version) +
-                                        " is newer than this matevo reads (" +
-                                        std::to_string(kMaterialFormatVersion) + ")");
+    readFormatVersion(root, kMaterialFormatVersion);
     MaterialFile result;
     if (root.has("name")) result.name = root.string("name");
     result.material.family = readFamily(root, "family");
@@ -37,7 +33,7 @@ MaterialFile readMaterialFile(JsonReader& root, const fs::path& folder) {
     const TextureNames textures = readTextures(root, result.material.family);
     result.roughnessTexture = resolvedTexture(folder, textures.roughness);
     result.baseColorTexture = resolvedTexture(folder, textures.baseColor);
-    if (root.has("scene")) result.scene = readScene(root.object("scene"));
+    if (root.has("scene")) result.scene = readScene(root.object("scene"), false);
     if (result.scene.environment != "studio")
         result.scene.environment = resolvedTexture(folder, result.scene.environment).string();
     root.warnAboutUnknownFields();

@@ -26,6 +26,8 @@ KeptMaterial readKept(JsonReader& reader) {
 }
 
 Preset readPreset(JsonReader& root) {
+    const int version =
+        root.has("format_version") ? readFormatVersion(root, kPresetFormatVersion) : 1;
     Preset preset;
     preset.name = root.string("name");
     if (root.has("description")) preset.description = root.string("description");
@@ -37,11 +39,23 @@ Preset readPreset(JsonReader& root) {
     preset.roughnessTexture = std::move(textures.roughness);
     preset.baseColorTexture = std::move(textures.baseColor);
     preset.ga = readGaSettings(root.object("ga"));
-    if (root.has("scene")) preset.scene = readScene(root.object("scene"));
+    if (root.has("scene")) preset.scene = readScene(root.object("scene"), version == 1);
     if (root.has("kept"))
         for (JsonReader entry : root.objects("kept")) preset.kept.push_back(readKept(entry));
     root.warnAboutUnknownFields();
     return preset;
+}
+
+// The target's refractive indices and roughnesses are always written: a genome without them
+// is no material.
+nlohmann::ordered_json minimalGenomeJson(const Genome& genome) {
+    return changedFields(genomeToJson(genome), genomeToJson(Genome{}),
+                         {"eta1", "eta2", "alpha1", "alpha2"});
+}
+
+nlohmann::ordered_json minimalFamilyJson(const MaterialFamily& family) {
+    return changedFields(familyToJson(family), familyToJson(MaterialFamily{}),
+                         {"coat", "base", "medium"});
 }
 
 }  // namespace
@@ -76,24 +90,28 @@ Result<LoadedPreset> loadPreset(const std::filesystem::path& file) {
 }
 
 std::string serializePreset(const Preset& preset) {
-    nlohmann::json json = {
-        {"name", preset.name},
-        {"description", preset.description},
-        {"family", familyToJson(preset.family)},
-        {"target", genomeToJson(preset.target)},
-        {"textures",
-         {{"roughness", preset.roughnessTexture}, {"base_color", preset.baseColorTexture}}},
-        {"ga", gaSettingsToJson(preset.ga)},
-        {"scene", sceneToJson(preset.scene)},
-    };
+    const Preset defaults;
+    nlohmann::ordered_json json = {{"format_version", kPresetFormatVersion}, {"name", preset.name}};
+    if (!preset.description.empty()) json["description"] = preset.description;
+    json["family"] = minimalFamilyJson(preset.family);
+    json["target"] = minimalGenomeJson(preset.target);
     if (preset.family.base == Base::Conductor) json["base_kappa"] = preset.baseKappa;
+    nlohmann::ordered_json textures = nlohmann::ordered_json::object();
+    if (!preset.roughnessTexture.empty()) textures["roughness"] = preset.roughnessTexture;
+    if (!preset.baseColorTexture.empty()) textures["base_color"] = preset.baseColorTexture;
+    if (!textures.empty()) json["textures"] = std::move(textures);
+    json["ga"] = changedFields(gaSettingsToJson(preset.ga), gaSettingsToJson(defaults.ga),
+                               {"population", "generations"});
+    if (auto scene = changedFields(sceneToJson(preset.scene), sceneToJson(defaults.scene));
+        !scene.empty())
+        json["scene"] = std::move(scene);
     if (!preset.kept.empty()) {
-        nlohmann::json kept = nlohmann::json::array();
+        nlohmann::ordered_json kept = nlohmann::ordered_json::array();
         for (const KeptMaterial& material : preset.kept)
             kept.push_back({{"name", material.name},
-                            {"family", familyToJson(material.family)},
-                            {"genome", genomeToJson(material.genome)}});
-        json["kept"] = kept;
+                            {"family", minimalFamilyJson(material.family)},
+                            {"genome", minimalGenomeJson(material.genome)}});
+        json["kept"] = std::move(kept);
     }
     return json.dump(2) + "\n";
 }

@@ -25,6 +25,12 @@ struct KeptMaterial {
     bool operator==(const KeptMaterial&) const = default;
 };
 
+// The preset format this matevo writes ("format_version"). 1: no version field, every field
+// written. 2: only what differs from the defaults of GaSettings, SceneSettings, MaterialFamily
+// and Genome (the defaults of format 2; a change of a default is a new format), and a scene
+// field given without scene.mode means what it says. Both are read.
+inline constexpr int kPresetFormatVersion = 2;
+
 struct Preset {
     std::string name = "untitled";
     std::string description;
@@ -56,6 +62,8 @@ struct LoadedPreset {
 // 100000], got 0").
 Result<LoadedPreset> loadPreset(const std::filesystem::path& file);
 Result<LoadedPreset> parsePreset(const std::string& jsonText, const std::string& sourceName);
+// Minimal and ordered: the format version, then the fields a person reads first (name, family,
+// target), and of the rest only what differs from the defaults (see kPresetFormatVersion).
 std::string serializePreset(const Preset& preset);
 // Atomic: written to a temporary file beside the target, then renamed over it.
 Status savePreset(const Preset& preset, const std::filesystem::path& file);

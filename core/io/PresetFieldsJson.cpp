@@ -1,10 +1,21 @@
 #include "io/PresetFieldsJson.h"
 
+#include <algorithm>
+
 #include "genome/FamilyRules.h"
 #include "io/GenomeJson.h"
 #include "io/JsonReader.h"
 
 namespace matevo {
+
+int readFormatVersion(JsonReader& root, int newest) {
+    const auto version = int(root.integer("format_version", 1, 1000000));
+    if (version > newest)
+        root.fail("format_version", "version " + std::to_string(version) +
+                                        " is newer than this matevo reads (" +
+                                        std::to_string(newest) + ")");
+    return version;
+}
 
 MaterialFamily readFamily(JsonReader& parent, const std::string& key) {
     JsonReader reader = parent.object(key);
@@ -61,7 +72,7 @@ TextureNames readTextures(JsonReader& parent, const MaterialFamily& family) {
     return names;
 }
 
-SceneSettings readScene(JsonReader reader) {
+SceneSettings readScene(JsonReader reader, bool writtenBeforeModes) {
     SceneSettings scene;
     if (reader.has("mode"))
         scene.mode = reader.enumeration("mode", parseSceneMode, "paper, ambient or environment");
@@ -83,7 +94,7 @@ SceneSettings readScene(JsonReader reader) {
         scene.environmentRadiance = reader.numbers<3>("environment_radiance", 0.0, 1e4);
         // Presets from before the modes had no mode and meant the ambient look: say that it
         // changed rather than switch silently.
-        if (!reader.has("mode"))
+        if (writtenBeforeModes && !reader.has("mode"))
             reader.warn("environment_radiance",
                         "ignored: with no scene.mode the scene is the paper's (one light, no "
                         "ambient); set scene.mode to \"ambient\" to use it");
@@ -131,6 +142,20 @@ nlohmann::ordered_json gaSettingsToJson(const GaSettings& ga) {
             {"normalize_by_range", ga.normalizeByRange},
             {"elitism", ga.elitism},
             {"seed", ga.seed}};
+}
+
+nlohmann::ordered_json changedFields(const nlohmann::ordered_json& json,
+                                     const nlohmann::ordered_json& defaults,
+                                     std::initializer_list<const char*> required) {
+    nlohmann::ordered_json changed = nlohmann::ordered_json::object();
+    for (const auto& field : json.items()) {
+        const std::string& key = field.key();
+        const bool isRequired = std::any_of(required.begin(), required.end(),
+                                            [&](const char* name) { return key == name; });
+        if (isRequired || !defaults.contains(key) || defaults.at(key) != field.value())
+            changed[key] = field.value();
+    }
+    return changed;
 }
 
 }  // namespace matevo

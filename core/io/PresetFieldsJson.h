@@ -4,6 +4,7 @@
 // JsonFieldError naming the field (JsonReader.h); writers keep the keys in the order a person
 // reads them.
 #include <array>
+#include <initializer_list>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,10 @@
 namespace matevo {
 
 class JsonReader;
+
+// "format_version" of `root`: an integer from 1 up to `newest`, the newest this matevo reads
+// (a newer file is refused rather than misread).
+int readFormatVersion(JsonReader& root, int newest);
 
 // Reads `key` of `parent` as a family and checks it (Table 2 textures only the rough layer).
 MaterialFamily readFamily(JsonReader& parent, const std::string& key);
@@ -35,10 +40,20 @@ struct TextureNames {
 };
 TextureNames readTextures(JsonReader& parent, const MaterialFamily& family);
 
-SceneSettings readScene(JsonReader reader);
+// `writtenBeforeModes`: the document comes from before scene modes existed (a preset of format
+// 1), where an environment radiance without a mode meant the ambient look: it is then ignored
+// with a warning rather than switched silently.
+SceneSettings readScene(JsonReader reader, bool writtenBeforeModes);
 nlohmann::ordered_json sceneToJson(const SceneSettings& scene);
 
 GaSettings readGaSettings(JsonReader reader);
 nlohmann::ordered_json gaSettingsToJson(const GaSettings& ga);
+
+// The fields of the object `json` whose values differ from those of `defaults` (a writer's
+// output for a default-constructed value), plus the fields named in `required`, in `json`'s
+// order: what a minimal file writes, so that it shows what was chosen and diffs well.
+nlohmann::ordered_json changedFields(const nlohmann::ordered_json& json,
+                                     const nlohmann::ordered_json& defaults,
+                                     std::initializer_list<const char*> required = {});
 
 }  // namespace matevo

@@ -21,7 +21,7 @@ constexpr const char* kHeaderFields[] = {"preset", "family", "target", "request"
 
 struct ShareReport {
     fs::path folder;
-    nlohmann::json report;
+    nlohmann::ordered_json report;
     Shard shard;
 };
 
@@ -32,7 +32,7 @@ Error fieldError(const fs::path& folder, const std::string& field, const std::st
 Result<ShareReport> readShare(const fs::path& folder) {
     auto text = readTextFile(folder / "report.json");
     if (!text) return text.error();
-    ShareReport share{folder, nlohmann::json::parse(*text, nullptr, false), {}};
+    ShareReport share{folder, nlohmann::ordered_json::parse(*text, nullptr, false), {}};
     if (!share.report.is_object())
         return Error{displayPath(folder / "report.json") + ": not a JSON object"};
     if (!share.report.contains("shard"))
@@ -45,7 +45,7 @@ Result<ShareReport> readShare(const fs::path& folder) {
         for (const char* field : {"blocks", "variants"})
             if (!share.report.at(field).is_array())
                 return fieldError(folder, field, "must be an array");
-    } catch (const nlohmann::json::exception& error) {
+    } catch (const nlohmann::ordered_json::exception& error) {
         return fieldError(folder, "shard", error.what());
     }
     return share;
@@ -78,35 +78,34 @@ Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::
         }
         if (blocks != blocksOfShard(plan, share.shard))
             return fieldError(share.folder, "blocks",
-                              "not the blocks of share " + std::to_string(share.shard.index) +
-                                  "/" + std::to_string(share.shard.count));
+                              "not the blocks of share " + std::to_string(share.shard.index) + "/" +
+                                  std::to_string(share.shard.count));
         for (const auto& variant : share.report.at("variants")) {
             const auto index = variant.at("index").get<int>();
             const int block = variant.at("block").get<int>();
             if (std::find(blocks.begin(), blocks.end(), block) == blocks.end() ||
                 index < plan.firstIndex(block) ||
                 index >= plan.firstIndex(block) + plan.countIn(block))
-                return fieldError(share.folder, "variants",
-                                  "variant " + std::to_string(index) +
-                                      " is not in one of this share's blocks");
-            const std::string stem = "variants/" + variantStem(std::size_t(index),
-                                                               std::size_t(plan.count));
+                return fieldError(
+                    share.folder, "variants",
+                    "variant " + std::to_string(index) + " is not in one of this share's blocks");
+            const std::string stem =
+                "variants/" + variantStem(std::size_t(index), std::size_t(plan.count));
             if (auto copied = copyMaterial(share.folder / (stem + ".json"), dir / (stem + ".json"));
                 !copied)
                 return copied;
             for (const char* suffix : {".png", "_heatmap.png"})
-                if (auto copied =
-                        copyFile(share.folder / (stem + suffix), dir / (stem + suffix));
+                if (auto copied = copyFile(share.folder / (stem + suffix), dir / (stem + suffix));
                     !copied)
                     return copied;
             joined.variants.push_back(variant);
         }
-    } catch (const nlohmann::json::exception& error) {
+    } catch (const nlohmann::ordered_json::exception& error) {
         return fieldError(share.folder, "blocks/variants", error.what());
     }
     for (const int block : blocks)
-        if (auto copied = copyFile(share.folder / blockContactSheet(block),
-                                   dir / blockContactSheet(block));
+        if (auto copied =
+                copyFile(share.folder / blockContactSheet(block), dir / blockContactSheet(block));
             !copied)
             return copied;
     return Ok{};
@@ -114,7 +113,8 @@ Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::
 
 }  // namespace
 
-Result<nlohmann::json> mergeShards(const std::vector<fs::path>& folders, const fs::path& dir) {
+Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
+                                           const fs::path& dir) {
     if (folders.empty()) return Error{"no share folders given"};
     std::vector<ShareReport> shares;
     for (const fs::path& folder : folders) {
@@ -128,7 +128,7 @@ Result<nlohmann::json> mergeShards(const std::vector<fs::path>& folders, const f
     try {
         plan = {first.report.at("request").at("count").get<int>(),
                 first.report.at("request").at("block").get<int>()};
-    } catch (const nlohmann::json::exception& error) {
+    } catch (const nlohmann::ordered_json::exception& error) {
         return fieldError(first.folder, "request", error.what());
     }
     if (plan.count < 1 || plan.blockSize < 1 || shareCount < 1)
@@ -183,7 +183,7 @@ Result<nlohmann::json> mergeShards(const std::vector<fs::path>& folders, const f
         if (auto copied = copyShare(*share, plan, dir, joined); !copied) return copied.error();
     if (auto written = writeFileAtomically(dir / "target.png", *target); !written)
         return written.error();
-    nlohmann::json report = assembleBlockReport(std::move(joined), std::nullopt);
+    nlohmann::ordered_json report = assembleBlockReport(std::move(joined), std::nullopt);
     if (auto written = writeFileAtomically(dir / "report.json", report.dump(2) + "\n"); !written)
         return written.error();
     return report;

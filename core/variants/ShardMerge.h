@@ -17,7 +17,7 @@ namespace matevo {
 
 // Writes the joined set into `dir` (an existing, empty folder: the caller's staging folder)
 // and returns its report. An Error names the share's folder, file and field at fault.
-Result<nlohmann::json> mergeShards(const std::vector<std::filesystem::path>& shards,
-                                   const std::filesystem::path& dir);
+Result<nlohmann::ordered_json> mergeShards(const std::vector<std::filesystem::path>& shards,
+                                           const std::filesystem::path& dir);
 
 }  // namespace matevo

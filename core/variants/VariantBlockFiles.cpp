@@ -1,8 +1,8 @@
 #include "variants/VariantBlockFiles.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -13,9 +13,11 @@ namespace matevo {
 
 namespace {
 
-std::size_t indexOf(const nlohmann::json& entry) { return entry.at("index").get<std::size_t>(); }
+std::size_t indexOf(const nlohmann::ordered_json& entry) {
+    return entry.at("index").get<std::size_t>();
+}
 
-void sortByIndex(std::vector<nlohmann::json>& entries) {
+void sortByIndex(std::vector<nlohmann::ordered_json>& entries) {
     std::sort(entries.begin(), entries.end(),
               [](const auto& a, const auto& b) { return indexOf(a) < indexOf(b); });
 }
@@ -24,7 +26,7 @@ void sortByIndex(std::vector<nlohmann::json>& entries) {
 
 BlockReport blockReportHeader(const Preset& preset, const VariantRun& whole,
                               const VariantBlocks& plan) {
-    nlohmann::json request = requestJson(whole);
+    nlohmann::ordered_json request = requestJson(whole);
     request["block"] = plan.blockSize;
     return {{{"preset", preset.name},
              {"family", describe(preset.family)},
@@ -52,23 +54,23 @@ void addBlock(BlockReport& report, const Preset& preset, const VariantRun& run,
                              {"contact_sheet", blockContactSheet(block)}});
     const std::vector<double> nearest = set.nearestSibling();
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
-        nlohmann::json entry =
+        nlohmann::ordered_json entry =
             variantEntry(preset, set, i, first + i, std::size_t(plan.count), nearest);
         entry["block"] = block;
         report.variants.push_back(std::move(entry));
     }
 }
 
-nlohmann::json assembleBlockReport(BlockReport parts, const std::optional<Shard>& shard) {
+nlohmann::ordered_json assembleBlockReport(BlockReport parts, const std::optional<Shard>& shard) {
     sortByIndex(parts.blocks);
     sortByIndex(parts.variants);
     // A material found by two blocks (the genome, and its own kappa with hue variety): the
     // later index is the copy.
-    nlohmann::json duplicates = nlohmann::json::array();
+    nlohmann::ordered_json duplicates = nlohmann::ordered_json::array();
     std::map<std::string, std::size_t> firstWithGenome;
     for (const auto& variant : parts.variants) {
-        const std::string identity =
-            variant.at("genome").dump() + variant.value("base_kappa", nlohmann::json()).dump();
+        const std::string identity = variant.at("genome").dump() +
+                                     variant.value("base_kappa", nlohmann::ordered_json()).dump();
         const auto [found, inserted] = firstWithGenome.emplace(identity, indexOf(variant));
         if (!inserted) duplicates.push_back({found->second, indexOf(variant)});
     }
@@ -86,15 +88,14 @@ nlohmann::json assembleBlockReport(BlockReport parts, const std::optional<Shard>
             smallest = std::min(smallest, block.at("smallest_pairwise_de00").get<double>());
     }
     if (!std::isfinite(smallest)) smallest = 0;
-    const nlohmann::json& request = parts.header.at("request");
+    const nlohmann::ordered_json& request = parts.header.at("request");
     char text[512];
     std::snprintf(text, sizeof text,
                   "%zu of %d variants in %zu block(s) of up to %d, band %g-%g, at least %g apart "
                   "within each block (smallest %.2f), %zu evaluations",
-                  parts.variants.size(), asked, parts.blocks.size(),
-                  request.at("block").get<int>(), request.at("band")[0].get<double>(),
-                  request.at("band")[1].get<double>(), request.at("min_apart").get<double>(),
-                  smallest, evaluations);
+                  parts.variants.size(), asked, parts.blocks.size(), request.at("block").get<int>(),
+                  request.at("band")[0].get<double>(), request.at("band")[1].get<double>(),
+                  request.at("min_apart").get<double>(), smallest, evaluations);
     std::string summary = text;
     if (!duplicates.empty())
         summary += "; " + std::to_string(duplicates.size()) + " genome(s) repeated across blocks";
@@ -102,14 +103,14 @@ nlohmann::json assembleBlockReport(BlockReport parts, const std::optional<Shard>
         summary = "share " + std::to_string(shard->index) + "/" + std::to_string(shard->count) +
                   ": " + summary;
 
-    nlohmann::json report = std::move(parts.header);
+    nlohmann::ordered_json report = std::move(parts.header);
     report["seed"] = request.at("seed");
     report["blocks"] = std::move(parts.blocks);
     report["found"] = parts.variants.size();
     report["variants"] = std::move(parts.variants);
     report["duplicates"] = std::move(duplicates);
-    report["met"] = everyBlockMet && report["duplicates"].empty() &&
-                    report["found"].get<int>() == asked;
+    report["met"] =
+        everyBlockMet && report["duplicates"].empty() && report["found"].get<int>() == asked;
     report["summary"] = summary;
     report["distinct_within"] = "block";
     report["smallest_pairwise_de00"] = smallest;
@@ -131,8 +132,7 @@ Status writeVariantBlock(const std::filesystem::path& dir, const MaterialFile& t
                          ImageMetric heatmapMetric) {
     const std::size_t first = std::size_t(plan.firstIndex(block));
     const std::size_t count = std::size_t(plan.count);
-    if (auto written = writeVariantMembers(dir, target, set, first, count, heatmapMetric);
-        !written)
+    if (auto written = writeVariantMembers(dir, target, set, first, count, heatmapMetric); !written)
         return written;
     const std::filesystem::path sheet = dir / blockContactSheet(block);
     std::error_code error;

@@ -28,9 +28,10 @@ namespace matevo {
 // A report in parts, so that blocks computed by different processes join into the report one
 // process writes.
 struct BlockReport {
-    nlohmann::json header;                 // preset, family, target, request (with "block")
-    std::vector<nlohmann::json> blocks;    // per block: seed, found, met, pairwise matrix, …
-    std::vector<nlohmann::json> variants;  // per variant: index, block, files, ΔE00s, genome
+    nlohmann::ordered_json header;               // preset, family, target, request (with "block")
+    std::vector<nlohmann::ordered_json> blocks;  // per block: seed, found, met, pairwise matrix, …
+    std::vector<nlohmann::ordered_json>
+        variants;  // per variant: index, block, files, ΔE00s, genome
 };
 
 // The header of a request cut into `plan`'s blocks; `whole` is the request of the whole set.
@@ -42,7 +43,7 @@ void addBlock(BlockReport& report, const Preset& preset, const VariantRun& run,
 // The report: the header; blocks and variants in index order; identical genomes in different
 // blocks ("duplicates", pairs of indices); whether every block met its request and no genome
 // repeats, with a one-line summary; the totals. A share's report also says which share it is.
-nlohmann::json assembleBlockReport(BlockReport report, const std::optional<Shard>& shard);
+nlohmann::ordered_json assembleBlockReport(BlockReport report, const std::optional<Shard>& shard);
 
 // "contact_sheets/block_007.png"
 std::string blockContactSheet(int block);

@@ -65,25 +65,25 @@ std::string variantStem(std::size_t index, std::size_t count) {
     return name;
 }
 
-nlohmann::json variantEntry(const Preset& preset, const VariantSet& set, std::size_t member,
-                            std::size_t index, std::size_t count,
-                            const std::vector<double>& nearest) {
+nlohmann::ordered_json variantEntry(const Preset& preset, const VariantSet& set, std::size_t member,
+                                    std::size_t index, std::size_t count,
+                                    const std::vector<double>& nearest) {
     const Variant& variant = set.variants[member];
     const MaterialInstance material = materialOf(variant.genome, preset.family, preset.baseKappa);
     const std::string stem = "variants/" + variantStem(index, count);
-    nlohmann::json entry = {{"index", index},
-                            {"file", stem + ".json"},
-                            {"image", stem + ".png"},
-                            {"heatmap", stem + "_heatmap.png"},
-                            {"de00_to_target", variant.deltaEToTarget},
-                            {"de00_to_nearest_sibling", nearest[member]},
-                            {"kept", variant.kept},
-                            {"genome", genomeToJson(material.genome)}};
+    nlohmann::ordered_json entry = {{"index", index},
+                                    {"file", stem + ".json"},
+                                    {"image", stem + ".png"},
+                                    {"heatmap", stem + "_heatmap.png"},
+                                    {"de00_to_target", variant.deltaEToTarget},
+                                    {"de00_to_nearest_sibling", nearest[member]},
+                                    {"kept", variant.kept},
+                                    {"genome", genomeToJson(material.genome)}};
     if (variant.genome.carriesKappa()) entry["base_kappa"] = material.baseKappa;
     return entry;
 }
 
-nlohmann::json requestJson(const VariantRun& run) {
+nlohmann::ordered_json requestJson(const VariantRun& run) {
     const VariantRequest& request = run.request;
     return {{"count", request.count},
             {"band", {request.band.low, request.band.high}},
@@ -94,9 +94,10 @@ nlohmann::json requestJson(const VariantRun& run) {
             {"fitness_size", run.fitnessSize}};
 }
 
-nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const VariantSet& set) {
+nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
+                                     const VariantSet& set) {
     const std::vector<double> nearest = set.nearestSibling();
-    nlohmann::json variants = nlohmann::json::array();
+    nlohmann::ordered_json variants = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < set.variants.size(); ++i)
         variants.push_back(variantEntry(preset, set, i, i, 0, nearest));
     const VariantRequest& request = run.request;
@@ -151,8 +152,9 @@ Image contactSheet(const VariantSet& set, std::size_t firstIndex, std::size_t co
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         auto [x, y] = origin(int(i) + 1);
         const int textY = y + tile + kSheetGap / 2;
-        canvas.drawText(x, textY, variantStem(firstIndex + i, count).substr(8) + "  DE " +
-                                      format("%.2f", set.variants[i].deltaEToTarget),
+        canvas.drawText(x, textY,
+                        variantStem(firstIndex + i, count).substr(8) + "  DE " +
+                            format("%.2f", set.variants[i].deltaEToTarget),
                         kLabelColour, kLabelScale);
         canvas.drawText(x, textY + lineHeight, "NEAREST " + format("%.2f", nearest[i]),
                         kLabelColour, kLabelScale);
@@ -166,11 +168,11 @@ Image contactSheet(const VariantSet& set, std::size_t firstIndex, std::size_t co
     return sheet;
 }
 
-MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant,
-                             std::size_t index, std::size_t count) {
+MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant, std::size_t index,
+                             std::size_t count) {
     MaterialFile material = target;
-    material.name = (target.name.empty() ? std::string() : target.name + " ") +
-                    variantStem(index, count);
+    material.name =
+        (target.name.empty() ? std::string() : target.name + " ") + variantStem(index, count);
     // The variant's own kappa when it carries kappa genes (hue variety), else the target's.
     material.material =
         materialOf(variant.genome, target.material.family, target.material.baseKappa);
@@ -201,7 +203,7 @@ Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile&
 }
 
 Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
-                         const VariantSet& set, const nlohmann::json& report,
+                         const VariantSet& set, const nlohmann::ordered_json& report,
                          ImageMetric heatmapMetric) {
     if (auto written = writeVariantMembers(dir, target, set, 0, 0, heatmapMetric); !written)
         return written;

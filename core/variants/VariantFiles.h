@@ -47,18 +47,19 @@ std::string variantStem(std::size_t index, std::size_t count = 0);
 // One variant's entry in a report: its index in the whole set, its files, ΔE00 to the target
 // and to its nearest sibling (`nearest`, VariantSet::nearestSibling), kept or not, genome (and
 // its own kappa when it carries kappa genes). `member` is its place in `set`.
-nlohmann::json variantEntry(const Preset& preset, const VariantSet& set, std::size_t member,
-                            std::size_t index, std::size_t count,
-                            const std::vector<double>& nearest);
+nlohmann::ordered_json variantEntry(const Preset& preset, const VariantSet& set, std::size_t member,
+                                    std::size_t index, std::size_t count,
+                                    const std::vector<double>& nearest);
 
 // The request as a report states it: count, band, distance, seed, hue variety and the two image
 // sizes.
-nlohmann::json requestJson(const VariantRun& run);
+nlohmann::ordered_json requestJson(const VariantRun& run);
 
 // The report: request, per variant (file, ΔE00 to the target, to its nearest sibling, genome),
 // the pairwise ΔE00 matrix, the smallest pairwise distance, evaluations, wall time, seed, and
 // whether the request was met with a one-line summary.
-nlohmann::json variantReport(const Preset& preset, const VariantRun& run, const VariantSet& set);
+nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
+                                     const VariantSet& set);
 
 // "12 of 12 variants in band 2-5, at least 2 apart (smallest pairwise 2.31), 412 evaluations"
 // or, when short, what was achieved.
@@ -72,8 +73,8 @@ Image contactSheet(const VariantSet& set, std::size_t firstIndex = 0, std::size_
 // The material file of variant `index` of a whole of `count`: `target` (the preset's target as a
 // material file, io/MaterialFile.h: family, kappa, textures, scene) with the variant's genome
 // and name.
-MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant,
-                             std::size_t index, std::size_t count = 0);
+MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant, std::size_t index,
+                             std::size_t count = 0);
 
 // Writes the set's members as variants firstIndex, firstIndex + 1, … of a whole of `count`:
 // DIR/variants/variant_NNN.json, .png and _heatmap.png, creating DIR/variants.
@@ -84,7 +85,7 @@ Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile&
 // Writes every file listed above (atomically, each one), creating the folders; an Error names
 // the file that could not be written. Heatmaps of `heatmapMetric`. `target` as for variantMaterial.
 Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
-                         const VariantSet& set, const nlohmann::json& report,
+                         const VariantSet& set, const nlohmann::ordered_json& report,
                          ImageMetric heatmapMetric = ImageMetric::DeltaE00);
 
 }  // namespace matevo

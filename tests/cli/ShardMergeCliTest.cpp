@@ -34,8 +34,8 @@ std::map<std::string, std::string> filesUnder(const fs::path& folder) {
     for (const auto& entry : fs::recursive_directory_iterator(folder)) {
         if (!entry.is_regular_file()) continue;
         std::ifstream in(entry.path(), std::ios::binary);
-        files[fs::relative(entry.path(), folder).string()] = {
-            std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        files[fs::relative(entry.path(), folder).string()] = {std::istreambuf_iterator<char>(in),
+                                                              std::istreambuf_iterator<char>()};
     }
     return files;
 }
@@ -101,9 +101,9 @@ TEST(ShardMerge, HueVariantsShareAndMergeToo) {
                             shellQuoted(folder / std::to_string(index)))
                       .exitCode,
                   0);
-    const auto joined = runMatevo("merge " + shellQuoted(folder / "1") + " " +
-                                  shellQuoted(folder / "0") + " --out " +
-                                  shellQuoted(folder / "merged"));
+    const auto joined =
+        runMatevo("merge " + shellQuoted(folder / "1") + " " + shellQuoted(folder / "0") +
+                  " --out " + shellQuoted(folder / "merged"));
     ASSERT_EQ(joined.exitCode, 0) << joined.err;
     expectSameFiles(folder / "whole", folder / "merged");
     const auto report = nlohmann::json::parse(std::ifstream(folder / "merged/report.json"));
@@ -129,18 +129,18 @@ TEST(ShardMerge, MistakesExitTwoWithOneLineAndWriteNothing) {
     ASSERT_EQ(runMatevo(kRequest + " --out " + shellQuoted(folder / "whole")).exitCode, 0);
     const auto a0 = shellQuoted(folder / "a0"), a1 = shellQuoted(folder / "a1");
     const auto out = folder / "merged";
-    for (const std::string& arguments : {
-             "merge " + a0 + " --out " + shellQuoted(out),                 // a share missing
-             "merge " + a0 + " " + a0 + " --out " + shellQuoted(out),      // a share twice
-             "merge " + a0 + " " + shellQuoted(folder / "b1") + " --out " + shellQuoted(out),
-             "merge " + a0 + " " + shellQuoted(folder / "whole") + " --out " + shellQuoted(out),
-             "merge " + a0 + " " + shellQuoted(folder / "nowhere") + " --out " + shellQuoted(out),
-             "merge " + a0 + " " + a1,                                      // no --out
-             kRequest + " --shard 0/2",                                     // no --out
-             kRequest + " --shard 2/2 --out " + shellQuoted(out),
-             kRequest + " --shard 1 --out " + shellQuoted(out),
-             "variants --count 4 --band 2,5 --shard 0/2 --out " + shellQuoted(out),  // no --block
-             std::string("variants --count 1001 --band 2,5")}) {
+    for (const std::string& arguments :
+         {"merge " + a0 + " --out " + shellQuoted(out),             // a share missing
+          "merge " + a0 + " " + a0 + " --out " + shellQuoted(out),  // a share twice
+          "merge " + a0 + " " + shellQuoted(folder / "b1") + " --out " + shellQuoted(out),
+          "merge " + a0 + " " + shellQuoted(folder / "whole") + " --out " + shellQuoted(out),
+          "merge " + a0 + " " + shellQuoted(folder / "nowhere") + " --out " + shellQuoted(out),
+          "merge " + a0 + " " + a1,   // no --out
+          kRequest + " --shard 0/2",  // no --out
+          kRequest + " --shard 2/2 --out " + shellQuoted(out),
+          kRequest + " --shard 1 --out " + shellQuoted(out),
+          "variants --count 4 --band 2,5 --shard 0/2 --out " + shellQuoted(out),  // no --block
+          std::string("variants --count 1001 --band 2,5")}) {
         const auto result = runMatevo(arguments);
         EXPECT_EQ(result.exitCode, 2) << arguments << "\n" << result.err;
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;

@@ -211,8 +211,7 @@ TEST(VariantsCli, HueVarietyGivesEachVariantItsOwnKappaInsideTheBounds) {
         auto rendered =
             runMatevo("render --genome '" + file.string() + "' --out '" + replay.string() + "'");
         ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
-        EXPECT_LT(meanDeltaE(readPng(replay),
-                             readPng(scratch / entry["image"].get<std::string>())),
+        EXPECT_LT(meanDeltaE(readPng(replay), readPng(scratch / entry["image"].get<std::string>())),
                   0.01)
             << file;
         EXPECT_NEAR(meanDeltaE(target, readPng(replay)), entry["de00_to_target"].get<double>(),

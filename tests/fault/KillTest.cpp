@@ -316,8 +316,8 @@ void killDuringExport(const std::string& extension) {
             if (wholeExports[std::size_t(whole)].count(name) || isTemporaryFile(name)) continue;
             // An orphan of this or an earlier killed export (removed by the next whole write of
             // the main file, io/CompanionFiles.h): whole, byte for byte.
-            const bool wholeCompanion = std::any_of(
-                wholeExports.begin(), wholeExports.end(), [&](const FileSet& exported) {
+            const bool wholeCompanion =
+                std::any_of(wholeExports.begin(), wholeExports.end(), [&](const FileSet& exported) {
                     return exported.count(name) && exported.at(name) == bytes;
                 });
             EXPECT_TRUE(wholeCompanion)

@@ -115,17 +115,17 @@ TEST_F(SceneCommand, EachVariantFileWearsItsOwnKappa) {
     EXPECT_GT(halfDifference(*imageA, *imageB, true), 1.0) << "the file's own kappa shows";
 
     // A file of another family is refused: the scene's textures and light are the preset's.
-    auto painted = loadPreset(std::string(MATEVO_SOURCE_DIR) +
-                              "/presets/validation_painted_metal.json");
+    auto painted =
+        loadPreset(std::string(MATEVO_SOURCE_DIR) + "/presets/validation_painted_metal.json");
     ASSERT_TRUE(painted.ok());
     const auto other = folder / "other";
     std::filesystem::create_directories(other);
-    ASSERT_TRUE(saveMaterial(materialFromPreset(painted->preset, presetFile(),
-                                                painted->preset.target),
-                             other / "variant_000.json")
-                    .ok());
-    const auto refused = scene("--variants '" + other.string() + "' --out '" +
-                               (folder / "x.png").string() + "'");
+    ASSERT_TRUE(
+        saveMaterial(materialFromPreset(painted->preset, presetFile(), painted->preset.target),
+                     other / "variant_000.json")
+            .ok());
+    const auto refused =
+        scene("--variants '" + other.string() + "' --out '" + (folder / "x.png").string() + "'");
     EXPECT_EQ(refused.exitCode, 2) << refused.err;
     EXPECT_NE(refused.err.find("family"), std::string::npos) << refused.err;
 }

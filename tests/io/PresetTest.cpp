@@ -2,10 +2,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "io/GenomeJson.h"
 
@@ -235,6 +237,106 @@ TEST(Preset, UnreadableFileNamesTheFile) {
     auto loaded = loadPreset("/nonexistent/preset.json");
     ASSERT_FALSE(loaded.ok());
     EXPECT_EQ(loaded.error().message, "/nonexistent/preset.json: cannot read: no such file");
+}
+
+std::vector<std::string> keysOf(const nlohmann::ordered_json& object) {
+    std::vector<std::string> keys;
+    for (const auto& field : object.items()) keys.push_back(field.key());
+    return keys;
+}
+
+using Keys = std::vector<std::string>;
+
+// A saved preset names its format and writes, in reading order, only what differs from the
+// defaults: a shipped preset saved again keeps its target, family and GA size and drops the
+// metric, seed and scene it spelled out although they are the defaults.
+TEST(SavedPreset, IsMinimalOrderedAndVersioned) {
+    auto loaded =
+        loadPreset(fs::path(MATEVO_SOURCE_DIR) / "presets" / "validation_painted_metal.json");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    const auto saved = nlohmann::ordered_json::parse(serializePreset(loaded->preset));
+    EXPECT_EQ(keysOf(saved), (Keys{"format_version", "name", "description", "family", "target",
+                                   "base_kappa", "textures", "ga"}));
+    EXPECT_EQ(saved["format_version"], kPresetFormatVersion);
+    EXPECT_EQ(keysOf(saved["family"]), (Keys{"coat", "base", "medium", "textured_layer"}));
+    EXPECT_EQ(keysOf(saved["target"]), (Keys{"eta1", "eta2", "alpha1", "alpha2"}));
+    EXPECT_EQ(keysOf(saved["ga"]), (Keys{"population", "generations"}));
+
+    Preset changed = loaded->preset;
+    changed.ga.seed = 7;
+    changed.scene.imageSize = 128;
+    changed.ga.metric = DistanceMetric::Manhattan;
+    const auto savedChanged = nlohmann::ordered_json::parse(serializePreset(changed));
+    EXPECT_EQ(keysOf(savedChanged["ga"]), (Keys{"population", "generations", "metric", "seed"}));
+    EXPECT_EQ(savedChanged["scene"], (nlohmann::ordered_json{{"image_size", 128}}));
+    auto reread = parsePreset(savedChanged.dump(), "again.json");
+    ASSERT_TRUE(reread.ok()) << reread.error().message;
+    EXPECT_EQ(reread->preset, changed);
+}
+
+// tests/data/saved_preset.json is what matevo writes for a preset with kept materials and a
+// changed scene: it reads back to the same preset and is written again byte for byte (the
+// preset_schema test validates the same file against docs/preset.schema.json).
+TEST(SavedPreset, TheCommittedExampleIsWhatMatevoWrites) {
+    const fs::path example = fs::path(MATEVO_TEST_DATA_DIR) / "saved_preset.json";
+    auto loaded = loadPreset(example);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    EXPECT_TRUE(loaded->warnings.empty());
+    std::ifstream in(example);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_EQ(serializePreset(loaded->preset), text);
+    EXPECT_EQ(loaded->preset.kept.size(), 2u);
+    EXPECT_EQ(loaded->preset.scene.mode, SceneMode::Ambient);
+}
+
+// A preset written before format versions (every field spelled out, no "format_version") reads
+// as it always did; a newer format than this matevo knows is refused, naming the field.
+TEST(SavedPreset, OldFullPresetsReadAndNewerFormatsAreRefused) {
+    const std::string full = R"({
+  "name": "full", "description": "",
+  "family": {"coat": "clearcoat", "base": "conductor", "medium": false, "textured_layer": "none"},
+  "target": {"eta1": 1.2, "eta2": 0.8, "alpha1": 0.03, "alpha2": 0.1, "depth": 0.0,
+             "sigma_s": [0, 0, 0], "sigma_a": [0, 0, 0], "g": 0.0},
+  "textures": {"roughness": "", "base_color": ""},
+  "ga": {"population": 50, "generations": 5, "metric": "euclidean",
+         "weights": [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1], "normalize_by_range": false,
+         "elitism": 0, "seed": 1},
+  "scene": {"mode": "paper", "image_size": 256, "camera_position": [0, 0, 4],
+            "field_of_view_degrees": 32, "light_direction": [-0.5, 0.6, 0.62],
+            "light_radiance": [1.5, 1.5, 1.5], "environment_radiance": [0.25, 0.25, 0.25],
+            "environment": "studio"},
+  "base_kappa": [3.1, 2.9, 2.8]
+})";
+    auto old = parsePreset(full, "full.json");
+    ASSERT_TRUE(old.ok()) << old.error().message;
+    EXPECT_TRUE(old->warnings.empty());
+    auto minimal = parsePreset(kValidPreset, "p.json");
+    ASSERT_TRUE(minimal.ok());
+    Preset expected = minimal->preset;
+    expected.name = "full";
+    expected.ga.metric = DistanceMetric::Euclidean;
+    expected.ga.seed = 1;
+    EXPECT_EQ(old->preset, expected);
+
+    EXPECT_EQ(errorOf(replaced(kValidPreset, R"("name")", R"("format_version": 3, "name")")),
+              "p.json: format_version: version 3 is newer than this matevo reads (2)");
+}
+
+// From format 2 on, a scene field without scene.mode is simply stored (the mode is the
+// default's); only a format-1 preset gets the warning of the test above.
+TEST(SavedPreset, AFormat2SceneWithoutAModeKeepsItsFields) {
+    auto parsed = parsePreset(
+        replaced(
+            kValidPreset, R"("name")",
+            R"("format_version": 2, "scene": {"environment_radiance": [0.5, 0.5, 0.5]}, "name")"),
+        "p.json");
+    ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+    EXPECT_TRUE(parsed->warnings.empty());
+    EXPECT_EQ(parsed->preset.scene.environmentRadiance, (std::array{0.5, 0.5, 0.5}));
+    auto reparsed = parsePreset(serializePreset(parsed->preset), "again.json");
+    ASSERT_TRUE(reparsed.ok());
+    EXPECT_TRUE(reparsed->warnings.empty());
+    EXPECT_EQ(reparsed->preset, parsed->preset);
 }
 
 TEST(ShippedPresets, ValidationMetalLoadsWithoutWarnings) {

@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """The presets' JSON Schema (docs/preset.schema.json) against the presets and the reader.
 
-Usage: check_preset_schema.py SCHEMA PRESETS_DIR MATEVO
+Usage: check_preset_schema.py SCHEMA PRESETS_DIR MATEVO [SAVED_PRESET...]
 
 1. The schema is a valid JSON Schema (draft 2020-12).
-2. Every shipped preset validates.
+2. Every shipped preset validates, and so does each SAVED_PRESET (presets as matevo saves them:
+   minimal, with a format version and kept materials).
 3. The schema and matevo's reader agree on broken presets: each mutation of a shipped preset
    below is refused by the schema and makes `matevo render --preset FILE` exit 2.
 Exits 1 naming the first disagreement.
@@ -46,11 +47,13 @@ def mutations(preset):
         ("image size above 4096", changed(set_in(["scene", "image_size"], 5000))),
         ("g outside [-1, 1]", changed(set_in(["target", "g"], 2))),
         ("unknown metric", changed(set_in(["ga", "metric"], "cosine"))),
+        ("a format newer than matevo's", changed(set_in(["format_version"], 3))),
     ]
 
 
 def main():
     schema_file, presets_dir, matevo = sys.argv[1:4]
+    saved_presets = [Path(file) for file in sys.argv[4:]]
     schema = json.loads(Path(schema_file).read_text())
     jsonschema.Draft202012Validator.check_schema(schema)
     validator = jsonschema.Draft202012Validator(schema)
@@ -59,7 +62,7 @@ def main():
     if not presets:
         print(f"no presets in {presets_dir}", file=sys.stderr)
         return 1
-    for preset_file in presets:
+    for preset_file in presets + saved_presets:
         errors = [error.message for error in validator.iter_errors(json.loads(preset_file.read_text()))]
         if errors:
             print(f"{preset_file.name} does not validate: {errors[0]}", file=sys.stderr)
@@ -80,7 +83,7 @@ def main():
                 print(f"matevo exits {run.returncode}, not 2, on a preset with {what}: "
                       f"{run.stderr.strip()}", file=sys.stderr)
                 return 1
-    print(f"{len(presets)} presets validate; schema and reader agree on "
+    print(f"{len(presets) + len(saved_presets)} presets validate; schema and reader agree on "
           f"{len(mutations(base))} broken presets")
     return 0
 

@@ -67,9 +67,10 @@ TEST(VariantBlocks, SeedsComeFromTheRunSeedAndTheBlockAlone) {
 }
 
 nlohmann::json blockEntry(int index, int count, bool met) {
-    return {{"index", index},       {"count", count},        {"found", count},
-            {"met", met},           {"evaluations", 10},     {"archived", 4},
-            {"output_renders", 3},  {"smallest_pairwise_de00", 2.5 + index}};
+    return {{"index", index},      {"count", count},
+            {"found", count},      {"met", met},
+            {"evaluations", 10},   {"archived", 4},
+            {"output_renders", 3}, {"smallest_pairwise_de00", 2.5 + index}};
 }
 
 nlohmann::json variantEntry(int index, int block, double eta2) {
@@ -78,9 +79,8 @@ nlohmann::json variantEntry(int index, int block, double eta2) {
 
 BlockReport twoBlocks(double lastEta2) {
     BlockReport parts;
-    parts.header = {{"request",
-                     {{"count", 4}, {"block", 2}, {"band", {2, 5}}, {"min_apart", 2},
-                      {"seed", 1}}}};
+    parts.header = {
+        {"request", {{"count", 4}, {"block", 2}, {"band", {2, 5}}, {"min_apart", 2}, {"seed", 1}}}};
     // Given out of order, as shares arrive.
     parts.blocks = {blockEntry(1, 2, true), blockEntry(0, 2, true)};
     parts.variants = {variantEntry(2, 1, 0.7), variantEntry(3, 1, lastEta2),
@@ -110,7 +110,7 @@ TEST(VariantBlockReport, AGenomeRepeatedAcrossBlocksIsReportedAndNotMet) {
 }
 
 TEST(VariantBlockReport, HueVariantsDifferingOnlyInKappaAreNotDuplicates) {
-    BlockReport parts = twoBlocks(0.8);  // variant 3 has variant 0's genome...
+    BlockReport parts = twoBlocks(0.8);                 // variant 3 has variant 0's genome...
     parts.variants[1]["base_kappa"] = {3.1, 1.5, 2.8};  // ...but its own kappa
     parts.variants[2]["base_kappa"] = {3.1, 1.9, 2.8};
     const nlohmann::json report = assembleBlockReport(parts, std::nullopt);

@@ -6,8 +6,8 @@
 #include <array>
 #include <set>
 
-#include "color/ImageDifference.h"
 #include "../genome/TestGenomes.h"
+#include "color/ImageDifference.h"
 #include "scene/SphereRenderer.h"
 #include "variants/FindVariants.h"
 #include "variants/ImageFitness.h"
