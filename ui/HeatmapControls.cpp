@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "Widgets.h"
 #include "color/Colormap.h"
@@ -18,20 +19,30 @@ ImU32 toColor(const std::array<float, 3>& srgb) {
     return ImGui::ColorConvertFloat4ToU32(ImVec4(srgb[0], srgb[1], srgb[2], 1.0f));
 }
 
-// ꟻLIP: magma over [0, 1], with quarter ticks.
-void drawFlipLegend() {
+constexpr float kBarHeight = 10.0f;
+
+// A legend's colour ramp across the available width, `colourAt` mapping [0, 1] to sRGB, with room
+// for a line of labels below; returns its top left corner and width.
+std::pair<ImVec2, float> drawColourRamp(std::array<float, 3> (*colourAt)(double)) {
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
     const ImVec2 topLeft = ImGui::GetCursorScreenPos();
     const float width = ImGui::GetContentRegionAvail().x;
-    const float barHeight = 10.0f;
-    ImGui::Dummy(ImVec2(width, barHeight + ImGui::GetTextLineHeight() + 2.0f));
+    ImGui::Dummy(ImVec2(width, kBarHeight + ImGui::GetTextLineHeight() + 2.0f));
     constexpr int kSteps = 64;
     for (int i = 0; i < kSteps; ++i) {
         const float x0 = topLeft.x + width * float(i) / kSteps;
         const float x1 = topLeft.x + width * float(i + 1) / kSteps;
-        drawList.AddRectFilled(ImVec2(x0, topLeft.y), ImVec2(x1 + 0.5f, topLeft.y + barHeight),
-                               toColor(magmaSrgb((i + 0.5) / kSteps)));
+        drawList.AddRectFilled(ImVec2(x0, topLeft.y), ImVec2(x1 + 0.5f, topLeft.y + kBarHeight),
+                               toColor(colourAt((i + 0.5) / kSteps)));
     }
+    return {topLeft, width};
+}
+
+// ꟻLIP: magma over [0, 1], with quarter ticks.
+void drawFlipLegend() {
+    ImDrawList& drawList = *ImGui::GetWindowDrawList();
+    const auto [topLeft, width] = drawColourRamp(magmaSrgb);
+    const float barHeight = kBarHeight;
     for (const char* label : {"0", "0.25", "0.5", "0.75", "1"}) {
         const float position = std::stof(label);
         const float textWidth = ImGui::CalcTextSize(label).x;
@@ -49,19 +60,8 @@ void drawFlipLegend() {
 
 void drawLegend(const HeatmapView& heatmap) {
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
-    const ImVec2 topLeft = ImGui::GetCursorScreenPos();
-    const float width = ImGui::GetContentRegionAvail().x;
-    const float barHeight = 10.0f;
-    const float lineHeight = ImGui::GetTextLineHeight();
-    ImGui::Dummy(ImVec2(width, barHeight + lineHeight + 2.0f));
-
-    constexpr int kSteps = 64;
-    for (int i = 0; i < kSteps; ++i) {
-        const float x0 = topLeft.x + width * float(i) / kSteps;
-        const float x1 = topLeft.x + width * float(i + 1) / kSteps;
-        drawList.AddRectFilled(ImVec2(x0, topLeft.y), ImVec2(x1 + 0.5f, topLeft.y + barHeight),
-                               toColor(colormapSrgb((i + 0.5) / kSteps)));
-    }
+    const auto [topLeft, width] = drawColourRamp(colormapSrgb);
+    const float barHeight = kBarHeight;
     const float range = heatmap.maxDeltaE - heatmap.minDeltaE;
     const auto xOf = [&](double deltaE) {
         return topLeft.x + width * float((deltaE - heatmap.minDeltaE) / range);
