@@ -15,16 +15,20 @@
 #include "ScenePanel.h"
 #include "StatusLog.h"
 #include "VariantsPanel.h"
+#include "color/Flip.h"
 #include "color/ImageDifference.h"
+#include "color/ImageMetric.h"
 #include "common/Image.h"
 #include "genome/Genome.h"
 #include "io/Preset.h"
 
 namespace matevo::ui {
 
-// How the ΔE00 heatmap is drawn over the candidate tiles.
+// How the heatmap is drawn over the candidate tiles: ΔE00 (viridis over a range the user sets)
+// or ꟻLIP (magma over its fixed range [0, 1]).
 struct HeatmapView {
     bool enabled = false;     // off at first: the first view shows the materials themselves
+    ImageMetric metric = ImageMetric::DeltaE00;
     float minDeltaE = 0.0f;   // maps to the cold end of the colour ramp
     float maxDeltaE = 10.0f;  // maps to the hot end
     float opacity = 0.65f;
@@ -58,6 +62,7 @@ struct CandidateView {
     // Host copies of the render and its ΔE00 map, for the inspector's readout under the pointer.
     std::shared_ptr<const Image> picture = nullptr;
     std::shared_ptr<const DeltaEMap> deltaEMap = nullptr;
+    std::shared_ptr<const FlipMap> flipMap = nullptr;  // while the heatmap shows ꟻLIP
 };
 
 struct GenerationPoint {
@@ -79,6 +84,8 @@ struct EvolutionView {
     int totalGenerations = 0;
     bool running = false;
     std::string renderBackend;  // what drew the tiles, e.g. "GPU (llvmpipe)"
+    // What the shown tiles' heatmaps hold: until a changed choice's tiles arrive, the old ones.
+    ImageMetric heatmapMetric = ImageMetric::DeltaE00;
     // The first launch builds the FGD/TIR lookup tables (seconds): how far, in [0, 1];
     // negative when nothing is being built.
     double tableBuildProgress = -1.0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "Widgets.h"
 #include "color/Colormap.h"
@@ -18,21 +19,49 @@ ImU32 toColor(const std::array<float, 3>& srgb) {
     return ImGui::ColorConvertFloat4ToU32(ImVec4(srgb[0], srgb[1], srgb[2], 1.0f));
 }
 
-void drawLegend(const HeatmapView& heatmap) {
+constexpr float kBarHeight = 10.0f;
+
+// A legend's colour ramp across the available width, `colourAt` mapping [0, 1] to sRGB, with room
+// for a line of labels below; returns its top left corner and width.
+std::pair<ImVec2, float> drawColourRamp(std::array<float, 3> (*colourAt)(double)) {
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
     const ImVec2 topLeft = ImGui::GetCursorScreenPos();
     const float width = ImGui::GetContentRegionAvail().x;
-    const float barHeight = 10.0f;
-    const float lineHeight = ImGui::GetTextLineHeight();
-    ImGui::Dummy(ImVec2(width, barHeight + lineHeight + 2.0f));
-
+    ImGui::Dummy(ImVec2(width, kBarHeight + ImGui::GetTextLineHeight() + 2.0f));
     constexpr int kSteps = 64;
     for (int i = 0; i < kSteps; ++i) {
         const float x0 = topLeft.x + width * float(i) / kSteps;
         const float x1 = topLeft.x + width * float(i + 1) / kSteps;
-        drawList.AddRectFilled(ImVec2(x0, topLeft.y), ImVec2(x1 + 0.5f, topLeft.y + barHeight),
-                               toColor(colormapSrgb((i + 0.5) / kSteps)));
+        drawList.AddRectFilled(ImVec2(x0, topLeft.y), ImVec2(x1 + 0.5f, topLeft.y + kBarHeight),
+                               toColor(colourAt((i + 0.5) / kSteps)));
     }
+    return {topLeft, width};
+}
+
+// ꟻLIP: magma over [0, 1], with quarter ticks.
+void drawFlipLegend() {
+    ImDrawList& drawList = *ImGui::GetWindowDrawList();
+    const auto [topLeft, width] = drawColourRamp(magmaSrgb);
+    const float barHeight = kBarHeight;
+    for (const char* label : {"0", "0.25", "0.5", "0.75", "1"}) {
+        const float position = std::stof(label);
+        const float textWidth = ImGui::CalcTextSize(label).x;
+        const float x = std::clamp(topLeft.x + width * position - 0.5f * textWidth, topLeft.x,
+                                   topLeft.x + width - textWidth);
+        drawList.AddText(ImVec2(x, topLeft.y + barHeight + 1.0f),
+                         ImGui::GetColorU32(kMutedTextColor), label);
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "LDR-FLIP (Andersson et al. 2020): 0 where target and candidate cannot be told "
+            "apart when flipped between,\n1 where they differ most; unlike per-pixel ΔE00 it "
+            "weighs edges and fine structure. Viewed at 67 pixels per degree.");
+}
+
+void drawLegend(const HeatmapView& heatmap) {
+    ImDrawList& drawList = *ImGui::GetWindowDrawList();
+    const auto [topLeft, width] = drawColourRamp(colormapSrgb);
+    const float barHeight = kBarHeight;
     const float range = heatmap.maxDeltaE - heatmap.minDeltaE;
     const auto xOf = [&](double deltaE) {
         return topLeft.x + width * float((deltaE - heatmap.minDeltaE) / range);
@@ -91,6 +120,23 @@ void drawBandNames(const HeatmapView& heatmap) {
 }  // namespace
 
 void drawHeatmapControls(HeatmapView& heatmap) {
+    int metric = int(heatmap.metric);
+    ImGui::RadioButton("ΔE00", &metric, int(ImageMetric::DeltaE00));
+    hoverHint("Per-pixel CIEDE2000 between target and candidate (the paper's measure).");
+    ImGui::SameLine();
+    ImGui::RadioButton("FLIP", &metric, int(ImageMetric::Flip));
+    hoverHint(
+        "Per-pixel LDR-FLIP: what a viewer flipping between the two images notices, edges and "
+        "texture included; fixed range 0-1.");
+    heatmap.metric = ImageMetric(metric);
+    if (heatmap.metric == ImageMetric::Flip) {
+        sameLineIfFits(labelledWidth(90.0f, "Opacity"));
+        ImGui::SetNextItemWidth(90.0f);
+        sliderFloat("Opacity", &heatmap.opacity, 0.0f, 1.0f, "%.2f");
+        drawFlipLegend();
+        return;
+    }
+    sameLineIfFits(labelledWidth(150.0f, "ΔE00 range"));
     ImGui::SetNextItemWidth(150.0f);
     ImGui::DragFloatRange2("ΔE00 range", &heatmap.minDeltaE, &heatmap.maxDeltaE, 0.1f, 0.0f,
                            kMaxRange, "%.1f", "%.1f", ImGuiSliderFlags_AlwaysClamp);

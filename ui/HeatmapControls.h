@@ -1,6 +1,7 @@
 #pragma once
-// The heatmap's settings above the candidate grid, shown while the overlay is on: ΔE00 range and
-// opacity, and a legend: the colour ramp over the range with the paper's perceptual bands.
+// The heatmap's settings above the candidate grid, shown while the overlay is on: the metric
+// (ΔE00 or ꟻLIP), the ΔE00 range (ꟻLIP's is fixed at [0, 1]) and opacity, and a legend: the
+// colour ramp over the range, with the paper's perceptual bands for ΔE00.
 #include "EditorState.h"
 
 namespace matevo::ui {

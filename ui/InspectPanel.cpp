@@ -122,17 +122,20 @@ std::optional<ImVec2> pointerOver(ImVec2 topLeft, float size, std::optional<ImVe
 // the ΔE00 of the pixel under it and its colour in the target and in the candidate.
 void drawPixelReadout(const EditorState& state, const CandidateView& candidate,
                       std::optional<ImVec2> pointer) {
-    const auto readout =
-        pointer ? readPixel(state.evolution.targetPicture.get(), candidate.picture.get(),
-                            candidate.deltaEMap.get(), pointer->x, pointer->y)
-                : std::nullopt;
+    const auto readout = pointer ? readPixel(state.evolution.targetPicture.get(),
+                                             candidate.picture.get(), candidate.deltaEMap.get(),
+                                             pointer->x, pointer->y, candidate.flipMap.get())
+                                 : std::nullopt;
     if (!readout) {
         ImGui::TextColored(kMutedTextColor, "Point at an image: the ΔE00 and colours of a pixel");
         ImGui::NewLine();
         ImGui::NewLine();
         return;
     }
-    if (readout->deltaE)
+    if (readout->deltaE && readout->flip)
+        ImGui::Text("pixel %d, %d   ΔE00 %.2f   FLIP %.3f", readout->x, readout->y,
+                    *readout->deltaE, *readout->flip);
+    else if (readout->deltaE)
         ImGui::Text("pixel %d, %d   ΔE00 %.2f", readout->x, readout->y, *readout->deltaE);
     else
         ImGui::Text("pixel %d, %d   ΔE00 -   (background)", readout->x, readout->y);
@@ -171,7 +174,8 @@ std::optional<ImVec2> drawComparison(EditorState& state, const CandidateView& ca
             drawImage(drawList, third, size, candidate.image, candidate.heatmap, 1.0f);
             drawLabel(drawList, origin, size, "target");
             drawLabel(drawList, second, size, "candidate");
-            drawLabel(drawList, third, size, "ΔE00");
+            drawLabel(drawList, third, size,
+                      state.evolution.heatmapMetric == ImageMetric::Flip ? "FLIP" : "ΔE00");
             ImGui::Dummy(ImVec2(3.0f * size + 2.0f * kGap, size));
             return pointerOver(third, size,
                                pointerOver(second, size, pointerOver(origin, size, {})));

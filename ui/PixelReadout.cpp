@@ -22,19 +22,22 @@ PixelColour colourAt(const Image& image, int x, int y) {
 }  // namespace
 
 std::optional<PixelReadout> readPixel(const Image* target, const Image* candidate,
-                                      const DeltaEMap* deltaE, float u, float v) {
+                                      const DeltaEMap* deltaE, float u, float v,
+                                      const FlipMap* flip) {
     if (!target || !candidate || !deltaE) return std::nullopt;
     const int width = candidate->width;
     const int height = candidate->height;
     if (target->width != width || target->height != height || deltaE->width != width ||
         deltaE->height != height || width <= 0 || height <= 0)
         return std::nullopt;
+    if (flip && (flip->width != width || flip->height != height)) return std::nullopt;
     if (!(u >= 0.0f && u < 1.0f && v >= 0.0f && v < 1.0f)) return std::nullopt;
     PixelReadout readout;
     readout.x = std::min(width - 1, int(u * float(width)));
     readout.y = std::min(height - 1, int(v * float(height)));
     const std::size_t index = std::size_t(readout.y) * std::size_t(width) + std::size_t(readout.x);
     if (deltaE->covered[index]) readout.deltaE = deltaE->deltaE[index];
+    if (flip && flip->pooled[index]) readout.flip = flip->error[index];
     readout.target = colourAt(*target, readout.x, readout.y);
     readout.candidate = colourAt(*candidate, readout.x, readout.y);
     return readout;

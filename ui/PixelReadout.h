@@ -1,11 +1,12 @@
 #pragma once
 // What the inspector says about the pixel under the pointer: the ΔE00 there between target and
-// candidate and both colours, read from the host copies of the tile-size renders the ΔE00 map
-// was computed from, so the numbers are the grid's own.
+// candidate (and the ꟻLIP error while the heatmap shows it) and both colours, read from the host
+// copies of the tile-size renders the maps were computed from, so the numbers are the grid's own.
 #include <array>
 #include <optional>
 
 #include "color/ColorSpaces.h"
+#include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "common/Image.h"
 
@@ -21,13 +22,15 @@ struct PixelReadout {
     int x = 0;
     int y = 0;                     // in the tile-size renders, top left first
     std::optional<double> deltaE;  // where both renders cover the pixel
+    std::optional<double> flip;    // the same pixels, when a ꟻLIP map is given
     PixelColour target;
     PixelColour candidate;
 };
 
 // The pixel at (u, v) in [0, 1)² of the shown image; nothing when an image is missing or the
-// three differ in size.
+// images and maps differ in size. `flip` may be null.
 std::optional<PixelReadout> readPixel(const Image* target, const Image* candidate,
-                                      const DeltaEMap* deltaE, float u, float v);
+                                      const DeltaEMap* deltaE, float u, float v,
+                                      const FlipMap* flip = nullptr);
 
 }  // namespace matevo::ui

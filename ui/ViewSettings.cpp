@@ -30,6 +30,8 @@ void readLine(ImGuiContext*, ImGuiSettingsHandler*, void* entry, const char* lin
         state.heatmap.minDeltaE = std::max(0.0f, number);
     if (std::sscanf(line, "heatmap_max=%f", &number) == 1)
         state.heatmap.maxDeltaE = std::max(state.heatmap.minDeltaE + 0.1f, number);
+    if (std::sscanf(line, "heatmap_metric=%31s", word) == 1)
+        state.heatmap.metric = parseImageMetric(word).value_or(ImageMetric::DeltaE00);
     if (std::sscanf(line, "heatmap_opacity=%f", &number) == 1)
         state.heatmap.opacity = std::clamp(number, 0.0f, 1.0f);
     if (std::sscanf(line, "tile_size=%f", &number) == 1)
@@ -60,9 +62,10 @@ void writeAll(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out
     const auto& state = *static_cast<const EditorState*>(handler->UserData);
     static constexpr const char* kCompare[] = {"side_by_side", "wipe", "flip"};
     out->appendf("[%s][view]\n", kTypeName);
-    out->appendf("heatmap=%d\nheatmap_min=%g\nheatmap_max=%g\nheatmap_opacity=%g\n",
-                 int(state.heatmap.enabled), double(state.heatmap.minDeltaE),
-                 double(state.heatmap.maxDeltaE), double(state.heatmap.opacity));
+    out->appendf("heatmap=%d\nheatmap_metric=%s\nheatmap_min=%g\nheatmap_max=%g\n",
+                 int(state.heatmap.enabled), std::string(toString(state.heatmap.metric)).c_str(),
+                 double(state.heatmap.minDeltaE), double(state.heatmap.maxDeltaE));
+    out->appendf("heatmap_opacity=%g\n", double(state.heatmap.opacity));
     out->appendf("tile_size=%g\nsort=%s\nband=%d\ncompare=%s\n", double(state.grid.tileSize),
                  state.grid.order == TileOrder::DeltaE ? "delta_e" : "fitness", state.grid.band,
                  kCompare[int(state.compareMode)]);

@@ -22,10 +22,12 @@ CandidateRenderCache::CandidateRenderCache(int tileSize, int targetSize, std::si
 }
 
 bool CandidateRenderCache::drawsTheSame(const Preset& preset,
-                                        const std::filesystem::path& presetFile) const {
-    return preset_ && presetFile == presetFile_ && preset.target == preset_->target &&
-           preset.family == preset_->family && preset.baseKappa == preset_->baseKappa &&
-           preset.scene == preset_->scene && preset.roughnessTexture == preset_->roughnessTexture &&
+                                        const std::filesystem::path& presetFile,
+                                        ImageMetric heatmapMetric) const {
+    return preset_ && presetFile == presetFile_ && heatmapMetric == heatmapMetric_ &&
+           preset.target == preset_->target && preset.family == preset_->family &&
+           preset.baseKappa == preset_->baseKappa && preset.scene == preset_->scene &&
+           preset.roughnessTexture == preset_->roughnessTexture &&
            preset.baseColorTexture == preset_->baseColorTexture;
 }
 
@@ -36,16 +38,15 @@ MaterialInstance CandidateRenderCache::material(const Genome& genome) const {
 Status CandidateRenderCache::createRenderer(const SceneTextures& textures) {
     renderer_ = gpu::createPopulationRenderer(request_, textures);
     gpuRenderer_ = dynamic_cast<gpu::GpuPopulationRenderer*>(renderer_.get());
-    if (gpuRenderer_) return Ok{};
     auto runner = gpu::CommandRunner::create(device_);
     if (!runner) return runner.error();
     uploadRunner_ = std::move(runner).value();
     return Ok{};
 }
 
-Status CandidateRenderCache::prepare(const Preset& preset,
-                                     const std::filesystem::path& presetFile) {
-    if (drawsTheSame(preset, presetFile)) return Ok{};
+Status CandidateRenderCache::prepare(const Preset& preset, const std::filesystem::path& presetFile,
+                                     ImageMetric heatmapMetric) {
+    if (drawsTheSame(preset, presetFile, heatmapMetric)) return Ok{};
     auto textures = loadSceneTextures(preset, presetFile);
     if (!textures) return textures.error();
     if (!renderer_) {
@@ -54,6 +55,7 @@ Status CandidateRenderCache::prepare(const Preset& preset,
         return set;
     }
     entries_.clear();
+    heatmapMetric_ = heatmapMetric;
     targetPicture_.reset();
     preset_.reset();  // nothing is cached for a half-prepared preset
     if (Status drawn = drawTarget(preset); !drawn) return drawn;
@@ -100,26 +102,39 @@ Status CandidateRenderCache::draw(std::span<const Genome> genomes) {
         materials.push_back(material(genome));
     }
     EvaluationOptions options;
-    options.heatmaps = false;  // the window colours the ΔE00 maps itself, in the user's range
+    options.heatmaps = false;        // the window colours the error maps itself
     options.candidateImages = true;  // the GPU's are copied to the tiles on the device too
+    const bool flip = heatmapMetric_ == ImageMetric::Flip;
+    options.flip = flip;
     const MaterialInstance target = material(preset_->target);
+    // ΔE00 tiles on the GPU are written in place; anything else goes through the host.
+    const bool inPlace = gpuRenderer_ && !flip;
     auto evaluation =
-        gpuRenderer_ ? gpuRenderer_->evaluateIntoTiles(target, materials, preset_->scene, tileSize_,
-                                                       options, targets)
-                     : renderer_->evaluate(target, materials, preset_->scene, tileSize_, options);
+        inPlace ? gpuRenderer_->evaluateIntoTiles(target, materials, preset_->scene, tileSize_,
+                                                  options, targets)
+                : renderer_->evaluate(target, materials, preset_->scene, tileSize_, options);
     if (!evaluation) return evaluation.error();
-    if (!gpuRenderer_)
-        if (Status uploaded = gpu::uploadToTiles(device_, *uploadRunner_, targets,
-                                                 evaluation->candidates, evaluation->deltaE);
+    if (!inPlace) {
+        // A ꟻLIP tile's error map holds ꟻLIP where the pixel is pooled (as ΔE00's, "not covered"
+        // elsewhere), so the window draws either map the same way.
+        std::vector<DeltaEMap> shownMaps;
+        if (flip)
+            for (const FlipMap& map : evaluation->flip)
+                shownMaps.push_back({map.width, map.height, map.error, map.pooled, {}});
+        if (Status uploaded =
+                gpu::uploadToTiles(device_, *uploadRunner_, targets, evaluation->candidates,
+                                   flip ? shownMaps : evaluation->deltaE);
             !uploaded)
             return uploaded;
+    }
     if (!targetPicture_) targetPicture_ = std::make_shared<Image>(std::move(evaluation->target));
     for (std::size_t i = 0; i < genomes.size(); ++i) {
         const DeltaEStats stats = evaluation->deltaE[i].stats;
         entries_.push_back(
             {genomes[i],
              {tiles[i], stats, std::make_shared<Image>(std::move(evaluation->candidates[i])),
-              std::make_shared<DeltaEMap>(std::move(evaluation->deltaE[i]))},
+              std::make_shared<DeltaEMap>(std::move(evaluation->deltaE[i])),
+              flip ? std::make_shared<FlipMap>(std::move(evaluation->flip[i])) : nullptr},
              useCounter_});
     }
     return Ok{};

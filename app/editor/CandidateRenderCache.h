@@ -5,7 +5,9 @@
 // mostly survive from one generation to the next, and a re-run with the same seed starts from
 // much the same population, so most tiles of an update are already drawn. New tiles are drawn
 // by the render interface; on the GPU straight into the tiles (render + ΔE00 + copies in one
-// submission, nothing read back but the ΔE00 maps for their statistics).
+// submission, nothing read back but the ΔE00 maps for their statistics). When the heatmap shows
+// ꟻLIP, the tiles' error maps hold ꟻLIP instead (computed by the same renderer, read back for
+// the pixel readout and uploaded).
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -29,6 +31,7 @@ struct CandidateTile {
     // Host copies, for the inspector's readout of the pixel under the pointer.
     std::shared_ptr<const Image> picture;
     std::shared_ptr<const DeltaEMap> deltaE;
+    std::shared_ptr<const FlipMap> flip;  // with a ꟻLIP heatmap
 };
 
 class CandidateRenderCache {
@@ -38,9 +41,11 @@ public:
     CandidateRenderCache(int tileSize, int targetSize, std::size_t capacity,
                          const gpu::Device& device, gpu::RendererRequest request);
 
-    // Serves `preset` from now on; forgets everything if the picture's inputs changed. The
-    // target is rendered here, once per change.
-    Status prepare(const Preset& preset, const std::filesystem::path& presetFile);
+    // Serves `preset` from now on, with tiles whose heatmaps show `heatmapMetric`; forgets
+    // everything if the picture's inputs or the metric changed. The target is rendered here,
+    // once per change.
+    Status prepare(const Preset& preset, const std::filesystem::path& presetFile,
+                   ImageMetric heatmapMetric = ImageMetric::DeltaE00);
     const std::shared_ptr<const gpu::DisplayTile>& target() const { return target_; }
     // The target at tile size, as the ΔE00 maps compare against it; null before the first tiles.
     const std::shared_ptr<const Image>& targetPicture() const { return targetPicture_; }
@@ -55,7 +60,8 @@ private:
         CandidateTile tile;
         std::uint64_t lastUse = 0;
     };
-    bool drawsTheSame(const Preset& preset, const std::filesystem::path& presetFile) const;
+    bool drawsTheSame(const Preset& preset, const std::filesystem::path& presetFile,
+                      ImageMetric heatmapMetric) const;
     MaterialInstance material(const Genome& genome) const;
     Status createRenderer(const SceneTextures& textures);
     Status drawTarget(const Preset& preset);
@@ -69,10 +75,11 @@ private:
     const gpu::Device& device_;
     gpu::RendererRequest request_;
     std::unique_ptr<PopulationRenderer> renderer_;
-    // The GPU renderer writes tiles on the device itself; the CPU renderer's pictures are
-    // uploaded with uploadRunner_. Null with the CPU renderer.
+    // The GPU renderer writes ΔE00 tiles on the device itself; the CPU renderer's pictures and
+    // every ꟻLIP tile are uploaded with uploadRunner_. Null with the CPU renderer.
     gpu::GpuPopulationRenderer* gpuRenderer_ = nullptr;
     std::optional<gpu::CommandRunner> uploadRunner_;
+    ImageMetric heatmapMetric_ = ImageMetric::DeltaE00;
     std::optional<Preset> preset_;  // what the cached pictures were drawn from
     std::filesystem::path presetFile_;
     std::shared_ptr<const gpu::DisplayTile> target_;

@@ -142,6 +142,7 @@ private:
     std::optional<Preset> submittedPreset_;
     bool submittedImageFitness_ = false;
     std::optional<Preset> previewedPreset_;  // the target shown while a slider is dragged
+    ImageMetric submittedHeatmapMetric_ = ImageMetric::DeltaE00;
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
@@ -355,7 +356,8 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
     ImDrawData* drawData = ImGui::GetDrawData();
-    bridge_->setHeatmapRange(ui_.state().heatmap.minDeltaE, ui_.state().heatmap.maxDeltaE);
+    bridge_->setHeatmap(ui_.state().evolution.heatmapMetric, ui_.state().heatmap.minDeltaE,
+                        ui_.state().heatmap.maxDeltaE);
     FrameRecording recording;
     recording.inPass = [this, drawData](VkCommandBuffer commands, std::size_t frameSlot) {
         bridge_->prepare(*drawData, commands, frameSlot);
@@ -514,13 +516,14 @@ void EditorApp::applySceneView() {
 
 void EditorApp::submitChangesToWorker() {
     const Preset& preset = ui_.state().preset;
+    const ImageMetric heatmapMetric = ui_.state().heatmap.metric;
     // During a drag the GA waits for the release (every intermediate value would cancel the
     // run before it), but the target follows the slider: one render per new value.
     if (ImGui::IsAnyItemActive() && submittedPreset_) {
         const Preset& shown = previewedPreset_ ? *previewedPreset_ : *submittedPreset_;
         if (preset.target == shown.target && preset.baseKappa == shown.baseKappa) return;
         previewedPreset_ = preset;
-        worker_->submit({preset, ui_.state().presetPath, true});
+        worker_->submit({preset, ui_.state().presetPath, true, false, heatmapMetric});
         return;
     }
     // A preview replaced the target and stopped the run: a full job follows even when the
@@ -533,12 +536,13 @@ void EditorApp::submitChangesToWorker() {
     };
     const bool imageFitness = ui_.state().imageFitness;
     if (!previewed && submittedPreset_ && withoutKept(*submittedPreset_) == withoutKept(preset) &&
-        submittedImageFitness_ == imageFitness)
-        return;
+        submittedImageFitness_ == imageFitness && submittedHeatmapMetric_ == heatmapMetric)
+        return;  // (a ꟻLIP heatmap needs ꟻLIP maps: a changed choice draws the tiles again)
     submittedPreset_ = preset;
     submittedImageFitness_ = imageFitness;
-    const std::uint64_t jobId =
-        worker_->submit({preset, ui_.state().presetPath, false, imageFitness});
+    submittedHeatmapMetric_ = heatmapMetric;
+    const std::uint64_t jobId = worker_->submit(
+        {preset, ui_.state().presetPath, false, imageFitness, heatmapMetric});
     ui_.state().evolution.running = true;
     timings_.changeSubmitted(jobId, Clock::now());
 }

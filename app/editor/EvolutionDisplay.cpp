@@ -37,6 +37,7 @@ Status EvolutionDisplay::show(EvolutionUpdate update, ui::EvolutionView& view) {
         candidate.copies = result.copies;
         candidate.picture = result.picture;
         candidate.deltaEMap = result.deltaEMap;
+        candidate.flipMap = result.flipMap;
         candidate.image = (*shown)->render();
         candidate.heatmap = (*shown)->heatmap();
         view.candidates.push_back(candidate);
@@ -63,6 +64,7 @@ Status EvolutionDisplay::show(EvolutionUpdate update, ui::EvolutionView& view) {
     view.history = std::move(update.history);
     view.totalGenerations = update.totalGenerations;
     view.renderBackend = update.backend;
+    view.heatmapMetric = update.heatmapMetric;
     view.running = !update.finished;
     return Ok{};
 }

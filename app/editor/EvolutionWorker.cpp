@@ -69,7 +69,8 @@ Status fillTiles(EvolutionUpdate& update, const std::vector<Individual>& ranked,
         if (i < count)
             update.candidates.push_back({int(distinct.first[i]) + 1, ranked[distinct.first[i]],
                                          std::move(tile.tile), tile.stats, distinct.copies[i],
-                                         std::move(tile.picture), std::move(tile.deltaE)});
+                                         std::move(tile.picture), std::move(tile.deltaE),
+                                         std::move(tile.flip)});
         else
             update.kept.push_back({0, {shown[i], 0.0}, std::move(tile.tile), tile.stats, 0});
     }
@@ -184,7 +185,8 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
     EvolutionUpdate update;
     update.jobId = jobId;
     update.totalGenerations = preset.ga.generations;
-    if (Status ready = renderCache.prepare(preset, job.presetFile); !ready) {
+    update.heatmapMetric = job.heatmapMetric;
+    if (Status ready = renderCache.prepare(preset, job.presetFile, job.heatmapMetric); !ready) {
         update.finished = true;
         update.error = ready.error().message;
         publish(std::move(update));

@@ -33,6 +33,8 @@ struct EvolutionJob {
     // Beyond the paper: the GA ranks by each candidate's rendered mean ΔE00 from the target
     // (at kImageFitnessSize) instead of the preset's genotype metric.
     bool imageFitness = false;
+    // What the tiles' heatmaps show: ΔE00, or ꟻLIP (its maps computed too, on the same renderer).
+    ImageMetric heatmapMetric = ImageMetric::DeltaE00;
 };
 
 struct CandidateResult {
@@ -43,6 +45,7 @@ struct CandidateResult {
     int copies = 1;                        // individuals in the population with this genome
     std::shared_ptr<const Image> picture;  // host copies, for the inspector's pixel readout
     std::shared_ptr<const DeltaEMap> deltaEMap;
+    std::shared_ptr<const FlipMap> flipMap;  // with a ꟻLIP heatmap
 };
 
 struct EvolutionUpdate {
@@ -53,6 +56,7 @@ struct EvolutionUpdate {
     std::shared_ptr<const gpu::DisplayTile> target;  // large, for the target panel
     std::shared_ptr<const Image> targetPicture;      // at tile size, as the ΔE00 maps saw it
     std::string backend;                      // what rendered the tiles: "GPU (name)" or "CPU"
+    ImageMetric heatmapMetric = ImageMetric::DeltaE00;  // what the tiles' error maps hold
     std::vector<CandidateResult> candidates;  // best first, one per distinct genome
     int distinctGenomes = 0;                  // in the population, drawn or not
     std::vector<CandidateResult> kept;        // the preset's kept materials of its family

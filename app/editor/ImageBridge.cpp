@@ -23,6 +23,7 @@ struct FragmentSettings {
     std::uint32_t showHeatmap;
     float minDeltaE;
     float maxDeltaE;
+    std::uint32_t colormapBase;  // 0: viridis (ΔE00), 256: magma (ꟻLIP)
 };
 constexpr std::uint32_t kTransformBytes = 4 * sizeof(float);
 
@@ -130,12 +131,12 @@ Status ImageBridge::createPipeline(VkRenderPass renderPass) {
 }
 
 Status ImageBridge::createSharedResources() {
-    const gpu::DeltaE00Pass::Colormap colors = gpu::heatmapColormap();
+    const gpu::DeltaE00Pass::Colormap colors[2] = {gpu::heatmapColormap(), gpu::flipColormap()};
     auto colormap = gpu::Buffer::create(context_.device(), sizeof colors,
                                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUse::Upload);
     if (!colormap) return colormap.error();
     colormap_ = std::move(colormap).value();
-    std::memcpy(colormap_.bytes().data(), colors.data(), sizeof colors);
+    std::memcpy(colormap_.bytes().data(), colors, sizeof colors);
 
     auto tile = gpu::DisplayTile::create(context_.device(), 1, 1, true);
     if (!tile) return tile.error();
@@ -215,7 +216,8 @@ Result<std::vector<std::shared_ptr<ShownImage>>> ImageBridge::upload(
     return shown;
 }
 
-void ImageBridge::setHeatmapRange(float minDeltaE, float maxDeltaE) {
+void ImageBridge::setHeatmap(ImageMetric metric, float minDeltaE, float maxDeltaE) {
+    metric_ = metric;
     minDeltaE_ = minDeltaE;
     maxDeltaE_ = maxDeltaE;
 }
@@ -298,7 +300,9 @@ void ImageBridge::draw(const ImageDraw& image) const {
                                 -1.0f - displayPosition_.y * scale[1]};
     vkCmdPushConstants(commands_, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, kTransformBytes,
                        transform);
-    const FragmentSettings settings{image.view->heatmap ? 1u : 0u, minDeltaE_, maxDeltaE_};
+    const bool flip = metric_ == ImageMetric::Flip;
+    const FragmentSettings settings{image.view->heatmap ? 1u : 0u, flip ? 0.0f : minDeltaE_,
+                                    flip ? 1.0f : maxDeltaE_, flip ? 256u : 0u};
     vkCmdPushConstants(commands_, layout, VK_SHADER_STAGE_FRAGMENT_BIT, kTransformBytes,
                        sizeof settings, &settings);
     vkCmdDrawIndexed(commands_, image.elementCount, 1, image.firstIndex, image.vertexOffset, 0);

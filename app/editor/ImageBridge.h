@@ -16,6 +16,7 @@
 #include <vulkan/vulkan.h>
 
 #include "WindowRenderer.h"
+#include "color/ImageMetric.h"
 #include "common/Image.h"
 #include "common/Result.h"
 #include "gpu/Buffer.h"
@@ -65,8 +66,9 @@ public:
     // Host pictures (e.g. Compare metrics' renders) copied into tiles and shown; waits for the
     // upload.
     Result<std::vector<std::shared_ptr<ShownImage>>> upload(std::span<const Image> images);
-    // The ΔE00 range of the heatmap colours, from the next frame on.
-    void setHeatmapRange(float minDeltaE, float maxDeltaE);
+    // How error maps are coloured from the next frame on: ΔE00 through viridis over
+    // [minDeltaE, maxDeltaE], or ꟻLIP through magma over [0, 1].
+    void setHeatmap(ImageMetric metric, float minDeltaE, float maxDeltaE);
 
     // Rewrites `drawData` so our images draw through our pipeline into `commands`, and keeps
     // what they use alive until frame slot `frameSlot` is drawn again.
@@ -95,8 +97,9 @@ private:
     gpu::UniqueDescriptorSetLayout setLayout_;
     gpu::UniquePipelineLayout pipelineLayout_;
     gpu::UniquePipeline pipeline_;
-    gpu::Buffer colormap_;                      // the heatmap colours, a uniform buffer
+    gpu::Buffer colormap_;  // the heatmap colours, a uniform buffer: viridis, then magma
     std::optional<gpu::DisplayTile> noDeltaE_;  // 1x1 "not covered", bound for tiles without one
+    ImageMetric metric_ = ImageMetric::DeltaE00;
     float minDeltaE_ = 0.0f;
     float maxDeltaE_ = 10.0f;
     // Per frame slot: what its draws use, kept until the slot is drawn again.

@@ -3,12 +3,16 @@
 // the validation layer, which reports any use of an image with a device it does not belong to.
 #include "EvolutionWorker.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 #include <gtest/gtest.h>
 
 #include "../gpu/GpuTestContext.h"
+#include "PixelReadout.h"
+#include "color/Flip.h"
 
 namespace matevo::editor {
 namespace {
@@ -101,6 +105,57 @@ TEST(EvolutionWorker, AFinishedRunDrawsTheWholePopulation) {
     test::expectNoValidationMessages(*context);
 }
 
+// The FLIP overlay: with a FLIP heatmap the tiles carry FLIP maps, and the inspector's readout of
+// the pixel under the pointer gives what the CPU reference (computeFlip) computes from the same
+// two images, within 2e-4 per pixel (the GPU pass's tolerance against the CPU), mean within 1e-3.
+TEST(EvolutionWorker, AFlipHeatmapReadsAsTheCpuFlipOfTheSameImages) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    for (RenderBackend backend : {RenderBackend::Gpu, RenderBackend::Cpu}) {
+        EvolutionJob job = metalJob();
+        job.heatmapMetric = ImageMetric::Flip;
+        const auto update = finalUpdate(context->device, backend, job);
+        ASSERT_TRUE(update.has_value());
+        EXPECT_EQ(update->error, "");
+        EXPECT_EQ(update->heatmapMetric, ImageMetric::Flip);
+        ASSERT_NE(update->targetPicture, nullptr);
+        ASSERT_FALSE(update->candidates.empty());
+        for (const CandidateResult& candidate : update->candidates) {
+            ASSERT_NE(candidate.flipMap, nullptr);
+            ASSERT_NE(candidate.picture, nullptr);
+            ASSERT_TRUE(candidate.tile->deltaE.has_value()) << "no error map to colour";
+            auto reference = computeFlip(*update->targetPicture, *candidate.picture);
+            ASSERT_TRUE(reference.ok()) << reference.error().message;
+            ASSERT_EQ(candidate.flipMap->pooled, reference->pooled);
+            float largest = 0.0f;
+            for (std::size_t p = 0; p < reference->error.size(); ++p)
+                if (reference->pooled[p])
+                    largest = std::max(largest,
+                                       std::abs(candidate.flipMap->error[p] - reference->error[p]));
+            EXPECT_LE(largest, 2e-4f);
+            EXPECT_NEAR(candidate.flipMap->stats.mean, reference->stats.mean, 1e-3);
+            EXPECT_GT(reference->stats.mean, 0.0) << "a candidate identical to the target";
+            // The readout, at pointer positions over the image.
+            int read = 0;
+            for (float v = 0.05f; v < 1.0f; v += 0.1f)
+                for (float u = 0.05f; u < 1.0f; u += 0.1f) {
+                    const auto readout =
+                        ui::readPixel(update->targetPicture.get(), candidate.picture.get(),
+                                      candidate.deltaEMap.get(), u, v, candidate.flipMap.get());
+                    ASSERT_TRUE(readout.has_value());
+                    if (!readout->flip) continue;
+                    const std::size_t index =
+                        std::size_t(readout->y) * std::size_t(reference->width) +
+                        std::size_t(readout->x);
+                    EXPECT_NEAR(*readout->flip, reference->error[index], 2e-4);
+                    ++read;
+                }
+            EXPECT_GT(read, 20) << "the sphere covers most of the tile";
+        }
+    }
+    test::expectNoValidationMessages(*context);
+}
+
 // The live preview while a slider is dragged: the target alone, rendered, and no GA run (the
 // candidates follow on release).
 TEST(EvolutionWorker, ATargetOnlyJobRendersTheTargetAndRunsNoGa) {
@@ -144,8 +199,7 @@ TEST(EvolutionWorker, ImageFitnessRanksTheGridByRenderedDeltaE00) {
         smallest = std::min(smallest, candidate.deltaE.mean);
     }
     EXPECT_LT(image->candidates.front().deltaE.mean, smallest + 0.5) << "best first";
-    EXPECT_LT(image->candidates.front().deltaE.mean,
-              genotype->candidates.front().deltaE.mean)
+    EXPECT_LT(image->candidates.front().deltaE.mean, genotype->candidates.front().deltaE.mean)
         << "the choice changes the outcome";
     test::expectNoValidationMessages(*context);
 }

@@ -9,6 +9,7 @@
 #include "EditorUiFixture.h"
 #include "GaControls.h"
 #include "MaterialControls.h"
+#include "ViewSettings.h"
 #include "genome/FamilyRules.h"
 #include "io/Preset.h"
 
@@ -92,6 +93,33 @@ TEST_F(EditorUiTest, HeatmapToggleIsAViewSettingNotAnEdit) {
     imgui.click(locate("Candidates (best first)", "Heatmap"), draw);
     EXPECT_TRUE(ui.state().heatmap.enabled);
     EXPECT_FALSE(ui.state().hasUnsavedChanges());
+}
+
+// The heatmap's metric: ΔE00 (its range and the paper's bands) or FLIP (fixed range, magma
+// legend); a view setting, remembered in the next session.
+TEST_F(EditorUiTest, TheHeatmapShowsDeltaEOrFlipAndTheChoiceIsRemembered) {
+    ui::rememberViewSettings(ui.state());
+    imgui.click(locate("Candidates (best first)", "Heatmap"), draw);
+    EXPECT_EQ(ui.state().heatmap.metric, ImageMetric::DeltaE00);
+    // The range's lower handle (DragFloatRange2 pushes its label as an ID).
+    const auto rangeShown = [&] {
+        ImGuiWindow* grid = ImGui::FindWindowByName("Candidates (best first)");
+        return grid && imgui.locate(*grid, ImHashStr("##min", 0, grid->GetID("ΔE00 range")), draw)
+                           .has_value();
+    };
+    EXPECT_TRUE(rangeShown());
+    imgui.click(locate("Candidates (best first)", "FLIP"), draw);
+    EXPECT_EQ(ui.state().heatmap.metric, ImageMetric::Flip);
+    EXPECT_FALSE(ui.state().hasUnsavedChanges());
+    EXPECT_FALSE(rangeShown())
+        << "FLIP's range is fixed";
+    const std::string ini = ImGui::SaveIniSettingsToMemory();
+    EXPECT_NE(ini.find("heatmap_metric=flip"), std::string::npos) << ini;
+    HeadlessImGui next;
+    EditorUi nextUi(validationMetal(), kShippedMetal);
+    ui::rememberViewSettings(nextUi.state());
+    ImGui::LoadIniSettingsFromMemory(ini.c_str());
+    EXPECT_EQ(nextUi.state().heatmap.metric, ImageMetric::Flip);
 }
 
 TEST_F(EditorUiTest, ClickingATileSelectsItAndPromoteMakesItTheTarget) {

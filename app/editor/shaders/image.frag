@@ -1,15 +1,17 @@
 #version 450
-// An editor image straight from the GPU: a linear render, or a ΔE00 map coloured through the
-// heatmap colour map (core/color's viridis in linear RGB, the same nearest-entry rule), encoded
+// An editor image straight from the GPU: a linear render, or an error map coloured through a
+// heatmap colour map (core/color's viridis for ΔE00 or magma for ꟻLIP, in linear RGB, the same
+// nearest-entry rule), encoded
 // to sRGB for the UNORM window and tinted by the vertex colour (its alpha carries the overlay
 // opacity). The heatmap range is a push constant, so changing it re-colours without any upload.
 layout(set = 0, binding = 0) uniform sampler2D renderImage;  // linear RGBA
-layout(set = 0, binding = 1) uniform sampler2D deltaEImage;  // ΔE00; negative: not covered
-layout(set = 0, binding = 2) uniform Colormap { vec4 colormap[256]; };
+layout(set = 0, binding = 1) uniform sampler2D deltaEImage;  // ΔE00 or ꟻLIP; negative: not covered
+layout(set = 0, binding = 2) uniform Colormap { vec4 colormap[512]; };  // viridis, then magma
 layout(push_constant) uniform Settings {
     layout(offset = 16) uint showHeatmap;
-    float minDeltaE;  // maps to colormap[0]
-    float maxDeltaE;  // maps to colormap[255]
+    float minDeltaE;  // maps to the colour map's first entry
+    float maxDeltaE;  // maps to its last
+    uint colormapBase;  // 0: viridis, 256: magma
 } settings;
 layout(location = 0) in vec4 color;
 layout(location = 1) in vec2 uv;
@@ -25,7 +27,7 @@ vec4 heatmapTexel() {
     if (deltaE < 0.0) return vec4(0.0);
     float position = (deltaE - settings.minDeltaE) / (settings.maxDeltaE - settings.minDeltaE);
     uint entry = position > 0.0 ? uint(round(min(position, 1.0) * 255.0)) : 0u;
-    return vec4(colormap[entry].rgb, 1.0);
+    return vec4(colormap[settings.colormapBase + entry].rgb, 1.0);
 }
 
 void main() {
