@@ -311,23 +311,25 @@ std::vector<GridTile> visibleTiles(const EvolutionView& evolution, const GridVie
     return tiles;
 }
 
-void drawCandidateGrid(EditorState& state) {
+bool drawCandidateGrid(EditorState& state) {
     drawGridToolbar(state.grid, state.heatmap);
     sameLineIfFits(buttonWidth("Keep"));
     if (ImGui::Button("Keep")) keepPicked(state);
     hoverHint("Put the selected tiles (Ctrl+click for several) in the kept bin: K");
     if (state.heatmap.enabled) drawHeatmapControls(state.heatmap);
-    if (!ImGui::BeginTabBar("grid tabs")) return;
+    if (!ImGui::BeginTabBar("grid tabs")) return false;
     if (ImGui::BeginTabItem("Population")) {
         drawPopulation(state);
         ImGui::EndTabItem();
     }
     const std::string keptLabel = "Kept (" + std::to_string(state.preset.kept.size()) + ")###kept";
+    bool exportSet = false;
     if (ImGui::BeginTabItem(keptLabel.c_str())) {
-        drawKeptBin(state);
+        exportSet = drawKeptBin(state);
         ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
+    return exportSet;
 }
 
 }  // namespace matevo::ui

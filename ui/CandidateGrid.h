@@ -27,7 +27,8 @@ struct FarFromTargetAdvice {
 std::optional<FarFromTargetAdvice> adviceForFarCandidates(const EvolutionView& evolution,
                                                           const GaSettings& ga);
 
-void drawCandidateGrid(EditorState& state);
+// True when the kept bin's "Export set…" was clicked.
+bool drawCandidateGrid(EditorState& state);
 
 // One tile of the grid: a distinct genome with its copies, or, with duplicates shown, one
 // individual (identical individuals rank side by side: rank, rank + 1, …).

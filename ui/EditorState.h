@@ -86,6 +86,12 @@ struct EvolutionView {
 
 inline constexpr std::size_t kMaxRecentFiles = 8;
 
+// A long task beside the GA (an export), shown in the status bar until it ends.
+struct TaskProgress {
+    std::string what;  // "Exporting 3 materials"
+    float fraction = 0.0f;
+};
+
 struct EditorState {
     Preset preset;  // the parameters: undoable, saved to and loaded from preset files
     HeatmapView heatmap;
@@ -113,6 +119,7 @@ struct EditorState {
     bool revealSelected = false;      // scroll the grid to the selected tile (arrow keys)
     StatusLog status;                 // every action's outcome; the status bar shows the newest
     bool statusLogOpen = false;       // the window listing the recent messages
+    std::optional<TaskProgress> task;  // while one runs
     std::vector<std::filesystem::path> recentFiles;  // newest first, remembered in imgui.ini
 
     bool hasUnsavedChanges() const { return preset != savedPreset; }

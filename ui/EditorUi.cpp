@@ -60,7 +60,8 @@ FrameRequests EditorUi::draw() {
     if (beginPanel("Fitness per generation", layout.plot))
         drawFitnessPlot(state_.evolution, state_.plotFromZero);
     ImGui::End();
-    if (beginPanel("Candidates (best first)", layout.grid)) drawCandidateGrid(state_);
+    if (beginPanel("Candidates (best first)", layout.grid) && drawCandidateGrid(state_))
+        exportDialog_.open(state_, folders_.exports);
     ImGui::End();
     if (beginPanel("Inspect", layout.inspect)) drawInspectPanel(state_);
     ImGui::End();
@@ -74,6 +75,7 @@ FrameRequests EditorUi::draw() {
     requests.variants = drawVariantsWindow(state_.variants);
     drawSceneWindow(state_);
     drawDialogs();
+    requests.exportSet = exportDialog_.draw(state_);
     handleShortcuts(requests);
     // One undo step per finished edit: a slider drag is recorded when it is released.
     if (!ImGui::IsAnyItemActive()) recordEdits();
@@ -96,7 +98,8 @@ void EditorUi::handleShortcuts(FrameRequests& requests) {
     }
     if (ImGui::IsKeyPressed(keys_.quit, false)) requestQuit();
     // A focused text field keeps Ctrl+Z/Y for its own editing and owns the keyboard.
-    if (io.WantTextInput || openDialog_.isOpen() || saveDialog_.isOpen() || unsavedPrompt_.isOpen())
+    if (io.WantTextInput || openDialog_.isOpen() || saveDialog_.isOpen() ||
+        exportDialog_.isOpen() || unsavedPrompt_.isOpen())
         return;
     if (ImGui::IsKeyPressed(keys_.open, false)) requestOpenDialog();
     if (ImGui::IsKeyPressed(keys_.save, false)) {
@@ -269,7 +272,8 @@ bool EditorUi::save() {
 
 void EditorUi::openSaveAsDialog() {
     saveDialog_.open("Save preset as",
-                     suggestSavePath(folders_, state_.presetPath, state_.preset.name));
+                     suggestSavePath(folders_, state_.presetPath, state_.preset.name),
+                     PathDialog::Existing::AskBeforeReplacing, state_.presetPath);
 }
 
 bool EditorUi::openPreset(const std::filesystem::path& file) {

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "EditorState.h"
+#include "ExportDialog.h"
 #include "PathDialog.h"
 #include "PresetFiles.h"
 #include "UndoHistory.h"
@@ -30,6 +31,7 @@ struct FrameRequests {
     bool snapshot = false;
     bool runCompareMetrics = false;  // the "Compare metrics" window asked for a run
     VariantsActions variants;        // what the "Variants" window asked for
+    std::optional<ExportRequest> exportSet;  // "Export set…" confirmed: run it
 };
 
 class EditorUi {
@@ -90,6 +92,7 @@ private:
     std::map<std::filesystem::path, Preset> fileContents_;
     PathDialog openDialog_;
     PathDialog saveDialog_;
+    ExportDialog exportDialog_;
     UnsavedChangesPrompt unsavedPrompt_;
     PendingAction pending_;
     bool pendingWaitsForSaveAs_ = false;

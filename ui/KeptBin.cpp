@@ -51,15 +51,22 @@ void keepPicked(EditorState& state) {
                       "; the kept bin holds " + std::to_string(state.preset.kept.size()));
 }
 
-void drawKeptBin(EditorState& state) {
+bool drawKeptBin(EditorState& state) {
     auto& kept = state.preset.kept;
     if (kept.empty()) {
         mutedText(
             "Nothing kept yet. Select tiles (Ctrl+click for several) and press "
             "Keep or K: kept materials stay across re-runs and are saved with the "
             "preset.");
-        return;
+        return false;
     }
+    ImGui::BeginDisabled(state.task.has_value());
+    const bool exportSet = ImGui::Button("Export set…");
+    ImGui::EndDisabled();
+    hoverHint(state.task ? "Wait for the running task to end"
+                         : "Write the kept materials of this family for engines: glTF 2.0 (.gltf, "
+                           ".glb) or MaterialX (.mtlx), each fitted to its matevo render by "
+                           "ΔE00");
     constexpr float kTile = 96.0f;
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
     const int columns =
@@ -100,6 +107,7 @@ void drawKeptBin(EditorState& state) {
         state.status.post("Removed \"" + kept[removed].name + "\" from the kept bin");
         kept.erase(kept.begin() + std::ptrdiff_t(removed));
     }
+    return exportSet;
 }
 
 }  // namespace matevo::ui

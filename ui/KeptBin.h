@@ -17,8 +17,9 @@ int keepMaterials(Preset& preset, const std::vector<Genome>& genomes);
 // the bin; the status bar says what happened.
 void keepPicked(EditorState& state);
 
-// The bin's tab: a tile per kept material with its name (editable), ΔE00 from the current
-// target when it was drawn, and a remove button.
-void drawKeptBin(EditorState& state);
+// The bin's tab: "Export set…", then a tile per kept material with its name (editable), ΔE00
+// from the current target when it was drawn, and a remove button. True when "Export set…" was
+// clicked.
+bool drawKeptBin(EditorState& state);
 
 }  // namespace matevo::ui

@@ -8,10 +8,21 @@
 
 namespace matevo::ui {
 
-void PathDialog::open(std::string title, const std::filesystem::path& suggestion) {
+void PathDialog::open(std::string title, const std::filesystem::path& suggestion, Existing existing,
+                      std::filesystem::path except) {
     title_ = std::move(title);
     path_ = suggestion.string();
+    existing_ = existing;
+    except_ = std::move(except);
+    askingToReplace_ = false;
     wantsOpen_ = true;
+}
+
+bool PathDialog::mustAsk() const {
+    std::error_code error;
+    const std::filesystem::path file(path_);
+    return existing_ == Existing::AskBeforeReplacing && std::filesystem::exists(file, error) &&
+           !(!except_.empty() && std::filesystem::equivalent(file, except_, error));
 }
 
 std::optional<std::filesystem::path> PathDialog::draw() {
@@ -27,14 +38,34 @@ std::optional<std::filesystem::path> PathDialog::draw() {
         title_.c_str(), nullptr,
         ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize);
     if (!visible_) return chosen;
-    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+    if (askingToReplace_) {
+        ImGui::PushTextWrapPos(std::min(640.0f, display.x - 80.0f));
+        ImGui::TextWrapped("%s already exists. Replace it?", path_.c_str());
+        ImGui::PopTextWrapPos();
+        if (ImGui::Button("Replace", ImVec2(100, 0))) {
+            chosen = std::filesystem::path(path_);
+            askingToReplace_ = false;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Choose another", ImVec2(0, 0)) || escape) {
+            askingToReplace_ = false;
+            focusPath_ = true;  // back to typing
+        }
+        ImGui::EndPopup();
+        return chosen;
+    }
+    if (ImGui::IsWindowAppearing() || std::exchange(focusPath_, false))
+        ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(std::min(640.0f, display.x - 80.0f));
     const bool entered = ImGui::InputText("##path", &path_, ImGuiInputTextFlags_EnterReturnsTrue);
     const bool confirmed = ImGui::Button("OK", ImVec2(100, 0)) || entered;
     ImGui::SameLine();
-    const bool cancelled = ImGui::Button("Cancel", ImVec2(100, 0)) ||
-                           ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
-    if ((confirmed && !path_.empty()) || cancelled) {
+    const bool cancelled = ImGui::Button("Cancel", ImVec2(100, 0)) || escape;
+    if (confirmed && !path_.empty() && !cancelled && mustAsk()) {
+        askingToReplace_ = true;
+    } else if ((confirmed && !path_.empty()) || cancelled) {
         if (!cancelled) chosen = std::filesystem::path(path_);
         ImGui::CloseCurrentPopup();
     }

@@ -13,6 +13,7 @@ namespace matevo::ui {
 struct PresetFolders {
     std::filesystem::path shipped;  // presets that come with matevo; empty: none
     std::filesystem::path user;     // where "Save as" starts; empty: the current directory
+    std::filesystem::path exports;  // where "Export set…" starts; empty: the current directory
 };
 
 // `file` lies inside `folder` (after resolving `..` and symbolic links where they exist).

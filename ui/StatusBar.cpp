@@ -52,13 +52,22 @@ void drawStatusBar(EditorState& state, const PanelRect& rect) {
         const float buttonWidth =
             ImGui::CalcTextSize(logLabel.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x;
         const StatusEntry& latest = state.status.latest();
-        ImGui::PushTextWrapPos(ImGui::GetContentRegionMax().x - buttonWidth - 12.0f);
+        // A running task's progress sits between the message and the log button.
+        constexpr float kTaskWidth = 240.0f;
+        const float taskWidth = state.task ? kTaskWidth + 12.0f : 0.0f;
+        ImGui::PushTextWrapPos(ImGui::GetContentRegionMax().x - buttonWidth - taskWidth - 12.0f);
         ImGui::PushStyleColor(ImGuiCol_Text, colorOf(latest.kind));
         ImGui::TextWrapped("%s", latest.text.empty() ? "Ready." : latest.text.c_str());
         ImGui::PopStyleColor();
         ImGui::PopTextWrapPos();
         if (ImGui::IsItemHovered() && !latest.text.empty())
             ImGui::SetTooltip("%s  %s", latest.time.c_str(), latest.text.c_str());
+        if (state.task) {
+            ImGui::SetCursorPos(
+                ImVec2(ImGui::GetContentRegionMax().x - buttonWidth - taskWidth, 4.0f));
+            ImGui::ProgressBar(state.task->fraction, ImVec2(kTaskWidth, 0.0f),
+                               state.task->what.c_str());
+        }
         ImGui::SetCursorPos(ImVec2(ImGui::GetContentRegionMax().x - buttonWidth, 4.0f));
         if (ImGui::Button(logLabel.c_str())) state.statusLogOpen = !state.statusLogOpen;
         hoverHint("The recent messages, newest first");

@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -81,8 +80,7 @@ ExportFormat chooseFormat(const std::optional<std::string>& option, const fs::pa
                              " file ends in " + std::string(fileExtension(*format)));
         return *format;
     }
-    for (ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb, ExportFormat::MaterialX})
-        if (out.extension() == fileExtension(format)) return format;
+    if (const auto format = exportFormatOfFile(out)) return *format;
     throw UsageError("--out: " + out.string() +
                      ": the extension must be .gltf, .glb or .mtlx (or give --format)");
 }
@@ -104,13 +102,6 @@ void printTable(const ExportReport& report) {
                 report.settings.reportSize, report.file.string().c_str());
 }
 
-// Names made safe for files: letters, digits, '-' and '_'.
-std::string fileStem(const std::string& name) {
-    std::string stem;
-    for (unsigned char c : name) stem += std::isalnum(c) || c == '-' || c == '_' ? char(c) : '_';
-    return stem;
-}
-
 void writeImages(const ExportReport& report, const fs::path& folder) {
     std::error_code error;
     fs::create_directories(folder, error);
@@ -118,7 +109,7 @@ void writeImages(const ExportReport& report, const fs::path& folder) {
         throw UsageError("--images: cannot create folder '" + folder.string() + "' (" +
                          error.message() + ")");
     for (const auto& variant : report.variants) {
-        const std::string stem = fileStem(variant.name);
+        const std::string stem = exportFileStem(variant.name);
         for (const auto& [suffix, image] :
              {std::pair{"_matevo.png", variant.matevoRender},
               std::pair{"_gltf.png", variant.gltfRender},

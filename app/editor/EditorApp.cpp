@@ -24,6 +24,7 @@
 #include "EditorUi.h"
 #include "EvolutionDisplay.h"
 #include "EvolutionWorker.h"
+#include "ExportWorker.h"
 #include "ImageBridge.h"
 #include "SceneViewWorker.h"
 #include "ScriptPlayer.h"
@@ -85,6 +86,8 @@ ui::PresetFolders presetFolders() {
     ui::PresetFolders folders;
     if (auto shipped = findResourceDirectory("presets")) folders.shipped = *shipped;
     folders.user = userPresetDirectory();
+    // Beside the presets: $XDG_DATA_HOME/matevo/exports.
+    if (!folders.user.empty()) folders.exports = folders.user.parent_path() / "exports";
     return folders;
 }
 
@@ -149,6 +152,7 @@ private:
     std::vector<std::shared_ptr<ShownImage>> variantsImages_;  // what Variants shows
     std::unique_ptr<CompareMetricsWorker> compareWorker_;
     std::unique_ptr<VariantsWorker> variantsWorker_;
+    std::unique_ptr<ExportWorker> exportWorker_;
     std::optional<VariantsResult> shownVariants_;  // the set in the Variants window
     std::vector<Genome> discardedVariants_;        // since its last fresh run
     std::shared_ptr<ShownImage> sceneImage_;       // what the Scene window shows
@@ -231,6 +235,9 @@ EditorApp::EditorApp(const EditorOptions& options)
     gpu::RendererRequest variantsRenderer = compareRenderer;
     variantsRenderer.who = "matevo edit: Variants";
     variantsWorker_ = std::make_unique<VariantsWorker>(wake, variantsRenderer);
+    gpu::RendererRequest exportRenderer = compareRenderer;
+    exportRenderer.who = "matevo edit: Export set";
+    exportWorker_ = std::make_unique<ExportWorker>(wake, exportRenderer);
     sceneWorker_ = std::make_unique<SceneViewWorker>(wake, vulkan_->device());
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
@@ -242,6 +249,7 @@ EditorApp::~EditorApp() {
     ImGuiIO& io = ImGui::GetIO();
     if (io.IniFilename) ImGui::SaveIniSettingsToDisk(io.IniFilename);
     io.IniFilename = nullptr;
+    exportWorker_.reset();
     variantsWorker_.reset();
     sceneWorker_.reset();
     compareWorker_.reset();
@@ -267,7 +275,8 @@ int EditorApp::run() {
         const bool scriptDue = !script_.finished() && !script_.waitingForEvolution() &&
                                (!script_.idling() || script_.idleOver());
         const bool due = screenshotPath || scriptDue || input_->hasPending() || framesToSettle > 0;
-        const bool busy = worker_->busy() || compareWorker_->busy() || variantsWorker_->busy();
+        const bool busy = worker_->busy() || compareWorker_->busy() || variantsWorker_->busy() ||
+                          exportWorker_->busy();
         if (due)
             glfwPollEvents();
         else
@@ -320,6 +329,7 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     applyEvolutionResults();
     applyCompareMetricsResults();
     applyVariantsResults();
+    exportWorker_->update(ui_.state());
     applySceneView();
     ui_.state().evolution.tableBuildProgress = tableBuildProgress();
     ImGui_ImplVulkan_NewFrame();
@@ -335,6 +345,7 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
             {ui_.state().preset, ui_.state().presetPath, ui_.state().compareMetrics.runs});
     handleVariantsActions(requests.variants);
     handleVariantsActions(scriptedVariants);
+    if (requests.exportSet) exportWorker_->start(std::move(*requests.exportSet), ui_.state());
     submitChangesToWorker();
     if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
         glfwSetWindowTitle(window_.get(), title.c_str());

@@ -1,5 +1,7 @@
 #include "export/ExportSet.h"
 
+#include <cctype>
+
 #include "export/GltfRenderer.h"
 #include "export/GltfWriter.h"
 #include "export/MaterialXWriter.h"
@@ -30,6 +32,18 @@ std::string_view fileExtension(ExportFormat format) {
         case ExportFormat::MaterialX: return ".mtlx";
     }
     return ".gltf";
+}
+
+std::string exportFileStem(std::string_view name) {
+    std::string stem;
+    for (unsigned char c : name) stem += std::isalnum(c) || c == '-' || c == '_' ? char(c) : '_';
+    return stem;
+}
+
+std::optional<ExportFormat> exportFormatOfFile(const std::filesystem::path& file) {
+    for (ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb, ExportFormat::MaterialX})
+        if (file.extension() == fileExtension(format)) return format;
+    return std::nullopt;
 }
 
 Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,

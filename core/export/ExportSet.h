@@ -24,6 +24,11 @@ enum class ExportFormat { Gltf, Glb, MaterialX };
 std::optional<ExportFormat> parseExportFormat(std::string_view text);  // gltf, glb, mtlx
 std::string_view toString(ExportFormat format);
 std::string_view fileExtension(ExportFormat format);  // ".gltf", ".glb", ".mtlx"
+// A material or preset name made safe for a file name: letters, digits, '-' and '_' are kept,
+// anything else becomes '_'.
+std::string exportFileStem(std::string_view name);
+// The format a file name asks for by its extension; nullopt for any other extension.
+std::optional<ExportFormat> exportFormatOfFile(const std::filesystem::path& file);
 
 struct ExportSettings {
     GltfFitSettings fit;

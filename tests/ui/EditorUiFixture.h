@@ -46,7 +46,7 @@ protected:
     EditorUiTest()
         : userFolder(freshDirectory("user")),
           ui(validationMetal(), kShippedMetal,
-             PresetFolders{kShippedFolder, userFolder / "presets"}) {
+             PresetFolders{kShippedFolder, userFolder / "presets", userFolder / "exports"}) {
         imgui.frame(draw);
     }
     ~EditorUiTest() override { fs::remove_all(userFolder); }

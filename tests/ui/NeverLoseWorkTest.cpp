@@ -126,12 +126,35 @@ TEST_F(NeverLoseWork, ShippedPresetsAreReadOnlyAndSaveAsStartsInTheUserFolder) {
     EXPECT_NE(ui.state().status.latest().text.find("read-only"), std::string::npos);
 }
 
+// Save as onto another existing file asks first; "Choose another" leaves it untouched.
+TEST_F(NeverLoseWork, SaveAsAsksBeforeReplacingAnotherFile) {
+    fs::create_directories(userFolder / "presets");
+    const fs::path existing = userFolder / "presets" / "validation_metal.json";
+    otherPreset(existing);
+    const std::string before = fileText(existing);
+    editSomething();
+    imgui.pressKey('S', /*ctrl=*/true, /*shift=*/true, draw);  // suggests `existing`
+    imgui.frame(draw);
+    imgui.pressKey(ImGui::GetIO().KeyMap[ImGuiKey_Enter], false, false, draw);
+    EXPECT_EQ(fileText(existing), before) << "replaced without asking";
+    imgui.click(locate("Save preset as", "Choose another"), draw);
+    EXPECT_EQ(fileText(existing), before);
+    EXPECT_TRUE(ui.state().hasUnsavedChanges());
+    imgui.frame(draw);
+    imgui.frame(draw);
+    imgui.pressKey(ImGui::GetIO().KeyMap[ImGuiKey_Enter], false, false, draw);
+    imgui.click(locate("Save preset as", "Replace"), draw);
+    EXPECT_NE(fileText(existing), before);
+    EXPECT_EQ(ui.state().presetPath, existing);
+    EXPECT_FALSE(ui.state().hasUnsavedChanges());
+}
+
 TEST_F(NeverLoseWork, SavedCopyKeepsFindingTheShippedTextures) {
     auto painted = loadPreset(kShippedFolder / "validation_painted_metal.json");
     ASSERT_TRUE(painted.ok());
     ASSERT_FALSE(painted->preset.roughnessTexture.empty());
     EditorUi paintedUi(painted->preset, kShippedFolder / "validation_painted_metal.json",
-                       PresetFolders{kShippedFolder, userFolder / "presets"});
+                       PresetFolders{kShippedFolder, userFolder / "presets", userFolder / "exports"});
     const fs::path copy = userFolder / "presets" / "painted.json";
     ASSERT_TRUE(paintedUi.savePreset(copy));
     auto reloaded = loadPreset(copy);

@@ -1,0 +1,86 @@
+#include "ExportWorker.h"
+
+#include <cstdio>
+#include <stdexcept>
+#include <utility>
+
+namespace matevo::editor {
+namespace {
+
+std::string materialCount(std::size_t count) {
+    return std::to_string(count) + (count == 1 ? " material" : " materials");
+}
+
+}  // namespace
+
+ExportWorker::ExportWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer,
+                           ExportSettings settings)
+    : rendererRequest_(std::move(renderer)), settings_(settings), job_(std::move(onUpdate)) {
+    rendererRequest_.cancelled = [this] { return job_.stopping(); };
+}
+
+ExportWorker::~ExportWorker() = default;
+
+bool ExportWorker::start(ui::ExportRequest request, ui::EditorState& state) {
+    const std::string what = "Exporting " + materialCount(request.materials.size());
+    const std::string file = request.file.string();
+    if (!job_.start([this, request = std::move(request)] { return compute(request); },
+                    "the export")) {
+        state.status.post("An export is running: wait for it to end", ui::StatusKind::Warning);
+        return false;
+    }
+    state.task = ui::TaskProgress{what, 0.0f};
+    state.status.post(what + " to " + file + " (fitting each to its render by ΔE00)…");
+    return true;
+}
+
+void ExportWorker::update(ui::EditorState& state) {
+    if (state.task) state.task->fraction = job_.progress();
+    std::optional<ExportResult> result = job_.takeResult();
+    if (!result) return;
+    state.task.reset();
+    if (!result->error.empty() || !result->report)
+        state.status.post("Export failed: " + result->error, ui::StatusKind::Error);
+    else
+        state.status.post(describeExport(*result->report));
+}
+
+ExportResult ExportWorker::compute(const ui::ExportRequest& request) {
+    ExportResult result;
+    std::unique_ptr<PopulationRenderer> renderer =
+        gpu::createPopulationRenderer(rendererRequest_, SceneTextures{});
+    auto report = exportMaterials(request.materials, *renderer, request.format, request.file,
+                                  settings_, [this](std::size_t done, std::size_t count) {
+                                      // Ends the export between materials when the editor closes;
+                                      // nothing is written.
+                                      if (job_.stopping())
+                                          throw std::runtime_error("stopped as the editor closed");
+                                      job_.reportProgress(float(done) / float(count));
+                                  });
+    if (!report)
+        result.error = report.error().message;
+    else
+        result.report = std::move(report).value();
+    return result;
+}
+
+std::string describeExport(const ExportReport& report) {
+    std::string text = "Exported " + materialCount(report.variants.size()) + " to " +
+                       report.file.string() + " (" + std::string(toString(report.format)) +
+                       "): fitted ΔE00 ";
+    double sum = 0.0;
+    char value[32];
+    for (std::size_t i = 0; i < report.variants.size(); ++i) {
+        const ExportedVariant& variant = report.variants[i];
+        std::snprintf(value, sizeof value, "%.2f", variant.deltaE.stats.mean);
+        text += (i > 0 ? ", " : "") + variant.name + ": " + value;
+        sum += variant.deltaE.stats.mean;
+    }
+    if (!report.variants.empty()) {
+        std::snprintf(value, sizeof value, "%.2f", sum / double(report.variants.size()));
+        text += "; mean " + std::string(value);
+    }
+    return text + " (at " + std::to_string(report.settings.reportSize) + " px)";
+}
+
+}  // namespace matevo::editor

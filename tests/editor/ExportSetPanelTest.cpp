@@ -1,0 +1,192 @@
+// "Export set…" from the kept bin, as a user does it in a headless editor: open the Kept tab,
+// click the button, confirm the suggested file in the user's export folder; the export runs on
+// its worker (core/export on lavapipe, validated) with progress in the status bar and ends with
+// the fitted ΔE00 of each material. The glTF file is read back with tinygltf. Exporting to the
+// same file again asks before replacing it.
+#include <chrono>
+#include <cmath>
+#include <regex>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include "../gpu/GpuTestContext.h"
+#include "../ui/EditorUiFixture.h"
+#include "ExportWorker.h"
+#include "KeptBin.h"
+
+namespace matevo::testing {
+namespace {
+
+constexpr const char* kGrid = "Candidates (best first)";
+
+class ExportFromTheKeptBin : public ::testing::Test {
+protected:
+    ExportFromTheKeptBin()
+        : folder(freshDirectory("export")),
+          ui(validationMetal(), kShippedMetal,
+             PresetFolders{kShippedFolder, folder / "presets", folder / "exports"}) {
+        imgui.frame(draw);
+    }
+    ~ExportFromTheKeptBin() override { fs::remove_all(folder); }
+
+    // Opens the Kept tab and clicks "Export set…" in it.
+    void clickExportSet() {
+        ImGuiWindow* grid = ImGui::FindWindowByName(kGrid);
+        ASSERT_NE(grid, nullptr);
+        const ImGuiID tabs = grid->GetID("grid tabs");
+        const std::string label =
+            "Kept (" + std::to_string(ui.state().preset.kept.size()) + ")###kept";
+        const ImGuiID keptTab = ImHashStr(label.c_str(), 0, tabs);
+        const auto tab = imgui.locate(*grid, keptTab, draw);
+        ASSERT_TRUE(tab.has_value()) << "no Kept tab";
+        imgui.click(*tab, draw);
+        const auto button = imgui.locate(*grid, ImHashStr("Export set…", 0, keptTab), draw);
+        ASSERT_TRUE(button.has_value()) << "no \"Export set…\" in the Kept tab";
+        imgui.click(*button, draw);
+        imgui.frame(draw);  // a new popup sizes itself in its first, hidden frame
+    }
+    bool dialogShown() {
+        ImGuiWindow* dialog = ImGui::FindWindowByName(ui::ExportDialog::kTitle);
+        return dialog && dialog->Active;
+    }
+    void pressEnter() { imgui.pressKey(257, false, false, draw); }
+    void clickInDialog(const char* button) {
+        const auto at = imgui.locate(ui::ExportDialog::kTitle, button, draw);
+        ASSERT_TRUE(at.has_value()) << button << " not in the dialog";
+        imgui.click(*at, draw);
+    }
+
+    fs::path folder;
+    HeadlessImGui imgui;
+    EditorUi ui;
+    std::optional<ui::ExportRequest> request;  // the last one any frame asked for
+    std::function<void()> draw = [this] {
+        if (auto asked = ui.draw().exportSet) request = std::move(asked);
+    };
+};
+
+TEST_F(ExportFromTheKeptBin, ExportsTheKeptMaterialsOfTheFamilyToGltfWithTheirFittedDeltaE) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    // Two kept materials of this family and one kept in another family, which is left out.
+    Preset& preset = ui.state().preset;
+    Genome rougher = preset.target, smoother = preset.target;
+    rougher[kAlpha2] = std::min(1.0, preset.target[kAlpha2] * 2.0);
+    smoother[kAlpha2] = preset.target[kAlpha2] * 0.5;
+    ASSERT_EQ(ui::keepMaterials(preset, {rougher, smoother}), 2);
+    preset.kept[0].name = "rust, rough";
+    KeptMaterial elsewhere = preset.kept[1];
+    elsewhere.name = "a dielectric";
+    elsewhere.family.base = Base::Dielectric;
+    preset.kept.push_back(elsewhere);
+    imgui.frame(draw);
+
+    clickExportSet();
+    ASSERT_TRUE(dialogShown());
+    pressEnter();  // the suggested file
+    ASSERT_TRUE(request.has_value()) << ui.state().status.latest().text;
+    const fs::path file = folder / "exports" / "validation_metal.gltf";
+    EXPECT_EQ(request->file, file) << "not in the user's export folder";
+    EXPECT_TRUE(fs::is_directory(folder / "exports")) << "the folder was not created";
+    EXPECT_EQ(request->format, ExportFormat::Gltf);
+    ASSERT_EQ(request->materials.size(), 2u) << "only the kept materials of this family";
+
+    // A quick fit: what is tested is the editor's path, not the fit's quality.
+    gpu::RendererRequest renderer(RenderBackend::Gpu, "test");
+    renderer.device = &context->device;
+    ExportSettings settings;
+    settings.fit.imageSize = 32;
+    settings.fit.maxEvaluations = 60;
+    settings.reportSize = 64;
+    editor::ExportWorker worker([] {}, renderer, settings);
+    ASSERT_TRUE(worker.start(std::move(*std::exchange(request, std::nullopt)), ui.state()));
+    ASSERT_TRUE(ui.state().task.has_value());
+    EXPECT_NE(ui.state().status.latest().text.find("Exporting 2 materials to " + file.string()),
+              std::string::npos)
+        << ui.state().status.latest().text;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(180);
+    while (ui.state().task && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        worker.update(ui.state());
+        imgui.frame(draw);  // the status bar draws the progress
+    }
+    ASSERT_FALSE(ui.state().task.has_value()) << "the export did not end in 180 s";
+    const ui::StatusEntry& done = ui.state().status.latest();
+    EXPECT_EQ(done.kind, ui::StatusKind::Info) << done.text;
+    // "Exported 2 materials to FILE (glTF 2.0, with its .bin): fitted ΔE00 rust, rough: 0.81,
+    // validation metal 2: 1.02; mean 0.92 (at 64 px)"
+    const std::regex summary(
+        "Exported 2 materials to .* fitted ΔE00 rust, rough: ([0-9.]+), "
+        "validation metal 2: ([0-9.]+); mean ([0-9.]+) \\(at 64 px\\)");
+    std::smatch numbers;
+    ASSERT_TRUE(std::regex_search(done.text, numbers, summary)) << done.text;
+    for (std::size_t i = 1; i <= 3; ++i) {
+        const double deltaE = std::stod(numbers[i].str());
+        EXPECT_TRUE(std::isfinite(deltaE) && deltaE >= 0.0 && deltaE < 10.0) << done.text;
+    }
+
+    // Read back: one material per kept one, by name, with the clear coat of the fit.
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadASCIIFromFile(&model, &error, &warning, file.string())) << error;
+    ASSERT_EQ(model.materials.size(), 2u);
+    EXPECT_EQ(model.materials[0].name, "rust, rough");
+    EXPECT_EQ(model.materials[1].name, "validation metal 2");
+    for (const auto& material : model.materials) {
+        EXPECT_TRUE(material.extensions.count("KHR_materials_clearcoat")) << material.name;
+        EXPECT_GE(material.pbrMetallicRoughness.roughnessFactor, 0.0);
+    }
+    EXPECT_EQ(model.meshes.size(), 2u) << "a sphere per material";
+    test::expectNoValidationMessages(*context);
+
+    // The same file again: the dialog asks before replacing it.
+    clickExportSet();
+    pressEnter();
+    EXPECT_FALSE(request.has_value()) << "replaced without asking";
+    ASSERT_TRUE(dialogShown());
+    clickInDialog("Choose another");
+    EXPECT_FALSE(request.has_value());
+    ASSERT_TRUE(dialogShown()) << "back at the path, to choose another";
+    imgui.frame(draw);  // the path field asks for the keyboard, and has it a frame later
+    imgui.frame(draw);
+    pressEnter();
+    clickInDialog("Replace");
+    ASSERT_TRUE(request.has_value()) << "Replace did not confirm the export";
+    EXPECT_EQ(request->file, file);
+    imgui.frame(draw);
+    EXPECT_FALSE(dialogShown());
+}
+
+TEST_F(ExportFromTheKeptBin, AnEmptyBinOrAWrongExtensionSaysWhy) {
+    ASSERT_TRUE(ui.state().preset.kept.empty());
+    // No Kept tab button without kept materials: the panel says how to keep them instead.
+    ui::ExportDialog dialog;
+    dialog.open(ui.state(), folder);
+    EXPECT_FALSE(dialog.isOpen());
+    EXPECT_NE(ui.state().status.latest().text.find("keep materials first"), std::string::npos)
+        << ui.state().status.latest().text;
+
+    ui::keepMaterials(ui.state().preset, {ui.state().preset.target});
+    imgui.frame(draw);
+    clickExportSet();
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = true;  // select the suggested path, then type another
+    io.KeysDown[io.KeyMap[ImGuiKey_A]] = true;
+    imgui.frame(draw);
+    io.KeysDown[io.KeyMap[ImGuiKey_A]] = false;
+    io.KeyCtrl = false;
+    io.AddInputCharactersUTF8((folder / "set.obj").c_str());
+    imgui.frame(draw);
+    pressEnter();
+    EXPECT_FALSE(request.has_value());
+    EXPECT_NE(ui.state().status.latest().text.find("must end in .gltf"), std::string::npos)
+        << ui.state().status.latest().text;
+    imgui.frame(draw);
+    EXPECT_TRUE(dialogShown()) << "the dialog stays for another name";
+}
+
+}  // namespace
+}  // namespace matevo::testing

@@ -1,0 +1,42 @@
+#pragma once
+// "Export set…": the kept materials of the preset's family, written for engines (glTF or
+// MaterialX, fitted by ΔE00; core/export does the work on the app's worker). The dialog follows
+// Save as: it starts in the user's export folder, takes the format from the extension, creates
+// missing folders or says why, and asks before replacing a file.
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "EditorState.h"
+#include "PathDialog.h"
+#include "export/ExportSet.h"
+#include "io/MaterialFile.h"
+
+namespace matevo::ui {
+
+// What the user asked to export, ready for exportMaterials().
+struct ExportRequest {
+    std::vector<MaterialFile> materials;
+    ExportFormat format = ExportFormat::Gltf;
+    std::filesystem::path file;
+};
+
+// The kept materials of the preset's family as material files, named as in the bin.
+std::vector<MaterialFile> keptMaterialFiles(const EditorState& state);
+
+class ExportDialog {
+public:
+    // Asks where to export the kept materials (from `folder`, the user's export folder); says
+    // in the status bar why not when there is nothing to export.
+    void open(EditorState& state, const std::filesystem::path& folder);
+    // The confirmed request, once; its folder exists.
+    std::optional<ExportRequest> draw(EditorState& state);
+    bool isOpen() const { return path_.isOpen(); }
+
+    static constexpr const char* kTitle = "Export set";
+
+private:
+    PathDialog path_;
+};
+
+}  // namespace matevo::ui
