@@ -31,6 +31,13 @@ nlohmann::ordered_json readJson(const std::filesystem::path& file) {
     return nlohmann::ordered_json::parse(in);
 }
 
+// Runs matevo with ARGUMENTS (which include --json), which must succeed; its stdout, parsed.
+nlohmann::ordered_json runForJson(const std::string& arguments) {
+    const auto run = runMatevo(arguments);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    return run.exitCode == 0 ? nlohmann::ordered_json::parse(run.out) : nlohmann::ordered_json();
+}
+
 const Keys kGenomeKeys{"eta1", "eta2", "alpha1", "alpha2", "depth", "sigma_s", "sigma_a", "g"};
 const Keys kMaterialKeys{"format",     "format_version", "name", "family",
                          "base_kappa", "genome",         "scene"};
