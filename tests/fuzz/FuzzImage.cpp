@@ -2,15 +2,17 @@
 // OpenImageIO; decoded from memory, with the size and finiteness checks). The first byte chooses the type. A header may claim any
 // size: the memory limit, set low here, is what keeps decoding bounded, as it does for users.
 #include <cmath>
-#include <cstdlib>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 
+#include "common/MemoryBudget.h"
 #include "io/ImageFile.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    setenv("MATEVO_MEMORY_LIMIT", "64M", 1);
+    // 8 MiB holds a 512x512 float image: big enough for every decoder path, small enough that
+    // inputs whose headers claim large images are refused quickly instead of filled.
+    matevo::setMemoryLimitBytes(8u << 20);
     // Load the OpenImageIO module now: its first use maps ~250 libraries and runs their static
     // initialisers (GDCM's DICOM dictionary alone takes seconds under ASan), which would
     // otherwise count against the first input's -timeout. The bytes need not decode.
