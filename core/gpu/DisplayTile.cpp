@@ -6,8 +6,9 @@
 namespace matevo::gpu {
 namespace {
 
+// Storage: the scene renderer's display pass writes a tile directly.
 constexpr VkImageUsageFlags kTileUsage =
-    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
 
 void copyImage(VkCommandBuffer commands, const Buffer& batch, VkDeviceSize bytesPerImage,
                uint32_t index, const GpuImage& image) {
