@@ -535,9 +535,12 @@ Result<Image> GpuSceneRenderer::render(CommandRunner& runner, const SceneFrame& 
     if (!commands) return commands.error();
     if (auto recorded = record(*commands, frame, scene); !recorded) return recorded.error();
     VkImage source = radiance_.handle();
-    VkImageLayout sourceLayout = VK_IMAGE_LAYOUT_GENERAL;
     std::optional<GpuImage> displayed;
-    if (display) {
+    if (!display) {
+        transitionImage(*commands, source, VK_IMAGE_LAYOUT_GENERAL,
+                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    } else {
         GpuImageSpec spec;
         spec.format = VK_FORMAT_R32G32B32A32_SFLOAT;
         spec.extent = {uint32_t(frame.width), uint32_t(frame.height), 1};
@@ -551,12 +554,12 @@ Result<Image> GpuSceneRenderer::render(CommandRunner& runner, const SceneFrame& 
                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                         VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
         source = displayed->handle();
-        sourceLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     }
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {uint32_t(frame.width), uint32_t(frame.height), 1};
-    vkCmdCopyImageToBuffer(*commands, source, sourceLayout, readback->handle(), 1, &region);
+    vkCmdCopyImageToBuffer(*commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           readback->handle(), 1, &region);
     VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;

@@ -45,7 +45,8 @@ Image readTile(const gpu::Device& device, const gpu::DisplayTile& tile) {
     gpu::transitionImage(*commands, handle, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                          0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    VkMemoryBarrier toHost{};
+    toHost.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
     vkCmdPipelineBarrier(*commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
@@ -69,7 +70,7 @@ TEST(SceneViewWorker, TheWindowSamplesTheRenderersDisplayImageOnItsOwnDevice) {
     job.controls.height = 64;
     const Preset& preset = loaded->preset;
     Genome other = preset.target;
-    other.alpha2 = std::min(other.alpha2 * 3.0, 1.0);
+    other.values[kAlpha2] = std::min(other.alpha2() * 3.0, 1.0);
     job.materials = {{preset.target, preset.family, preset.baseKappa},
                      {other, preset.family, preset.baseKappa}};
 
