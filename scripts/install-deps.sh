@@ -4,11 +4,12 @@
 #   scripts/install-deps.sh --tests  that, plus the test stack (scripts/test.sh asks for it)
 set -euo pipefail
 
+# DejaVu Sans is the font of the charts and contact sheets matevo draws (core/experiment/Font.h).
 packages=(
     build-essential cmake ninja-build pkg-config
     libvulkan-dev mesa-vulkan-drivers glslang-tools glslang-dev
     libglfw3-dev libimgui-dev libglm-dev libopenimageio-dev libpng-dev nlohmann-json3-dev
-    libtinygltf-dev
+    libtinygltf-dev fonts-dejavu-core
 )
 # GoogleTest, the validation layer every GPU test runs under, a virtual display and input for
 # the editor test, screenshots, the Python peers the tests and benchmarks compare with,
