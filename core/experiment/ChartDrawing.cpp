@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "common/XmlText.h"
+
 namespace matevo {
 
 namespace {
@@ -10,26 +12,6 @@ std::string hexColour(Srgb8 colour) {
     char text[8];
     std::snprintf(text, sizeof text, "#%02x%02x%02x", colour.r, colour.g, colour.b);
     return text;
-}
-
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
-
-std::string escapeXml(std::string_view text) {
-    std::string escaped;
-    for (char character : text) {
-        switch (character) {
-            case '&': escaped += "&amp;"; break;
-            case '<': escaped += "&lt;"; break;
-            case '>': escaped += "&gt;"; break;
-            case '"': escaped += "&quot;"; break;
-            default: escaped += character;
-        }
-    }
-    return escaped;
 }
 
 std::string_view anchorName(TextAnchor anchor) {
@@ -42,32 +24,32 @@ std::string_view anchorName(TextAnchor anchor) {
 }
 
 std::string classAttribute(const std::string& role) {
-    return role.empty() ? std::string() : " class=\"" + escapeXml(role) + "\"";
+    return role.empty() ? std::string() : " class=\"" + xmlEscaped(role) + "\"";
 }
 
 std::string svgElement(const ChartRect& rect) {
-    std::string element = "<rect" + classAttribute(rect.role) + " x=\"" + number(rect.x0) +
-                          "\" y=\"" + number(rect.y0) + "\" width=\"" +
-                          number(rect.x1 - rect.x0) + "\" height=\"" + number(rect.y1 - rect.y0) +
+    std::string element = "<rect" + classAttribute(rect.role) + " x=\"" + xmlNumber(rect.x0) +
+                          "\" y=\"" + xmlNumber(rect.y0) + "\" width=\"" +
+                          xmlNumber(rect.x1 - rect.x0) + "\" height=\"" + xmlNumber(rect.y1 - rect.y0) +
                           "\" fill=\"" + hexColour(rect.colour) + "\"";
-    if (rect.opacity < 1.0f) element += " fill-opacity=\"" + number(rect.opacity) + "\"";
+    if (rect.opacity < 1.0f) element += " fill-opacity=\"" + xmlNumber(rect.opacity) + "\"";
     if (rect.tooltip.empty()) return element + "/>\n";
-    return element + "><title>" + escapeXml(rect.tooltip) + "</title></rect>\n";
+    return element + "><title>" + xmlEscaped(rect.tooltip) + "</title></rect>\n";
 }
 
 std::string svgElement(const ChartText& text) {
-    std::string element = "<text" + classAttribute(text.role) + " x=\"" + number(text.x) +
-                          "\" y=\"" + number(text.baseline) + "\" font-size=\"" +
-                          number(text.size) + "\" fill=\"" + hexColour(text.colour) + "\"";
+    std::string element = "<text" + classAttribute(text.role) + " x=\"" + xmlNumber(text.x) +
+                          "\" y=\"" + xmlNumber(text.baseline) + "\" font-size=\"" +
+                          xmlNumber(text.size) + "\" fill=\"" + hexColour(text.colour) + "\"";
     if (text.anchor != TextAnchor::Start)
         element += " text-anchor=\"" + std::string(anchorName(text.anchor)) + "\"";
-    return element + ">" + escapeXml(text.text) + "</text>\n";
+    return element + ">" + xmlEscaped(text.text) + "</text>\n";
 }
 
 }  // namespace
 
 std::string chartSvg(const ChartDrawing& chart) {
-    const std::string width = number(chart.width), height = number(chart.height);
+    const std::string width = xmlNumber(chart.width), height = xmlNumber(chart.height);
     std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                       "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
                       width + "\" height=\"" + height + "\" viewBox=\"0 0 " + width + " " +
