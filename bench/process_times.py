@@ -9,7 +9,9 @@ in alpha, as a render of a sphere) into a temporary folder, then runs each comma
 round, rounds interleaved so that a change of machine load touches every command alike.
 Prints one JSON object: the median wall time of each command in milliseconds, how many times
 faster matevo's compare is than the scikit-image peer (bench/peers/skimage_compare_files.py),
-the mean dE00 each found (they must agree) and the load average before and after.
+the mean dE00 each found (they must agree), matevo's `compare --metric flip` on the same files
+beside its ΔE00 compare (the time ratio and the mean FLIP) and the load average before and
+after.
 """
 import argparse
 import json
@@ -67,6 +69,8 @@ def main():
             "matevo_version": [matevo, "--version"],
             "matevo_compare_256": [matevo, "compare", "--json", *small],
             "matevo_compare_2048": [matevo, "compare", "--json", *large],
+            "matevo_compare_flip_256": [matevo, "compare", "--metric", "flip", "--json", *small],
+            "matevo_compare_flip_2048": [matevo, "compare", "--metric", "flip", "--json", *large],
             "skimage_compare_256": [PYTHON, str(PEER), *small],
             "skimage_compare_2048": [PYTHON, str(PEER), *large],
         }
@@ -77,7 +81,8 @@ def main():
                 seconds, output = timed(command)
                 times[name].append(seconds)
                 if "compare" in name:
-                    means[name] = json.loads(output)["mean_de00"]
+                    metric = "mean_flip" if "flip" in name else "mean_de00"
+                    means[name] = json.loads(output)[metric]
     medians = {f"{name}_ms": 1000 * statistics.median(values) for name, values in times.items()}
     result = {
         "runs": options.runs,
@@ -86,7 +91,12 @@ def main():
             size: medians[f"skimage_compare_{size}_ms"] / medians[f"matevo_compare_{size}_ms"]
             for size in ("256", "2048")
         },
-        "mean_de00": means,
+        "flip_over_de00": {
+            size: medians[f"matevo_compare_flip_{size}_ms"] / medians[f"matevo_compare_{size}_ms"]
+            for size in ("256", "2048")
+        },
+        "mean_de00": {name: mean for name, mean in means.items() if "flip" not in name},
+        "mean_flip": {name: mean for name, mean in means.items() if "flip" in name},
         "load_average_before_after": [load_before, os.getloadavg()[0]],
     }
     print(json.dumps(result, indent=2))

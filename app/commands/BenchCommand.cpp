@@ -12,11 +12,12 @@ namespace matevo::cli {
 int runBench(CommandLine& args) {
     if (args.wantsHelp()) {
         std::printf(
-            "usage: matevo bench [--json] [--only grid|scene] [--scene-instances N] [--variants]\n\n"
+            "usage: matevo bench [--json] [--only grid|scene|color] [--scene-instances N] [--variants]\n\n"
             "Measures medians of the genetic algorithm (pop 100 x 10 generations, genotype\n"
             "fitness), CIEDE2000 throughput and the renderers. Prints a table, or one JSON object\n"
             "with --json. scripts/bench.sh runs the Python peers beside it and prints ratios.\n"
-            "--only grid|scene measures only the GPU/CPU grid or only the scene frames.\n"
+            "--only grid|scene|color measures only the GPU/CPU grid, only the scene frames, or\n"
+            "only the image comparisons (dE00 and FLIP, CPU and GPU).\n"
             "--scene-instances N sets the instances of the scene figures (default 100).\n"
             "--variants measures only the variant search, with and without its novelty, on the\n"
             "three validation presets (a few minutes).\n");
@@ -27,8 +28,8 @@ int runBench(CommandLine& args) {
     const bool variants = args.flag("--variants");
     const std::optional<std::string> only = args.option("--only");
     args.finish();
-    if (only && *only != "grid" && *only != "scene")
-        throw UsageError("--only: expected grid or scene, got '" + *only + "'");
+    if (only && *only != "grid" && *only != "scene" && *only != "color")
+        throw UsageError("--only: expected grid, scene or color, got '" + *only + "'");
     if (only && variants) throw UsageError("--only and --variants measure different things");
 
     bench::BenchReport report;
@@ -38,6 +39,8 @@ int runBench(CommandLine& args) {
         bench::benchGpuGrid(report);
     } else if (only == "scene") {
         bench::benchScene(report, sceneInstances);
+    } else if (only == "color") {
+        bench::benchDeltaE00(report);
     } else {
         bench::benchGeneticAlgorithm(report);
         bench::benchCpuRender(report);

@@ -21,9 +21,10 @@ namespace {
 // less of the row pass, fewer keep the buffers in cache.
 constexpr int kBandRows = 64;
 
-// One image in YyCxCz, a plane per channel, and the achromatic channel normalised to [0, 1]
-// for the feature detectors.
-struct OpponentPlanes {
+// One image row in YyCxCz, a line per channel, and the achromatic channel normalised to [0, 1]
+// for the feature detectors. Rows are converted as a band's row passes need them rather than
+// kept as whole-image planes, which at 2048² were 128 MB written and read again.
+struct OpponentRow {
     std::vector<float> achromatic, redGreen, blueYellow, lightness;
 };
 
@@ -41,18 +42,12 @@ MATEVO_VECTORISED_KERNEL void opponentRange(const float* rgba, std::size_t count
     }
 }
 
-OpponentPlanes toOpponentPlanes(const Image& image, unsigned workerCount) {
-    const std::size_t count = image.pixelCount();
-    OpponentPlanes planes{std::vector<float>(count), std::vector<float>(count),
-                          std::vector<float>(count), std::vector<float>(count)};
-    const std::size_t chunkPixels = std::size_t(kBandRows) * std::size_t(image.width);
-    detail::forEachChunk((count + chunkPixels - 1) / chunkPixels, workerCount, [&](std::size_t chunk) {
-        const std::size_t first = chunk * chunkPixels;
-        opponentRange(&image.rgba[4 * first], std::min(chunkPixels, count - first),
-                      &planes.achromatic[first], &planes.redGreen[first],
-                      &planes.blueYellow[first], &planes.lightness[first]);
-    });
-    return planes;
+void convertRow(const Image& image, int y, OpponentRow& row) {
+    const std::size_t width = std::size_t(image.width);
+    for (auto* line : {&row.achromatic, &row.redGreen, &row.blueYellow, &row.lightness})
+        line->resize(width);
+    opponentRange(&image.rgba[4 * std::size_t(y) * width], width, row.achromatic.data(),
+                  row.redGreen.data(), row.blueYellow.data(), row.lightness.data());
 }
 
 // A filter's taps and their mirror symmetry. Our filters are Gaussians and their derivatives:
@@ -120,24 +115,19 @@ void filterRow(const float* in, int width, const Taps& taps, FilterScratch& scra
     accumulateFiltered(taps, width, scratch.lines.data(), out);
 }
 
-// The row pass of one band: rows [first, first + count) of the image (clamped at its edges)
-// for one plane, filtered along x with `taps`, stored consecutively.
+// The row pass of one band for one plane: image rows [first, first + count) (clamped at the
+// image's edges) filtered along x, stored consecutively.
 class RowFiltered {
 public:
     // Keeps its buffer's memory from band to band.
-    void fill(const std::vector<float>& plane, int width, int height, int first, int count,
-              const Taps& taps, FilterScratch& scratch) {
+    void resize(int width, int first, int count) {
         width_ = width;
         first_ = first;
         rows_.resize(std::size_t(width) * std::size_t(count));
-        for (int i = 0; i < count; ++i) {
-            const int y = std::clamp(first + i, 0, height - 1);
-            filterRow(&plane[std::size_t(y) * width], width, taps, scratch,
-                      &rows_[std::size_t(i) * width]);
-        }
     }
     // The stored row for image row y (first_ ≤ y < first_ + count).
     const float* row(int y) const { return &rows_[std::size_t(y - first_) * width_]; }
+    float* row(int y) { return &rows_[std::size_t(y - first_) * width_]; }
 
 private:
     int width_ = 0, first_ = 0;
@@ -197,41 +187,48 @@ MATEVO_VECTORISED_KERNEL void combineRow(const float* const* derivatives, int wi
 // sums of one row.
 struct BandScratch {
     FilterScratch filter;
+    OpponentRow opponent;
     std::array<std::array<RowFiltered, 4>, 2> rows;  // [image][plane]
     std::vector<float> sums;
 };
 
-// Which plane a row pass filters, with which taps.
+// Which line of a converted row a row pass filters, with which taps.
 struct PlaneFilter {
-    std::vector<float> OpponentPlanes::*plane;
+    std::vector<float> OpponentRow::*line;
     const Taps* taps;
 };
 
 // The row passes of both images (rows[image][i] through filters[i]) over the band's rows and
-// `radius` more above and below.
-void rowPasses(const OpponentPlanes& reference, const OpponentPlanes& test,
-               std::initializer_list<PlaneFilter> filters, int width, int height, int firstRow,
-               int endRow, int radius, BandScratch& scratch) {
-    const OpponentPlanes* images[2] = {&reference, &test};
+// `radius` more above and below, each image row converted once for all the filters.
+void rowPasses(const Image& reference, const Image& test,
+               std::initializer_list<PlaneFilter> filters, int firstRow, int endRow, int radius,
+               BandScratch& scratch) {
+    const Image* images[2] = {&reference, &test};
+    const int width = reference.width, height = reference.height;
     for (std::size_t image = 0; image < 2; ++image) {
-        std::size_t i = 0;
-        for (const PlaneFilter& filter : filters)
-            scratch.rows[image][i++].fill(images[image]->*filter.plane, width, height,
-                                          firstRow - radius, endRow - firstRow + 2 * radius,
-                                          *filter.taps, scratch.filter);
+        for (std::size_t i = 0; i < filters.size(); ++i)
+            scratch.rows[image][i].resize(width, firstRow - radius,
+                                          endRow - firstRow + 2 * radius);
+        for (int y = firstRow - radius; y < endRow + radius; ++y) {
+            convertRow(*images[image], std::clamp(y, 0, height - 1), scratch.opponent);
+            std::size_t i = 0;
+            for (const PlaneFilter& filter : filters)
+                filterRow((scratch.opponent.*filter.line).data(), width, *filter.taps,
+                          scratch.filter, scratch.rows[image][i++].row(y));
+        }
     }
 }
 
 // The colour error (step 3) of one band's rows.
-void colorErrorOfBand(const OpponentPlanes& reference, const OpponentPlanes& test, int width,
-                      int height, int firstRow, int endRow, const Kernels& kernels,
-                      BandScratch& scratch, float* colorError) {
+void colorErrorOfBand(const Image& reference, const Image& test, int firstRow, int endRow,
+                      const Kernels& kernels, BandScratch& scratch, float* colorError) {
+    const int width = reference.width;
     rowPasses(reference, test,
-              {{&OpponentPlanes::achromatic, &kernels.achromatic},
-               {&OpponentPlanes::redGreen, &kernels.redGreen},
-               {&OpponentPlanes::blueYellow, &kernels.blueYellow0},
-               {&OpponentPlanes::blueYellow, &kernels.blueYellow1}},
-              width, height, firstRow, endRow, kernels.achromatic.radius, scratch);
+              {{&OpponentRow::achromatic, &kernels.achromatic},
+               {&OpponentRow::redGreen, &kernels.redGreen},
+               {&OpponentRow::blueYellow, &kernels.blueYellow0},
+               {&OpponentRow::blueYellow, &kernels.blueYellow1}},
+              firstRow, endRow, kernels.achromatic.radius, scratch);
     // Columns, clamped at the image's edges: a band's stored rows already repeat them.
     scratch.sums.resize(std::size_t(width) * 6);
     float* out[6];
@@ -251,15 +248,15 @@ void colorErrorOfBand(const OpponentPlanes& reference, const OpponentPlanes& tes
 }
 
 // The feature error (step 4) of one band's rows, combined with its colour error (step 5).
-void flipOfBand(const OpponentPlanes& reference, const OpponentPlanes& test, int width,
-                int height, int firstRow, int endRow, const Kernels& kernels,
-                BandScratch& scratch, float* error) {
+void flipOfBand(const Image& reference, const Image& test, int firstRow, int endRow,
+                const Kernels& kernels, BandScratch& scratch, float* error) {
+    const int width = reference.width;
     // Along x: the first and second derivative and the Gaussian of the normalised achromatic.
     rowPasses(reference, test,
-              {{&OpponentPlanes::lightness, &kernels.firstDerivative},
-               {&OpponentPlanes::lightness, &kernels.secondDerivative},
-               {&OpponentPlanes::lightness, &kernels.gaussian}},
-              width, height, firstRow, endRow, kernels.gaussian.radius, scratch);
+              {{&OpponentRow::lightness, &kernels.firstDerivative},
+               {&OpponentRow::lightness, &kernels.secondDerivative},
+               {&OpponentRow::lightness, &kernels.gaussian}},
+              firstRow, endRow, kernels.gaussian.radius, scratch);
     scratch.sums.resize(std::size_t(width) * 8);
     float* out[8];
     for (int c = 0; c < 8; ++c) out[c] = &scratch.sums[std::size_t(c) * width];
@@ -342,8 +339,6 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
     map.pooled.resize(pixelCount);
     if (pixelCount == 0) return map;
 
-    const OpponentPlanes referencePlanes = toOpponentPlanes(reference, workerCount);
-    const OpponentPlanes testPlanes = toOpponentPlanes(test, workerCount);
     const Kernels kernels = makeKernels(settings.pixelsPerDegree);
     const std::size_t bands = std::size_t((map.height + kBandRows - 1) / kBandRows);
     detail::forEachChunkWithScratch(
@@ -351,10 +346,9 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
         [&](BandScratch& scratch, std::size_t band) {
             const int firstRow = int(band) * kBandRows;
             const int endRow = std::min(map.height, firstRow + kBandRows);
-            colorErrorOfBand(referencePlanes, testPlanes, map.width, map.height, firstRow,
-                             endRow, kernels, scratch, map.error.data());
-            flipOfBand(referencePlanes, testPlanes, map.width, map.height, firstRow, endRow,
-                       kernels, scratch, map.error.data());
+            colorErrorOfBand(reference, test, firstRow, endRow, kernels, scratch,
+                             map.error.data());
+            flipOfBand(reference, test, firstRow, endRow, kernels, scratch, map.error.data());
         });
 
     std::vector<float> pooledErrors;

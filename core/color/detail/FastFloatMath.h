@@ -9,6 +9,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 
 namespace matevo::formulas {
@@ -80,8 +81,13 @@ struct FastFloatMath {
         return float(exponent) + s * polynomial(s * s, kLog2AtanhCoefficients);
     }
 
-    // x^y for x >= 0 and x^y within exp2's range; 0 for x = 0 (y > 0 assumed).
-    static float pow(float x, float y) { return x > 0.0f ? exp2(y * log2(x)) : 0.0f; }
+    // x^y for x > 0 and 0 <= y <= 1; 0 for x = 0. Computed whatever x is (log2 of the
+    // smallest normal float stands in for log2 0) and multiplied by 0 or 1 rather than chosen:
+    // a choice after this much arithmetic leaves a branch that stops loops from vectorising.
+    static float pow(float x, float y) {
+        const float power = exp2(y * log2(std::max(x, std::numeric_limits<float>::min())));
+        return power * float(x > 0.0f);
+    }
 
     // In [0, 360); 0 for (0, 0).
     static float atan2Degrees(float y, float x) {
