@@ -10,6 +10,7 @@
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <shaders/kSceneDisplaySpirv.h>
 #include <shaders/kSceneShadeFragmentSpirv.h>
 #include <shaders/kSceneShadeVertexSpirv.h>
 #include <shaders/kSceneSurfaceFragmentSpirv.h>
@@ -19,6 +20,7 @@
 #include "gpu/ShaderModule.h"
 #include "gpu/VulkanError.h"
 #include "mesh/MeshSimplification.h"
+#include "scene/EnvironmentBackdrop.h"
 
 namespace matevo::gpu {
 namespace {
@@ -38,6 +40,20 @@ enum Binding : uint32_t {
     kBaseColor = 5,
     kEnvironment = 6,
     kSurfaces = 7,
+};
+
+// SceneDisplay.comp's bindings and push constants.
+enum DisplayBinding : uint32_t {
+    kDisplayRadiance = 0,
+    kDisplayFrame = 1,
+    kDisplayEnvironment = 2,
+    kDisplayTarget = 3,
+};
+
+struct DisplayConstants {
+    float exposureScale;
+    float backdropAlpha;
+    uint32_t aces;
 };
 
 enum Attachment : uint32_t {
@@ -119,12 +135,12 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
     VkAttachmentDescription& depth = attachments[kDepthAttachment];
     depth = surfaces;
     depth.format = kDepthFormat;
-    depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+    depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     VkAttachmentDescription& radiance = attachments[kRadianceAttachment];
     radiance = surfaces;
     radiance.format = GpuSceneRenderer::kColorFormat;
     radiance.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    radiance.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    radiance.finalLayout = VK_IMAGE_LAYOUT_GENERAL;  // copied or read by SceneDisplay.comp
 
     const VkAttachmentReference surfaceOutput{kSurfaceAttachment,
                                               VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
@@ -132,8 +148,6 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
                                              VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     const VkAttachmentReference surfaceInput{kSurfaceAttachment,
                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    const VkAttachmentReference depthRead{kDepthAttachment,
-                                          VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
     const VkAttachmentReference radianceOutput{kRadianceAttachment,
                                                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpasses[2]{};
@@ -146,7 +160,6 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
     subpasses[1].pInputAttachments = &surfaceInput;
     subpasses[1].colorAttachmentCount = 1;
     subpasses[1].pColorAttachments = &radianceOutput;
-    subpasses[1].pDepthStencilAttachment = &depthRead;
 
     const VkPipelineStageFlags attachmentStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
                                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
@@ -162,33 +175,29 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
         previous.srcSubpass = VK_SUBPASS_EXTERNAL;
         previous.dstSubpass = subpass;
         previous.srcStageMask = attachmentStages | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+                                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
         previous.srcAccessMask = attachmentAccess;
         previous.dstStageMask = attachmentStages;
         previous.dstAccessMask = attachmentAccess;
     }
-    // The shading subpass reads the surfaces and tests against the depth the first one wrote.
+    // The shading subpass reads the surfaces the first one wrote.
     VkSubpassDependency& surfacesToShading = dependencies[2];
     surfacesToShading.srcSubpass = 0;
     surfacesToShading.dstSubpass = 1;
-    surfacesToShading.srcStageMask =
-        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    surfacesToShading.srcAccessMask =
-        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-    surfacesToShading.dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
-                                     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                                     VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    surfacesToShading.dstAccessMask =
-        VK_ACCESS_INPUT_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+    surfacesToShading.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    surfacesToShading.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    surfacesToShading.dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    surfacesToShading.dstAccessMask = VK_ACCESS_INPUT_ATTACHMENT_READ_BIT;
     surfacesToShading.dependencyFlags = VK_DEPENDENCY_BY_REGION_BIT;
-    // The radiance image is read by a transfer after the pass.
+    // The radiance image is read by a transfer or the display pass after the pass.
     VkSubpassDependency& radianceOut = dependencies[3];
     radianceOut.srcSubpass = 1;
     radianceOut.dstSubpass = VK_SUBPASS_EXTERNAL;
     radianceOut.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
     radianceOut.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    radianceOut.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-    radianceOut.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    radianceOut.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    radianceOut.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
     info.attachmentCount = 3;
@@ -218,7 +227,7 @@ Result<UniquePipeline> createSurfacePipeline(VkDevice device, VkRenderPass rende
     spec.vertexAttributes = attributes;
     // The projection's y flip keeps the mesh's counter-clockwise front faces so on screen.
     spec.cullMode = VK_CULL_MODE_BACK_BIT;
-    spec.depthTest = DepthTest::LessAndWrite;
+    spec.depthTested = true;
     spec.layout = layout;
     spec.renderPass = renderPass;
     spec.subpass = 0;
@@ -237,7 +246,6 @@ Result<UniquePipeline> createShadingPipeline(VkDevice device, VkRenderPass rende
     spec.vertexSpirv = kSceneShadeVertexSpirv;
     spec.fragmentSpirv = kSceneShadeFragmentSpirv;
     spec.fragmentSpecialization = constants.info();
-    spec.depthTest = DepthTest::GreaterReadOnly;
     spec.layout = layout;
     spec.renderPass = renderPass;
     spec.subpass = 1;
@@ -312,6 +320,16 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
                                                  pipelineLayout, renderer.textures_);
     if (!shadingPipeline) return shadingPipeline.error();
     renderer.shadingPipeline_ = std::move(shadingPipeline).value();
+
+    const uint32_t environmentLit = renderer.textures_.environmentLevels() > 0 ? 1u : 0u;
+    auto displayKernel = ComputeKernel::create(
+        device, kSceneDisplaySpirv,
+        {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, storage, sampled, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+        sizeof(DisplayConstants), std::span(&environmentLit, 1));
+    if (!displayKernel) return displayKernel.error();
+    renderer.displayKernel_ = std::move(displayKernel).value();
+    renderer.displayKernel_.bindBuffer(kDisplayFrame, renderer.frameBuffer_);
+    renderer.textures_.bindEnvironment(renderer.displayKernel_.descriptors(), kDisplayEnvironment);
     return renderer;
 }
 
@@ -341,7 +359,7 @@ Status GpuSceneRenderer::prepareTarget(int width, int height) {
     GpuImageSpec radianceSpec = surfaceSpec;
     radianceSpec.format = kColorFormat;
     radianceSpec.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                         VK_IMAGE_USAGE_SAMPLED_BIT;
+                         VK_IMAGE_USAGE_STORAGE_BIT;
     auto surfaces = GpuImage::create(*device_, surfaceSpec);
     if (!surfaces) return surfaces.error();
     auto depth = GpuImage::create(*device_, depthSpec);
@@ -369,6 +387,7 @@ Status GpuSceneRenderer::prepareTarget(int width, int height) {
     depth_ = std::move(depth).value();
     radiance_ = std::move(radiance).value();
     descriptors_.bindInputAttachment(kSurfaces, surfaces_.view());
+    displayKernel_.bindStorageImage(kDisplayRadiance, radiance_.view());
     width_ = width;
     height_ = height;
     return Ok{};
@@ -472,19 +491,65 @@ Status GpuSceneRenderer::record(VkCommandBuffer commands, const SceneFrame& fram
     return Ok{};
 }
 
+Status GpuSceneRenderer::recordDisplay(VkCommandBuffer commands, const GpuImage& target,
+                                       const SceneDisplay& display) {
+    const VkExtent3D extent = target.spec().extent;
+    if (int(extent.width) != width_ || int(extent.height) != height_)
+        return Error{"the scene display image is not the frame's size"};
+    displayKernel_.bindStorageImage(kDisplayTarget, target.view());
+    transitionImage(commands, target.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_SHADER_WRITE_BIT);
+    const DisplayConstants constants{float(std::exp2(display.exposureStops)),
+                                     float(kBackdropBlurAlpha),
+                                     display.toneMap == ToneMap::Aces ? 1u : 0u};
+    displayKernel_.record(commands, &constants, (extent.width + 7) / 8, (extent.height + 7) / 8, 1);
+    transitionImage(commands, target.handle(), VK_IMAGE_LAYOUT_GENERAL,
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_SHADER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+    return Ok{};
+}
+
 Result<Image> GpuSceneRenderer::render(CommandRunner& runner, const SceneFrame& frame,
-                                       const SceneSettings& scene) {
-    const VkDeviceSize bytes = VkDeviceSize(frame.width) * VkDeviceSize(frame.height) * 8;
-    auto readback = Buffer::create(*device_, std::max<VkDeviceSize>(bytes, 8),
+                                       const SceneSettings& scene,
+                                       std::optional<SceneDisplay> display) {
+    // Linear radiance is RGBA16F, the displayed picture RGBA32F.
+    const VkDeviceSize bytesPerPixel = display ? 16 : 8;
+    const VkDeviceSize bytes =
+        VkDeviceSize(frame.width) * VkDeviceSize(frame.height) * bytesPerPixel;
+    auto readback = Buffer::create(*device_, std::max<VkDeviceSize>(bytes, bytesPerPixel),
                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
     if (!readback) return readback.error();
     auto commands = runner.begin();
     if (!commands) return commands.error();
     if (auto recorded = record(*commands, frame, scene); !recorded) return recorded.error();
+    VkImage source = radiance_.handle();
+    std::optional<GpuImage> displayed;
+    if (!display) {
+        transitionImage(*commands, source, VK_IMAGE_LAYOUT_GENERAL,
+                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    } else {
+        GpuImageSpec spec;
+        spec.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+        spec.extent = {uint32_t(frame.width), uint32_t(frame.height), 1};
+        spec.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        auto created = GpuImage::create(*device_, spec);
+        if (!created) return created.error();
+        displayed = std::move(created).value();
+        if (auto ok = recordDisplay(*commands, *displayed, *display); !ok) return ok.error();
+        transitionImage(*commands, displayed->handle(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        source = displayed->handle();
+    }
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {uint32_t(frame.width), uint32_t(frame.height), 1};
-    vkCmdCopyImageToBuffer(*commands, radiance_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+    vkCmdCopyImageToBuffer(*commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            readback->handle(), 1, &region);
     VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -493,11 +558,17 @@ Result<Image> GpuSceneRenderer::render(CommandRunner& runner, const SceneFrame& 
                          1, &toHost, 0, nullptr, 0, nullptr);
     if (auto submitted = runner.submitAndWait(); !submitted) return submitted.error();
 
-    // (radiance, 1) where a surface was drawn, (0, 0) elsewhere.
     Image image(frame.width, frame.height);
-    const auto halves = readback->as<const uint16_t>();
-    for (std::size_t i = 0; i < image.rgba.size(); ++i)
-        image.rgba[i] = glm::unpackHalf1x16(halves[i]);
+    if (display) {
+        const auto floats = readback->as<const float>();
+        std::copy(floats.begin(), floats.begin() + std::ptrdiff_t(image.rgba.size()),
+                  image.rgba.begin());
+    } else {
+        // (radiance, 1) where a surface was drawn, (0, 0) elsewhere.
+        const auto halves = readback->as<const uint16_t>();
+        for (std::size_t i = 0; i < image.rgba.size(); ++i)
+            image.rgba[i] = glm::unpackHalf1x16(halves[i]);
+    }
     return image;
 }
 

@@ -14,13 +14,16 @@
 // Levels of detail (core/mesh/MeshSimplification.h): each instance is drawn from the finest
 // level that gives its triangles a few pixels each on screen, one instanced draw per level,
 // nearer instances first within a level so that the depth test rejects what they hide.
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "common/Image.h"
+#include "color/ToneMap.h"
 #include "common/Result.h"
 #include "gpu/Buffer.h"
 #include "gpu/CommandRunner.h"
+#include "gpu/ComputeKernel.h"
 #include "gpu/DescriptorSet.h"
 #include "gpu/GpuImage.h"
 #include "gpu/GpuMaterialTables.h"
@@ -41,6 +44,12 @@ struct SceneFrame {
     std::span<const SceneInstance> instances;
 };
 
+// How the scene becomes a displayable picture (SceneDisplay.comp).
+struct SceneDisplay {
+    double exposureStops = 0.0;
+    ToneMap toneMap = ToneMap::Aces;
+};
+
 class GpuSceneRenderer {
 public:
     static constexpr VkFormat kColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
@@ -55,14 +64,25 @@ public:
     Status setMaterials(std::span<const MaterialInstance> materials);
 
     // Records the frame: clears, draws every instance and shades it into radianceImage(),
-    // which ends in TRANSFER_SRC_OPTIMAL. (Re)creates the attachments when the size changes, so no
+    // which ends in GENERAL, visible to transfers and compute shaders. (Re)creates the attachments when the size changes, so no
     // submission may be using them.
     Status record(VkCommandBuffer commands, const SceneFrame& frame, const SceneSettings& scene);
 
-    // One submission: renders the frame and reads it back; linear RGB, alpha 1 where an
-    // instance is drawn, the background transparent.
+    // Records, after record(): the radiance over the environment's slightly blurred backdrop
+    // (opaque; without an environment the background stays transparent), exposed and tone
+    // mapped into `target` (RGBA32F, storage and sampled usage, the frame's size), which ends
+    // in SHADER_READ_ONLY_OPTIMAL, visible to later fragment shaders and transfers. The GPU
+    // twin of compositeOverEnvironment and applyExposureAndToneMap: the editor's Scene window
+    // samples `target` with no copy through the host.
+    Status recordDisplay(VkCommandBuffer commands, const GpuImage& target,
+                         const SceneDisplay& display);
+
+    // One submission: renders the frame and reads it back. Without `display`: linear RGB,
+    // alpha 1 where an instance is drawn, the background transparent. With it: the
+    // displayable picture recordDisplay makes.
     Result<Image> render(CommandRunner& runner, const SceneFrame& frame,
-                         const SceneSettings& scene);
+                         const SceneSettings& scene,
+                         std::optional<SceneDisplay> display = std::nullopt);
 
     const GpuImage& radianceImage() const { return radiance_; }
 
@@ -92,6 +112,7 @@ private:
     UniquePipelineLayout pipelineLayout_;
     UniquePipeline surfacePipeline_;
     UniquePipeline shadingPipeline_;
+    ComputeKernel displayKernel_;
     // Size-dependent: recreated by prepareTarget.
     int width_ = 0;
     int height_ = 0;
