@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "Suggestion.h"
+#include "common/ByteSize.h"
+#include "common/ShortText.h"
 #include "io/ImageFile.h"
 
 namespace matevo::cli {
@@ -128,6 +130,12 @@ double parseNumber(const std::string& text, const std::string& what) {
     if (consumed == 0 || consumed != text.size() || !std::isfinite(value))
         throw UsageError(what + ": expected a finite number, got '" + text + "'");
     return value;
+}
+
+std::uint64_t parseByteSizeOption(const std::string& text, const std::string& what) {
+    if (const auto bytes = parseByteSize(text)) return *bytes;
+    throw UsageError(what + ": expected an amount of memory such as 512M or 16G, got '" +
+                     shortText(text) + "'");
 }
 
 std::vector<double> parseNumberList(const std::string& text, const std::string& what) {

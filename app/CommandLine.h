@@ -60,6 +60,8 @@ private:
 long long parseInteger(const std::string& text, const std::string& what, long long min,
                        long long max);
 double parseNumber(const std::string& text, const std::string& what);
+// An amount of memory such as "512M" or "16G" (common/ByteSize.h).
+std::uint64_t parseByteSizeOption(const std::string& text, const std::string& what);
 std::vector<double> parseNumberList(const std::string& text, const std::string& what);
 // "LO,HI": a band of mean ΔE00 (0 <= LO <= HI).
 DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what);

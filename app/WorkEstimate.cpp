@@ -105,13 +105,6 @@ WorkEstimate compareEstimate(int width, int height, bool flip) {
             double(count) * (flip ? kFlipSecondsPerPixel : kDeltaESecondsPerPixel)};
 }
 
-std::string describeBytes(std::uint64_t bytes) {
-    if (bytes >= kLargeBytes) return gibibytes(bytes);
-    char text[32];
-    std::snprintf(text, sizeof text, "%.0f MiB", double(bytes) / double(1 << 20));
-    return text;
-}
-
 std::string describeDuration(double seconds) {
     char text[32];
     if (seconds < 90)

@@ -1,7 +1,7 @@
 #pragma once
 // Up-front estimates of the memory and processor time of large work, so that the user sees the
 // cost before it is spent and work past the memory limit (common/MemoryBudget.h,
-// MATEVO_MEMORY_LIMIT) is refused before it starts instead of ending in the OOM killer.
+// --max-memory) is refused before it starts instead of ending in the OOM killer.
 //
 // Times are processor seconds on the CPU renderer, from per-pixel costs measured on a two-core
 // x86-64 machine (lavapipe costs about the same; a real GPU renders much faster). They are
@@ -36,8 +36,6 @@ WorkEstimate compareEstimate(int width, int height, bool flip);
 // as a notice when the work is large (1 GiB or half a minute), so the user can stop it.
 void checkWorkEstimate(const WorkEstimate& estimate);
 
-// "12 MiB", "3.5 GiB"
-std::string describeBytes(std::uint64_t bytes);
 // "40 s", "12 min", "3.5 h"
 std::string describeDuration(double seconds);
 

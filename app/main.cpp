@@ -13,6 +13,7 @@
 #include "CommandLine.h"
 #include "Messages.h"
 #include "Suggestion.h"
+#include "common/MemoryBudget.h"
 #include "commands/Commands.h"
 #include "io/PresetCatalog.h"
 
@@ -24,22 +25,28 @@ struct Subcommand {
     std::string_view name;
     int (*run)(CommandLine&);
     std::string_view summary;
+    bool takesMaxMemory;  // reads images or renders: work whose memory --max-memory bounds
 };
 
 // One line per subcommand; `matevo --help` lists them in this order.
 constexpr Subcommand kSubcommands[] = {
-    {"edit", runEdit, "open the editor (default; PRESET defaults to validation metal)"},
-    {"evolve", runEvolve, "run the genetic algorithm on a preset's target material"},
-    {"render", runRender, "render one material on the test sphere to PNG or EXR"},
-    {"compare", runCompare, "per-pixel CIEDE2000 between two images"},
-    {"experiment", runExperiment, "the paper's section 5 experiment: metrics x runs"},
-    {"variants", runVariants, "N variants a chosen perceptible difference from the target"},
-    {"merge", runMerge, "join the shares of a variants --shard run into one set"},
-    {"presets", runPresets, "list the presets --preset NAME accepts (shipped and your own)"},
-    {"bench", runBench, "measure the GA, CIEDE2000 and renderers; medians"},
-    {"export", runExport, "write materials for engines (glTF, MaterialX), fitted by dE00"},
-    {"scene", runScene, "render many instances of a mesh, one variant each, to PNG or EXR"},
+    {"edit", runEdit, "open the editor (default; PRESET defaults to validation metal)", true},
+    {"evolve", runEvolve, "run the genetic algorithm on a preset's target material", true},
+    {"render", runRender, "render one material on the test sphere to PNG or EXR", true},
+    {"compare", runCompare, "per-pixel CIEDE2000 between two images", true},
+    {"experiment", runExperiment, "the paper's section 5 experiment: metrics x runs", true},
+    {"variants", runVariants, "N variants a chosen perceptible difference from the target", true},
+    {"merge", runMerge, "join the shares of a variants --shard run into one set", false},
+    {"presets", runPresets, "list the presets --preset NAME accepts (shipped and your own)", false},
+    {"bench", runBench, "measure the GA, CIEDE2000 and renderers; medians", false},
+    {"export", runExport, "write materials for engines (glTF, MaterialX), fitted by dE00", true},
+    {"scene", runScene, "render many instances of a mesh, one variant each, to PNG or EXR", true},
 };
+
+constexpr const char* kMaxMemoryHelp =
+    "  --max-memory SIZE  refuse work whose estimated memory is past SIZE (e.g. 512M, 16G;\n"
+    "                     default half the machine's memory); every command that reads\n"
+    "                     images or renders takes it\n";
 
 void printHelp() {
     std::printf(
@@ -56,7 +63,8 @@ void printHelp() {
         "as the only argument, matevo opens the editor.\n"
         "messages: 'matevo COMMAND: TEXT' on stderr, one line each.\n"
         "exit status: 0 success, 1 internal failure, 2 bad usage or input,\n"
-        "             3 compare --fail-above: the difference is above the threshold.\n");
+        "             3 compare --fail-above: the difference is above the threshold.\n\n%s",
+        kMaxMemoryHelp);
 }
 
 const Subcommand* findSubcommand(std::string_view name) {
@@ -103,7 +111,12 @@ int dispatch(std::vector<std::string> args) {
     }
     setMessageCommand(chosen->name);
     CommandLine commandLine(std::string(chosen->name), std::move(args));
-    return chosen->run(commandLine);
+    if (!chosen->takesMaxMemory) return chosen->run(commandLine);
+    if (const auto limit = commandLine.option("--max-memory"))
+        matevo::setMemoryLimitBytes(parseByteSizeOption(*limit, "--max-memory"));
+    const int status = chosen->run(commandLine);
+    if (commandLine.wantsHelp()) std::printf("\n%s", kMaxMemoryHelp);
+    return status;
 }
 
 }  // namespace

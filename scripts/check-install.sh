@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# The install, as a new user would do it: `cmake --install` into a temporary prefix, then every
-# command of the installed matevo run from an unrelated working directory. Also: the build
-# tree's own matevo runs from anywhere, a lone copy of the executable says where it looked for
-# its resources (exit 2), and MATEVO_DATA_DIR points it at them. Exits non-zero on the first
-# failure, naming it.
-#   scripts/check-install.sh            first builds matevo out of the source tree, tests off
-#                                       (a full second build: minutes)
-#   scripts/check-install.sh BUILD_DIR  installs from an existing build folder (what ctest's
-#                                       install_and_run_from_anywhere does)
+# The install, as a new user would do it: a build folder outside the source tree, configured from
+# scratch with the tests off and only the executable built (its OpenImageIO module comes with
+# it), `cmake --install` into a temporary prefix, then every command of the installed matevo run
+# from an unrelated working directory. Also: that build tree's own matevo runs from anywhere, a
+# lone copy of the executable says where it looked for its resources (exit 2), and
+# MATEVO_DATA_DIR points it at them. Exits non-zero on the first failure, naming it.
+#   scripts/check-install.sh [CMAKE_ARGUMENT...]
+# ctest's install_and_run_from_anywhere passes the suite's own compiler and build settings, so
+# that with ccache (scripts/install-deps.sh --tests installs it) the second build compiles from
+# the cache the suite's build just filled: the sources are the same absolute paths, and nothing
+# but the generated shader headers differs.
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/matevo-install-check.XXXXXX")
@@ -16,14 +18,11 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "check-install: $*" >&2; exit 1; }
 expect_file() { [[ -s "$1" ]] || fail "$2 did not write $1"; }
 
-if [[ $# -ge 1 ]]; then
-    build_dir=$(cd "$1" && pwd)
-else
-    build_dir="$work/build"
-    cmake -S "$source_dir" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-          -DMATEVO_BUILD_TESTS=OFF >/dev/null
-    cmake --build "$build_dir" --target matevo -j"$(nproc)" >/dev/null
-fi
+build_dir="$work/build"
+cmake -S "$source_dir" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+      -DMATEVO_BUILD_TESTS=OFF "$@" >"$work/build.log" 2>&1 \
+    && cmake --build "$build_dir" --target matevo -j"$(nproc)" >>"$work/build.log" 2>&1 \
+    || { cat "$work/build.log" >&2; fail "the out-of-tree build"; }
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
 [[ -f "$work/prefix/share/doc/matevo/LICENSE" ]] || fail "LICENSE not installed"
 [[ -f "$work/prefix/share/matevo/preset.schema.json" ]] || fail "the presets' schema not installed"
@@ -63,7 +62,7 @@ if command -v xvfb-run >/dev/null; then
     xvfb-run -a "$matevo" edit mine --frames 3 --backend cpu || fail "edit under Xvfb"
 fi
 
-# The build tree's executable finds the source tree's resources.
+# The out-of-tree build's own executable finds the source tree's resources.
 "$build_dir/matevo" presets | grep -q '^validation_metal ' || fail "build-tree presets"
 
 # A lone copy finds nothing, says where it looked, exits 2; MATEVO_DATA_DIR rescues it.

@@ -4,21 +4,23 @@
 #   scripts/install-deps.sh --tests  that, plus the test stack (scripts/test.sh asks for it)
 set -euo pipefail
 
+# DejaVu Sans is the font of the charts and contact sheets matevo draws (core/experiment/Font.h).
 packages=(
     build-essential cmake ninja-build pkg-config
     libvulkan-dev mesa-vulkan-drivers glslang-tools glslang-dev
     libglfw3-dev libimgui-dev libglm-dev libopenimageio-dev libpng-dev nlohmann-json3-dev
-    libtinygltf-dev
+    libtinygltf-dev fonts-dejavu-core
 )
 # GoogleTest, the validation layer every GPU test runs under, a virtual display and input for
 # the editor test, screenshots, the Python peers the tests and benchmarks compare with,
 # jsonschema for the presets' schema, clang with its sanitizer runtimes for scripts/fuzz.sh,
-# libxml2 to re-read exported MaterialX, and GNU parallel for docs/batch.md's examples.
+# libxml2 to re-read exported MaterialX, GNU parallel for docs/batch.md's examples, and ccache,
+# which lets the install test's second, out-of-tree build reuse what the suite's build compiled.
 test_packages=(
     libgtest-dev vulkan-validationlayers clang libclang-rt-14-dev
     xvfb xauth imagemagick xdotool
     python3-skimage python3-deap python3-numpy python3-jsonschema
-    libxml2-dev parallel
+    libxml2-dev parallel ccache
 )
 tests=0
 case "${1:-}" in

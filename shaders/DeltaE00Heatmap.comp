@@ -22,68 +22,8 @@ layout(push_constant) uniform Settings {
     float maxDeltaE;  // maps to colormap[255]
 } settings;
 
-const float kPi = 3.14159265358979;
-
 #include "LinearSrgbToLab.glsl"
-
-// Hue angle in degrees in [0, 360); 0 for a neutral colour, as in Sharma et al. (2005).
-float hueDegrees(float b, float aPrime) {
-    if (b == 0.0 && aPrime == 0.0) return 0.0;
-    float h = degrees(atan(b, aPrime));
-    return h < 0.0 ? h + 360.0 : h;
-}
-
-// x^7 by multiplication: pow() on lavapipe costs a log and an exp per lane.
-float seventhPower(float x) {
-    float square = x * x;
-    return square * square * square * x;
-}
-
-float ciede2000(vec3 lab1, vec3 lab2) {
-    float c1 = length(lab1.yz);
-    float c2 = length(lab2.yz);
-    float cMean7 = seventhPower(0.5 * (c1 + c2));
-    float g = 0.5 * (1.0 - sqrt(cMean7 / (cMean7 + 6103515625.0)));  // 25^7
-    float a1 = (1.0 + g) * lab1.y;
-    float a2 = (1.0 + g) * lab2.y;
-    float cp1 = length(vec2(a1, lab1.z));
-    float cp2 = length(vec2(a2, lab2.z));
-    float hp1 = hueDegrees(lab1.z, a1);
-    float hp2 = hueDegrees(lab2.z, a2);
-
-    float dL = lab2.x - lab1.x;
-    float dC = cp2 - cp1;
-    float dh = 0.0;
-    if (cp1 * cp2 != 0.0) {
-        dh = hp2 - hp1;
-        if (dh > 180.0) dh -= 360.0;
-        else if (dh < -180.0) dh += 360.0;
-    }
-    float dH = 2.0 * sqrt(cp1 * cp2) * sin(radians(dh) * 0.5);
-
-    float lMean = 0.5 * (lab1.x + lab2.x);
-    float cMean = 0.5 * (cp1 + cp2);
-    float hMean = hp1 + hp2;
-    if (cp1 * cp2 != 0.0) {
-        if (abs(hp1 - hp2) <= 180.0) hMean *= 0.5;
-        else hMean = hMean < 360.0 ? 0.5 * (hMean + 360.0) : 0.5 * (hMean - 360.0);
-    }
-    float t = 1.0 - 0.17 * cos(radians(hMean - 30.0)) + 0.24 * cos(radians(2.0 * hMean))
-            + 0.32 * cos(radians(3.0 * hMean + 6.0)) - 0.20 * cos(radians(4.0 * hMean - 63.0));
-    float hueOffset = (hMean - 275.0) / 25.0;
-    float dTheta = 30.0 * exp(-hueOffset * hueOffset);
-    float cMeanP7 = seventhPower(cMean);
-    float rC = 2.0 * sqrt(cMeanP7 / (cMeanP7 + 6103515625.0));
-    float lShift = (lMean - 50.0) * (lMean - 50.0);
-    float sL = 1.0 + 0.015 * lShift / sqrt(20.0 + lShift);
-    float sC = 1.0 + 0.045 * cMean;
-    float sH = 1.0 + 0.015 * cMean * t;
-    float rT = -sin(radians(2.0 * dTheta)) * rC;
-    float termL = dL / sL;
-    float termC = dC / sC;
-    float termH = dH / sH;
-    return sqrt(max(termL * termL + termC * termC + termH * termH + rT * termC * termH, 0.0));
-}
+#include "Ciede2000.glsl"
 
 void main() {
     uint pixel = gl_GlobalInvocationID.x;
@@ -99,7 +39,6 @@ void main() {
     }
     float difference = ciede2000(linearSrgbToLab(reference.rgb), linearSrgbToLab(candidate.rgb));
     deltaE[index] = difference;
-    float span = max(settings.maxDeltaE - settings.minDeltaE, 1e-6);
-    float position = clamp((difference - settings.minDeltaE) / span, 0.0, 1.0);
-    heatmapPixels[index] = colormap[uint(round(position * 255.0))];
+    heatmapPixels[index] =
+        colormap[colormapEntry(difference, settings.minDeltaE, settings.maxDeltaE)];
 }

@@ -12,6 +12,11 @@
 // longest lane, so what a dispatch does not need is removed by specialisation instead of
 // skipped at run time: one pipeline shades the pixels of one point (nearly all), another the
 // silhouette's pixels of up to kMaxPoints points.
+//
+// Built twice: with COMPARE_WITH_TARGET defined it also writes each pixel's ΔE00 against the
+// target and its heatmap colour (what shaders/DeltaE00Heatmap.comp computes from two images),
+// while the radiance is still in registers: no second pass over the images, the target's
+// L*a*b* converted once on the CPU, and no work on background pixels (the caller fills them).
 layout(local_size_x = 64) in;
 layout(constant_id = 0) const bool kTextured = false;        // roughness / base-colour textures
 layout(constant_id = 1) const bool kEnvironmentLit = false;  // the prefiltered environment
@@ -36,6 +41,8 @@ layout(push_constant) uniform Dispatch {
     uint pixelsPerImage;
     uint firstPixel;  // of this dispatch, in coveredPixels
     uint pixelCount;
+    float minDeltaE;  // maps to colormap[0] (with COMPARE_WITH_TARGET)
+    float maxDeltaE;  // maps to colormap[255]
 } dispatch;
 layout(binding = 6) uniform sampler3D environmentMap;
 
@@ -45,6 +52,28 @@ layout(std430, binding = 7) readonly buffer CoveredPixels { uvec4 coveredPixels[
 layout(std430, binding = 8) readonly buffer Points { vec4 pointData[]; };
 
 #include "SceneLighting.glsl"
+
+#ifdef COMPARE_WITH_TARGET
+// Per pixel of one image: the target's L*a*b* and its alpha.
+layout(std430, binding = 9) readonly buffer TargetLab { vec4 targetLab[]; };
+layout(std430, binding = 10) writeonly buffer DeltaE { float deltaE[]; };
+layout(std430, binding = 11) writeonly buffer Heatmap { vec4 heatmapPixels[]; };
+layout(std430, binding = 12) readonly buffer Colormap { vec4 colormap[256]; };
+#include "LinearSrgbToLab.glsl"
+#include "Ciede2000.glsl"
+
+// Pixels covered in the target and the candidate (alpha >= 0.5, core/color/Coverage.h) get
+// their ΔE00; the others -1 and a transparent heatmap, as the ΔE00 pass writes them.
+void compareWithTarget(uint index, uint pixel, vec4 candidate) {
+    vec4 target = targetLab[pixel];
+    bool covered = target.a >= 0.5 && candidate.a >= 0.5;
+    float difference = ciede2000(target.xyz, linearSrgbToLab(candidate.rgb));
+    deltaE[index] = covered ? difference : -1.0;
+    heatmapPixels[index] =
+        covered ? colormap[colormapEntry(difference, dispatch.minDeltaE, dispatch.maxDeltaE)]
+                : vec4(0.0);
+}
+#endif
 
 vec3 shade(Material material, uint point, Lighting lighting) {
     vec3 normal = pointData[3u * point].xyz;
@@ -74,6 +103,10 @@ void main() {
         vec3 extra = shade(material, pixel.y + min(i, pixel.z - 1u), lighting);
         if (i < pixel.z) radiance += extra;
     }
-    renderPixels[gl_GlobalInvocationID.y * dispatch.pixelsPerImage + pixel.x] =
-        vec4(radiance / float(pixel.z), uintBitsToFloat(pixel.w));
+    uint index = gl_GlobalInvocationID.y * dispatch.pixelsPerImage + pixel.x;
+    vec4 colour = vec4(radiance / float(pixel.z), uintBitsToFloat(pixel.w));
+    renderPixels[index] = colour;
+#ifdef COMPARE_WITH_TARGET
+    compareWithTarget(index, pixel.x, colour);
+#endif
 }

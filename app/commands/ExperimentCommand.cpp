@@ -63,8 +63,8 @@ constexpr const char* kHelp =
     "  --out DIR          output folder (default experiment-results), written to:\n"
     "                       results.csv  one row per run: preset, metric, population,\n"
     "                                    generations, seed, run, fitness, mean_de00, 12 genes\n"
-    "                       PRESET_pP_gG_METRIC.png  histogram of mean DE00 with the\n"
-    "                                    paper's perceptual bands\n"
+    "                       PRESET_pP_gG_METRIC.svg, .png  histogram of mean ΔE00 with\n"
+    "                                    the paper's perceptual bands\n"
     "                       report.json  runs completed; \"partial\": true after a stop\n"
     "  --force            replace DIR when it holds an earlier matevo output (else a folder\n"
     "                     with files is refused); DIR always holds one whole experiment\n"
@@ -201,13 +201,15 @@ void writeOrThrow(const Status& status) {
     if (!status) throw UsageError(status.error().message);
 }
 
-// One chart per metric for one preset and size, sharing their axes.
+// One chart per metric for one preset and size, sharing their axes: SVG, and PNG drawn in the
+// font the SVG names.
 void writeHistograms(std::span<const RunRecord> records, const std::string& stem,
-                     const std::filesystem::path& outDir) {
-    for (const auto& chart : metricHistogramCharts(records)) {
+                     const std::filesystem::path& outDir, const Font& font) {
+    for (const auto& chart : metricHistogramCharts(records, font)) {
         const auto file = outDir / (stem + "_" + sizeLabel(records.front().size) + "_" +
-                                    std::string(toString(chart.metric)) + ".png");
-        writeOrThrow(writeImage(chart.image, file));
+                                    std::string(toString(chart.metric)));
+        writeOrThrow(writeFileAtomically(file.string() + ".svg", chartSvg(chart.chart)));
+        writeOrThrow(writeImage(rasterizeChart(chart.chart, font), file.string() + ".png"));
     }
 }
 
@@ -238,6 +240,9 @@ void printSummaries(std::span<const RunRecord> records, std::FILE* out) {
 // Runs the experiment into the claimed folder and commits it.
 int runInto(const Request& request, OutputFolder& output) {
     const std::filesystem::path& outDir = output.staging();
+    // The charts' font, before any run: a missing font is found out at once (exit 2).
+    auto font = Font::dejaVuSans();
+    if (!font) throw UsageError(font.error().message);
 
     const auto started = std::chrono::steady_clock::now();
     std::vector<RunRecord> allRecords;
@@ -270,7 +275,7 @@ int runInto(const Request& request, OutputFolder& output) {
                 allRecords.insert(allRecords.end(), records->begin(), records->end());
                 writeOrThrow(writeFileAtomically(outDir / "results.csv", resultsCsv(allRecords)));
                 if (!records->empty())
-                    writeHistograms(*records, choice.file.stem().string(), outDir);
+                    writeHistograms(*records, choice.file.stem().string(), outDir, *font);
             }
         }
     }

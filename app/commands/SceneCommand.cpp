@@ -15,7 +15,6 @@
 #include "io/VariantFolder.h"
 #include "material/FgdTableCache.h"
 #include "mesh/MeshFile.h"
-#include "scene/EnvironmentBackdrop.h"
 #include "scene/LightingChoice.h"
 
 namespace matevo::cli {
@@ -118,11 +117,13 @@ int runScene(CommandLine& args) {
                                                   *textures, *mesh);
     if (!renderer) return failed(renderer.error());
     if (auto ok = renderer->setMaterials(materials); !ok) return failed(ok.error());
-    auto image = renderer->render(*runner, {size.width, size.height, camera, instances}, scene);
+    // Over the environment's backdrop; a PNG is exposed and tone mapped, an EXR stays linear.
+    const gpu::SceneDisplay display = lowerCaseExtension(out) == ".png"
+                                          ? gpu::SceneDisplay{exposure, *toneMap}
+                                          : gpu::SceneDisplay{0.0, ToneMap::None};
+    auto image =
+        renderer->render(*runner, {size.width, size.height, camera, instances}, scene, display);
     if (!image) return failed(image.error());
-
-    compositeOverEnvironment(*image, camera, textures->environment);
-    if (lowerCaseExtension(out) == ".png") applyExposureAndToneMap(*image, exposure, *toneMap);
     if (auto written = writeImage(*image, out); !written)
         throw UsageError("--out: " + written.error().message);
     std::printf("%zu instances of %s (%zu triangles each), %zu materials, %s lighting: %s\n",

@@ -490,16 +490,17 @@ void EditorApp::applySceneView() {
     ui::SceneView& view = state.sceneView;
     if (std::optional<SceneViewResult> result = sceneWorker_->takeResult()) {
         view.status = result->status;
-        if (result->image.width > 0) {
-            auto shown = bridge_->upload(std::span(&result->image, 1));
+        if (result->tile) {
+            // The worker's picture is already on this device: shown as it is, no copy.
+            auto shown = bridge_->show(result->tile);
             if (!shown) {
                 view.status = shown.error().message;
                 return;
             }
-            sceneImage_ = shown->front();
+            sceneImage_ = std::move(shown).value();
             view.image = sceneImage_->render();
-            view.imageWidth = result->image.width;
-            view.imageHeight = result->image.height;
+            view.imageWidth = result->tile->width;
+            view.imageHeight = result->tile->height;
             view.camera = result->camera;
             view.instances = std::move(result->instances);
         }

@@ -4,11 +4,9 @@
 #include <cstdio>
 #include <utility>
 
-#include "color/ToneMap.h"
 #include "gpu/GpuSceneRenderer.h"
 #include "material/FgdTableCache.h"
 #include "mesh/MeshFile.h"
-#include "scene/EnvironmentBackdrop.h"
 #include "scene/LightingChoice.h"
 
 namespace matevo::editor {
@@ -20,7 +18,6 @@ struct SceneViewRenderer {
     std::optional<gpu::GpuSceneRenderer> scene;
     std::string key;  // mesh, lighting and texture files of `scene`
     SceneSettings settings;
-    SceneTextures textures;
     std::size_t triangles = 0;
 };
 
@@ -97,7 +94,7 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
     if (!renderer) {
         auto runner = gpu::CommandRunner::create(device);
         if (!runner) return runner.error();
-        renderer.reset(new SceneViewRenderer{std::move(runner).value(), {}, {}, {}, {}, 0});
+        renderer.reset(new SceneViewRenderer{std::move(runner).value(), {}, {}, {}, 0});
     }
     const std::string meshName = ui::kSceneMeshes[controls.mesh];
     const std::string lighting = ui::kSceneLightings[controls.lighting];
@@ -116,7 +113,6 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
                                                    defaultFgdTables(), *textures, *mesh);
         if (!scene) return scene.error();
         renderer->scene.emplace(std::move(scene).value());
-        renderer->textures = std::move(textures).value();
         renderer->triangles = mesh->triangleCount();
         renderer->key = key;
     }
@@ -128,13 +124,19 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
                                                             : InstanceLayout::Crowd,
                                        int(job.materials.size()));
     result.camera = ui::sceneCamera(controls, result.instances);
-    auto image = renderer->scene->render(
-        renderer->runner, {controls.width, controls.height, result.camera, result.instances},
-        renderer->settings);
-    if (!image) return image.error();
-    compositeOverEnvironment(*image, result.camera, renderer->textures.environment);
-    applyExposureAndToneMap(*image, controls.exposure, ToneMap::Aces);
-    result.image = std::move(image).value();
+    auto tile = gpu::DisplayTile::create(device, controls.width, controls.height, false);
+    if (!tile) return tile.error();
+    auto commands = renderer->runner.begin();
+    if (!commands) return commands.error();
+    const gpu::SceneFrame frame{controls.width, controls.height, result.camera, result.instances};
+    if (auto recorded = renderer->scene->record(*commands, frame, renderer->settings); !recorded)
+        return recorded.error();
+    if (auto shown = renderer->scene->recordDisplay(*commands, tile->render,
+                                                    {controls.exposure, ToneMap::Aces});
+        !shown)
+        return shown.error();
+    if (auto submitted = renderer->runner.submitAndWait(); !submitted) return submitted.error();
+    result.tile = std::make_shared<const gpu::DisplayTile>(std::move(tile).value());
     const auto milliseconds =
         std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     char status[200];

@@ -1,6 +1,8 @@
 #pragma once
 // Renders the Scene window (ui/ScenePanel.h) on a worker thread with the raster scene renderer
-// (core/gpu/GpuSceneRenderer) on the window's device, so that orbiting never blocks the UI. Only the newest request
+// (core/gpu/GpuSceneRenderer) on the window's device, so that orbiting never blocks the UI. The
+// picture stays on that device: the renderer's display pass writes it into a DisplayTile that
+// the window samples, with no copy through the host. Only the newest request
 // matters: one queued while a render runs replaces any older one. The UI thread takes the
 // finished render and is woken through `onUpdate` (which must be thread-safe).
 #include <condition_variable>
@@ -14,8 +16,8 @@
 #include <vector>
 
 #include "ScenePanel.h"
-#include "common/Image.h"
 #include "gpu/Device.h"
+#include "gpu/DisplayTile.h"
 #include "io/Preset.h"
 #include "material/MaterialInstance.h"
 
@@ -31,7 +33,8 @@ struct SceneViewJob {
 };
 
 struct SceneViewResult {
-    Image image;  // tone mapped, opaque where an environment shows behind
+    // Tone mapped, opaque where an environment shows behind; null when nothing was drawn.
+    std::shared_ptr<const gpu::DisplayTile> tile;
     ui::SceneViewControls controls;
     SceneCamera camera;
     std::vector<SceneInstance> instances;

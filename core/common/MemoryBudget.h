@@ -1,60 +1,39 @@
 #pragma once
 // A bound on the memory one piece of work may take, checked up front against an estimate so
 // that large work is refused with a clear message instead of ending in the OOM killer.
-// The limit is half the machine's physical memory unless MATEVO_MEMORY_LIMIT sets it
-// (a number of bytes with an optional K, M, G or T suffix, e.g. "16G").
+// The limit is half the machine's physical memory unless the program sets another one (the
+// command line's --max-memory) before any work starts.
 #include <unistd.h>
 
-#include <cctype>
+#include <atomic>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 
+#include "common/ByteSize.h"
 #include "common/Result.h"
 
 namespace matevo {
 
+namespace detail {
+// 0 means "not set": the default below applies.
+inline std::atomic<std::uint64_t> memoryLimitSetting{0};
+}  // namespace detail
+
+inline void setMemoryLimitBytes(std::uint64_t bytes) { detail::memoryLimitSetting = bytes; }
+
 inline std::uint64_t memoryLimitBytes() {
-    if (const char* setting = std::getenv("MATEVO_MEMORY_LIMIT"); setting && *setting) {
-        char* end = nullptr;
-        const double number = std::strtod(setting, &end);
-        int shift = 0;
-        switch (std::toupper(static_cast<unsigned char>(*end))) {
-            case 'K':
-                shift = 10;
-                break;
-            case 'M':
-                shift = 20;
-                break;
-            case 'G':
-                shift = 30;
-                break;
-            case 'T':
-                shift = 40;
-                break;
-            default:
-                break;
-        }
-        if (number > 0 && number < 1e6) return std::uint64_t(number * double(1ull << shift));
-    }
+    if (const std::uint64_t setting = detail::memoryLimitSetting; setting > 0) return setting;
     const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
     if (pages > 0 && pageSize > 0) return std::uint64_t(pages) * std::uint64_t(pageSize) / 2;
     return 4ull << 30;
-}
-
-inline std::string gibibytes(std::uint64_t bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(1ull << 30));
-    return text;
 }
 
 // `what` says what would need the memory, e.g. "a.png: decoding 20000x20000 pixels".
 inline Status checkMemoryEstimate(std::uint64_t bytes, const std::string& what) {
     const std::uint64_t limit = memoryLimitBytes();
     if (bytes <= limit) return Ok{};
-    return Error{what + " needs about " + gibibytes(bytes) + " of memory, more than the limit of " +
-                 gibibytes(limit) + " (set MATEVO_MEMORY_LIMIT, e.g. 32G, to allow it)"};
+    return Error{what + " needs about " + describeBytes(bytes) + " of memory, more than the limit of " +
+                 describeBytes(limit) + " (--max-memory raises it, e.g. --max-memory 32G)"};
 }
 
 }  // namespace matevo

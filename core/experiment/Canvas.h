@@ -1,11 +1,15 @@
 #pragma once
-// Just enough 2D drawing to make charts on an Image: filled rectangles, one-pixel lines and
-// bitmap text. Colours are given as 8-bit sRGB, as a designer would pick them, and stored in the
-// Image as linear values so that writeImage encodes them back exactly.
+// Just enough 2D drawing to make charts and contact sheets: filled rectangles, one-pixel lines
+// and text in a real font. Colours are 8-bit sRGB, as a designer picks them, and translucent
+// shapes and anti-aliased text blend in that encoding, as SVG viewers blend them, so a chart's
+// PNG and SVG look alike. The result is an Image of linear values that writeImage encodes back
+// exactly.
 #include <cstdint>
 #include <string_view>
+#include <vector>
 
 #include "common/Image.h"
+#include "experiment/Font.h"
 
 namespace matevo {
 
@@ -18,24 +22,24 @@ public:
     // An opaque canvas filled with the background colour.
     Canvas(int width, int height, Srgb8 background);
 
-    int width() const { return image_.width; }
-    int height() const { return image_.height; }
+    int width() const { return width_; }
+    int height() const { return height_; }
 
     // Pixels [x0, x1) x [y0, y1), clipped to the canvas. opacity blends over what is there.
     void fillRect(int x0, int y0, int x1, int y1, Srgb8 colour, float opacity = 1.0f);
     void horizontalLine(int x0, int x1, int y, Srgb8 colour);
     void verticalLine(int x, int y0, int y1, Srgb8 colour);
-    // Top-left corner at (x, y); each font pixel becomes scale x scale pixels.
-    void drawText(int x, int y, std::string_view text, Srgb8 colour, int scale = 1);
+    // UTF-8 text whose baseline starts at (x, baseline); size in pixels per em.
+    void drawText(const Font& font, double x, double baseline, std::string_view text,
+                  double size, Srgb8 colour);
 
-    static int textWidth(std::string_view text, int scale = 1);
-    static int textHeight(int scale = 1);
-
-    const Image& image() const { return image_; }
-    Image release() && { return std::move(image_); }
+    Image release() &&;
 
 private:
-    Image image_;
+    void blend(int x, int y, Srgb8 colour, float opacity);
+
+    int width_, height_;
+    std::vector<float> encoded_;  // sRGB-encoded RGB in [0, 1], row by row
 };
 
 }  // namespace matevo

@@ -1,7 +1,6 @@
 #include "experiment/ExperimentCharts.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -12,15 +11,10 @@ namespace matevo {
 
 namespace {
 
-std::string upperCase(std::string text) {
-    for (char& character : text)
-        character = char(std::toupper(static_cast<unsigned char>(character)));
-    return text;
-}
-
 std::string subtitle(const RunSummary& summary) {
     char text[160];
-    std::snprintf(text, sizeof text, "POP %d GEN %d, %d RUNS, MEDIAN %.2f, MEAN %.2f",
+    std::snprintf(text, sizeof text,
+                  "population %d, %d generations, %d runs; median %.2f, mean %.2f ΔE00",
                   summary.size.population, summary.size.generations, summary.runs, summary.median,
                   summary.mean);
     return text;
@@ -52,7 +46,8 @@ std::vector<ChartBand> perceptualChartBands() {
     return bands;
 }
 
-std::vector<MetricChart> metricHistogramCharts(std::span<const RunRecord> records) {
+std::vector<MetricChart> metricHistogramCharts(std::span<const RunRecord> records,
+                                               const Font& font) {
     if (records.empty()) return {};
     double largest = 0;
     for (const auto& record : records) largest = std::max(largest, record.meanDeltaE00);
@@ -71,10 +66,9 @@ std::vector<MetricChart> metricHistogramCharts(std::span<const RunRecord> record
     for (std::size_t i = 0; i < summaries.size(); ++i) {
         const RunSummary& summary = summaries[i];
         const HistogramChartLabels labels{
-            upperCase(summary.preset + " - " + std::string(toString(summary.metric))),
-            subtitle(summary)};
-        charts.push_back(
-            {summary.metric, drawHistogramChart(histograms[i], bands, countAxisMax, labels)});
+            summary.preset + " – " + std::string(toString(summary.metric)), subtitle(summary)};
+        charts.push_back({summary.metric,
+                          histogramChart(histograms[i], bands, countAxisMax, labels, font)});
     }
     return charts;
 }

@@ -5,7 +5,6 @@
 #include <span>
 #include <vector>
 
-#include "common/Image.h"
 #include "evolve/GaSettings.h"
 #include "experiment/HistogramChart.h"
 #include "experiment/RunRecord.h"
@@ -17,10 +16,12 @@ std::vector<ChartBand> perceptualChartBands();
 
 struct MetricChart {
     ExperimentMetric metric = ExperimentMetric::Euclidean;
-    Image image;
+    ChartDrawing chart;
 };
 
-// records: runs of one preset and size; charts in the order the metrics first appear.
-std::vector<MetricChart> metricHistogramCharts(std::span<const RunRecord> records);
+// records: runs of one preset and size; charts in the order the metrics first appear. `font`
+// measures their text (Font::dejaVuSans()).
+std::vector<MetricChart> metricHistogramCharts(std::span<const RunRecord> records,
+                                               const Font& font);
 
 }  // namespace matevo

@@ -1,12 +1,11 @@
 #pragma once
-// A histogram of mean ΔE00 values drawn as an image with our own rasteriser: the perceptual
-// bands as tinted backgrounds with lines at their edges and short labels, the bars, both axes
-// with tick labels, and a title. Used for the PNGs of `matevo experiment` and docs/.
+// A histogram of mean ΔE00 values as a chart: the perceptual bands as tinted backgrounds with
+// lines at their edges and short labels, one bar per non-empty bin, both axes with tick labels
+// and titles, and a title. `matevo experiment` writes it as SVG and PNG (experiment/ChartDrawing.h).
 #include <span>
 #include <string>
 
-#include "common/Image.h"
-#include "experiment/Canvas.h"
+#include "experiment/ChartDrawing.h"
 #include "experiment/DeltaEHistogram.h"
 
 namespace matevo {
@@ -31,12 +30,14 @@ struct ChartPlotArea {
     int left, top, right, bottom;
 };
 inline constexpr ChartPlotArea histogramPlotArea() {
-    return {64, 64, kHistogramChartWidth - 24, kHistogramChartHeight - 52};
+    return {64, 76, kHistogramChartWidth - 24, kHistogramChartHeight - 52};
 }
 
 // countAxisMax: the count at the top of the y axis (at least the largest bin), shared by charts
-// that are meant to be compared side by side.
-Image drawHistogramChart(const DeltaEHistogram& histogram, std::span<const ChartBand> bands,
-                         int countAxisMax, const HistogramChartLabels& labels);
+// that are meant to be compared side by side. `font` measures text, so that labels which would
+// not fit or would touch are left out.
+ChartDrawing histogramChart(const DeltaEHistogram& histogram, std::span<const ChartBand> bands,
+                            int countAxisMax, const HistogramChartLabels& labels,
+                            const Font& font);
 
 }  // namespace matevo

@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/XmlText.h"
 #include "io/CompanionFiles.h"
 #include "io/ImageFile.h"
 
@@ -23,28 +24,8 @@ std::string identifier(const std::string& text, std::set<std::string>& taken) {
     return unique;
 }
 
-std::string escaped(const std::string& text) {
-    std::string result;
-    for (char c : text) {
-        switch (c) {
-            case '&': result += "&amp;"; break;
-            case '<': result += "&lt;"; break;
-            case '>': result += "&gt;"; break;
-            case '"': result += "&quot;"; break;
-            default: result += c;
-        }
-    }
-    return result;
-}
-
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
-
 std::string color(const std::array<double, 3>& value) {
-    return number(value[0]) + ", " + number(value[1]) + ", " + number(value[2]);
+    return xmlNumber(value[0]) + ", " + xmlNumber(value[1]) + ", " + xmlNumber(value[2]);
 }
 
 void writeInput(std::ostream& out, const std::string& name, const std::string& type,
@@ -65,7 +46,7 @@ std::string texturedFactor(std::ostream& out, const std::string& prefix, const s
     const std::string image = prefix + "_image", product = prefix + "_factor";
     out << "  <image name=\"" << image << "\" type=\"" << (colour ? "color3" : "vector3")
         << "\">\n";
-    out << "    <input name=\"file\" type=\"filename\" value=\"" << escaped(file) << "\""
+    out << "    <input name=\"file\" type=\"filename\" value=\"" << xmlEscaped(file) << "\""
         << (colour ? " colorspace=\"srgb_texture\"" : "") << " />\n";
     out << "  </image>\n";
     std::string source = image;
@@ -99,28 +80,28 @@ std::string materialXDocument(const std::vector<NamedGltfMaterial>& materials,
                                            color(m.baseColor));
         if (m.roughnessTextured)
             roughnessNode = texturedFactor(out, id + "_roughness", roughnessFile, false,
-                                           number(m.roughness));
+                                           xmlNumber(m.roughness));
         if (m.clearcoatRoughnessTextured)
             clearcoatRoughnessNode = texturedFactor(out, id + "_clearcoat_roughness",
                                                     roughnessFile, false,
-                                                    number(m.clearcoatRoughness));
+                                                    xmlNumber(m.clearcoatRoughness));
         const std::string shader = id + "_shader";
         out << "  <gltf_pbr name=\"" << shader << "\" type=\"surfaceshader\">\n";
         if (baseColorNode.empty())
             writeInput(out, "base_color", "color3", color(m.baseColor));
         else
             writeConnection(out, "base_color", "color3", baseColorNode);
-        writeInput(out, "metallic", "float", number(m.metallic));
+        writeInput(out, "metallic", "float", xmlNumber(m.metallic));
         if (roughnessNode.empty())
-            writeInput(out, "roughness", "float", number(m.roughness));
+            writeInput(out, "roughness", "float", xmlNumber(m.roughness));
         else
             writeConnection(out, "roughness", "float", roughnessNode);
-        writeInput(out, "specular", "float", number(m.specular));
+        writeInput(out, "specular", "float", xmlNumber(m.specular));
         writeInput(out, "specular_color", "color3", color(m.specularColor));
-        writeInput(out, "ior", "float", number(m.ior));
-        writeInput(out, "clearcoat", "float", number(m.clearcoat));
+        writeInput(out, "ior", "float", xmlNumber(m.ior));
+        writeInput(out, "clearcoat", "float", xmlNumber(m.clearcoat));
         if (clearcoatRoughnessNode.empty())
-            writeInput(out, "clearcoat_roughness", "float", number(m.clearcoatRoughness));
+            writeInput(out, "clearcoat_roughness", "float", xmlNumber(m.clearcoatRoughness));
         else
             writeConnection(out, "clearcoat_roughness", "float", clearcoatRoughnessNode);
         out << "  </gltf_pbr>\n";

@@ -19,11 +19,17 @@ struct PushConstants {
 
 }  // namespace
 
+Result<Buffer> createColormapBuffer(const Device& device, const DeltaE00Pass::Colormap& colormap) {
+    auto buffer = Buffer::create(device, sizeof(colormap), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                 MemoryUse::Upload);
+    if (!buffer) return buffer.error();
+    std::memcpy(buffer->bytes().data(), colormap.data(), sizeof(colormap));
+    return buffer;
+}
+
 Result<DeltaE00Pass> DeltaE00Pass::create(const Device& device, const Colormap& colormap) {
-    auto colormapBuffer = Buffer::create(device, sizeof(Colormap),
-                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+    auto colormapBuffer = createColormapBuffer(device, colormap);
     if (!colormapBuffer) return colormapBuffer.error();
-    std::memcpy(colormapBuffer->bytes().data(), colormap.data(), sizeof(Colormap));
 
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     auto kernel = ComputeKernel::create(device, kDeltaE00HeatmapSpirv,

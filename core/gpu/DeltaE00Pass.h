@@ -40,4 +40,7 @@ private:
     ComputeKernel kernel_;
 };
 
+// A colour map in a storage buffer, as the heatmap shaders read it (vec4 colormap[256]).
+Result<Buffer> createColormapBuffer(const Device& device, const DeltaE00Pass::Colormap& colormap);
+
 }  // namespace matevo::gpu

@@ -15,7 +15,12 @@ Result<DescriptorSet> DescriptorSet::create(const Device& device,
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
     std::vector<VkDescriptorPoolSize> poolSizes;
     for (uint32_t index = 0; index < set.bindings_.size(); ++index) {
-        layoutBindings.push_back({index, set.bindings_[index], 1, stages, nullptr});
+        // Only a fragment shader can read an input attachment.
+        const VkShaderStageFlags bindingStages =
+            set.bindings_[index] == VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT
+                ? stages & VK_SHADER_STAGE_FRAGMENT_BIT
+                : stages;
+        layoutBindings.push_back({index, set.bindings_[index], 1, bindingStages, nullptr});
         poolSizes.push_back({set.bindings_[index], 1});
     }
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -64,14 +69,19 @@ void DescriptorSet::bindBuffer(uint32_t binding, const Buffer& buffer) const {
     write(binding, &info, nullptr);
 }
 
-void DescriptorSet::bindSampledImage(uint32_t binding, VkImageView view,
-                                     VkSampler sampler) const {
+void DescriptorSet::bindSampledImage(uint32_t binding, VkImageView view, VkSampler sampler) const {
     const VkDescriptorImageInfo info{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     write(binding, nullptr, &info);
 }
 
 void DescriptorSet::bindStorageImage(uint32_t binding, VkImageView view) const {
     const VkDescriptorImageInfo info{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
+    write(binding, nullptr, &info);
+}
+
+void DescriptorSet::bindInputAttachment(uint32_t binding, VkImageView view) const {
+    const VkDescriptorImageInfo info{VK_NULL_HANDLE, view,
+                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     write(binding, nullptr, &info);
 }
 

@@ -14,7 +14,8 @@ namespace matevo::gpu {
 
 class DescriptorSet {
 public:
-    static Result<DescriptorSet> create(const Device& device, std::vector<VkDescriptorType> bindings,
+    static Result<DescriptorSet> create(const Device& device,
+                                        std::vector<VkDescriptorType> bindings,
                                         VkShaderStageFlags stages);
 
     VkDescriptorSetLayout layout() const { return layout_.get(); }
@@ -23,6 +24,7 @@ public:
     void bindBuffer(uint32_t binding, const Buffer& buffer) const;
     void bindSampledImage(uint32_t binding, VkImageView view, VkSampler sampler) const;
     void bindStorageImage(uint32_t binding, VkImageView view) const;
+    void bindInputAttachment(uint32_t binding, VkImageView view) const;
 
 private:
     void write(uint32_t binding, const VkDescriptorBufferInfo* bufferInfo,

@@ -2,7 +2,8 @@
 // What the editor's window samples: a render (linear RGBA float) and, for a candidate, its
 // ΔE00 map against the target (one float per pixel, negative where not covered), as images on
 // the window's device. A tile is written once on the GPU (GpuPopulationRenderer copies its
-// buffers in, or uploadToTiles copies host pictures in), left in SHADER_READ_ONLY_OPTIMAL with
+// buffers in, uploadToTiles copies host pictures in, or GpuSceneRenderer::recordDisplay writes
+// the Scene window's picture), left in SHADER_READ_ONLY_OPTIMAL with
 // a barrier that makes it visible to fragment shaders of later submissions, and never changed
 // afterwards: readers on other threads need no lock, only a reference that keeps it alive.
 #include <optional>

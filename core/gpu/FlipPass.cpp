@@ -42,10 +42,8 @@ std::vector<float> tapsOf(const flip::CsfKernels& csf, const flip::FeatureKernel
 }  // namespace
 
 Result<FlipPass> FlipPass::create(const Device& device, const DeltaE00Pass::Colormap& colormap) {
-    auto colormapBuffer = Buffer::create(device, sizeof(colormap),
-                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+    auto colormapBuffer = createColormapBuffer(device, colormap);
     if (!colormapBuffer) return colormapBuffer.error();
-    std::memcpy(colormapBuffer->bytes().data(), colormap.data(), sizeof(colormap));
 
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;

@@ -1,8 +1,28 @@
 #include "gpu/GpuPopulationRenderer.h"
 
+#include "color/LabImage.h"
 #include "gpu/HeatmapColormap.h"
 
 namespace matevo::gpu {
+namespace {
+
+// The image's L*a*b* and alpha per pixel, 4 floats each (the sphere render's TargetLab).
+Result<Buffer> uploadLab(const Device& device, const Image& image) {
+    const LabImage lab = toLabImage(image);
+    auto buffer = Buffer::create(device, lab.pixelCount() * 4 * sizeof(float),
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+    if (!buffer) return buffer.error();
+    std::span<float> values = buffer->as<float>();
+    for (std::size_t i = 0; i < lab.pixelCount(); ++i) {
+        values[4 * i] = lab.lightness[i];
+        values[4 * i + 1] = lab.greenRed[i];
+        values[4 * i + 2] = lab.blueYellow[i];
+        values[4 * i + 3] = image.rgba[4 * i + 3];
+    }
+    return buffer;
+}
+
+}  // namespace
 
 Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
     const Device& device, const FgdTables& tables, const SceneTextures& textures,
@@ -11,14 +31,14 @@ Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
     if (!runner) return runner.error();
     auto renderer = GpuSphereRenderer::create(device, *runner, tables, textures);
     if (!renderer) return renderer.error();
-    auto pass = DeltaE00Pass::create(device, colormap);
-    if (!pass) return pass.error();
+    auto colormapBuffer = createColormapBuffer(device, colormap);
+    if (!colormapBuffer) return colormapBuffer.error();
     std::unique_ptr<GpuPopulationRenderer> result(new GpuPopulationRenderer);
     result->device_ = &device;
     result->tables_ = &tables;
     result->runner_ = std::move(runner).value();
     result->renderer_ = std::move(renderer).value();
-    result->deltaEPass_ = std::move(pass).value();
+    result->heatmapColormap_ = std::move(colormapBuffer).value();
     return result;
 }
 
@@ -88,8 +108,11 @@ Status GpuPopulationRenderer::renderTarget(const TargetKey& key) {
         return recorded.error();
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
+    target_ = downloadImage(*buffer, shape, 0);
+    auto lab = uploadLab(*device_, target_);
+    if (!lab) return lab.error();
     targetRender_ = std::move(buffer).value();
-    target_ = downloadImage(targetRender_, shape, 0);
+    targetLab_ = std::move(lab).value();
     targetKey_ = key;
     return Ok{};
 }
@@ -119,14 +142,18 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     if (auto ready = ensureBuffers(shape, flip); !ready) return ready.error();
     auto commands = runner_.begin();
     if (!commands) return commands.error();
-    if (auto recorded = renderer_.record(*commands, candidates, scene, size, renders_); !recorded)
+    const TargetComparison comparison{&targetLab_,
+                                      &deltaE_,
+                                      &heatmaps_,
+                                      &heatmapColormap_,
+                                      float(options.heatmap.minDeltaE),
+                                      float(options.heatmap.maxDeltaE)};
+    if (auto recorded =
+            renderer_.record(*commands, candidates, scene, size, renders_, &comparison);
+        !recorded)
         return recorded.error();
-    // Also orders the target's render of an earlier submission before the pass reads it.
+    // Also orders the target's render of an earlier submission before the ꟻLIP pass reads it.
     computeWriteToComputeReadBarrier(*commands);
-    deltaEPass_.record(
-        *commands,
-        {&targetRender_, &renders_, &deltaE_, &heatmaps_, shape.pixelCount(), shape.count, 0, 0,
-         float(options.heatmap.minDeltaE), float(options.heatmap.maxDeltaE)});
     if (flip)
         if (auto recorded = flipPass_->record(
                 *commands,

@@ -62,11 +62,12 @@ private:
     const FgdTables* tables_ = nullptr;
     CommandRunner runner_;
     GpuSphereRenderer renderer_;
-    DeltaE00Pass deltaEPass_;
+    Buffer heatmapColormap_;
     std::optional<FlipPass> flipPass_;  // made when first asked for (lavapipe compiles it then)
     std::optional<TargetKey> targetKey_;
     Image target_;  // the host copy of targetRender_
     Buffer targetRender_;
+    Buffer targetLab_;  // target_ in L*a*b*, with its alpha: what each render compares with
     ImageBatchShape bufferShape_;
     Buffer renders_;
     Buffer deltaE_;

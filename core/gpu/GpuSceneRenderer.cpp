@@ -10,21 +10,25 @@
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include <shaders/kSceneRasterFragmentSpirv.h>
-#include <shaders/kSceneRasterVertexSpirv.h>
+#include <shaders/kSceneDisplaySpirv.h>
+#include <shaders/kSceneShadeFragmentSpirv.h>
+#include <shaders/kSceneShadeVertexSpirv.h>
+#include <shaders/kSceneSurfaceFragmentSpirv.h>
+#include <shaders/kSceneSurfaceVertexSpirv.h>
 
 #include "gpu/GraphicsPipeline.h"
 #include "gpu/ShaderModule.h"
 #include "gpu/VulkanError.h"
 #include "mesh/MeshSimplification.h"
+#include "scene/EnvironmentBackdrop.h"
 
 namespace matevo::gpu {
 namespace {
 
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+constexpr VkFormat kSurfaceFormat = VK_FORMAT_R32G32B32A32_UINT;  // shaders/SceneSurface.glsl
 // Screen pixels per triangle of a level of detail, counted over the instance's whole disc
-// (about half the triangles face away): smaller triangles cost lavapipe as much as these and
-// change nothing visible.
+// (about half the triangles face away): smaller triangles change nothing visible.
 constexpr double kPixelsPerTriangle = 2.0;
 
 enum Binding : uint32_t {
@@ -35,6 +39,27 @@ enum Binding : uint32_t {
     kRoughness = 4,
     kBaseColor = 5,
     kEnvironment = 6,
+    kSurfaces = 7,
+};
+
+// SceneDisplay.comp's bindings and push constants.
+enum DisplayBinding : uint32_t {
+    kDisplayRadiance = 0,
+    kDisplayFrame = 1,
+    kDisplayEnvironment = 2,
+    kDisplayTarget = 3,
+};
+
+struct DisplayConstants {
+    float exposureScale;
+    float backdropAlpha;
+    uint32_t aces;
+};
+
+enum Attachment : uint32_t {
+    kSurfaceAttachment = 0,
+    kDepthAttachment = 1,
+    kRadianceAttachment = 2
 };
 
 // std430 mirrors of the shaders' blocks.
@@ -45,10 +70,12 @@ struct GpuInstance {
 
 struct GpuFrame {
     float viewProjection[16];
+    float inverseViewProjection[16];
     float cameraPosition[4];
     float toLight[4];
     float lightRadiance[4];
     float ambient[4];  // w: environment levels
+    float viewportSize[4];
 };
 
 void store(float (&target)[4], const std::array<double, 3>& xyz, double w) {
@@ -61,91 +88,131 @@ GpuFrame toGpu(const SceneFrame& frame, const SceneSettings& scene,
     const SceneCamera& camera = frame.camera;
     const glm::dmat4 view = glm::lookAt(camera.position, camera.target, glm::dvec3(0, 1, 0));
     // Depth range [0, 1]; the near plane close enough for a camera inside the crowd.
-    glm::dmat4 projection = glm::perspectiveRH_ZO(
-        camera.fieldOfViewDegrees * std::numbers::pi / 180.0,
-        double(frame.width) / double(frame.height), 0.05, 1000.0);
+    glm::dmat4 projection =
+        glm::perspectiveRH_ZO(camera.fieldOfViewDegrees * std::numbers::pi / 180.0,
+                              double(frame.width) / double(frame.height), 0.05, 1000.0);
     projection[1][1] *= -1.0;  // Vulkan's framebuffer y points down
     const glm::mat4 viewProjection(projection * view);
+    const glm::mat4 inverseViewProjection(glm::inverse(projection * view));
     GpuFrame gpu{};
     std::memcpy(gpu.viewProjection, glm::value_ptr(viewProjection), sizeof gpu.viewProjection);
+    std::memcpy(gpu.inverseViewProjection, glm::value_ptr(inverseViewProjection),
+                sizeof gpu.inverseViewProjection);
     store(gpu.cameraPosition, {camera.position.x, camera.position.y, camera.position.z}, 1.0);
-    const glm::dvec3 toLight = glm::normalize(glm::dvec3(
-        scene.lightDirection[0], scene.lightDirection[1], scene.lightDirection[2]));
+    const glm::dvec3 toLight = glm::normalize(
+        glm::dvec3(scene.lightDirection[0], scene.lightDirection[1], scene.lightDirection[2]));
     store(gpu.toLight, {toLight.x, toLight.y, toLight.z}, 0.0);
     store(gpu.lightRadiance, scene.lightRadiance, 0.0);
     store(gpu.ambient, ambientRadiance(scene), textures.environmentLevels());
+    store(gpu.viewportSize, {double(frame.width), double(frame.height), 0.0}, 0.0);
     return gpu;
 }
 
 Result<Buffer> createFilledBuffer(const Device& device, std::span<const std::byte> bytes,
                                   VkBufferUsageFlags usage) {
-    auto buffer = Buffer::create(device, std::max<VkDeviceSize>(bytes.size(), 16), usage,
-                                 MemoryUse::Upload);
+    auto buffer =
+        Buffer::create(device, std::max<VkDeviceSize>(bytes.size(), 16), usage, MemoryUse::Upload);
     if (!buffer) return buffer;
     std::memcpy(buffer->bytes().data(), bytes.data(), bytes.size());
     return buffer;
 }
 
-// Multisampled colour and depth, resolved into a single-sample image that a transfer (or, in
-// the editor, a shader) reads after the pass.
+// Deferred shading in two subpasses. The surface subpass draws the instances with a depth
+// test and stores the nearest surface per pixel; the shading subpass shades each covered pixel
+// once into the radiance image, which a transfer (or, in the editor, a shader) reads after the
+// pass. The surfaces and the depth live only within the pass.
 Result<UniqueRenderPass> createRenderPass(VkDevice device) {
     VkAttachmentDescription attachments[3]{};
-    attachments[0].format = GpuSceneRenderer::kColorFormat;
-    attachments[0].samples = GpuSceneRenderer::kSamples;
-    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    attachments[0].finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    attachments[1] = attachments[0];
-    attachments[1].format = kDepthFormat;
-    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    attachments[2] = attachments[0];
-    attachments[2].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[2].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[2].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[2].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    VkAttachmentDescription& surfaces = attachments[kSurfaceAttachment];
+    surfaces.format = kSurfaceFormat;
+    surfaces.samples = VK_SAMPLE_COUNT_1_BIT;
+    surfaces.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    surfaces.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    surfaces.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    surfaces.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    surfaces.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    surfaces.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    VkAttachmentDescription& depth = attachments[kDepthAttachment];
+    depth = surfaces;
+    depth.format = kDepthFormat;
+    depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+    VkAttachmentDescription& radiance = attachments[kRadianceAttachment];
+    radiance = surfaces;
+    radiance.format = GpuSceneRenderer::kColorFormat;
+    radiance.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    radiance.finalLayout = VK_IMAGE_LAYOUT_GENERAL;  // copied or read by SceneDisplay.comp
 
-    const VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference depth{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference resolve{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &color;
-    subpass.pResolveAttachments = &resolve;
-    subpass.pDepthStencilAttachment = &depth;
+    const VkAttachmentReference surfaceOutput{kSurfaceAttachment,
+                                              VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    const VkAttachmentReference depthWritten{kDepthAttachment,
+                                             VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    const VkAttachmentReference surfaceInput{kSurfaceAttachment,
+                                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    const VkAttachmentReference depthRead{kDepthAttachment,
+                                          VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+    const VkAttachmentReference radianceOutput{kRadianceAttachment,
+                                               VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpasses[2]{};
+    subpasses[0].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpasses[0].colorAttachmentCount = 1;
+    subpasses[0].pColorAttachments = &surfaceOutput;
+    subpasses[0].pDepthStencilAttachment = &depthWritten;
+    subpasses[1].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpasses[1].inputAttachmentCount = 1;
+    subpasses[1].pInputAttachments = &surfaceInput;
+    subpasses[1].colorAttachmentCount = 1;
+    subpasses[1].pColorAttachments = &radianceOutput;
+    subpasses[1].pDepthStencilAttachment = &depthRead;
 
-    const VkPipelineStageFlags attachmentStages =
-        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-        VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    const VkPipelineStageFlags attachmentStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                                  VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                                  VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
     const VkAccessFlags attachmentAccess =
         VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
-    VkSubpassDependency dependencies[2]{};
-    // The previous frame's attachment writes and its read of the resolved image come first.
-    dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-    dependencies[0].dstSubpass = 0;
-    dependencies[0].srcStageMask = attachmentStages | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-    dependencies[0].srcAccessMask = attachmentAccess;
-    dependencies[0].dstStageMask = attachmentStages;
-    dependencies[0].dstAccessMask = attachmentAccess;
-    // The resolved image is read by a transfer after the pass.
-    dependencies[1].srcSubpass = 0;
-    dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-    dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-    dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    VkSubpassDependency dependencies[4]{};
+    // The previous frame's attachment writes, its input reads and its read of the radiance
+    // image come before either subpass touches an attachment.
+    for (uint32_t subpass = 0; subpass < 2; ++subpass) {
+        VkSubpassDependency& previous = dependencies[subpass];
+        previous.srcSubpass = VK_SUBPASS_EXTERNAL;
+        previous.dstSubpass = subpass;
+        previous.srcStageMask = attachmentStages | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+        previous.srcAccessMask = attachmentAccess;
+        previous.dstStageMask = attachmentStages;
+        previous.dstAccessMask = attachmentAccess;
+    }
+    // The shading subpass reads the surfaces and tests against the depth the first one wrote.
+    VkSubpassDependency& surfacesToShading = dependencies[2];
+    surfacesToShading.srcSubpass = 0;
+    surfacesToShading.dstSubpass = 1;
+    surfacesToShading.srcStageMask =
+        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    surfacesToShading.srcAccessMask =
+        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    surfacesToShading.dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                     VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    surfacesToShading.dstAccessMask =
+        VK_ACCESS_INPUT_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+    surfacesToShading.dependencyFlags = VK_DEPENDENCY_BY_REGION_BIT;
+    // The radiance image is read by a transfer or the display pass after the pass.
+    VkSubpassDependency& radianceOut = dependencies[3];
+    radianceOut.srcSubpass = 1;
+    radianceOut.dstSubpass = VK_SUBPASS_EXTERNAL;
+    radianceOut.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    radianceOut.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    radianceOut.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    radianceOut.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
     info.attachmentCount = 3;
     info.pAttachments = attachments;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 2;
+    info.subpassCount = 2;
+    info.pSubpasses = subpasses;
+    info.dependencyCount = 4;
     info.pDependencies = dependencies;
     VkRenderPass renderPass = VK_NULL_HANDLE;
     if (VkResult result = vkCreateRenderPass(device, &info, nullptr, &renderPass);
@@ -154,51 +221,52 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
     return UniqueRenderPass(device, renderPass);
 }
 
-// The fragment stage is specialised for the textures and the environment the scene has.
-Result<UniquePipeline> createPipeline(VkDevice device, VkRenderPass renderPass,
-                                      VkPipelineLayout layout,
-                                      const GpuSceneTextures& textures) {
-    const uint32_t specialization[2] = {textures.textured() ? 1u : 0u,
-                                        textures.environmentLevels() > 0 ? 1u : 0u};
-    const SpecializationConstants constants(specialization);
+Result<UniquePipeline> createSurfacePipeline(VkDevice device, VkRenderPass renderPass,
+                                             VkPipelineLayout layout) {
     const VkVertexInputAttributeDescription attributes[3] = {
         {0, 0, VK_FORMAT_R32G32B32_SFLOAT, uint32_t(offsetof(MeshVertex, position))},
         {1, 0, VK_FORMAT_R32G32B32_SFLOAT, uint32_t(offsetof(MeshVertex, normal))},
         {2, 0, VK_FORMAT_R32G32_SFLOAT, uint32_t(offsetof(MeshVertex, uv))},
     };
     GraphicsPipelineSpec spec;
-    spec.vertexSpirv = kSceneRasterVertexSpirv;
-    spec.fragmentSpirv = kSceneRasterFragmentSpirv;
-    spec.fragmentSpecialization = constants.info();
+    spec.vertexSpirv = kSceneSurfaceVertexSpirv;
+    spec.fragmentSpirv = kSceneSurfaceFragmentSpirv;
     spec.vertexBinding = {0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX};
     spec.vertexAttributes = attributes;
     // The projection's y flip keeps the mesh's counter-clockwise front faces so on screen.
     spec.cullMode = VK_CULL_MODE_BACK_BIT;
-    spec.samples = GpuSceneRenderer::kSamples;
-    spec.depthTested = true;
+    spec.depthTest = DepthTest::LessAndWrite;
     spec.layout = layout;
     spec.renderPass = renderPass;
-    spec.name = "scene";
+    spec.subpass = 0;
+    spec.name = "scene surface";
     return createGraphicsPipeline(device, spec);
 }
 
-Status requireMultisampling(const Device& device) {
-    VkPhysicalDeviceProperties properties;
-    vkGetPhysicalDeviceProperties(device.physicalDevice(), &properties);
-    const VkSampleCountFlags supported = properties.limits.framebufferColorSampleCounts &
-                                         properties.limits.framebufferDepthSampleCounts;
-    if ((supported & GpuSceneRenderer::kSamples) == 0)
-        return Error{"Vulkan: " + device.name() + " cannot render with 4x multisampling"};
-    return Ok{};
+// Specialised for the textures and the environment the scene has.
+Result<UniquePipeline> createShadingPipeline(VkDevice device, VkRenderPass renderPass,
+                                             VkPipelineLayout layout,
+                                             const GpuSceneTextures& textures) {
+    const uint32_t specialization[2] = {textures.textured() ? 1u : 0u,
+                                        textures.environmentLevels() > 0 ? 1u : 0u};
+    const SpecializationConstants constants(specialization);
+    GraphicsPipelineSpec spec;
+    spec.vertexSpirv = kSceneShadeVertexSpirv;
+    spec.fragmentSpirv = kSceneShadeFragmentSpirv;
+    spec.fragmentSpecialization = constants.info();
+    spec.depthTest = DepthTest::GreaterReadOnly;
+    spec.layout = layout;
+    spec.renderPass = renderPass;
+    spec.subpass = 1;
+    spec.name = "scene shading";
+    return createGraphicsPipeline(device, spec);
 }
 
 }  // namespace
 
 Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandRunner& runner,
                                                   const FgdTables& tables,
-                                                  const SceneTextures& textures,
-                                                  const Mesh& mesh) {
-    if (auto ok = requireMultisampling(device); !ok) return ok.error();
+                                                  const SceneTextures& textures, const Mesh& mesh) {
     const VkDevice vkDevice = device.handle();
     GpuSceneRenderer renderer;
     renderer.device_ = &device;
@@ -231,9 +299,11 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
 
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    auto descriptors = DescriptorSet::create(
-        device, {storage, storage, storage, storage, sampled, sampled, sampled},
-        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+    auto descriptors =
+        DescriptorSet::create(device,
+                              {storage, storage, storage, storage, sampled, sampled, sampled,
+                               VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT},
+                              VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
     if (!descriptors) return descriptors.error();
     renderer.descriptors_ = std::move(descriptors).value();
     renderer.descriptors_.bindBuffer(kFrame, renderer.frameBuffer_);
@@ -251,10 +321,24 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
         result != VK_SUCCESS)
         return vulkanError("creating a pipeline layout", result);
     renderer.pipelineLayout_ = UniquePipelineLayout(vkDevice, pipelineLayout);
-    auto pipeline = createPipeline(vkDevice, renderer.renderPass_.get(), pipelineLayout,
-                                   renderer.textures_);
-    if (!pipeline) return pipeline.error();
-    renderer.pipeline_ = std::move(pipeline).value();
+    auto surfacePipeline =
+        createSurfacePipeline(vkDevice, renderer.renderPass_.get(), pipelineLayout);
+    if (!surfacePipeline) return surfacePipeline.error();
+    renderer.surfacePipeline_ = std::move(surfacePipeline).value();
+    auto shadingPipeline = createShadingPipeline(vkDevice, renderer.renderPass_.get(),
+                                                 pipelineLayout, renderer.textures_);
+    if (!shadingPipeline) return shadingPipeline.error();
+    renderer.shadingPipeline_ = std::move(shadingPipeline).value();
+
+    const uint32_t environmentLit = renderer.textures_.environmentLevels() > 0 ? 1u : 0u;
+    auto displayKernel = ComputeKernel::create(
+        device, kSceneDisplaySpirv,
+        {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, storage, sampled, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+        sizeof(DisplayConstants), std::span(&environmentLit, 1));
+    if (!displayKernel) return displayKernel.error();
+    renderer.displayKernel_ = std::move(displayKernel).value();
+    renderer.displayKernel_.bindBuffer(kDisplayFrame, renderer.frameBuffer_);
+    renderer.textures_.bindEnvironment(renderer.displayKernel_.descriptors(), kDisplayEnvironment);
     return renderer;
 }
 
@@ -271,28 +355,31 @@ Status GpuSceneRenderer::setMaterials(std::span<const MaterialInstance> material
 Status GpuSceneRenderer::prepareTarget(int width, int height) {
     if (width == width_ && height == height_) return Ok{};
     const VkExtent3D extent{uint32_t(width), uint32_t(height), 1};
-    GpuImageSpec colorSpec;
-    colorSpec.format = kColorFormat;
-    colorSpec.extent = extent;
-    colorSpec.samples = kSamples;
-    colorSpec.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
-    GpuImageSpec depthSpec = colorSpec;
+    GpuImageSpec surfaceSpec;
+    surfaceSpec.format = kSurfaceFormat;
+    surfaceSpec.extent = extent;
+    surfaceSpec.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT |
+                        VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+    GpuImageSpec depthSpec = surfaceSpec;
     depthSpec.format = kDepthFormat;
     depthSpec.usage =
         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
     depthSpec.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-    GpuImageSpec resolvedSpec = colorSpec;
-    resolvedSpec.samples = VK_SAMPLE_COUNT_1_BIT;
-    resolvedSpec.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                         VK_IMAGE_USAGE_SAMPLED_BIT;
-    auto color = GpuImage::create(*device_, colorSpec);
-    if (!color) return color.error();
+    GpuImageSpec radianceSpec = surfaceSpec;
+    radianceSpec.format = kColorFormat;
+    radianceSpec.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                         VK_IMAGE_USAGE_STORAGE_BIT;
+    auto surfaces = GpuImage::create(*device_, surfaceSpec);
+    if (!surfaces) return surfaces.error();
     auto depth = GpuImage::create(*device_, depthSpec);
     if (!depth) return depth.error();
-    auto resolved = GpuImage::create(*device_, resolvedSpec);
-    if (!resolved) return resolved.error();
+    auto radiance = GpuImage::create(*device_, radianceSpec);
+    if (!radiance) return radiance.error();
 
-    const VkImageView views[3] = {color->view(), depth->view(), resolved->view()};
+    VkImageView views[3];
+    views[kSurfaceAttachment] = surfaces->view();
+    views[kDepthAttachment] = depth->view();
+    views[kRadianceAttachment] = radiance->view();
     VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     info.renderPass = renderPass_.get();
     info.attachmentCount = 3;
@@ -305,9 +392,11 @@ Status GpuSceneRenderer::prepareTarget(int width, int height) {
         result != VK_SUCCESS)
         return vulkanError("creating a framebuffer", result);
     framebuffer_ = UniqueFramebuffer(device_->handle(), framebuffer);
-    color_ = std::move(color).value();
+    surfaces_ = std::move(surfaces).value();
     depth_ = std::move(depth).value();
-    resolved_ = std::move(resolved).value();
+    radiance_ = std::move(radiance).value();
+    descriptors_.bindInputAttachment(kSurfaces, surfaces_.view());
+    displayKernel_.bindStorageImage(kDisplayRadiance, radiance_.view());
     width_ = width;
     height_ = height;
     return Ok{};
@@ -358,8 +447,8 @@ Status GpuSceneRenderer::prepareInstances(const SceneFrame& frame) {
     }
     const VkDeviceSize bytes = gpuInstances.size() * sizeof(GpuInstance);
     if (instances_.size() < bytes) {
-        auto grown = Buffer::create(*device_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                    MemoryUse::Upload);
+        auto grown =
+            Buffer::create(*device_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
         if (!grown) return grown.error();
         instances_ = std::move(grown).value();
         descriptors_.bindBuffer(kInstances, instances_);
@@ -377,8 +466,8 @@ Status GpuSceneRenderer::record(VkCommandBuffer commands, const SceneFrame& fram
     const GpuFrame gpuFrame = toGpu(frame, scene, textures_);
     std::memcpy(frameBuffer_.bytes().data(), &gpuFrame, sizeof gpuFrame);
 
-    VkClearValue clears[3]{};
-    clears[1].depthStencil = {1.0f, 0};
+    VkClearValue clears[3]{};  // surfaces 0: background
+    clears[kDepthAttachment].depthStencil = {1.0f, 0};
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = renderPass_.get();
     begin.framebuffer = framebuffer_.get();
@@ -389,7 +478,7 @@ Status GpuSceneRenderer::record(VkCommandBuffer commands, const SceneFrame& fram
     const VkViewport viewport{0.0f, 0.0f, float(frame.width), float(frame.height), 0.0f, 1.0f};
     vkCmdSetViewport(commands, 0, 1, &viewport);
     vkCmdSetScissor(commands, 0, 1, &begin.renderArea);
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, surfacePipeline_.get());
     const VkDescriptorSet set = descriptors_.handle();
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_.get(), 0, 1,
                             &set, 0, nullptr);
@@ -401,27 +490,75 @@ Status GpuSceneRenderer::record(VkCommandBuffer commands, const SceneFrame& fram
     for (std::size_t level = 0; level < levels_.size(); ++level) {
         if (levelInstances_[level] > 0)
             vkCmdDrawIndexed(commands, levels_[level].indexCount, levelInstances_[level],
-                             levels_[level].firstIndex, levels_[level].vertexOffset,
-                             firstInstance);
+                             levels_[level].firstIndex, levels_[level].vertexOffset, firstInstance);
         firstInstance += levelInstances_[level];
     }
+    vkCmdNextSubpass(commands, VK_SUBPASS_CONTENTS_INLINE);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, shadingPipeline_.get());
+    vkCmdDraw(commands, 3, 1, 0, 0);  // the full-screen triangle
     vkCmdEndRenderPass(commands);
     return Ok{};
 }
 
+Status GpuSceneRenderer::recordDisplay(VkCommandBuffer commands, const GpuImage& target,
+                                       const SceneDisplay& display) {
+    const VkExtent3D extent = target.spec().extent;
+    if (int(extent.width) != width_ || int(extent.height) != height_)
+        return Error{"the scene display image is not the frame's size"};
+    displayKernel_.bindStorageImage(kDisplayTarget, target.view());
+    transitionImage(commands, target.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_SHADER_WRITE_BIT);
+    const DisplayConstants constants{float(std::exp2(display.exposureStops)),
+                                     float(kBackdropBlurAlpha),
+                                     display.toneMap == ToneMap::Aces ? 1u : 0u};
+    displayKernel_.record(commands, &constants, (extent.width + 7) / 8, (extent.height + 7) / 8, 1);
+    transitionImage(commands, target.handle(), VK_IMAGE_LAYOUT_GENERAL,
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_SHADER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+    return Ok{};
+}
+
 Result<Image> GpuSceneRenderer::render(CommandRunner& runner, const SceneFrame& frame,
-                                       const SceneSettings& scene) {
-    const VkDeviceSize bytes = VkDeviceSize(frame.width) * VkDeviceSize(frame.height) * 8;
-    auto readback = Buffer::create(*device_, std::max<VkDeviceSize>(bytes, 8),
+                                       const SceneSettings& scene,
+                                       std::optional<SceneDisplay> display) {
+    // Linear radiance is RGBA16F, the displayed picture RGBA32F.
+    const VkDeviceSize bytesPerPixel = display ? 16 : 8;
+    const VkDeviceSize bytes =
+        VkDeviceSize(frame.width) * VkDeviceSize(frame.height) * bytesPerPixel;
+    auto readback = Buffer::create(*device_, std::max<VkDeviceSize>(bytes, bytesPerPixel),
                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
     if (!readback) return readback.error();
     auto commands = runner.begin();
     if (!commands) return commands.error();
     if (auto recorded = record(*commands, frame, scene); !recorded) return recorded.error();
+    VkImage source = radiance_.handle();
+    std::optional<GpuImage> displayed;
+    if (!display) {
+        transitionImage(*commands, source, VK_IMAGE_LAYOUT_GENERAL,
+                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    } else {
+        GpuImageSpec spec;
+        spec.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+        spec.extent = {uint32_t(frame.width), uint32_t(frame.height), 1};
+        spec.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        auto created = GpuImage::create(*device_, spec);
+        if (!created) return created.error();
+        displayed = std::move(created).value();
+        if (auto ok = recordDisplay(*commands, *displayed, *display); !ok) return ok.error();
+        transitionImage(*commands, displayed->handle(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        source = displayed->handle();
+    }
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {uint32_t(frame.width), uint32_t(frame.height), 1};
-    vkCmdCopyImageToBuffer(*commands, resolved_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+    vkCmdCopyImageToBuffer(*commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            readback->handle(), 1, &region);
     VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -430,15 +567,16 @@ Result<Image> GpuSceneRenderer::render(CommandRunner& runner, const SceneFrame& 
                          1, &toHost, 0, nullptr, 0, nullptr);
     if (auto submitted = runner.submitAndWait(); !submitted) return submitted.error();
 
-    // The resolve averaged (radiance, 1) over covered samples and (0, 0) elsewhere: colour is
-    // premultiplied by coverage; divide it out for straight alpha like the sphere renderers.
     Image image(frame.width, frame.height);
-    const auto halves = readback->as<const uint16_t>();
-    for (std::size_t i = 0; i < image.pixelCount(); ++i) {
-        float* pixel = &image.rgba[4 * i];
-        for (int c = 0; c < 4; ++c) pixel[c] = glm::unpackHalf1x16(halves[4 * i + std::size_t(c)]);
-        if (pixel[3] > 0.0f)
-            for (int c = 0; c < 3; ++c) pixel[c] /= pixel[3];
+    if (display) {
+        const auto floats = readback->as<const float>();
+        std::copy(floats.begin(), floats.begin() + std::ptrdiff_t(image.rgba.size()),
+                  image.rgba.begin());
+    } else {
+        // (radiance, 1) where a surface was drawn, (0, 0) elsewhere.
+        const auto halves = readback->as<const uint16_t>();
+        for (std::size_t i = 0; i < image.rgba.size(); ++i)
+            image.rgba[i] = glm::unpackHalf1x16(halves[i]);
     }
     return image;
 }

@@ -94,6 +94,11 @@ void GpuSceneTextures::bind(const DescriptorSet& set, uint32_t roughnessBinding,
                             uint32_t baseColorBinding, uint32_t environmentBinding) const {
     set.bindSampledImage(roughnessBinding, roughness_.view(), sampler_.get());
     set.bindSampledImage(baseColorBinding, baseColor_.view(), sampler_.get());
+    bindEnvironment(set, environmentBinding);
+}
+
+void GpuSceneTextures::bindEnvironment(const DescriptorSet& set,
+                                       uint32_t environmentBinding) const {
     set.bindSampledImage(environmentBinding, environment_.view(), sampler_.get());
 }
 

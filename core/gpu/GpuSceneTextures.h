@@ -24,6 +24,7 @@ public:
 
     void bind(const DescriptorSet& set, uint32_t roughnessBinding, uint32_t baseColorBinding,
               uint32_t environmentBinding) const;
+    void bindEnvironment(const DescriptorSet& set, uint32_t environmentBinding) const;
 
 private:
     bool textured_ = false;

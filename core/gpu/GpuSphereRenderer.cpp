@@ -2,9 +2,11 @@
 
 #include <cstring>
 #include <tuple>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
+#include <shaders/kSphereRenderComparedSpirv.h>
 #include <shaders/kSphereRenderSpirv.h>
 
 #include "gpu/VulkanError.h"
@@ -27,6 +29,8 @@ struct PushConstants {
     uint32_t pixelsPerImage;
     uint32_t firstPixel;
     uint32_t pixelCount;
+    float minDeltaE;
+    float maxDeltaE;
 };
 
 void store(float (&target)[4], const std::array<double, 3>& xyz, double w) {
@@ -60,29 +64,36 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
 
     renderer.textures_ = std::move(uploaded).value();
     renderer.sceneBuffer_ = std::move(sceneBuffer).value();
-    // One pipeline for the pixels of one point, one for the silhouette's of several.
-    for (int maxPoints : {1, kMaxPointsPerPixel}) {
-        const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-        const uint32_t specialization[] = {renderer.textures_.textured() ? 1u : 0u,
-                                           renderer.textures_.environmentLevels() > 0 ? 1u : 0u,
-                                           uint32_t(maxPoints)};
-        auto kernel = ComputeKernel::create(
-            device, kSphereRenderSpirv,
-            {storage, storage, sampled, sampled, storage, storage, sampled, storage, storage},
-            sizeof(PushConstants), specialization);
-        if (!kernel) return kernel.error();
-        renderer.textures_.bind(kernel->descriptors(), 2, 3, 6);
-        kernel->bindBuffer(4, renderer.sceneBuffer_);
-        (maxPoints == 1 ? renderer.kernel_ : renderer.silhouetteKernel_) =
-            std::move(kernel).value();
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    for (bool compared : {false, true}) {
+        std::vector<VkDescriptorType> bindings = {storage, storage, sampled, sampled, storage,
+                                                  storage, sampled, storage, storage};
+        // The target's L*a*b*, the ΔE00 maps, the heatmaps and the colour map.
+        if (compared) bindings.insert(bindings.end(), {storage, storage, storage, storage});
+        // One pipeline for the pixels of one point, one for the silhouette's of several.
+        for (bool silhouette : {false, true}) {
+            const uint32_t specialization[] = {
+                renderer.textures_.textured() ? 1u : 0u,
+                renderer.textures_.environmentLevels() > 0 ? 1u : 0u,
+                uint32_t(silhouette ? kMaxPointsPerPixel : 1)};
+            auto kernel = ComputeKernel::create(
+                device, compared ? std::span<const uint32_t>(kSphereRenderComparedSpirv)
+                                 : std::span<const uint32_t>(kSphereRenderSpirv),
+                bindings, sizeof(PushConstants), specialization);
+            if (!kernel) return kernel.error();
+            renderer.textures_.bind(kernel->descriptors(), 2, 3, 6);
+            kernel->bindBuffer(4, renderer.sceneBuffer_);
+            renderer.kernels_[compared][silhouette] = std::move(kernel).value();
+        }
     }
     return renderer;
 }
 
 Status GpuSphereRenderer::record(VkCommandBuffer commands,
                                  std::span<const MaterialInstance> materials,
-                                 const SceneSettings& scene, int size, const Buffer& renders) {
+                                 const SceneSettings& scene, int size, const Buffer& renders,
+                                 const TargetComparison* comparison) {
     if (auto uploaded = materials_.upload(*device_, *tables_, materials); !uploaded)
         return uploaded.error();
     if (auto prepared = samples_.prepare(*device_, scene, size); !prepared)
@@ -93,19 +104,32 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
     const ImageBatchShape shape{size, size, uint32_t(materials.size())};
     // The shader writes covered pixels only.
     recordClear(commands, renders, shape, 4, 0.0f);
+    if (comparison) {
+        recordClear(commands, *comparison->deltaE, shape, 1, -1.0f);
+        recordClear(commands, *comparison->heatmaps, shape, 4, 0.0f);
+    }
     const uint32_t singlePoint = samples_.singlePointPixels();
     const uint32_t silhouette = samples_.coveredPixels() - singlePoint;
-    for (auto [kernel, first, count] : {std::tuple{&kernel_, 0u, singlePoint},
-                                        std::tuple{&silhouetteKernel_, singlePoint, silhouette}}) {
-        kernel->bindBuffer(0, materials_.materials());
-        kernel->bindBuffer(1, renders);
-        kernel->bindBuffer(5, materials_.lobeEntries());
-        kernel->bindBuffer(7, samples_.pixels());
-        kernel->bindBuffer(8, samples_.points());
-        const PushConstants constants{shape.pixelCount(), first, count};
+    for (auto [silhouettePixels, first, count] :
+         {std::tuple{false, 0u, singlePoint}, std::tuple{true, singlePoint, silhouette}}) {
+        const ComputeKernel& kernel = kernels_[comparison != nullptr][silhouettePixels];
+        kernel.bindBuffer(0, materials_.materials());
+        kernel.bindBuffer(1, renders);
+        kernel.bindBuffer(5, materials_.lobeEntries());
+        kernel.bindBuffer(7, samples_.pixels());
+        kernel.bindBuffer(8, samples_.points());
+        PushConstants constants{shape.pixelCount(), first, count, 0.0f, 0.0f};
+        if (comparison) {
+            kernel.bindBuffer(9, *comparison->targetLab);
+            kernel.bindBuffer(10, *comparison->deltaE);
+            kernel.bindBuffer(11, *comparison->heatmaps);
+            kernel.bindBuffer(12, *comparison->colormap);
+            constants.minDeltaE = comparison->minDeltaE;
+            constants.maxDeltaE = comparison->maxDeltaE;
+        }
         if (count > 0)
-            kernel->record(commands, &constants, (count + kWorkgroupSize - 1) / kWorkgroupSize,
-                           shape.count, 1);
+            kernel.record(commands, &constants, (count + kWorkgroupSize - 1) / kWorkgroupSize,
+                          shape.count, 1);
     }
     return Ok{};
 }

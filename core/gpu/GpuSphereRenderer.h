@@ -23,6 +23,17 @@
 
 namespace matevo::gpu {
 
+// What a render compares each candidate with as it shades it (the ΔE00 pass's output, fused
+// into the render): buffers in ImageBatch layout of the render's shape.
+struct TargetComparison {
+    const Buffer* targetLab = nullptr;  // per pixel of one image: L*, a*, b*, alpha (4 floats)
+    const Buffer* deltaE = nullptr;     // 1 float per pixel, -1 where not covered in both
+    const Buffer* heatmaps = nullptr;   // RGBA per pixel, transparent where not covered in both
+    const Buffer* colormap = nullptr;   // 256 linear RGBA entries
+    float minDeltaE = 0.0f;             // maps to the first colormap entry
+    float maxDeltaE = 10.0f;            // maps to the last
+};
+
 class GpuSphereRenderer {
 public:
     // `tables` must outlive the renderer (the process-wide defaultFgdTables() does).
@@ -32,8 +43,10 @@ public:
     // Records the render of `materials` at size x size into `renders` (ImageBatch layout,
     // materials.size() images). Uploads the materials' lobe tables and the scene into buffers
     // it keeps, so the caller must wait for the submission before recording again.
+    // With a comparison it also writes the ΔE00 maps and heatmaps against the target.
     Status record(VkCommandBuffer commands, std::span<const MaterialInstance> materials,
-                  const SceneSettings& scene, int size, const Buffer& renders);
+                  const SceneSettings& scene, int size, const Buffer& renders,
+                  const TargetComparison* comparison = nullptr);
 
     // One submission: renders every material and reads the images back.
     Result<std::vector<Image>> render(CommandRunner& runner,
@@ -47,8 +60,9 @@ private:
     Buffer sceneBuffer_;
     GpuMaterialTables materials_;
     GpuSphereSamples samples_;
-    ComputeKernel kernel_;            // pixels shaded at one point
-    ComputeKernel silhouetteKernel_;  // the silhouette's pixels of several points
+    // [compared with a target][silhouette]: pixels shaded at one point, or the silhouette's
+    // pixels of several points; rendered only, or also compared with a target.
+    ComputeKernel kernels_[2][2];
 };
 
 }  // namespace matevo::gpu

@@ -41,14 +41,15 @@ Result<UniquePipeline> createGraphicsPipeline(VkDevice device, const GraphicsPip
 
     VkPipelineVertexInputStateCreateInfo vertexInput{
         VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    vertexInput.vertexBindingDescriptionCount = 1;
+    vertexInput.vertexBindingDescriptionCount = spec.vertexAttributes.empty() ? 0 : 1;
     vertexInput.pVertexBindingDescriptions = &spec.vertexBinding;
     vertexInput.vertexAttributeDescriptionCount = uint32_t(spec.vertexAttributes.size());
     vertexInput.pVertexAttributeDescriptions = spec.vertexAttributes.data();
     VkPipelineInputAssemblyStateCreateInfo inputAssembly{
         VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     inputAssembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    VkPipelineViewportStateCreateInfo viewport{
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport.viewportCount = 1;
     viewport.scissorCount = 1;
     VkPipelineRasterizationStateCreateInfo rasterization{
@@ -62,11 +63,14 @@ Result<UniquePipeline> createGraphicsPipeline(VkDevice device, const GraphicsPip
     multisample.rasterizationSamples = spec.samples;
     VkPipelineDepthStencilStateCreateInfo depthStencil{
         VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depthStencil.depthTestEnable = spec.depthTested ? VK_TRUE : VK_FALSE;
-    depthStencil.depthWriteEnable = spec.depthTested ? VK_TRUE : VK_FALSE;
-    depthStencil.depthCompareOp = VK_COMPARE_OP_LESS;
+    depthStencil.depthTestEnable = spec.depthTest != DepthTest::None ? VK_TRUE : VK_FALSE;
+    depthStencil.depthWriteEnable = spec.depthTest == DepthTest::LessAndWrite ? VK_TRUE : VK_FALSE;
+    depthStencil.depthCompareOp = spec.depthTest == DepthTest::GreaterReadOnly
+                                      ? VK_COMPARE_OP_GREATER
+                                      : VK_COMPARE_OP_LESS;
     const VkPipelineColorBlendAttachmentState blendAttachment = colorBlending(spec.alphaBlended);
-    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    VkPipelineColorBlendStateCreateInfo blend{
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blend.attachmentCount = 1;
     blend.pAttachments = &blendAttachment;
     const VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
@@ -87,6 +91,7 @@ Result<UniquePipeline> createGraphicsPipeline(VkDevice device, const GraphicsPip
     info.pDynamicState = &dynamic;
     info.layout = spec.layout;
     info.renderPass = spec.renderPass;
+    info.subpass = spec.subpass;
     VkPipeline pipeline = VK_NULL_HANDLE;
     if (VkResult result =
             vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);

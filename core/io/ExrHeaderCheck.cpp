@@ -1,9 +1,12 @@
 #include "io/ExrHeaderCheck.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
 #include <utility>
+
+#include "common/MemoryBudget.h"
 
 namespace matevo {
 namespace {
@@ -44,6 +47,35 @@ constexpr std::array<std::pair<const char*, std::size_t>, 26> kFixedSizeTypes{{
     {"chlist", 0},   // channels until an empty name, walked below
 }};
 
+// What OpenEXR sizes its block buffers by, from one header.
+struct BlockLayout {
+    std::int64_t width = 0;                   // of the data window
+    int compression = 0;                      // OpenEXR's Compression enum
+    std::int64_t tileWidth = 0, tileHeight = 0;  // 0 for scan-line files
+    std::uint64_t bytesPerPixel = 0;          // summed over the channels
+};
+
+// Rows per compressed block of a scan-line file: NONE, RLE, ZIPS, ZIP, PIZ, PXR24, B44, B44A,
+// DWAA, DWAB; an unknown method is refused by OpenEXR itself.
+std::int64_t rowsPerBlock(int compression) {
+    constexpr std::int64_t kRows[] = {1, 1, 1, 16, 32, 16, 32, 32, 32, 256};
+    return compression >= 0 && compression < 10 ? kRows[compression] : 1;
+}
+
+// OpenEXR allocates a block's uncompressed and compressed buffers when it opens the file,
+// before any pixel is read, whatever the image's height: a file of a few hundred bytes
+// claiming a data window a million pixels wide would make it allocate hundreds of MiB.
+Status checkBlockMemory(const BlockLayout& layout) {
+    const bool tiled = layout.tileWidth > 0 && layout.tileHeight > 0;
+    const std::int64_t width = tiled ? layout.tileWidth : layout.width;
+    const std::int64_t rows = tiled ? layout.tileHeight : rowsPerBlock(layout.compression);
+    if (width <= 0 || rows <= 0) return Ok{};
+    const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(rows) *
+                                std::max<std::uint64_t>(layout.bytesPerPixel, 1) * 2;
+    return checkMemoryEstimate(bytes, "its blocks of " + std::to_string(width) + "x" +
+                                          std::to_string(rows) + " pixels");
+}
+
 std::uint32_t readUint32(std::string_view bytes, std::size_t at) {
     std::uint32_t value = 0;
     for (int i = 3; i >= 0; --i)
@@ -69,7 +101,7 @@ Error overrun(const std::string& name, std::uint64_t claimed, std::size_t left) 
 // Advances `at` past the value of attribute `name` of `type` as OpenEXR reads it, refusing any
 // value (or any part OpenEXR allocates for) that reaches past the end of the file.
 Status skipValue(std::string_view bytes, std::size_t& at, const std::string& name,
-                 const std::string& type, std::uint32_t declared) {
+                 const std::string& type, std::uint32_t declared, BlockLayout& layout) {
     const std::size_t left = bytes.size() - at;
     for (const auto& [fixedType, size] : kFixedSizeTypes) {
         if (type != fixedType) continue;
@@ -80,6 +112,8 @@ Status skipValue(std::string_view bytes, std::size_t& at, const std::string& nam
                 if (channel->empty()) return Ok{};
                 if (bytes.size() - at < kChannelBytes)
                     return Error{"header channel '" + *channel + "' is cut short"};
+                if (name == "channels")  // UINT and FLOAT samples take 4 bytes, HALF 2
+                    layout.bytesPerPixel += readUint32(bytes, at) == 1 ? 2 : 4;
                 at += kChannelBytes;
             }
         }
@@ -88,6 +122,17 @@ Status skipValue(std::string_view bytes, std::size_t& at, const std::string& nam
         if (type == "preview")
             total += std::uint64_t(readUint32(bytes, at)) * readUint32(bytes, at + 4) * 4;
         if (total > left) return overrun(name, total, left);
+        const auto signedAt = [&](std::size_t offset) {
+            return std::int64_t(std::int32_t(readUint32(bytes, at + offset)));
+        };
+        if (name == "dataWindow" && type == "box2i") {
+            layout.width = signedAt(8) - signedAt(0) + 1;
+        } else if (name == "compression") {
+            layout.compression = static_cast<unsigned char>(bytes[at]);
+        } else if (name == "tiles" && type == "tiledesc") {
+            layout.tileWidth = std::int64_t(readUint32(bytes, at));
+            layout.tileHeight = std::int64_t(readUint32(bytes, at + 4));
+        }
         at += std::size_t(total);
         return Ok{};
     }
@@ -111,6 +156,7 @@ Status checkExrHeaders(std::string_view bytes) {
     std::size_t at = 8;
     while (true) {
         // One header: attributes until a NUL byte.
+        BlockLayout layout;
         while (true) {
             if (at >= bytes.size()) return Error{"the header ends before its end marker"};
             if (bytes[at] == '\0') {
@@ -124,9 +170,10 @@ Status checkExrHeaders(std::string_view bytes) {
             if (bytes.size() - at < 4) return Error{"header attribute '" + *name + "' has no size"};
             const std::uint32_t declared = readUint32(bytes, at);
             at += 4;
-            if (auto skipped = skipValue(bytes, at, *name, *type, declared); !skipped)
+            if (auto skipped = skipValue(bytes, at, *name, *type, declared, layout); !skipped)
                 return skipped;
         }
+        if (auto fits = checkBlockMemory(layout); !fits) return fits;
         // A multi-part file lists its headers until an empty one.
         if (!multiPart) return Ok{};
         if (at >= bytes.size()) return Error{"the header list ends before its end marker"};

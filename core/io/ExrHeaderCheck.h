@@ -4,7 +4,9 @@
 // bytes can make it allocate and fill up to 2 GiB (found by tests/fuzz/FuzzImage.cpp). Here
 // the attributes are walked as OpenEXR reads them (known types by their own size, whatever the
 // file declares) and each must fit in the bytes that follow it, so what OpenEXR allocates for
-// headers is bounded by the file's size.
+// headers is bounded by the file's size. OpenEXR also allocates the buffers of one block of
+// pixels on opening, sized by the data window, the compression and the tiles the header claims:
+// those are checked against the memory limit (common/MemoryBudget.h).
 #include <string>
 #include <string_view>
 

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "common/ByteSize.h"
 #include "common/ShortText.h"
 
 namespace matevo {
@@ -23,10 +24,6 @@ std::string kindOf(mode_t mode) {
     if (S_ISCHR(mode) || S_ISBLK(mode)) return "it is a device";
     if (S_ISSOCK(mode)) return "it is a socket";
     return "it is not a regular file";
-}
-
-std::string mebibytes(std::uintmax_t bytes) {
-    return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
 }
 
 // Closes the descriptor on every path out.
@@ -55,8 +52,8 @@ Result<std::string> readInputFile(const std::filesystem::path& file, std::uintma
         return cannotRead(file, kindOf(status.st_mode) + ", not a regular file");
     const auto size = std::uintmax_t(status.st_size);
     if (size > maxBytes)
-        return cannotRead(file, "it is " + mebibytes(size) + ", more than the limit of " +
-                                    mebibytes(maxBytes) + " for this kind of file");
+        return cannotRead(file, "it is " + describeBytes(size) + ", more than the limit of " +
+                                    describeBytes(maxBytes) + " for this kind of file");
 
     // Read to the end, not just st_size bytes: the file may grow or shrink meanwhile; the
     // limit still holds.
@@ -66,7 +63,7 @@ Result<std::string> readInputFile(const std::filesystem::path& file, std::uintma
     for (;;) {
         if (filled == bytes.size()) {
             if (bytes.size() > maxBytes)
-                return cannotRead(file, "it grew past the limit of " + mebibytes(maxBytes));
+                return cannotRead(file, "it grew past the limit of " + describeBytes(maxBytes));
             bytes.resize(bytes.size() + 4096);
         }
         const ssize_t got = ::read(input.fd, bytes.data() + filled, bytes.size() - filled);
@@ -77,7 +74,7 @@ Result<std::string> readInputFile(const std::filesystem::path& file, std::uintma
     }
     bytes.resize(filled);
     if (filled > maxBytes)
-        return cannotRead(file, "it grew past the limit of " + mebibytes(maxBytes));
+        return cannotRead(file, "it grew past the limit of " + describeBytes(maxBytes));
     return bytes;
 }
 

@@ -9,7 +9,10 @@
 
 namespace matevo {
 
+constexpr double kBackdropBlurAlpha = 0.03;
+
 void compositeOverEnvironment(Image& image, const SceneCamera& camera,
-                              const PrefilteredEnvironment& environment, double blurAlpha = 0.03);
+                              const PrefilteredEnvironment& environment,
+                              double blurAlpha = kBackdropBlurAlpha);
 
 }  // namespace matevo

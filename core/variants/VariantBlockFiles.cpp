@@ -140,7 +140,9 @@ Status writeVariantBlock(const std::filesystem::path& dir, const MaterialFile& t
     if (error)
         return Error{"cannot create folder '" + sheet.parent_path().string() + "' (" +
                      error.message() + ")"};
-    return writeImage(contactSheet(set, first, count), sheet);
+    auto image = contactSheet(set, first, count);
+    if (!image) return image.error();
+    return writeImage(*image, sheet);
 }
 
 }  // namespace matevo

@@ -15,7 +15,8 @@ namespace {
 
 constexpr int kSheetColumns = 5;
 constexpr int kSheetGap = 8;
-constexpr int kLabelScale = 2;
+constexpr double kLabelSize = 14;   // pixels per em
+constexpr int kLabelLineHeight = 18;
 constexpr Srgb8 kSheetBackground{40, 40, 44};
 constexpr Srgb8 kLabelColour{230, 230, 230};
 
@@ -133,9 +134,11 @@ std::string variantSummary(const VariantRun& run, const VariantSet& set) {
     return text;
 }
 
-Image contactSheet(const VariantSet& set, std::size_t firstIndex, std::size_t count) {
+Result<Image> contactSheet(const VariantSet& set, std::size_t firstIndex, std::size_t count) {
+    auto font = Font::dejaVuSans();
+    if (!font) return font.error();
     const int tile = std::max(set.target.width, 1);
-    const int labelHeight = 2 * Canvas::textHeight(kLabelScale) + 3 * kSheetGap / 2;
+    const int labelHeight = 2 * kLabelLineHeight + kSheetGap / 2;
     const int cells = int(set.variants.size()) + 1;
     const int columns = std::min(cells, kSheetColumns);
     const int rows = (cells + columns - 1) / columns;
@@ -146,18 +149,18 @@ Image contactSheet(const VariantSet& set, std::size_t firstIndex, std::size_t co
         return std::pair{kSheetGap + (cell % columns) * (tile + kSheetGap),
                          kSheetGap + (cell / columns) * (tile + labelHeight + kSheetGap)};
     };
-    const int lineHeight = Canvas::textHeight(kLabelScale) + kSheetGap / 2;
+    // Baselines of the two label lines under a tile whose top is at y.
+    auto firstBaseline = [&](int y) { return double(y + tile + kLabelLineHeight); };
     auto [targetX, targetY] = origin(0);
-    canvas.drawText(targetX, targetY + tile + kSheetGap / 2, "TARGET", kLabelColour, kLabelScale);
+    canvas.drawText(*font, targetX, firstBaseline(targetY), "target", kLabelSize, kLabelColour);
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         auto [x, y] = origin(int(i) + 1);
-        const int textY = y + tile + kSheetGap / 2;
-        canvas.drawText(x, textY,
-                        variantStem(firstIndex + i, count).substr(8) + "  DE " +
+        canvas.drawText(*font, x, firstBaseline(y),
+                        variantStem(firstIndex + i, count).substr(8) + "  ΔE00 " +
                             format("%.2f", set.variants[i].deltaEToTarget),
-                        kLabelColour, kLabelScale);
-        canvas.drawText(x, textY + lineHeight, "NEAREST " + format("%.2f", nearest[i]),
-                        kLabelColour, kLabelScale);
+                        kLabelSize, kLabelColour);
+        canvas.drawText(*font, x, firstBaseline(y) + kLabelLineHeight,
+                        "nearest " + format("%.2f", nearest[i]), kLabelSize, kLabelColour);
     }
     Image sheet = std::move(canvas).release();
     placeTile(sheet, set.target, targetX, targetY);
@@ -208,8 +211,9 @@ Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& t
     if (auto written = writeVariantMembers(dir, target, set, 0, 0, heatmapMetric); !written)
         return written;
     if (auto written = writeImage(set.target, dir / "target.png"); !written) return written;
-    if (auto written = writeImage(contactSheet(set), dir / "contact_sheet.png"); !written)
-        return written;
+    auto sheet = contactSheet(set);
+    if (!sheet) return sheet.error();
+    if (auto written = writeImage(*sheet, dir / "contact_sheet.png"); !written) return written;
     return writeFileAtomically(dir / "report.json", report.dump(2) + "\n");
 }
 

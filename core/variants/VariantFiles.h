@@ -67,8 +67,9 @@ std::string variantSummary(const VariantRun& run, const VariantSet& set);
 
 // The target (top left) and the variants in rows, each labelled with its index (the set's
 // members are the variants firstIndex, firstIndex + 1, … of a whole of `count`), its ΔE00 to
-// the target and to its nearest sibling, on a dark background.
-Image contactSheet(const VariantSet& set, std::size_t firstIndex = 0, std::size_t count = 0);
+// the target and to its nearest sibling, on a dark background, in DejaVu Sans (experiment/Font.h:
+// the error says where the font was looked for).
+Result<Image> contactSheet(const VariantSet& set, std::size_t firstIndex = 0, std::size_t count = 0);
 
 // The material file of variant `index` of a whole of `count`: `target` (the preset's target as a
 // material file, io/MaterialFile.h: family, kappa, textures, scene) with the variant's genome

@@ -148,23 +148,36 @@ TEST_F(ReliabilityCli, WriteFailuresAreExit2InOneLineAndLeaveNoPartialFile) {
 
 TEST_F(ReliabilityCli, WorkPastTheMemoryLimitIsRefusedUpFront) {
     ASSERT_EQ(runMatevo("render --backend cpu --size 64 --out " + path("a.png")).exitCode, 0);
-    expectRefused(runCommand("MATEVO_MEMORY_LIMIT=64K " + kMatevo + " compare " + path("a.png") +
-                             " " + path("a.png")),
-                  "MATEVO_MEMORY_LIMIT");
-    expectRefused(runCommand("MATEVO_MEMORY_LIMIT=1G " + kMatevo + " render --size 8192 --out " +
-                             path("b.png")),
+    const auto decoding =
+        runMatevo("compare --max-memory 64K " + path("a.png") + " " + path("a.png"));
+    expectRefused(decoding, "a.png: decoding 64x64 pixels needs about");
+    EXPECT_NE(decoding.err.find("more than the limit of 64 KiB (--max-memory raises it"),
+              std::string::npos)
+        << decoding.err;
+    expectRefused(runMatevo("render --max-memory 1G --size 8192 --out " + path("b.png")),
                   "render: --size 8192 needs about");
-    expectRefused(
-        runCommand("MATEVO_MEMORY_LIMIT=10M " + kMatevo + " evolve --size 512 --out " + path("c")),
-        "evolve: --out at --size 512: 50 individuals, 5 generations needs about");
-    expectRefused(
-        runCommand("MATEVO_MEMORY_LIMIT=1G " + kMatevo +
-                   " variants --count 1000 --band 2,5 --size 4096"),
-        "variants: 1000 variants at 4096x4096, up to 1500 evaluations at 64x64 needs about");
-    expectRefused(runCommand("MATEVO_MEMORY_LIMIT=2G " + kMatevo +
-                             " experiment --runs 10 --size 4096 --out " + path("d")),
+    expectRefused(runMatevo("evolve --max-memory=10M --size 512 --out " + path("c")),
+                  "evolve: --out at --size 512: 50 individuals, 5 generations needs about");
+    expectRefused(runMatevo("variants --max-memory 1g --count 1000 --band 2,5 --size 4096"),
+                  "variants: 1000 variants at 4096x4096, up to 1500 evaluations at 64x64 needs about");
+    expectRefused(runMatevo("experiment --max-memory 2GiB --runs 10 --size 4096 --out " + path("d")),
                   "experiment: 30 GA runs scored at up to 4096x4096 needs about");
     EXPECT_FALSE(fs::exists(folder_ / "d"));
+    // The same work passes under a limit that allows it.
+    EXPECT_EQ(runMatevo("compare --max-memory 512M " + path("a.png") + " " + path("a.png")).exitCode,
+              0);
+}
+
+TEST_F(ReliabilityCli, MaxMemoryTakesOnlyAnAmountAndOnlyWhereItBoundsWork) {
+    for (const std::string bad : {"lots", "0", "16X", "-1G", "12.5G", "99999999999999999999"})
+        expectRefused(runMatevo("render --max-memory " + bad + " --out " + path("x.png")),
+                      "render: --max-memory: expected an amount of memory such as 512M or 16G, "
+                      "got '" + bad + "'");
+    expectRefused(runMatevo("presets --max-memory 1G"), "presets: unknown option '--max-memory'");
+    const auto help = runMatevo("evolve --help");
+    EXPECT_EQ(help.exitCode, 0);
+    EXPECT_NE(help.out.find("--max-memory SIZE"), std::string::npos) << help.out;
+    EXPECT_FALSE(fs::exists(folder_ / "x.png"));
 }
 
 // Starts `arguments` in the background, waits until its output folder `out` is claimed (the

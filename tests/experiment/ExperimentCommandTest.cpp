@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -76,12 +77,21 @@ TEST_F(ExperimentCommand, WritesOneCsvRowPerRunAndOneHistogramPerMetric) {
         EXPECT_EQ(rows[i].rfind("validation metal,", 0), 0u) << rows[i];
     }
 
+    // Each metric's chart as PNG and as SVG whose bars hold its three runs.
     for (const char* metric : {"chebyshev", "euclidean", "manhattan"}) {
-        const fs::path chart = out_ / (std::string("validation_metal_p6_g2_") + metric + ".png");
-        auto image = readImage(chart);
+        const fs::path chart = out_ / (std::string("validation_metal_p6_g2_") + metric);
+        auto image = readImage(chart.string() + ".png");
         ASSERT_TRUE(image.ok()) << chart;
         EXPECT_GT(image->width, 0);
         EXPECT_GT(image->height, 0);
+        const std::string svg = readFile(chart.string() + ".svg");
+        EXPECT_NE(svg.find(">mean \u0394E00</text>"), std::string::npos) << svg;
+        const std::regex barCount("\u0394E00: ([0-9]+) runs?</title>");
+        int runs = 0;
+        for (auto bar = std::sregex_iterator(svg.begin(), svg.end(), barCount);
+             bar != std::sregex_iterator(); ++bar)
+            runs += std::stoi((*bar)[1].str());
+        EXPECT_EQ(runs, 3) << svg;
     }
     // The summary names every metric on stdout.
     for (const char* metric : {"chebyshev", "euclidean", "manhattan"})

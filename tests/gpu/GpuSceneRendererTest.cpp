@@ -13,6 +13,8 @@
 #include "io/Preset.h"
 #include "material/FgdTableCache.h"
 #include "mesh/GeneratedMeshes.h"
+#include "color/ToneMap.h"
+#include "scene/EnvironmentBackdrop.h"
 #include "scene/SphereRenderer.h"
 #include "scene/StudioEnvironment.h"
 
@@ -53,8 +55,8 @@ std::vector<PresetCase> validationPresets() {
 }
 
 // The raster path's tessellated sphere against the compute path's analytic one, same camera,
-// same material, same light: they differ only by tessellation, multisample positions and
-// interpolated texture coordinates.
+// same material, same light: they differ only by tessellation, the silhouette (one sample per
+// pixel against several) and interpolated texture coordinates.
 TEST(GpuSceneRenderer, SphereMatchesTheComputeSphereRender) {
     gpu::GpuContext* context = test::validatedContext();
     ASSERT_NE(context, nullptr);
@@ -168,6 +170,53 @@ TEST(GpuSceneRenderer, StudioLightingMatchesTheCpuReferenceOnTheSphere) {
             compareImages(renderSphereCpu(preset.material, unlit, scene, 48), cpuImage);
         ASSERT_TRUE(withoutEnvironment.ok());
         EXPECT_GT(withoutEnvironment->stats.mean, 5.0) << preset.name;
+    }
+    test::expectNoValidationMessages(*context);
+}
+
+// The display pass (backdrop, exposure, tone map on the GPU, what the editor's Scene window
+// samples) against its CPU twin applied to the linear render of the same frame.
+TEST(GpuSceneRenderer, DisplayPassMatchesTheCpuBackdropAndToneMap) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    auto runner = gpu::CommandRunner::create(context->device);
+    ASSERT_TRUE(runner.ok());
+    std::vector<PresetCase> presets = validationPresets();
+    ASSERT_FALSE(presets.empty());
+    auto environment = loadEnvironment("studio", {.width = 64, .levels = 7, .samplesPerTexel = 16});
+    ASSERT_TRUE(environment.ok());
+    SceneTextures textures;
+    textures.environment = *environment;
+    SceneSettings scene = presets[0].scene;
+    scene.mode = SceneMode::Environment;
+    auto raster = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
+                                                textures, makeSphereMesh(64, 32));
+    ASSERT_TRUE(raster.ok()) << raster.error().message;
+    ASSERT_TRUE(raster->setMaterials(std::span(&presets[0].material, 1)).ok());
+    const std::vector<SceneInstance> instances =
+        layoutInstances(4, InstanceLayout::Grid, 1);
+    const gpu::SceneFrame frame{128, 72, frameInstances(instances, 128.0 / 72.0), instances};
+
+    auto linear = raster->render(*runner, frame, scene);
+    ASSERT_TRUE(linear.ok()) << linear.error().message;
+    for (const gpu::SceneDisplay display :
+         {gpu::SceneDisplay{1.0, ToneMap::Aces}, gpu::SceneDisplay{-0.5, ToneMap::None}}) {
+        Image expected = *linear;
+        compositeOverEnvironment(expected, frame.camera, textures.environment);
+        applyExposureAndToneMap(expected, display.exposureStops, display.toneMap);
+        auto displayed = raster->render(*runner, frame, scene, display);
+        ASSERT_TRUE(displayed.ok()) << displayed.error().message;
+        std::size_t covered = 0;
+        double largest = 0.0;
+        for (std::size_t i = 0; i < expected.rgba.size(); ++i) {
+            largest = std::max(largest, double(std::fabs(expected.rgba[i] - displayed->rgba[i])));
+            if (i % 4 == 3 && linear->rgba[i] > 0.5f) ++covered;
+        }
+        EXPECT_GT(covered, std::size_t(500)) << "the instances are in view";
+        // The backdrop is filtered by the GPU's sampler on one side, by the CPU's trilinear
+        // interpolation of the same table on the other.
+        EXPECT_LT(largest, 0.01) << "exposure " << display.exposureStops;
+        EXPECT_EQ(displayed->pixel(0, 0)[3], 1.0f) << "the environment shows behind";
     }
     test::expectNoValidationMessages(*context);
 }

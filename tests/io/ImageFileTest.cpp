@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "color/Srgb.h"
+#include "common/MemoryBudget.h"
 #include "support/ScratchFolder.h"
 #include "support/TestImages.h"
 
@@ -222,6 +223,33 @@ TEST_F(ImageFileTest, ExrHeaderIsWalkedAsOpenExrReadsIt) {
     ASSERT_FALSE(read.ok());
     expectOneLineErrorNaming(read.error(), file);
     EXPECT_NE(read.error().message.find("claims"), std::string::npos) << read.error().message;
+}
+
+// OpenEXR allocates one block's buffers when it opens a file, sized by the data window's width
+// and the compression's rows per block, whatever the height. This 542-byte file (found by the
+// fuzzer) claims a ZIP-compressed data window about a million pixels wide: OpenEXR allocated
+// 124 MiB twice for it. Under a limit below that it is refused before OpenEXR sees it.
+TEST_F(ImageFileTest, ExrBlocksPastTheMemoryLimitAreRefusedBeforeOpenExrAllocatesThem) {
+    std::ifstream in(
+        std::string(MATEVO_SOURCE_DIR) + "/tests/fuzz/corpus/image/exr-wide-zip-blocks.bin",
+        std::ios::binary);
+    const std::string input((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(input.size(), 1u);
+    const auto file = folder_ / "wide.exr";
+    const auto small = folder_ / "small.exr";
+    ASSERT_TRUE(writeImage(randomImage(64, 64, 7), small).ok());
+
+    setMemoryLimitBytes(8u << 20);
+    auto read = decodeImageFile(std::string_view(input).substr(1), file);  // byte 0: the type
+    auto smallRead = readImage(small);
+    setMemoryLimitBytes(0);  // the default again
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), file);
+    EXPECT_NE(read.error().message.find("its blocks of "), std::string::npos)
+        << read.error().message;
+    EXPECT_NE(read.error().message.find("x16 pixels needs about"), std::string::npos)
+        << read.error().message;  // ZIP: 16 rows a block
+    EXPECT_TRUE(smallRead.ok());
 }
 
 TEST_F(ImageFileTest, WritesAreAtomicAndLeaveNoTemporaryFiles) {

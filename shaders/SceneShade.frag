@@ -1,38 +1,37 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The scene view's fragment stage: the material's lobes from its LobeTable and the same
-// lighting as the sphere compute shader (LobeTable.glsl, SceneLighting.glsl), so one BSDF
-// source serves both. Output is linear radiance with alpha 1; the multisample resolve turns
-// alpha into coverage. lavapipe runs both sides of every branch, so the textures and the
-// environment are specialised away when the scene has none.
+// The scene view's shading pass: each covered pixel shaded once from what the surface pass
+// stored (SceneSurface.glsl), with the material's lobes from its LobeTable and the same
+// lighting as the sphere compute shader (LobeTable.glsl, SceneLighting.glsl), so one BSDF source
+// serves both. Output is linear radiance with alpha 1 over a transparent background. lavapipe
+// runs both sides of every branch, so the textures and the environment are specialised away
+// when the scene has none.
 layout(constant_id = 0) const bool kTextured = false;
 layout(constant_id = 1) const bool kEnvironmentLit = false;
 layout(std430, binding = 2) readonly buffer LobeTables { vec4 lobeEntries[]; };
 #include "BelcourBsdf.glsl"
 #include "LobeTable.glsl"
+#include "SceneFrame.glsl"
+#include "SceneSurface.glsl"
 
-layout(std430, binding = 1) readonly buffer Frame {
-    mat4 viewProjection;
-    vec4 cameraPosition;
-    vec4 toLight;
-    vec4 lightRadiance;
-    vec4 ambient;  // w: roughness levels of the environment (0: none)
-} frame;
 layout(std430, binding = 3) readonly buffer Materials { Material materials[]; };
 layout(binding = 4) uniform sampler2D roughnessTexture;  // 1x1 white when absent
 layout(binding = 5) uniform sampler2D baseColorTexture;  // 1x1 white when absent
 layout(binding = 6) uniform sampler3D environmentMap;
+layout(input_attachment_index = 0, binding = 7) uniform usubpassInput surfaces;
 #include "SceneLighting.glsl"
 
-layout(location = 0) in vec3 worldPosition;
-layout(location = 1) in vec3 worldNormal;
-layout(location = 2) in vec2 texCoord;
-layout(location = 3) flat in uint materialIndex;
 layout(location = 0) out vec4 color;
 
 void main() {
-    vec3 normal = normalize(worldNormal);
-    vec3 toViewer = normalize(frame.cameraPosition.xyz - worldPosition);
+    uvec4 surface = subpassLoad(surfaces);
+    vec3 normal = decodeNormal(surface.z);
+    vec2 texCoord = uintBitsToFloat(surface.xy);
+    uint materialIndex = surface.w - 1u;
+    // The viewer lies back along the pixel's ray: unproject a point of it on the far plane.
+    vec2 ndc = gl_FragCoord.xy / frame.viewportSize.xy * 2.0 - 1.0;
+    vec4 far = frame.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    vec3 toViewer = normalize(frame.cameraPosition.xyz - far.xyz / far.w);
     float roughnessTexel = 1.0;
     vec3 baseColor = vec3(1.0);
     if (kTextured) {
