@@ -3,7 +3,7 @@
 // The scene view's shading pass: each covered pixel shaded once from what the surface pass
 // stored (SceneSurface.glsl), with the material's lobes from its LobeTable and the same
 // lighting as the sphere compute shader (LobeTable.glsl, SceneLighting.glsl), so one BSDF source
-// serves both. Output is linear radiance with alpha 1 over a transparent background. lavapipe
+// serves both. Output is linear radiance with alpha 1; the background is left clear. lavapipe
 // runs both sides of every branch, so the textures and the environment are specialised away
 // when the scene has none.
 layout(constant_id = 0) const bool kTextured = false;
@@ -25,6 +25,11 @@ layout(location = 0) out vec4 color;
 
 void main() {
     uvec4 surface = subpassLoad(surfaces);
+    // Background: nothing to shade. A discard, not a depth test: llvmpipe skips the rest of
+    // the shader for a SIMD vector whose pixels are all discarded, while it shades depth-
+    // rejected pixels and masks them afterwards (docs/scene-view.md).
+    if (surface.w == 0u) discard;
+    if (surface.w == 0u) discard;
     vec3 normal = decodeNormal(surface.z);
     vec2 texCoord = uintBitsToFloat(surface.xy);
     uint materialIndex = surface.w - 1u;

@@ -1,8 +1,6 @@
 #version 450
-// The scene view's shading pass, vertex stage: one triangle covering the viewport, at the far
-// plane, so that the depth test (GREATER, read-only) keeps exactly the pixels the surface
-// pass drew.
+// The scene view's shading pass, vertex stage: one triangle covering the viewport.
 void main() {
     vec2 corner = vec2((gl_VertexIndex << 1) & 2, gl_VertexIndex & 2);
-    gl_Position = vec4(corner * 2.0 - 1.0, 1.0, 1.0);
+    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
 }

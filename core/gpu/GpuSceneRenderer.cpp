@@ -135,7 +135,7 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
     VkAttachmentDescription& depth = attachments[kDepthAttachment];
     depth = surfaces;
     depth.format = kDepthFormat;
-    depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+    depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     VkAttachmentDescription& radiance = attachments[kRadianceAttachment];
     radiance = surfaces;
     radiance.format = GpuSceneRenderer::kColorFormat;
@@ -148,8 +148,6 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
                                              VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     const VkAttachmentReference surfaceInput{kSurfaceAttachment,
                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    const VkAttachmentReference depthRead{kDepthAttachment,
-                                          VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
     const VkAttachmentReference radianceOutput{kRadianceAttachment,
                                                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpasses[2]{};
@@ -162,7 +160,6 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
     subpasses[1].pInputAttachments = &surfaceInput;
     subpasses[1].colorAttachmentCount = 1;
     subpasses[1].pColorAttachments = &radianceOutput;
-    subpasses[1].pDepthStencilAttachment = &depthRead;
 
     const VkPipelineStageFlags attachmentStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
                                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
@@ -184,19 +181,14 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
         previous.dstStageMask = attachmentStages;
         previous.dstAccessMask = attachmentAccess;
     }
-    // The shading subpass reads the surfaces and tests against the depth the first one wrote.
+    // The shading subpass reads the surfaces the first one wrote.
     VkSubpassDependency& surfacesToShading = dependencies[2];
     surfacesToShading.srcSubpass = 0;
     surfacesToShading.dstSubpass = 1;
-    surfacesToShading.srcStageMask =
-        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    surfacesToShading.srcAccessMask =
-        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-    surfacesToShading.dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
-                                     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                                     VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    surfacesToShading.dstAccessMask =
-        VK_ACCESS_INPUT_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+    surfacesToShading.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    surfacesToShading.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    surfacesToShading.dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    surfacesToShading.dstAccessMask = VK_ACCESS_INPUT_ATTACHMENT_READ_BIT;
     surfacesToShading.dependencyFlags = VK_DEPENDENCY_BY_REGION_BIT;
     // The radiance image is read by a transfer or the display pass after the pass.
     VkSubpassDependency& radianceOut = dependencies[3];
@@ -235,7 +227,7 @@ Result<UniquePipeline> createSurfacePipeline(VkDevice device, VkRenderPass rende
     spec.vertexAttributes = attributes;
     // The projection's y flip keeps the mesh's counter-clockwise front faces so on screen.
     spec.cullMode = VK_CULL_MODE_BACK_BIT;
-    spec.depthTest = DepthTest::LessAndWrite;
+    spec.depthTested = true;
     spec.layout = layout;
     spec.renderPass = renderPass;
     spec.subpass = 0;
@@ -254,7 +246,6 @@ Result<UniquePipeline> createShadingPipeline(VkDevice device, VkRenderPass rende
     spec.vertexSpirv = kSceneShadeVertexSpirv;
     spec.fragmentSpirv = kSceneShadeFragmentSpirv;
     spec.fragmentSpecialization = constants.info();
-    spec.depthTest = DepthTest::GreaterReadOnly;
     spec.layout = layout;
     spec.renderPass = renderPass;
     spec.subpass = 1;

@@ -63,11 +63,9 @@ Result<UniquePipeline> createGraphicsPipeline(VkDevice device, const GraphicsPip
     multisample.rasterizationSamples = spec.samples;
     VkPipelineDepthStencilStateCreateInfo depthStencil{
         VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depthStencil.depthTestEnable = spec.depthTest != DepthTest::None ? VK_TRUE : VK_FALSE;
-    depthStencil.depthWriteEnable = spec.depthTest == DepthTest::LessAndWrite ? VK_TRUE : VK_FALSE;
-    depthStencil.depthCompareOp = spec.depthTest == DepthTest::GreaterReadOnly
-                                      ? VK_COMPARE_OP_GREATER
-                                      : VK_COMPARE_OP_LESS;
+    depthStencil.depthTestEnable = spec.depthTested ? VK_TRUE : VK_FALSE;
+    depthStencil.depthWriteEnable = spec.depthTested ? VK_TRUE : VK_FALSE;
+    depthStencil.depthCompareOp = VK_COMPARE_OP_LESS;
     const VkPipelineColorBlendAttachmentState blendAttachment = colorBlending(spec.alphaBlended);
     VkPipelineColorBlendStateCreateInfo blend{
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};

@@ -12,12 +12,6 @@
 
 namespace matevo::gpu {
 
-enum class DepthTest {
-    None,
-    LessAndWrite,  // the nearest surface wins
-    GreaterReadOnly,  // passes where a depth-writing pass drew nearer than the fragment
-};
-
 struct GraphicsPipelineSpec {
     std::span<const uint32_t> vertexSpirv;
     std::span<const uint32_t> fragmentSpirv;
@@ -27,7 +21,7 @@ struct GraphicsPipelineSpec {
     // Counter-clockwise triangles face forward (core/mesh/Mesh.h; ImGui does not care).
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    DepthTest depthTest = DepthTest::None;
+    bool depthTested = false;  // test LESS and write
     bool alphaBlended = false;  // straight-alpha "over", as ImGui blends
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkRenderPass renderPass = VK_NULL_HANDLE;
