@@ -11,6 +11,7 @@
 #include "color/detail/FastFloatMath.h"
 #include "color/detail/ForEachChunk.h"
 #include "color/detail/VectorisedKernel.h"
+#include "common/HugePages.h"
 
 namespace matevo {
 namespace {
@@ -143,8 +144,8 @@ Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
     DeltaEMap map;
     map.width = a.width;
     map.height = a.height;
-    map.deltaE.resize(pixelCount);
-    map.covered.resize(pixelCount);
+    resizeOnHugePages(map.deltaE, pixelCount);
+    resizeOnHugePages(map.covered, pixelCount);
     const std::size_t chunkCount = (pixelCount + kChunkPixels - 1) / kChunkPixels;
     std::vector<ChunkSummary> summaries(chunkCount);
     detail::forEachChunk(chunkCount, workerCount, [&](std::size_t chunk) {
