@@ -149,6 +149,25 @@ TEST_F(ImageFileTest, ReadsEveryFormatOpenImageIOReadsInAnyExtensionCase) {
     EXPECT_EQ(png16->image.pixel(1, 0)[3], 0.0f);
 }
 
+// libpng allocates a chunk at the length its header claims; a claim beyond the file's end is
+// refused before that (a 340-byte PNG claiming a 1.9 GB chunk once made it allocate 1.9 GB).
+TEST_F(ImageFileTest, PngChunkClaimingMoreThanTheFileIsRefusedBeforeDecoding) {
+    const auto valid = folder_ / "valid.png";
+    ASSERT_TRUE(writeImage(randomImage(3, 2, 7), valid).ok());
+    std::ifstream in(valid, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_TRUE(decodeImageFile(bytes, valid).ok());
+
+    // After the signature (8 bytes) and IHDR (25): a text chunk claiming 0x72650000 bytes.
+    const std::string claim = std::string("\x72\x65\x00\x00", 4) + "tEXtComment\0only this";
+    const std::string forged = bytes.substr(0, 33) + claim + bytes.substr(33);
+    auto read = decodeImageFile(forged, folder_ / "forged.png");
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), folder_ / "forged.png");
+    EXPECT_NE(read.error().message.find("more than the file holds"), std::string::npos)
+        << read.error().message;
+}
+
 // OpenEXR channels may each have their own type; they are read as stored and converted by us,
 // every one to the exact float it holds.
 TEST_F(ImageFileTest, OpenExrChannelsOfMixedTypesReadExactly) {

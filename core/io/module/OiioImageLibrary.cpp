@@ -62,8 +62,8 @@ Result<DecodedImage> readSamples(OIIO::ImageInput& input, const OIIO::ImageSpec&
     for (int c = 0; c < channels; ++c) {
         const OIIO::TypeDesc storedType = spec.channelformat(c);
         if (!OIIO::convert_image(1, spec.width, spec.height, 1, stored.data() + offset, storedType,
-                                 storedPixelBytes, storedPixelBytes * spec.width,
-                                 OIIO::AutoStride, samples.data() + c, type, samplePixelBytes,
+                                 storedPixelBytes, storedPixelBytes * spec.width, OIIO::AutoStride,
+                                 samples.data() + c, type, samplePixelBytes,
                                  samplePixelBytes * spec.width, OIIO::AutoStride))
             return Error{"cannot decode: no conversion from " + std::string(storedType.c_str())};
         offset += storedType.size();
@@ -92,8 +92,7 @@ Result<DecodedImage> decode(std::string_view bytes, const std::filesystem::path&
     if (spec.width <= 0 || spec.height <= 0) return Error{"empty image"};
     // A volume (a TIFF or DDS with depth) holds several images; we read one.
     if (spec.depth != 1) return Error{"volume images are not supported"};
-    if (auto fits = checkSize(spec.width, spec.height, spec.nchannels); !fits)
-        return fits.error();
+    if (auto fits = checkSize(spec.width, spec.height, spec.nchannels); !fits) return fits.error();
 
     Result<DecodedImage> decoded = Error{""};
     switch (spec.format.basetype) {
