@@ -32,29 +32,45 @@ struct Filtered {
     vec2 edge, point;  // (x, y) first and second derivatives of the normalised achromatic
 };
 
-Filtered columnPass(uint slot, int x, int y) {
-    Filtered filtered;
-    filtered.ycxcz = vec3(0.0);
-    for (int k = -settings.csfRadius; k <= settings.csfRadius; ++k) {
-        uint pixel = uint(clamp(y + k, 0, settings.height - 1) * settings.width + x);
-        filtered.ycxcz += vec3(
-            csfTap(kAchromaticTaps, k) * planes[planeIndex(slot, kAchromaticPlane, pixel)],
-            csfTap(kRedGreenTaps, k) * planes[planeIndex(slot, kRedGreenPlane, pixel)],
-            csfTap(kBlueYellowTaps0, k) * planes[planeIndex(slot, kBlueYellowPlane0, pixel)] +
-                csfTap(kBlueYellowTaps1, k) * planes[planeIndex(slot, kBlueYellowPlane1, pixel)]);
+// Each invocation filters kColumnRows consecutive rows of its column: every row of the planes
+// it reads is loaded once and added to each output row it reaches, rather than loaded again
+// for each output (2 radius + kColumnRows loads per plane instead of kColumnRows (2 radius + 1)).
+// The sums run over the taps in the same order as the CPU reference's.
+const int kColumnRows = 8;
+
+void columnPasses(uint slot, int x, int firstRow, out Filtered filtered[kColumnRows]) {
+    for (int i = 0; i < kColumnRows; ++i) {
+        filtered[i].ycxcz = vec3(0.0);
+        filtered[i].edge = vec2(0.0);
+        filtered[i].point = vec2(0.0);
     }
-    filtered.edge = vec2(0.0);
-    filtered.point = vec2(0.0);
-    for (int k = -settings.featureRadius; k <= settings.featureRadius; ++k) {
-        uint pixel = uint(clamp(y + k, 0, settings.height - 1) * settings.width + x);
-        float gaussian = featureTap(kGaussianTaps, k);
-        float blurred = planes[planeIndex(slot, kBlurredPlane, pixel)];
-        filtered.edge += vec2(gaussian * planes[planeIndex(slot, kSlopePlane, pixel)],
-                              featureTap(kFirstDerivativeTaps, k) * blurred);
-        filtered.point += vec2(gaussian * planes[planeIndex(slot, kCurvaturePlane, pixel)],
-                               featureTap(kSecondDerivativeTaps, k) * blurred);
+    int radius = max(settings.csfRadius, settings.featureRadius);
+    for (int j = -radius; j < kColumnRows + radius; ++j) {
+        uint pixel = uint(clamp(firstRow + j, 0, settings.height - 1) * settings.width + x);
+        vec4 csfPlanes = vec4(planes[planeIndex(slot, kAchromaticPlane, pixel)],
+                              planes[planeIndex(slot, kRedGreenPlane, pixel)],
+                              planes[planeIndex(slot, kBlueYellowPlane0, pixel)],
+                              planes[planeIndex(slot, kBlueYellowPlane1, pixel)]);
+        vec3 featurePlanes = vec3(planes[planeIndex(slot, kSlopePlane, pixel)],
+                                  planes[planeIndex(slot, kCurvaturePlane, pixel)],
+                                  planes[planeIndex(slot, kBlurredPlane, pixel)]);
+        for (int i = 0; i < kColumnRows; ++i) {
+            int k = j - i;  // the tap of row j for output row firstRow + i
+            if (abs(k) <= settings.csfRadius)
+                filtered[i].ycxcz += vec3(
+                    csfTap(kAchromaticTaps, k) * csfPlanes.x,
+                    csfTap(kRedGreenTaps, k) * csfPlanes.y,
+                    csfTap(kBlueYellowTaps0, k) * csfPlanes.z +
+                        csfTap(kBlueYellowTaps1, k) * csfPlanes.w);
+            if (abs(k) <= settings.featureRadius) {
+                float gaussian = featureTap(kGaussianTaps, k);
+                filtered[i].edge += vec2(gaussian * featurePlanes.x,
+                                         featureTap(kFirstDerivativeTaps, k) * featurePlanes.z);
+                filtered[i].point += vec2(gaussian * featurePlanes.y,
+                                          featureTap(kSecondDerivativeTaps, k) * featurePlanes.z);
+            }
+        }
     }
-    return filtered;
 }
 
 // Filtered YyCxCz → XYZ → linear sRGB (clamped) → L*a*b*, with the Hunt adjustment.
@@ -85,24 +101,28 @@ float featureDifference(Filtered reference, Filtered test) {
 
 void main() {
     int pixelCount = settings.width * settings.height;
-    int pixel = int(gl_GlobalInvocationID.x);
-    if (pixel >= pixelCount) return;
-    uint candidate = gl_GlobalInvocationID.y;
-    int x = pixel % settings.width, y = pixel / settings.width;
+    int x = int(gl_GlobalInvocationID.x);
+    if (x >= settings.width) return;
+    int firstRow = int(gl_GlobalInvocationID.y) * kColumnRows;
+    uint candidate = gl_GlobalInvocationID.z;
 
-    Filtered reference = columnPass(0, x, y);
-    Filtered test = columnPass(1 + candidate, x, y);
-    float colorError = colorDifference(reference.ycxcz, test.ycxcz);
-    float featureError = featureDifference(reference, test);
-    // pow(0, 0) is undefined in GLSL; C's 1 is what the CPU reference gives.
-    float error = featureError >= 1.0 ? 1.0 : pow(colorError, 1.0 - featureError);
+    Filtered reference[kColumnRows], test[kColumnRows];
+    columnPasses(0, x, firstRow, reference);
+    columnPasses(1 + candidate, x, firstRow, test);
+    for (int i = 0; i < kColumnRows && firstRow + i < settings.height; ++i) {
+        uint pixel = uint((firstRow + i) * settings.width + x);
+        float colorError = colorDifference(reference[i].ycxcz, test[i].ycxcz);
+        float featureError = featureDifference(reference[i], test[i]);
+        // pow(0, 0) is undefined in GLSL; C's 1 is what the CPU reference gives.
+        float error = featureError >= 1.0 ? 1.0 : pow(colorError, 1.0 - featureError);
 
-    uint index = candidate * uint(pixelCount) + uint(pixel);
-    bool pooled =
-        referencePixels[settings.referenceImage * uint(pixelCount) + uint(pixel)].a >= 0.5 &&
-        candidatePixels[(settings.firstCandidate + candidate) * uint(pixelCount) + uint(pixel)].a >=
-            0.5;
-    flipError[index] = pooled ? error : -1.0 - error;
-    heatmapPixels[index] = pooled ? colormap[uint(floor(clamp(error, 0.0, 1.0) * 255.0 + 0.5))]
-                                  : vec4(0.0);
+        uint index = candidate * uint(pixelCount) + pixel;
+        bool pooled =
+            referencePixels[settings.referenceImage * uint(pixelCount) + pixel].a >= 0.5 &&
+            candidatePixels[(settings.firstCandidate + candidate) * uint(pixelCount) + pixel].a >=
+                0.5;
+        flipError[index] = pooled ? error : -1.0 - error;
+        heatmapPixels[index] = pooled ? colormap[uint(floor(clamp(error, 0.0, 1.0) * 255.0 + 0.5))]
+                                      : vec4(0.0);
+    }
 }

@@ -2,9 +2,12 @@
 #extension GL_GOOGLE_include_directive : require
 // The first of the two ꟻLIP passes (core/gpu/FlipPass.h): each image composited over black,
 // to YyCxCz, and filtered along x (edge pixels repeated) by every separable filter of
-// LDR-ꟻLIP, as core/color/Flip.cpp's row pass. Workgroups along y are images: 0 the
-// reference, 1 + i candidate i.
+// LDR-ꟻLIP, as core/color/Flip.cpp's row pass. A workgroup takes kRowTile pixels of one row
+// (gl_WorkGroupID.y) of one image (gl_WorkGroupID.z: 0 the reference, 1 + i candidate i): it
+// converts them and the filter radius on either side once into shared memory, and every
+// invocation filters from there (each pixel is converted once, not once per tap).
 layout(local_size_x = 64) in;
+const int kRowTile = 64;  // local_size_x
 
 layout(std430, binding = 0) readonly buffer Reference { vec4 referencePixels[]; };
 layout(std430, binding = 1) readonly buffer Candidates { vec4 candidatePixels[]; };
@@ -12,6 +15,9 @@ layout(std430, binding = 3) writeonly buffer Planes { float planes[]; };
 
 #include "FlipCommon.glsl"
 #include "LinearSrgbToLab.glsl"
+
+// The tile's opponent colours, from kMaxFilterRadius pixels left of it to as many right.
+shared vec4 tile[kRowTile + 2 * kMaxFilterRadius];
 
 vec4 pixelOf(uint slot, uint pixel) {
     uint pixelCount = uint(settings.width * settings.height);
@@ -29,36 +35,43 @@ vec4 opponent(vec4 pixel) {
 }
 
 void main() {
-    int pixelCount = settings.width * settings.height;
-    int pixel = int(gl_GlobalInvocationID.x);
-    if (pixel >= pixelCount) return;
-    uint slot = gl_GlobalInvocationID.y;
-    int x = pixel % settings.width;
-    int rowStart = pixel - x;
-
-    float achromatic = 0.0, redGreen = 0.0, blueYellow0 = 0.0, blueYellow1 = 0.0;
-    float slope = 0.0, curvature = 0.0, blurred = 0.0;
+    uint slot = gl_WorkGroupID.z;
+    int y = int(gl_WorkGroupID.y);
+    int tileStart = int(gl_WorkGroupID.x) * kRowTile;
     int radius = max(settings.csfRadius, settings.featureRadius);
-    for (int k = -radius; k <= radius; ++k) {
-        int column = clamp(x + k, 0, settings.width - 1);
-        vec4 color = opponent(pixelOf(slot, uint(rowStart + column)));
-        if (abs(k) <= settings.csfRadius) {
-            achromatic += csfTap(kAchromaticTaps, k) * color.x;
-            redGreen += csfTap(kRedGreenTaps, k) * color.y;
-            blueYellow0 += csfTap(kBlueYellowTaps0, k) * color.z;
-            blueYellow1 += csfTap(kBlueYellowTaps1, k) * color.z;
-        }
-        if (abs(k) <= settings.featureRadius) {
-            blurred += featureTap(kGaussianTaps, k) * color.w;
-            slope += featureTap(kFirstDerivativeTaps, k) * color.w;
-            curvature += featureTap(kSecondDerivativeTaps, k) * color.w;
-        }
+    int rowStart = y * settings.width;
+
+    // tile[i] holds column tileStart − radius + i, clamped to the row.
+    for (int i = int(gl_LocalInvocationID.x); i < kRowTile + 2 * radius; i += kRowTile) {
+        int column = clamp(tileStart - radius + i, 0, settings.width - 1);
+        tile[i] = opponent(pixelOf(slot, uint(rowStart + column)));
     }
-    planes[planeIndex(slot, kAchromaticPlane, uint(pixel))] = achromatic;
-    planes[planeIndex(slot, kRedGreenPlane, uint(pixel))] = redGreen;
-    planes[planeIndex(slot, kBlueYellowPlane0, uint(pixel))] = blueYellow0;
-    planes[planeIndex(slot, kBlueYellowPlane1, uint(pixel))] = blueYellow1;
-    planes[planeIndex(slot, kSlopePlane, uint(pixel))] = slope;
-    planes[planeIndex(slot, kCurvaturePlane, uint(pixel))] = curvature;
-    planes[planeIndex(slot, kBlurredPlane, uint(pixel))] = blurred;
+    barrier();
+
+    int x = tileStart + int(gl_LocalInvocationID.x);
+    if (x >= settings.width) return;
+    int centre = int(gl_LocalInvocationID.x) + radius;
+    float achromatic = 0.0, redGreen = 0.0, blueYellow0 = 0.0, blueYellow1 = 0.0;
+    for (int k = -settings.csfRadius; k <= settings.csfRadius; ++k) {
+        vec4 color = tile[centre + k];
+        achromatic += csfTap(kAchromaticTaps, k) * color.x;
+        redGreen += csfTap(kRedGreenTaps, k) * color.y;
+        blueYellow0 += csfTap(kBlueYellowTaps0, k) * color.z;
+        blueYellow1 += csfTap(kBlueYellowTaps1, k) * color.z;
+    }
+    float slope = 0.0, curvature = 0.0, blurred = 0.0;
+    for (int k = -settings.featureRadius; k <= settings.featureRadius; ++k) {
+        float lightness = tile[centre + k].w;
+        blurred += featureTap(kGaussianTaps, k) * lightness;
+        slope += featureTap(kFirstDerivativeTaps, k) * lightness;
+        curvature += featureTap(kSecondDerivativeTaps, k) * lightness;
+    }
+    uint pixel = uint(rowStart + x);
+    planes[planeIndex(slot, kAchromaticPlane, pixel)] = achromatic;
+    planes[planeIndex(slot, kRedGreenPlane, pixel)] = redGreen;
+    planes[planeIndex(slot, kBlueYellowPlane0, pixel)] = blueYellow0;
+    planes[planeIndex(slot, kBlueYellowPlane1, pixel)] = blueYellow1;
+    planes[planeIndex(slot, kSlopePlane, pixel)] = slope;
+    planes[planeIndex(slot, kCurvaturePlane, pixel)] = curvature;
+    planes[planeIndex(slot, kBlurredPlane, pixel)] = blurred;
 }

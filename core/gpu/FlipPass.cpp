@@ -14,6 +14,10 @@ namespace {
 
 constexpr uint32_t kWorkgroupSize = 64;      // local_size_x in both shaders
 constexpr VkDeviceSize kPlanesPerImage = 7;  // kPlanes in shaders/FlipCommon.glsl
+constexpr int kMaxFlipFilterRadius = 136;    // kMaxFilterRadius in shaders/FlipCommon.glsl
+constexpr uint32_t kCombineRows = 8;         // kColumnRows in shaders/FlipCombine.comp
+// The taps' uniform block (kMaxTapVectors vec4 in shaders/FlipCommon.glsl).
+constexpr std::size_t kTapBufferFloats = 4 * ((7 * (2 * kMaxFlipFilterRadius + 1) + 3) / 4);
 
 struct PushConstants {
     int32_t width;
@@ -42,11 +46,12 @@ Result<FlipPass> FlipPass::create(const Device& device, const DeltaE00Pass::Colo
     if (!colormapBuffer) return colormapBuffer.error();
 
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     auto rowFilter = ComputeKernel::create(
-        device, kFlipRowFilterSpirv, {storage, storage, storage, storage}, sizeof(PushConstants));
+        device, kFlipRowFilterSpirv, {storage, storage, uniform, storage}, sizeof(PushConstants));
     if (!rowFilter) return rowFilter.error();
     auto combine = ComputeKernel::create(
-        device, kFlipCombineSpirv, {storage, storage, storage, storage, storage, storage, storage},
+        device, kFlipCombineSpirv, {storage, storage, uniform, storage, storage, storage, storage},
         sizeof(PushConstants));
     if (!combine) return combine.error();
     FlipPass pass;
@@ -64,14 +69,17 @@ Status FlipPass::prepare(const FlipBatch& batch, const FlipSettings& settings) {
     if (!taps_.handle() || settings.pixelsPerDegree != tapsPixelsPerDegree_) {
         csf_ = flip::makeCsfKernels(settings.pixelsPerDegree);
         feature_ = flip::makeFeatureKernels(settings.pixelsPerDegree);
-        const std::vector<float> taps = tapsOf(csf_, feature_);
+        std::vector<float> taps = tapsOf(csf_, feature_);
+        taps.resize(kTapBufferFloats, 0.0f);  // the whole uniform block the shaders declare
         auto buffer = Buffer::create(*device_, taps.size() * sizeof(float),
-                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+                                     VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
         if (!buffer) return buffer.error();
         std::memcpy(buffer->bytes().data(), taps.data(), taps.size() * sizeof(float));
         taps_ = std::move(buffer).value();
         tapsPixelsPerDegree_ = settings.pixelsPerDegree;
     }
+    if (std::max(csf_.radius, feature_.radius) > kMaxFlipFilterRadius)
+        return Error{"FLIP filters wider than the GPU pass takes"};
     // The reference's planes and each candidate's.
     const VkDeviceSize planeBytes = VkDeviceSize(batch.width) * VkDeviceSize(batch.height) *
                                     (batch.candidateCount + 1) * kPlanesPerImage * sizeof(float);
@@ -91,9 +99,6 @@ Status FlipPass::record(VkCommandBuffer commands, const FlipBatch& batch,
     const PushConstants constants{
         batch.width, batch.height,    batch.referenceImage,           batch.firstCandidate,
         csf_.radius, feature_.radius, float(flip::maxColorDistance())};
-    const uint32_t groups =
-        (uint32_t(batch.width) * uint32_t(batch.height) + kWorkgroupSize - 1) / kWorkgroupSize;
-
     for (const ComputeKernel* kernel : {&rowFilter_, &combine_}) {
         kernel->bindBuffer(0, *batch.reference);
         kernel->bindBuffer(1, *batch.candidates);
@@ -103,9 +108,16 @@ Status FlipPass::record(VkCommandBuffer commands, const FlipBatch& batch,
     combine_.bindBuffer(4, *batch.error);
     combine_.bindBuffer(5, *batch.heatmaps);
 
-    rowFilter_.record(commands, &constants, groups, batch.candidateCount + 1, 1);
+    // The row pass: tiles of a row × rows × images.
+    rowFilter_.record(commands, &constants,
+                      (uint32_t(batch.width) + kWorkgroupSize - 1) / kWorkgroupSize,
+                      uint32_t(batch.height), batch.candidateCount + 1);
     computeWriteToComputeReadBarrier(commands);
-    combine_.record(commands, &constants, groups, batch.candidateCount, 1);
+    // The combination: columns × runs of kCombineRows rows × candidates.
+    combine_.record(commands, &constants,
+                    (uint32_t(batch.width) + kWorkgroupSize - 1) / kWorkgroupSize,
+                    (uint32_t(batch.height) + kCombineRows - 1) / kCombineRows,
+                    batch.candidateCount);
     return Ok{};
 }
 

@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "common/HugePages.h"
+
 namespace matevo {
 namespace {
 
@@ -112,7 +114,8 @@ private:
 template <typename Sample>
 Result<DecodedImage> readSamples(PngReader& reader, const PngHeader& header) {
     const std::size_t rowSamples = std::size_t(header.width) * std::size_t(header.channels);
-    std::vector<Sample> samples(rowSamples * header.height);
+    std::vector<Sample> samples;
+    resizeOnHugePages(samples, rowSamples * header.height);
     std::vector<png_bytep> rows(header.height);
     for (std::size_t y = 0; y < rows.size(); ++y)
         rows[y] = reinterpret_cast<png_bytep>(samples.data() + y * rowSamples);
