@@ -63,8 +63,9 @@ void drawLegend(const HeatmapView& heatmap) {
     const auto [topLeft, width] = drawColourRamp(colormapSrgb);
     const float barHeight = kBarHeight;
     const float range = heatmap.maxDeltaE - heatmap.minDeltaE;
-    const auto xOf = [&](double deltaE) {
-        return topLeft.x + width * float((deltaE - heatmap.minDeltaE) / range);
+    // Captured by name: clang 14 (the sanitizer build's) cannot capture structured bindings.
+    const auto xOf = [&heatmap, range, left = topLeft.x, width = width](double deltaE) {
+        return left + width * float((deltaE - heatmap.minDeltaE) / range);
     };
     char label[32];
     std::snprintf(label, sizeof label, "%.3g", heatmap.minDeltaE);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,20 @@ std::string displayFormat(std::string name) {
                    [](unsigned char c) { return char(std::toupper(c)); });
     return name;
 }
+
+// The file's bytes as OpenImageIO reads them. OpenImageIO 2.4's IOMemReader accepts a seek to
+// any offset and then copies from before the buffer for a negative one: an OpenEXR file whose
+// line offsets point before its start (found by the image fuzz target) read past our memory.
+class BoundedMemoryReader final : public OIIO::Filesystem::IOMemReader {
+public:
+    using IOMemReader::IOMemReader;
+    bool seek(int64_t offset) override {
+        return offset >= 0 && std::uint64_t(offset) <= size() && IOMemReader::seek(offset);
+    }
+    size_t pread(void* buffer, size_t count, int64_t offset) override {
+        return offset < 0 ? 0 : IOMemReader::pread(buffer, count, offset);
+    }
+};
 
 // The sample type DecodedImage keeps for a file's own type: 8 and 16 bits as they are, wider
 // or signed integers as 16 bits, every floating-point type as float. The samples are read as
@@ -79,7 +94,7 @@ Result<DecodedImage> decode(std::string_view bytes, const std::filesystem::path&
     auto input = OIIO::ImageInput::create(extension);
     if (!input)
         return Error{"unsupported image type '." + extension + "' (not one OpenImageIO reads)"};
-    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    BoundedMemoryReader memory(bytes.data(), bytes.size());
     if (input->supports("ioproxy") && !input->set_ioproxy(&memory))
         return Error{"cannot decode from memory: " + oneLine(input->geterror())};
     // Straight alpha as stored; without this hint OpenImageIO would premultiply on read.
