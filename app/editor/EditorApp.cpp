@@ -116,6 +116,8 @@ private:
 
     bool frame(std::optional<std::filesystem::path>& screenshotPath);
     ui::VariantsActions playScript(std::optional<std::filesystem::path>& screenshotPath);
+    // Whether the GA run and the variant search a script may wait for are done and shown.
+    ScriptPlayer::Settled scriptSettled();
     void applyEvolutionResults();
     void applyCompareMetricsResults();
     void applyVariantsResults();
@@ -273,8 +275,13 @@ int EditorApp::run() {
         // step or snapshot, or the progress of a running job. An idle editor draws nothing: on
         // a two-core machine every frame is time taken from the GA. The timeout keeps SIGTERM
         // and the progress line responsive.
-        const bool scriptDue = !script_.finished() && !script_.waitingForEvolution() &&
-                               (!script_.idling() || script_.idleOver());
+        // A script waiting for work needs frames once the work has settled, even when the
+        // work was never started (a setting changed to the value it had): nothing else would
+        // wake the loop then.
+        const bool scriptDue =
+            !script_.finished() &&
+            (script_.waitingForEvolution() ? script_.awaitedWorkSettled(scriptSettled())
+                                           : !script_.idling() || script_.idleOver());
         const bool due = screenshotPath || scriptDue || input_->hasPending() || framesToSettle > 0;
         const bool busy = worker_->busy() || compareWorker_->busy() || variantsWorker_->busy() ||
                           exportWorker_->busy();
@@ -373,10 +380,13 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     return drawn;
 }
 
+ScriptPlayer::Settled EditorApp::scriptSettled() {
+    return {!worker_->busy() && display_->shownFinished(),
+            !variantsWorker_->busy() && !variantsWorker_->hasResult()};
+}
+
 ui::VariantsActions EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
-    const ScriptPlayer::Settled settled{!worker_->busy() && display_->shownFinished(),
-                                        !variantsWorker_->busy() && !variantsWorker_->hasResult()};
-    const ScriptEffects effects = script_.step(ui_, settled);
+    const ScriptEffects effects = script_.step(ui_, scriptSettled());
     if (!effects.error.empty()) failure_ = effects.error;
     if (effects.quit) quitRequested_ = true;
     if (effects.resize)

@@ -40,6 +40,15 @@ public:
         bool evolution = false;
         bool variants = false;
     };
+    // The next action waits for work that has settled: it needs a frame or two to finish.
+    bool awaitedWorkSettled(Settled settled) const {
+        if (finished()) return false;
+        switch (actions_[next_].kind) {
+            case ScriptAction::Kind::WaitEvolution: return settled.evolution;
+            case ScriptAction::Kind::WaitVariants: return settled.variants;
+            default: return false;
+        }
+    }
     // Runs the actions due this frame.
     ScriptEffects step(ui::EditorUi& ui, Settled settled);
 

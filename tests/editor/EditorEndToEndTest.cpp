@@ -315,5 +315,18 @@ TEST(EditorScript, BadScriptIsBadUsageNamingFileAndLine) {
     fs::remove_all(dir);
 }
 
+// Waiting for a run that a script's change never started (a setting set to the value it has)
+// ends at once: the editor used to stop drawing and wait forever.
+TEST(EditorScript, WaitingAfterAChangeToTheSameValueFinishes) {
+    const fs::path dir = freshDirectory("same_value");
+    std::ofstream(dir / "script.txt")
+        << "population 30\nwait-evolution\npopulation 30\nwait-evolution\nquit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' timeout 60 '" + MATEVO_BINARY_DIR +
+        "/matevo' edit --validate --script '" + (dir / "script.txt").string() + "'");
+    EXPECT_EQ(run.exitCode, 0) << "124 is the timeout\n" << run.err;
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace matevo::testing

@@ -32,6 +32,16 @@ protected:
     const std::filesystem::path& folder_ = scratch_.path();
 };
 
+std::string fileBytes(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// An input the fuzzer found, kept in its corpus: byte 0 chose the image type, the rest is the file.
+std::string fuzzFinding(const std::string& name) {
+    return fileBytes(std::string(MATEVO_SOURCE_DIR) + "/tests/fuzz/corpus/image/" + name);
+}
+
 Image randomImage(int width, int height, std::uint32_t seed) {
     return testdata::randomImage(width, height, seed, true);
 }
@@ -189,8 +199,7 @@ TEST_F(ImageFileTest, MissingAndNonImageFilesGiveOneLineErrors) {
 TEST_F(ImageFileTest, ExrHeaderClaimingMoreThanTheFileIsRefusedBeforeDecoding) {
     const auto valid = folder_ / "valid.exr";
     ASSERT_TRUE(writeImage(randomImage(3, 2, 6), valid).ok());
-    std::ifstream in(valid, std::ios::binary);
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string bytes = fileBytes(valid);
     ASSERT_TRUE(decodeImageFile(bytes, valid).ok());
 
     // The first attribute: its name and type, NUL-terminated, then its size (little-endian).
@@ -213,10 +222,7 @@ TEST_F(ImageFileTest, ExrHeaderClaimingMoreThanTheFileIsRefusedBeforeDecoding) {
 // fuzzer) declares 73 bytes for 37 bytes of channels, and what OpenEXR then reads as the next
 // attribute claims far more than the file holds.
 TEST_F(ImageFileTest, ExrHeaderIsWalkedAsOpenExrReadsIt) {
-    std::ifstream in(
-        std::string(MATEVO_SOURCE_DIR) + "/tests/fuzz/corpus/image/exr-chlist-declared-size.bin",
-        std::ios::binary);
-    const std::string input((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string input = fuzzFinding("exr-chlist-declared-size.bin");
     ASSERT_GT(input.size(), 1u);
     const auto file = folder_ / "found.exr";
     auto read = decodeImageFile(std::string_view(input).substr(1), file);  // byte 0: the type
@@ -230,10 +236,7 @@ TEST_F(ImageFileTest, ExrHeaderIsWalkedAsOpenExrReadsIt) {
 // fuzzer) claims a ZIP-compressed data window about a million pixels wide: OpenEXR allocated
 // 124 MiB twice for it. Under a limit below that it is refused before OpenEXR sees it.
 TEST_F(ImageFileTest, ExrBlocksPastTheMemoryLimitAreRefusedBeforeOpenExrAllocatesThem) {
-    std::ifstream in(
-        std::string(MATEVO_SOURCE_DIR) + "/tests/fuzz/corpus/image/exr-wide-zip-blocks.bin",
-        std::ios::binary);
-    const std::string input((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string input = fuzzFinding("exr-wide-zip-blocks.bin");
     ASSERT_GT(input.size(), 1u);
     const auto file = folder_ / "wide.exr";
     const auto small = folder_ / "small.exr";
