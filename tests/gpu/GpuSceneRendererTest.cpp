@@ -36,6 +36,11 @@ struct PresetCase {
     SceneSettings scene;
 };
 
+// The studio at a coarse resolution, quick to prefilter.
+Result<PrefilteredEnvironment> smallStudio() {
+    return loadEnvironment("studio", {.width = 64, .levels = 7, .samplesPerTexel = 16});
+}
+
 std::vector<PresetCase> validationPresets() {
     std::vector<PresetCase> cases;
     for (const char* name : {"validation_metal.json", "validation_metal_depth.json",
@@ -152,7 +157,7 @@ TEST(GpuSceneRenderer, ClusterCullingChangesNoPixel) {
     ASSERT_TRUE(runner.ok());
     const std::vector<PresetCase> presets = validationPresets();
     ASSERT_EQ(presets.size(), 3u);
-    auto environment = loadEnvironment("studio", {.width = 64, .levels = 7, .samplesPerTexel = 16});
+    auto environment = smallStudio();
     ASSERT_TRUE(environment.ok());
     SceneTextures textures = presets[1].textures;  // the base-colour texture
     textures.environment = *environment;
@@ -244,7 +249,7 @@ TEST(GpuSceneRenderer, StudioLightingMatchesTheCpuReferenceOnTheSphere) {
     ASSERT_NE(context, nullptr);
     auto runner = gpu::CommandRunner::create(context->device);
     ASSERT_TRUE(runner.ok());
-    auto environment = loadEnvironment("studio", {.width = 64, .levels = 7, .samplesPerTexel = 16});
+    auto environment = smallStudio();
     ASSERT_TRUE(environment.ok());
     for (PresetCase& preset : validationPresets()) {
         preset.textures.environment = *environment;
@@ -278,7 +283,7 @@ TEST(GpuSceneRenderer, DisplayPassMatchesTheCpuBackdropAndToneMap) {
     ASSERT_TRUE(runner.ok());
     std::vector<PresetCase> presets = validationPresets();
     ASSERT_FALSE(presets.empty());
-    auto environment = loadEnvironment("studio", {.width = 64, .levels = 7, .samplesPerTexel = 16});
+    auto environment = smallStudio();
     ASSERT_TRUE(environment.ok());
     SceneTextures textures;
     textures.environment = *environment;
