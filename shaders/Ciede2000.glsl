@@ -15,6 +15,25 @@ float seventhPower(float x) {
     return square * square * square * x;
 }
 
+// T = 1 - 0.17 cos(h - 30°) + 0.24 cos 2h + 0.32 cos(3h + 6°) - 0.20 cos(4h - 63°), from one
+// sine and cosine by the multiple-angle identities: each cos() is a polynomial of many
+// instructions per lane on lavapipe.
+float hueWeight(float h) {
+    float c1 = cos(h);
+    float s1 = sin(h);
+    float c2 = 2.0 * c1 * c1 - 1.0;
+    float s2 = 2.0 * s1 * c1;
+    float c3 = c1 * (2.0 * c2 - 1.0);  // cos 3h = cos h (2 cos 2h - 1)
+    float s3 = s1 * (2.0 * c2 + 1.0);  // sin 3h = sin h (2 cos 2h + 1)
+    float c4 = 2.0 * c2 * c2 - 1.0;
+    float s4 = 2.0 * s2 * c2;
+    const float cos30 = 0.86602540378, sin30 = 0.5;
+    const float cos6 = 0.99452189537, sin6 = 0.10452846327;
+    const float cos63 = 0.45399049974, sin63 = 0.89100652419;
+    return 1.0 - 0.17 * (c1 * cos30 + s1 * sin30) + 0.24 * c2 +
+           0.32 * (c3 * cos6 - s3 * sin6) - 0.20 * (c4 * cos63 + s4 * sin63);
+}
+
 float ciede2000(vec3 lab1, vec3 lab2) {
     float c1 = length(lab1.yz);
     float c2 = length(lab2.yz);
@@ -44,8 +63,7 @@ float ciede2000(vec3 lab1, vec3 lab2) {
         if (abs(hp1 - hp2) <= 180.0) hMean *= 0.5;
         else hMean = hMean < 360.0 ? 0.5 * (hMean + 360.0) : 0.5 * (hMean - 360.0);
     }
-    float t = 1.0 - 0.17 * cos(radians(hMean - 30.0)) + 0.24 * cos(radians(2.0 * hMean))
-            + 0.32 * cos(radians(3.0 * hMean + 6.0)) - 0.20 * cos(radians(4.0 * hMean - 63.0));
+    float t = hueWeight(radians(hMean));
     float hueOffset = (hMean - 275.0) / 25.0;
     float dTheta = 30.0 * exp(-hueOffset * hueOffset);
     float cMeanP7 = seventhPower(cMean);

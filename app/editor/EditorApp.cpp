@@ -128,6 +128,7 @@ private:
     void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
     std::filesystem::path nextSnapshotPath() const;
     bool shouldQuit() const;
+    bool workersBusy() const;
 
     EditorOptions options_;
     std::string iniPath_;
@@ -148,7 +149,8 @@ private:
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
-    // Frames drawn after a change, so that hover states and popups settle before waiting.
+    // Frames drawn after input or a finished job, so that hover states and popups settle
+    // before waiting.
     static constexpr int kSettleFrames = 3;
     std::atomic<bool> workerPosted_{false};  // a worker has a result or progress to show
     std::vector<std::shared_ptr<ShownImage>> compareImages_;   // what Compare metrics shows
@@ -260,6 +262,11 @@ EditorApp::~EditorApp() {
     (void)renderer_->waitIdle();  // frames in flight use the images released below
 }
 
+bool EditorApp::workersBusy() const {
+    return worker_->busy() || compareWorker_->busy() || variantsWorker_->busy() ||
+           exportWorker_->busy();
+}
+
 bool EditorApp::shouldQuit() const {
     return quitRequested_ || terminationRequested.load() || glfwWindowShouldClose(window_.get()) ||
            !failure_.empty();
@@ -283,8 +290,7 @@ int EditorApp::run() {
             (script_.waitingForEvolution() ? script_.awaitedWorkSettled(scriptSettled())
                                            : !script_.idling() || script_.idleOver());
         const bool due = screenshotPath || scriptDue || input_->hasPending() || framesToSettle > 0;
-        const bool busy = worker_->busy() || compareWorker_->busy() || variantsWorker_->busy() ||
-                          exportWorker_->busy();
+        const bool busy = workersBusy();
         if (due)
             glfwPollEvents();
         else
@@ -294,7 +300,11 @@ int EditorApp::run() {
         if (auto dropped = input_->takeDroppedFiles(); !dropped.empty())
             ui_.dropFile(dropped.front());
         const bool woken = workerPosted_.exchange(false);
-        if (input_->takeChanged() || woken) framesToSettle = kSettleFrames;
+        if (input_->takeChanged()) framesToSettle = kSettleFrames;
+        // A worker's result needs one frame while its job still runs (the next result or the
+        // periodic frame follows anyway); the job's last one settles like input. On lavapipe
+        // every frame takes 20-35 ms of both cores from the worker.
+        if (woken) framesToSettle = std::max(framesToSettle, workersBusy() ? 1 : kSettleFrames);
         if (!due && !busy && framesToSettle == 0) continue;  // nothing changed: draw nothing
         framesToSettle = std::max(0, framesToSettle - 1);
         if (script_.idling()) timings_.frameWhileScriptIdle();

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "VulkanContext.h"
+#include "color/Srgb.h"
 #include "gpu/GraphicsPipeline.h"
 #include "gpu/HeatmapColormap.h"
 #include "gpu/VulkanError.h"
@@ -20,7 +21,6 @@ enum Binding : std::uint32_t { kRenderBinding = 0, kDeltaEBinding = 1, kColormap
 
 // Push constants: the vertex transform, then the fragment shader's heatmap settings.
 struct FragmentSettings {
-    std::uint32_t showHeatmap;
     float minDeltaE;
     float maxDeltaE;
     std::uint32_t colormapBase;  // 0: viridis (ΔE00), 256: magma (ꟻLIP)
@@ -123,15 +123,26 @@ Status ImageBridge::createPipeline(VkRenderPass renderPass) {
     spec.alphaBlended = true;
     spec.layout = pipelineLayout_.get();
     spec.renderPass = renderPass;
-    spec.name = "image";
-    auto pipeline = gpu::createGraphicsPipeline(device_, spec);
-    if (!pipeline) return pipeline.error();
-    pipeline_ = std::move(pipeline).value();
+    for (bool heatmap : {false, true}) {
+        const VkBool32 showHeatmap = heatmap ? VK_TRUE : VK_FALSE;
+        const VkSpecializationMapEntry entry{0, 0, sizeof showHeatmap};
+        const VkSpecializationInfo specialization{1, &entry, sizeof showHeatmap, &showHeatmap};
+        spec.fragmentSpecialization = &specialization;
+        spec.name = heatmap ? "heatmap image" : "image";
+        auto pipeline = gpu::createGraphicsPipeline(device_, spec);
+        if (!pipeline) return pipeline.error();
+        pipelines_[heatmap] = std::move(pipeline).value();
+    }
     return Ok{};
 }
 
 Status ImageBridge::createSharedResources() {
-    const gpu::DeltaE00Pass::Colormap colors[2] = {gpu::heatmapColormap(), gpu::flipColormap()};
+    // Encoded once here rather than at every pixel of every frame.
+    gpu::DeltaE00Pass::Colormap colors[2] = {gpu::heatmapColormap(), gpu::flipColormap()};
+    for (auto& colormap : colors)
+        for (auto& entry : colormap)
+            for (int channel = 0; channel < 3; ++channel)
+                entry[channel] = float(linearToSrgb(entry[channel]));
     auto colormap = gpu::Buffer::create(context_.device(), sizeof colors,
                                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUse::Upload);
     if (!colormap) return colormap.error();
@@ -286,7 +297,8 @@ void ImageBridge::draw(const ImageDraw& image) const {
     if (clipX1 <= clipX0 || clipY1 <= clipY0) return;
 
     const VkPipelineLayout layout = pipelineLayout_.get();
-    vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
+    vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                      pipelines_[image.view->heatmap].get());
     const VkDescriptorSet set = image.view->owner->set_;
     vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 0,
                             nullptr);
@@ -301,8 +313,8 @@ void ImageBridge::draw(const ImageDraw& image) const {
     vkCmdPushConstants(commands_, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, kTransformBytes,
                        transform);
     const bool flip = metric_ == ImageMetric::Flip;
-    const FragmentSettings settings{image.view->heatmap ? 1u : 0u, flip ? 0.0f : minDeltaE_,
-                                    flip ? 1.0f : maxDeltaE_, flip ? 256u : 0u};
+    const FragmentSettings settings{flip ? 0.0f : minDeltaE_, flip ? 1.0f : maxDeltaE_,
+                                    flip ? 256u : 0u};
     vkCmdPushConstants(commands_, layout, VK_SHADER_STAGE_FRAGMENT_BIT, kTransformBytes,
                        sizeof settings, &settings);
     vkCmdDrawIndexed(commands_, image.elementCount, 1, image.firstIndex, image.vertexOffset, 0);

@@ -96,7 +96,7 @@ private:
     gpu::UniqueSampler deltaESampler_;  // nearest: uncovered pixels must not blend in
     gpu::UniqueDescriptorSetLayout setLayout_;
     gpu::UniquePipelineLayout pipelineLayout_;
-    gpu::UniquePipeline pipeline_;
+    gpu::UniquePipeline pipelines_[2];  // [heatmap]: a render, or an error map coloured
     gpu::Buffer colormap_;  // the heatmap colours, a uniform buffer: viridis, then magma
     std::optional<gpu::DisplayTile> noDeltaE_;  // 1x1 "not covered", bound for tiles without one
     ImageMetric metric_ = ImageMetric::DeltaE00;

@@ -69,6 +69,9 @@ private:
     Buffer targetRender_;
     Buffer targetLab_;  // target_ in L*a*b*, with its alpha: what each render compares with
     ImageBatchShape bufferShape_;
+    // The coverage whose background renders_, deltaE_ and heatmaps_ already hold (the fills
+    // are skipped while it stays the same); none after the buffers are made.
+    std::optional<GpuSphereSamples::Key> backgroundFilledFor_;
     Buffer renders_;
     Buffer deltaE_;
     Buffer heatmaps_;

@@ -93,7 +93,7 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
 Status GpuSphereRenderer::record(VkCommandBuffer commands,
                                  std::span<const MaterialInstance> materials,
                                  const SceneSettings& scene, int size, const Buffer& renders,
-                                 const TargetComparison* comparison) {
+                                 const TargetComparison* comparison, bool backgroundFilled) {
     if (auto uploaded = materials_.upload(*device_, *tables_, materials); !uploaded)
         return uploaded.error();
     if (auto prepared = samples_.prepare(*device_, scene, size); !prepared)
@@ -102,11 +102,16 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
     std::memcpy(sceneBuffer_.bytes().data(), &gpuScene, sizeof(gpuScene));
 
     const ImageBatchShape shape{size, size, uint32_t(materials.size())};
-    // The shader writes covered pixels only.
-    recordClear(commands, renders, shape, 4, 0.0f);
-    if (comparison) {
-        recordClear(commands, *comparison->deltaE, shape, 1, -1.0f);
-        recordClear(commands, *comparison->heatmaps, shape, 4, 0.0f);
+    // The shader writes covered pixels only. (On lavapipe a fill is a memset on the queue's
+    // thread: a 64-candidate grid's three buffers take about 36 MB of it.)
+    if (!backgroundFilled) {
+        recordClear(commands, renders, shape, 4, 0.0f);
+        if (comparison) {
+            recordClear(commands, *comparison->deltaE, shape, 1, -1.0f);
+            recordClear(commands, *comparison->heatmaps, shape, 4, 0.0f);
+        }
+    } else {
+        recordRewrite(commands);
     }
     const uint32_t singlePoint = samples_.singlePointPixels();
     const uint32_t silhouette = samples_.coveredPixels() - singlePoint;

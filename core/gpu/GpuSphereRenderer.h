@@ -44,9 +44,12 @@ public:
     // materials.size() images). Uploads the materials' lobe tables and the scene into buffers
     // it keeps, so the caller must wait for the submission before recording again.
     // With a comparison it also writes the ΔE00 maps and heatmaps against the target.
+    // The shader writes covered pixels only; the background is filled first unless
+    // `backgroundFilled` says that these buffers hold an earlier render of the same coverage
+    // (GpuSphereSamples::Key) and nothing wrote their background since.
     Status record(VkCommandBuffer commands, std::span<const MaterialInstance> materials,
                   const SceneSettings& scene, int size, const Buffer& renders,
-                  const TargetComparison* comparison = nullptr);
+                  const TargetComparison* comparison = nullptr, bool backgroundFilled = false);
 
     // One submission: renders every material and reads the images back.
     Result<std::vector<Image>> render(CommandRunner& runner,

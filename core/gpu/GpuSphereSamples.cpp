@@ -39,7 +39,7 @@ Result<Buffer> uploadRecords(const Device& device, const void* records, std::siz
 }  // namespace
 
 Status GpuSphereSamples::prepare(const Device& device, const SceneSettings& scene, int size) {
-    const Key key{scene.cameraPosition, scene.fieldOfViewDegrees, size};
+    const Key key = keyOf(scene, size);
     if (key_ == key) return Ok{};
     const SphereSamples samples = traceSphereSamples(scene, size);
     std::vector<GpuPixel> pixels;

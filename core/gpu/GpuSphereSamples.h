@@ -17,6 +17,17 @@ namespace matevo::gpu {
 
 class GpuSphereSamples {
 public:
+    // What the points depend on; two scenes with equal keys cover the same pixels.
+    struct Key {
+        std::array<double, 3> cameraPosition;
+        double fieldOfViewDegrees;
+        int size;
+        bool operator==(const Key&) const = default;
+    };
+    static Key keyOf(const SceneSettings& scene, int size) {
+        return {scene.cameraPosition, scene.fieldOfViewDegrees, size};
+    }
+
     // Traces and uploads the points unless those of this camera and size are already there;
     // the caller must not prepare while a submission reads them.
     Status prepare(const Device& device, const SceneSettings& scene, int size);
@@ -28,12 +39,6 @@ public:
     uint32_t singlePointPixels() const { return singlePointPixels_; }
 
 private:
-    struct Key {
-        std::array<double, 3> cameraPosition;
-        double fieldOfViewDegrees;
-        int size;
-        bool operator==(const Key&) const = default;
-    };
     std::optional<Key> key_;
     Buffer pixels_;
     Buffer points_;

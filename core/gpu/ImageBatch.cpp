@@ -61,6 +61,16 @@ void recordClear(VkCommandBuffer commands, const Buffer& batch, const ImageBatch
                          nullptr);
 }
 
+void recordRewrite(VkCommandBuffer commands) {
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(commands,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                         nullptr);
+}
+
 void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index,
                  const Image& image) {
     const std::size_t floats = std::size_t(shape.pixelCount()) * 4;

@@ -30,6 +30,10 @@ Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& sh
 void recordClear(VkCommandBuffer commands, const Buffer& batch, const ImageBatchShape& shape,
                  int channels, float value);
 
+// Records ordering earlier passes and copies that read or write a batch before compute shaders
+// of the same submission write it again (what recordClear orders, when the fill is skipped).
+void recordRewrite(VkCommandBuffer commands);
+
 // Copies image into slot `index` (sizes must match the shape).
 void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index,
                  const Image& image);

@@ -3,6 +3,7 @@
 #include "render/PopulationRenderer.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -92,6 +93,40 @@ TEST(PopulationRenderer, TargetChangeIsRenderedAgain) {
         auto smaller = renderer->evaluate(population.target, population.candidates, {}, kSize / 2);
         ASSERT_TRUE(smaller.ok()) << renderer->name();
         EXPECT_EQ(smaller->target.width, kSize / 2) << renderer->name();
+    }
+    test::expectNoValidationMessages(*test::validatedContext());
+}
+
+// The GPU fills the background of its kept buffers once per coverage: a second evaluation of
+// the same shape skips the fills, a moved camera (other pixels covered at the same size) fills
+// them again. Either way the results are what a fresh renderer hands back.
+TEST(PopulationRenderer, KeptBuffersHoldNothingOfAnEarlierCoverage) {
+    const Population population = makePopulation();
+    auto reused = gpuRenderer();
+    auto fresh = gpuRenderer();
+    ASSERT_NE(reused, nullptr);
+    ASSERT_NE(fresh, nullptr);
+    SceneSettings fartherAway;
+    fartherAway.cameraPosition = {0.0, 0.0, 6.0};  // a smaller sphere: fewer pixels covered
+    const SceneSettings scenes[] = {SceneSettings{}, SceneSettings{}, fartherAway};
+    std::optional<PopulationEvaluation> last;
+    for (std::size_t call = 0; call < std::size(scenes); ++call) {
+        auto evaluation =
+            reused->evaluate(population.target, population.candidates, scenes[call], kSize);
+        ASSERT_TRUE(evaluation.ok()) << evaluation.error().message;
+        if (last) {
+            EXPECT_EQ(last->target.rgba == evaluation->target.rgba, call == 1)
+                << "only the camera move changes the picture";
+        }
+        last = std::move(evaluation).value();
+    }
+    auto expected = fresh->evaluate(population.target, population.candidates, fartherAway, kSize);
+    ASSERT_TRUE(expected.ok());
+    for (std::size_t i = 0; i < population.candidates.size(); ++i) {
+        EXPECT_EQ(last->candidates[i].rgba, expected->candidates[i].rgba) << i;
+        EXPECT_EQ(last->deltaE[i].deltaE, expected->deltaE[i].deltaE) << i;
+        EXPECT_EQ(last->deltaE[i].covered, expected->deltaE[i].covered) << i;
+        EXPECT_EQ(last->heatmaps[i].rgba, expected->heatmaps[i].rgba) << i;
     }
     test::expectNoValidationMessages(*test::validatedContext());
 }

@@ -1,15 +1,16 @@
 #version 450
-// An editor image straight from the GPU: a linear render, or an error map coloured through a
-// heatmap colour map (core/color's viridis for ΔE00 or magma for ꟻLIP, in linear RGB, the same
-// nearest-entry rule), encoded
-// to sRGB for the UNORM window and tinted by the vertex colour (its alpha carries the overlay
-// opacity). The heatmap range is a push constant, so changing it re-colours without any upload.
+// An editor image straight from the GPU: a linear render encoded to sRGB for the UNORM window,
+// or an error map coloured through a heatmap colour map (core/color's viridis for ΔE00 or magma
+// for ꟻLIP, the same nearest-entry rule, its entries already sRGB-encoded), tinted by the vertex
+// colour (its alpha carries the overlay opacity). The heatmap range is a push constant, so
+// changing it re-colours without any upload. Two pipelines, render or heatmap, by
+// specialisation: lavapipe would run both sides of a branch at every pixel.
+layout(constant_id = 0) const bool kHeatmap = false;
 layout(set = 0, binding = 0) uniform sampler2D renderImage;  // linear RGBA
 layout(set = 0, binding = 1) uniform sampler2D deltaEImage;  // ΔE00 or ꟻLIP; negative: not covered
-layout(set = 0, binding = 2) uniform Colormap { vec4 colormap[512]; };  // viridis, then magma
+layout(set = 0, binding = 2) uniform Colormap { vec4 colormap[512]; };  // viridis, then magma; sRGB
 layout(push_constant) uniform Settings {
-    layout(offset = 16) uint showHeatmap;
-    float minDeltaE;  // maps to the colour map's first entry
+    layout(offset = 16) float minDeltaE;  // maps to the colour map's first entry
     float maxDeltaE;  // maps to its last
     uint colormapBase;  // 0: viridis, 256: magma
 } settings;
@@ -31,7 +32,11 @@ vec4 heatmapTexel() {
 }
 
 void main() {
-    vec4 linear = settings.showHeatmap != 0u ? heatmapTexel() : texture(renderImage, uv);
-    outColor = color * vec4(encodeSrgb(linear.r), encodeSrgb(linear.g), encodeSrgb(linear.b),
-                            linear.a);
+    if (kHeatmap) {
+        outColor = color * heatmapTexel();
+    } else {
+        vec4 linear = texture(renderImage, uv);
+        outColor = color * vec4(encodeSrgb(linear.r), encodeSrgb(linear.g),
+                                encodeSrgb(linear.b), linear.a);
+    }
 }
