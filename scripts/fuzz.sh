@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (tests/fuzz) with Debian's clang, ASan and UBSan into
-# build-fuzz/, then fuzzes each for SECONDS (default 10), starting from the committed seed
-# corpus. New corpus entries go to build-fuzz/corpus/, never into the repository; a crash
-# leaves its input in build-fuzz/findings/ and fails the script.
+# Fuzzes each libFuzzer target (tests/fuzz) for SECONDS (default 10), starting from the committed
+# seed corpus. The targets come from the sanitizer build (build-sanitize/: clang, ASan + UBSan;
+# MATEVO_SANITIZE=1 scripts/build.sh), built here if needed. New corpus entries go to
+# build-sanitize/corpus/, never into the repository; a crash leaves its input in
+# build-sanitize/findings/ and fails the script.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]     e.g. scripts/fuzz.sh 600 fuzz_preset
 # Long runs: nice -n 19 scripts/fuzz.sh 3600 (with the kernel's autogroup scheduling, nice ranks a
 # process only within its session: `echo 19 > /proc/self/autogroup` first to yield to others).
@@ -13,12 +14,8 @@ shift || true
 targets=("$@")
 [[ ${#targets[@]} -gt 0 ]] || targets=(fuzz_preset fuzz_genome fuzz_editor_script fuzz_table_cache fuzz_image)
 
-build_dir=build-fuzz
-if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
-    CC=clang CXX=clang++ cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-        -DMATEVO_FUZZ=ON >/dev/null
-fi
-cmake --build "$build_dir" -j"$(nproc)" --target matevo_fuzz_targets
+build_dir=build-sanitize
+MATEVO_SANITIZE=1 scripts/build.sh "${targets[@]}"
 
 declare -A corpus_of=([fuzz_preset]=preset [fuzz_genome]=genome
                       [fuzz_editor_script]=editor_script [fuzz_table_cache]=table_cache

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Quick start, command 2: install what is missing, build, and run the whole test suite.
-# MATEVO_SANITIZE=1 builds an ASan+UBSan tree in build-sanitize/ and tests that instead, then
-# fuzzes each parser briefly (scripts/fuzz.sh, MATEVO_FUZZ_SECONDS each, default 10).
+# MATEVO_SANITIZE=1 builds the ASan + UBSan tree build-sanitize/ (scripts/build.sh) and tests
+# that instead, then fuzzes each parser briefly (scripts/fuzz.sh, MATEVO_FUZZ_SECONDS each,
+# default 10) with the fuzz targets that build made. .ci/run runs both, in that order.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --tests
+build_dir=build
 test_environment=()
 if [[ "${MATEVO_SANITIZE:-0}" == 1 ]]; then
-    export BUILD_DIR=build-sanitize BUILD_TYPE=RelWithDebInfo CMAKE_ARGS="-DMATEVO_SANITIZE=ON"
+    build_dir=build-sanitize
     # Keep the Vulkan driver and layer mapped, so that LeakSanitizer can name the module of
     # their own leaks and we suppress exactly those (tests/sanitize/PinVulkanModules.c).
     test_environment=(
@@ -19,7 +21,6 @@ if [[ "${MATEVO_SANITIZE:-0}" == 1 ]]; then
         LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0"
     )
 fi
-build_dir=${BUILD_DIR:-build}
 scripts/build.sh
 env "${test_environment[@]}" ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" "$@"
 if [[ "${MATEVO_SANITIZE:-0}" == 1 ]]; then

@@ -1,16 +1,15 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 // The second of the two ꟻLIP passes (core/gpu/FlipPass.h): the row-filtered planes of the
 // reference and of each candidate filtered along y, then the colour difference, the feature
 // difference and their combination per pixel, as core/color/FlipStages.cpp. Writes the error
 // (pooled pixels, covered in both images with alpha >= 0.5 as core/color/Coverage.h says, as
-// e ≥ 0; the others as −1 − e)
-// and the magma heatmap (transparent where not pooled).
+// e ≥ 0; the others as −1 − e) and the magma heatmap (transparent where not pooled). The images
+// are not read again: the planes carry each pixel's alpha.
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 0) readonly buffer Reference { vec4 referencePixels[]; };
-layout(std430, binding = 1) readonly buffer Candidates { vec4 candidatePixels[]; };
-layout(std430, binding = 3) readonly buffer Planes { float planes[]; };
+layout(std430, binding = 3) readonly buffer Planes { vec4 planes[]; };
 layout(std430, binding = 4) writeonly buffer Error { float flipError[]; };
 layout(std430, binding = 5) writeonly buffer Heatmap { vec4 heatmapPixels[]; };
 layout(std430, binding = 6) readonly buffer Colormap { vec4 colormap[256]; };
@@ -30,31 +29,43 @@ const mat3 kXyzToLinearSrgb = mat3(3.2409699419045213, -0.96924363628087984, 0.0
 struct Filtered {
     vec3 ycxcz;        // through the contrast-sensitivity filters
     vec2 edge, point;  // (x, y) first and second derivatives of the normalised achromatic
+    float alpha;       // the pixel's own
 };
 
-Filtered columnPass(uint slot, int x, int y) {
-    Filtered filtered;
-    filtered.ycxcz = vec3(0.0);
-    for (int k = -settings.csfRadius; k <= settings.csfRadius; ++k) {
-        uint pixel = uint(clamp(y + k, 0, settings.height - 1) * settings.width + x);
-        filtered.ycxcz += vec3(
-            csfTap(kAchromaticTaps, k) * planes[planeIndex(slot, kAchromaticPlane, pixel)],
-            csfTap(kRedGreenTaps, k) * planes[planeIndex(slot, kRedGreenPlane, pixel)],
-            csfTap(kBlueYellowTaps0, k) * planes[planeIndex(slot, kBlueYellowPlane0, pixel)] +
-                csfTap(kBlueYellowTaps1, k) * planes[planeIndex(slot, kBlueYellowPlane1, pixel)]);
+// Each invocation filters kRun consecutive rows of its column (FlipCommon.glsl), for one
+// image: the plane rows it needs are loaded once, into registers.
+void columnPass(uint slot, int x, int firstRow, out Filtered filtered[kRun]) {
+    vec4 csfRows[kRun + 2 * kRadius], featureRows[kRun + 2 * kRadius];
+    [[unroll]] for (int j = 0; j < kRun + 2 * kRadius; ++j) {
+        int row = clamp(firstRow - kRadius + j, 0, settings.height - 1);
+        uint pixel = uint(row * settings.width + x);
+        csfRows[j] = planes[planeIndex(slot, pixel, 0)];
+        featureRows[j] = planes[planeIndex(slot, pixel, 1)];
     }
-    filtered.edge = vec2(0.0);
-    filtered.point = vec2(0.0);
-    for (int k = -settings.featureRadius; k <= settings.featureRadius; ++k) {
-        uint pixel = uint(clamp(y + k, 0, settings.height - 1) * settings.width + x);
-        float gaussian = featureTap(kGaussianTaps, k);
-        float blurred = planes[planeIndex(slot, kBlurredPlane, pixel)];
-        filtered.edge += vec2(gaussian * planes[planeIndex(slot, kSlopePlane, pixel)],
-                              featureTap(kFirstDerivativeTaps, k) * blurred);
-        filtered.point += vec2(gaussian * planes[planeIndex(slot, kCurvaturePlane, pixel)],
-                               featureTap(kSecondDerivativeTaps, k) * blurred);
+    [[unroll]] for (int i = 0; i < kRun; ++i) {
+        int centre = i + kRadius;
+        vec4 csf = csfTaps(0) * csfRows[centre];
+        [[unroll]] for (int k = 1; k <= kCsfRadius; ++k)
+            csf += csfTaps(k) * (csfRows[centre - k] + csfRows[centre + k]);
+        filtered[i].ycxcz = vec3(csf.xy, csf.z + csf.w);
+
+        // featureRows: (∂x, ∂²x, Gaussian along x); along y the Gaussian filters the first
+        // two, the derivatives (odd, even) the third.
+        vec3 feature = featureRows[centre].xyz;
+        vec4 sums = vec4(featureTap(kGaussianTaps, 0) * feature.xy,
+                         featureTap(kFirstDerivativeTaps, 0) * feature.z,
+                         featureTap(kSecondDerivativeTaps, 0) * feature.z);
+        [[unroll]] for (int k = 1; k <= kFeatureRadius; ++k) {
+            vec3 above = featureRows[centre - k].xyz, below = featureRows[centre + k].xyz;
+            float gaussian = featureTap(kGaussianTaps, k);
+            sums += vec4(gaussian * (above.xy + below.xy),
+                         featureTap(kFirstDerivativeTaps, k) * (below.z - above.z),
+                         featureTap(kSecondDerivativeTaps, k) * (above.z + below.z));
+        }
+        filtered[i].edge = sums.xz;
+        filtered[i].point = sums.yw;
+        filtered[i].alpha = featureRows[centre].w;
     }
-    return filtered;
 }
 
 // Filtered YyCxCz → XYZ → linear sRGB (clamped) → L*a*b*, with the Hunt adjustment.
@@ -85,24 +96,26 @@ float featureDifference(Filtered reference, Filtered test) {
 
 void main() {
     int pixelCount = settings.width * settings.height;
-    int pixel = int(gl_GlobalInvocationID.x);
-    if (pixel >= pixelCount) return;
-    uint candidate = gl_GlobalInvocationID.y;
-    int x = pixel % settings.width, y = pixel / settings.width;
+    int x = int(gl_GlobalInvocationID.x);
+    if (x >= settings.width) return;
+    int firstRow = int(gl_GlobalInvocationID.y) * kRun;
+    uint candidate = gl_GlobalInvocationID.z;
 
-    Filtered reference = columnPass(0, x, y);
-    Filtered test = columnPass(1 + candidate, x, y);
-    float colorError = colorDifference(reference.ycxcz, test.ycxcz);
-    float featureError = featureDifference(reference, test);
-    // pow(0, 0) is undefined in GLSL; C's 1 is what the CPU reference gives.
-    float error = featureError >= 1.0 ? 1.0 : pow(colorError, 1.0 - featureError);
+    Filtered reference[kRun], test[kRun];
+    columnPass(0, x, firstRow, reference);
+    columnPass(1 + candidate, x, firstRow, test);
+    [[unroll]] for (int i = 0; i < kRun; ++i) {
+        if (firstRow + i >= settings.height) continue;
+        uint pixel = uint((firstRow + i) * settings.width + x);
+        float colorError = colorDifference(reference[i].ycxcz, test[i].ycxcz);
+        float featureError = featureDifference(reference[i], test[i]);
+        // pow(0, 0) is undefined in GLSL; C's 1 is what the CPU reference gives.
+        float error = featureError >= 1.0 ? 1.0 : pow(colorError, 1.0 - featureError);
 
-    uint index = candidate * uint(pixelCount) + uint(pixel);
-    bool pooled =
-        referencePixels[settings.referenceImage * uint(pixelCount) + uint(pixel)].a >= 0.5 &&
-        candidatePixels[(settings.firstCandidate + candidate) * uint(pixelCount) + uint(pixel)].a >=
-            0.5;
-    flipError[index] = pooled ? error : -1.0 - error;
-    heatmapPixels[index] = pooled ? colormap[uint(floor(clamp(error, 0.0, 1.0) * 255.0 + 0.5))]
-                                  : vec4(0.0);
+        uint index = candidate * uint(pixelCount) + pixel;
+        bool pooled = reference[i].alpha >= 0.5 && test[i].alpha >= 0.5;
+        flipError[index] = pooled ? error : -1.0 - error;
+        heatmapPixels[index] = pooled ? colormap[uint(floor(clamp(error, 0.0, 1.0) * 255.0 + 0.5))]
+                                      : vec4(0.0);
+    }
 }

@@ -1,14 +1,17 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 // The first of the two ꟻLIP passes (core/gpu/FlipPass.h): each image composited over black,
 // to YyCxCz, and filtered along x (edge pixels repeated) by every separable filter of
-// LDR-ꟻLIP, as core/color/Flip.cpp's row pass. Workgroups along y are images: 0 the
-// reference, 1 + i candidate i.
-layout(local_size_x = 64) in;
+// LDR-ꟻLIP, as core/color/Flip.cpp's row pass. An invocation takes kRun pixels of one row
+// (gl_GlobalInvocationID.y) of one image (gl_GlobalInvocationID.z: 0 the reference, 1 + i
+// candidate i): it loads and converts them and the filter radius on either side once, into
+// registers, and filters from there.
+layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 0) readonly buffer Reference { vec4 referencePixels[]; };
 layout(std430, binding = 1) readonly buffer Candidates { vec4 candidatePixels[]; };
-layout(std430, binding = 3) writeonly buffer Planes { float planes[]; };
+layout(std430, binding = 3) writeonly buffer Planes { vec4 planes[]; };
 
 #include "FlipCommon.glsl"
 #include "LinearSrgbToLab.glsl"
@@ -29,36 +32,42 @@ vec4 opponent(vec4 pixel) {
 }
 
 void main() {
-    int pixelCount = settings.width * settings.height;
-    int pixel = int(gl_GlobalInvocationID.x);
-    if (pixel >= pixelCount) return;
-    uint slot = gl_GlobalInvocationID.y;
-    int x = pixel % settings.width;
-    int rowStart = pixel - x;
+    uint slot = gl_GlobalInvocationID.z;
+    int y = int(gl_GlobalInvocationID.y);
+    int firstColumn = int(gl_GlobalInvocationID.x) * kRun;
+    if (y >= settings.height || firstColumn >= settings.width) return;
+    int rowStart = y * settings.width;
 
-    float achromatic = 0.0, redGreen = 0.0, blueYellow0 = 0.0, blueYellow1 = 0.0;
-    float slope = 0.0, curvature = 0.0, blurred = 0.0;
-    int radius = max(settings.csfRadius, settings.featureRadius);
-    for (int k = -radius; k <= radius; ++k) {
-        int column = clamp(x + k, 0, settings.width - 1);
-        vec4 color = opponent(pixelOf(slot, uint(rowStart + column)));
-        if (abs(k) <= settings.csfRadius) {
-            achromatic += csfTap(kAchromaticTaps, k) * color.x;
-            redGreen += csfTap(kRedGreenTaps, k) * color.y;
-            blueYellow0 += csfTap(kBlueYellowTaps0, k) * color.z;
-            blueYellow1 += csfTap(kBlueYellowTaps1, k) * color.z;
+    // window[j] holds column firstColumn − kRadius + j, clamped to the row; alphas[i] the
+    // alpha of output i.
+    vec4 window[kRun + 2 * kRadius];
+    float alphas[kRun];
+    [[unroll]] for (int j = 0; j < kRun + 2 * kRadius; ++j) {
+        int column = clamp(firstColumn - kRadius + j, 0, settings.width - 1);
+        vec4 pixel = pixelOf(slot, uint(rowStart + column));
+        window[j] = opponent(pixel);
+        if (j >= kRadius && j < kRadius + kRun) alphas[j - kRadius] = pixel.a;
+    }
+
+    [[unroll]] for (int i = 0; i < kRun; ++i) {
+        int centre = i + kRadius;
+        vec4 csf = csfTaps(0) * window[centre].xyzz;
+        [[unroll]] for (int k = 1; k <= kCsfRadius; ++k)
+            csf += csfTaps(k) * (window[centre - k] + window[centre + k]).xyzz;
+        vec3 feature = vec3(featureTap(kFirstDerivativeTaps, 0), featureTap(kSecondDerivativeTaps, 0),
+                            featureTap(kGaussianTaps, 0)) * window[centre].w;
+        [[unroll]] for (int k = 1; k <= kFeatureRadius; ++k) {
+            // The first derivative is odd (tap −k = −tap k), the others even.
+            float sum = window[centre - k].w + window[centre + k].w;
+            float difference = window[centre + k].w - window[centre - k].w;
+            feature += vec3(featureTap(kFirstDerivativeTaps, k) * difference,
+                            featureTap(kSecondDerivativeTaps, k) * sum,
+                            featureTap(kGaussianTaps, k) * sum);
         }
-        if (abs(k) <= settings.featureRadius) {
-            blurred += featureTap(kGaussianTaps, k) * color.w;
-            slope += featureTap(kFirstDerivativeTaps, k) * color.w;
-            curvature += featureTap(kSecondDerivativeTaps, k) * color.w;
+        if (firstColumn + i < settings.width) {
+            uint pixel = uint(rowStart + firstColumn + i);
+            planes[planeIndex(slot, pixel, 0)] = csf;
+            planes[planeIndex(slot, pixel, 1)] = vec4(feature, alphas[i]);
         }
     }
-    planes[planeIndex(slot, kAchromaticPlane, uint(pixel))] = achromatic;
-    planes[planeIndex(slot, kRedGreenPlane, uint(pixel))] = redGreen;
-    planes[planeIndex(slot, kBlueYellowPlane0, uint(pixel))] = blueYellow0;
-    planes[planeIndex(slot, kBlueYellowPlane1, uint(pixel))] = blueYellow1;
-    planes[planeIndex(slot, kSlopePlane, uint(pixel))] = slope;
-    planes[planeIndex(slot, kCurvaturePlane, uint(pixel))] = curvature;
-    planes[planeIndex(slot, kBlurredPlane, uint(pixel))] = blurred;
 }

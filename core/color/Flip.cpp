@@ -12,6 +12,7 @@
 #include "color/detail/FlipFormulas.h"
 #include "color/detail/ForEachChunk.h"
 #include "color/detail/VectorisedKernel.h"
+#include "common/HugePages.h"
 
 namespace matevo {
 namespace {
@@ -335,8 +336,8 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
     FlipMap map;
     map.width = reference.width;
     map.height = reference.height;
-    map.error.resize(pixelCount);
-    map.pooled.resize(pixelCount);
+    resizeOnHugePages(map.error, pixelCount);
+    resizeOnHugePages(map.pooled, pixelCount);
     if (pixelCount == 0) return map;
 
     const Kernels kernels = makeKernels(settings.pixelsPerDegree);

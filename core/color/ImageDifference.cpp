@@ -11,13 +11,15 @@
 #include "color/detail/FastFloatMath.h"
 #include "color/detail/ForEachChunk.h"
 #include "color/detail/VectorisedKernel.h"
+#include "common/HugePages.h"
 
 namespace matevo {
 namespace {
 
 // Fixed chunk size: the partial sums, and so the mean, never depend on the thread count.
 constexpr std::size_t kChunkPixels = 16384;
-constexpr std::size_t kBlockPixels = 1024;
+// Small enough that a sphere's background rows and row ends make whole blocks to skip.
+constexpr std::size_t kBlockPixels = 256;
 
 // Non-negative floats order like their bit patterns, so the top bits (exponent and three
 // mantissa bits: an eighth of an octave) sort ΔE00 values into ordered buckets. The p95 then
@@ -55,6 +57,14 @@ MATEVO_VECTORISED_KERNEL void deltaERange(
     }
 }
 
+bool anyCoveredInBoth(const float* rgbaA, const float* rgbaB, std::size_t begin,
+                      std::size_t end) {
+    bool any = false;
+    for (std::size_t i = begin; i < end; ++i)
+        any |= isCovered(rgbaA[4 * i + 3]) & isCovered(rgbaB[4 * i + 3]);
+    return any;
+}
+
 ChunkSummary compareChunk(const Image& a, const Image& b, bool useAlpha, std::size_t begin,
                           std::size_t end, DeltaEMap& map) {
     const float* rgbaA = a.rgba.data();
@@ -65,6 +75,12 @@ ChunkSummary compareChunk(const Image& a, const Image& b, bool useAlpha, std::si
     // In blocks small enough that the coverage pass finds the block's alpha still in cache.
     for (std::size_t block = begin; block < end; block += kBlockPixels) {
         const std::size_t blockEnd = std::min(block + kBlockPixels, end);
+        if (useAlpha && !anyCoveredInBoth(rgbaA, rgbaB, block, blockEnd)) {
+            // Background in one image or the other: nothing to measure, nothing to pool.
+            std::fill(deltaE + block, deltaE + blockEnd, 0.0f);
+            std::fill(covered + block, covered + blockEnd, std::uint8_t(0));
+            continue;
+        }
         deltaERange(rgbaA + 4 * block, rgbaB + 4 * block, deltaE + block, blockEnd - block);
         for (std::size_t i = block; i < blockEnd; ++i) {
             const bool bothCover =
@@ -128,8 +144,8 @@ Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
     DeltaEMap map;
     map.width = a.width;
     map.height = a.height;
-    map.deltaE.resize(pixelCount);
-    map.covered.resize(pixelCount);
+    resizeOnHugePages(map.deltaE, pixelCount);
+    resizeOnHugePages(map.covered, pixelCount);
     const std::size_t chunkCount = (pixelCount + kChunkPixels - 1) / kChunkPixels;
     std::vector<ChunkSummary> summaries(chunkCount);
     detail::forEachChunk(chunkCount, workerCount, [&](std::size_t chunk) {

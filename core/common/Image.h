@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "common/HugePages.h"
+
 namespace matevo {
 
 struct Image {
@@ -12,7 +14,9 @@ struct Image {
     std::vector<float> rgba;  // width * height * 4
 
     Image() = default;
-    Image(int w, int h) : width(w), height(h), rgba(std::size_t(w) * std::size_t(h) * 4, 0.0f) {}
+    Image(int w, int h) : width(w), height(h) {
+        resizeOnHugePages(rgba, std::size_t(w) * std::size_t(h) * 4, 0.0f);
+    }
 
     std::size_t pixelCount() const { return std::size_t(width) * std::size_t(height); }
     float* pixel(int x, int y) { return &rgba[(std::size_t(y) * std::size_t(width) + x) * 4]; }

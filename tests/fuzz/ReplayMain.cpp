@@ -1,5 +1,5 @@
 // Runs a fuzz target's LLVMFuzzerTestOneInput over files and folders given on the command line,
-// for builds without libFuzzer (GCC, the ASan + UBSan suite): the committed seed corpus and
+// for builds without libFuzzer (every build but the sanitizer one): the committed seed corpus and
 // anything libFuzzer once found stay regression tests.
 #include <cstdint>
 #include <cstdio>

@@ -159,6 +159,81 @@ TEST_F(ImageFileTest, ReadsEveryFormatOpenImageIOReadsInAnyExtensionCase) {
     EXPECT_EQ(png16->image.pixel(1, 0)[3], 0.0f);
 }
 
+// libpng allocates a chunk at the length its header claims; a claim beyond the file's end is
+// refused before that (a 340-byte PNG claiming a 1.9 GB chunk once made it allocate 1.9 GB).
+TEST_F(ImageFileTest, PngChunkClaimingMoreThanTheFileIsRefusedBeforeDecoding) {
+    const auto valid = folder_ / "valid.png";
+    ASSERT_TRUE(writeImage(randomImage(3, 2, 7), valid).ok());
+    std::ifstream in(valid, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_TRUE(decodeImageFile(bytes, valid).ok());
+
+    // After the signature (8 bytes) and IHDR (25): a text chunk claiming 0x72650000 bytes.
+    const std::string claim = std::string("\x72\x65\x00\x00", 4) + "tEXtComment\0only this";
+    const std::string forged = bytes.substr(0, 33) + claim + bytes.substr(33);
+    auto read = decodeImageFile(forged, folder_ / "forged.png");
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), folder_ / "forged.png");
+    EXPECT_NE(read.error().message.find("more than the file holds"), std::string::npos)
+        << read.error().message;
+}
+
+// OpenEXR channels may each have their own type; they are read as stored and converted by us,
+// every one to the exact float it holds.
+TEST_F(ImageFileTest, OpenExrChannelsOfMixedTypesReadExactly) {
+    const auto file = folder_ / "mixed.exr";
+    auto output = OIIO::ImageOutput::create(file.string());
+    ASSERT_TRUE(output);
+    OIIO::ImageSpec spec(2, 1, 4, OIIO::TypeDesc::HALF);
+    spec.channelformats = {OIIO::TypeDesc::HALF, OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::HALF,
+                           OIIO::TypeDesc::FLOAT};
+    spec.alpha_channel = 3;
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    ASSERT_TRUE(output->open(file.string(), spec)) << output->geterror();
+    // Values a half holds exactly, and floats it would round (1/3, 0.1).
+    const std::vector<float> written = {0.5f, 1.0f / 3.0f, 1024.0f, 0.25f,
+                                        0.125f, 0.1f, 3.5f, 1.0f};
+    ASSERT_TRUE(output->write_image(OIIO::TypeDesc::FLOAT, written.data())) << output->geterror();
+    ASSERT_TRUE(output->close());
+    {
+        auto check = OIIO::ImageInput::open(file.string());
+        ASSERT_TRUE(check);
+        ASSERT_FALSE(check->spec().channelformats.empty()) << "OpenEXR kept one type";
+    }
+
+    auto read = readImageFile(file);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    EXPECT_TRUE(read->hasAlpha);
+    for (int x = 0; x < 2; ++x)
+        for (int c = 0; c < 4; ++c) EXPECT_EQ(read->image.pixel(x, 0)[c], written[x * 4 + c]);
+}
+
+// A volume (several images stacked in depth, here a DDS volume texture of 4x4x8 RGBA pixels)
+// is refused: OpenImageIO would write every slice into the memory of one image (a heap
+// overflow, which once crashed `matevo compare` on this 640-byte file).
+TEST_F(ImageFileTest, VolumeImagesAreRefused) {
+    const std::uint32_t width = 4, height = 4, depth = 8;
+    std::vector<std::uint32_t> header = {
+        0x20534444,  // "DDS "
+        124, 0x1 | 0x2 | 0x4 | 0x1000 | 0x800000,  // size; caps, height, width, format, depth
+        height, width, width * 4, depth, 0};
+    header.resize(header.size() + 11, 0);  // reserved
+    // Pixel format: 32-bit RGB with alpha, by channel masks.
+    for (std::uint32_t word : {32u, 0x41u, 0u, 32u, 0xff0000u, 0xff00u, 0xffu, 0xff000000u})
+        header.push_back(word);
+    for (std::uint32_t word : {0x1008u, 0x200000u, 0u, 0u, 0u})  // texture, complex; volume
+        header.push_back(word);
+    std::string bytes(reinterpret_cast<const char*>(header.data()), header.size() * 4);
+    bytes.append(std::size_t(width * height * depth) * 4, char(100));
+    const auto file = folder_ / "volume.dds";
+    std::ofstream(file, std::ios::binary) << bytes;
+
+    auto read = readImageFile(file);
+    ASSERT_FALSE(read.ok());
+    expectOneLineErrorNaming(read.error(), file);
+    EXPECT_NE(read.error().message.find("volume"), std::string::npos) << read.error().message;
+}
+
 TEST_F(ImageFileTest, UnsupportedExtensionsAreRejected) {
     const auto jpeg = folder_ / "a.jpg";  // read, but never written
     auto written = writeImage(randomImage(2, 2, 3), jpeg);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -31,15 +32,43 @@ std::string displayFormat(std::string name) {
 }
 
 // The sample type DecodedImage keeps for a file's own type: 8 and 16 bits as they are, wider
-// or signed integers as 16 bits, every floating-point type as float.
+// or signed integers as 16 bits, every floating-point type as float. The samples are read as
+// stored (TypeDesc::UNKNOWN) and, if that is not Sample, converted here channel by channel (an
+// OpenEXR file's channels may differ in type) from a copy of the image's size, freed before the
+// RGBA image is made. Asked for any type, even the file's own, OpenImageIO 2.4 reads a scanline
+// image through a 64 MiB buffer whatever the image's size: most of the time it took to read a
+// small OpenEXR file.
 template <typename Sample>
 Result<DecodedImage> readSamples(OIIO::ImageInput& input, const OIIO::ImageSpec& spec,
                                  OIIO::TypeDesc type) {
-    std::vector<Sample> samples(std::size_t(spec.width) * std::size_t(spec.height) *
-                                std::size_t(spec.nchannels));
-    if (!input.read_image(0, 0, 0, spec.nchannels, type, samples.data()))
+    const int channels = spec.nchannels;
+    const std::size_t pixelCount = std::size_t(spec.width) * std::size_t(spec.height);
+    std::vector<Sample> samples(pixelCount * std::size_t(channels));
+    const auto readAsStored = [&](void* destination) {
+        return input.read_image(0, 0, 0, channels, OIIO::TypeDesc::UNKNOWN, destination);
+    };
+    const auto cannotDecode = [&input] {
         return Error{"cannot decode: " + oneLine(input.geterror())};
-    return DecodedImage{spec.width, spec.height, spec.nchannels, std::move(samples)};
+    };
+    if (spec.channelformats.empty() && spec.format == type) {
+        if (!readAsStored(samples.data())) return cannotDecode();
+        return DecodedImage{spec.width, spec.height, channels, std::move(samples)};
+    }
+    const auto storedPixelBytes = OIIO::stride_t(spec.pixel_bytes(true));
+    std::vector<std::byte> stored(pixelCount * std::size_t(storedPixelBytes));
+    if (!readAsStored(stored.data())) return cannotDecode();
+    const auto samplePixelBytes = OIIO::stride_t(sizeof(Sample)) * channels;
+    std::size_t offset = 0;
+    for (int c = 0; c < channels; ++c) {
+        const OIIO::TypeDesc storedType = spec.channelformat(c);
+        if (!OIIO::convert_image(1, spec.width, spec.height, 1, stored.data() + offset, storedType,
+                                 storedPixelBytes, storedPixelBytes * spec.width, OIIO::AutoStride,
+                                 samples.data() + c, type, samplePixelBytes,
+                                 samplePixelBytes * spec.width, OIIO::AutoStride))
+            return Error{"cannot decode: no conversion from " + std::string(storedType.c_str())};
+        offset += storedType.size();
+    }
+    return DecodedImage{spec.width, spec.height, channels, std::move(samples)};
 }
 
 Result<DecodedImage> decode(std::string_view bytes, const std::filesystem::path& file,
@@ -61,8 +90,9 @@ Result<DecodedImage> decode(std::string_view bytes, const std::filesystem::path&
         return Error{"not a readable " + displayFormat(input->format_name()) +
                      " image: " + oneLine(input->geterror())};
     if (spec.width <= 0 || spec.height <= 0) return Error{"empty image"};
-    if (auto fits = checkSize(spec.width, spec.height, spec.nchannels); !fits)
-        return fits.error();
+    // A volume (a TIFF or DDS with depth) holds several images; we read one.
+    if (spec.depth != 1) return Error{"volume images are not supported"};
+    if (auto fits = checkSize(spec.width, spec.height, spec.nchannels); !fits) return fits.error();
 
     Result<DecodedImage> decoded = Error{""};
     switch (spec.format.basetype) {
