@@ -226,6 +226,40 @@ TEST_F(GpuSceneRendererTest, AlphaIsTheSpheresShareOfEachPixelsSamples) {
     EXPECT_GT(fractional, std::size_t(100)) << "the silhouette's pixels are blended";
 }
 
+// Triangles tens of pixels wide (a coarse sphere seen close, as in a close-up) leave no crack
+// either. A pixel whose samples' rays all pass well inside the facets' reach (0.95 of the
+// radius: every facet plane of this sphere lies farther than that from its centre) is covered,
+// one whose samples all miss the unit sphere is not.
+TEST_F(GpuSceneRendererTest, LargeTrianglesLeaveNoCrackEither) {
+    auto raster = rendererOf(makeSphereMesh(16, 8), std::span(&presets[0].material, 1));
+    ASSERT_TRUE(raster);
+    const SceneInstance instance;
+    const int size = 256;
+    const SceneCamera camera{{0.4, 0.6, 2.0}, glm::dvec3(0.0), 60.0};
+    auto image = raster->render(*runner, {size, size, camera, std::span(&instance, 1)},
+                                paperLight(presets[0].scene));
+    ASSERT_TRUE(image.ok()) << image.error().message;
+    const RayToSphere rays(camera, size);
+    std::size_t inside = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            double nearest = 2.0, farthest = 0.0;
+            for (const glm::dvec2& sample : kSamplePositions) {
+                const double miss = rays.miss(glm::dvec2(x, y) + sample);
+                nearest = std::min(nearest, miss);
+                farthest = std::max(farthest, miss);
+            }
+            const float alpha = image->pixel(x, y)[3];
+            if (farthest < 0.95) {
+                ++inside;
+                ASSERT_EQ(alpha, 1.0f) << "a crack at pixel " << x << ", " << y;
+            } else if (nearest > 1.0) {
+                ASSERT_EQ(alpha, 0.0f) << "a stray sample at pixel " << x << ", " << y;
+            }
+        }
+    EXPECT_GT(inside, std::size_t(size * size / 4)) << "the sphere fills much of the view";
+}
+
 // Where one instance passes in front of another, a pixel blends the two surfaces by their
 // samples: rendering again with the far sphere wearing the near one's material changes
 // exactly the pixels some of whose samples see the far sphere, and none of the pixels whose
