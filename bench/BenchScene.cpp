@@ -80,12 +80,13 @@ void benchScene(BenchReport& report, int instanceCount) {
         drawFrame();  // lavapipe compiles the pipeline on first use
         const WallAndCpu times = medianWallAndCpu(kRepetitions, drawFrame);
         if (failed) continue;
-        report.push_back(
-            {sceneCase.key, times.wallMilliseconds,
-             sceneCase.what + " (" + std::to_string(sceneCase.mesh->triangleCount()) +
-                 " triangles each), " + count + " materials, studio environment, 4x MSAA, " +
-                 std::to_string(sceneCase.width) + "x" + std::to_string(sceneCase.height) + " on " +
-                 context->device.name() + ": one frame, no read-back"});
+        report.push_back({sceneCase.key, times.wallMilliseconds,
+                          sceneCase.what + " (" + std::to_string(sceneCase.mesh->triangleCount()) +
+                              " triangles each, " + std::to_string(renderer->trianglesSubmitted()) +
+                              " in clusters that may face the camera), " + count +
+                              " materials, studio environment, " + std::to_string(sceneCase.width) +
+                              "x" + std::to_string(sceneCase.height) + " on " +
+                              context->device.name() + ": one frame, no read-back"});
         report.push_back({sceneCase.key.substr(0, sceneCase.key.size() - 3) + "_cpu_ms",
                           times.cpuMilliseconds,
                           "the same frame's CPU time, every thread of the process (lavapipe's "

@@ -1,16 +1,15 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 // The second of the two ꟻLIP passes (core/gpu/FlipPass.h): the row-filtered planes of the
 // reference and of each candidate filtered along y, then the colour difference, the feature
 // difference and their combination per pixel, as core/color/FlipStages.cpp. Writes the error
 // (pooled pixels, covered in both images with alpha >= 0.5 as core/color/Coverage.h says, as
-// e ≥ 0; the others as −1 − e)
-// and the magma heatmap (transparent where not pooled).
+// e ≥ 0; the others as −1 − e) and the magma heatmap (transparent where not pooled). The images
+// are not read again: the planes carry each pixel's alpha.
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 0) readonly buffer Reference { vec4 referencePixels[]; };
-layout(std430, binding = 1) readonly buffer Candidates { vec4 candidatePixels[]; };
-layout(std430, binding = 3) readonly buffer Planes { float planes[]; };
+layout(std430, binding = 3) readonly buffer Planes { vec4 planes[]; };
 layout(std430, binding = 4) writeonly buffer Error { float flipError[]; };
 layout(std430, binding = 5) writeonly buffer Heatmap { vec4 heatmapPixels[]; };
 layout(std430, binding = 6) readonly buffer Colormap { vec4 colormap[256]; };
@@ -30,46 +29,42 @@ const mat3 kXyzToLinearSrgb = mat3(3.2409699419045213, -0.96924363628087984, 0.0
 struct Filtered {
     vec3 ycxcz;        // through the contrast-sensitivity filters
     vec2 edge, point;  // (x, y) first and second derivatives of the normalised achromatic
+    float alpha;       // the pixel's own
 };
 
-// Each invocation filters kColumnRows consecutive rows of its column: every row of the planes
-// it reads is loaded once and added to each output row it reaches, rather than loaded again
-// for each output (2 radius + kColumnRows loads per plane instead of kColumnRows (2 radius + 1)).
-// The sums run over the taps in the same order as the CPU reference's.
-const int kColumnRows = 8;
-
-void columnPasses(uint slot, int x, int firstRow, out Filtered filtered[kColumnRows]) {
-    for (int i = 0; i < kColumnRows; ++i) {
-        filtered[i].ycxcz = vec3(0.0);
-        filtered[i].edge = vec2(0.0);
-        filtered[i].point = vec2(0.0);
+// Each invocation filters kRun consecutive rows of its column (FlipCommon.glsl), for one
+// image: the plane rows it needs are loaded once, into registers.
+void columnPass(uint slot, int x, int firstRow, out Filtered filtered[kRun]) {
+    vec4 csfRows[kRun + 2 * kRadius], featureRows[kRun + 2 * kRadius];
+    [[unroll]] for (int j = 0; j < kRun + 2 * kRadius; ++j) {
+        int row = clamp(firstRow - kRadius + j, 0, settings.height - 1);
+        uint pixel = uint(row * settings.width + x);
+        csfRows[j] = planes[planeIndex(slot, pixel, 0)];
+        featureRows[j] = planes[planeIndex(slot, pixel, 1)];
     }
-    int radius = max(settings.csfRadius, settings.featureRadius);
-    for (int j = -radius; j < kColumnRows + radius; ++j) {
-        uint pixel = uint(clamp(firstRow + j, 0, settings.height - 1) * settings.width + x);
-        vec4 csfPlanes = vec4(planes[planeIndex(slot, kAchromaticPlane, pixel)],
-                              planes[planeIndex(slot, kRedGreenPlane, pixel)],
-                              planes[planeIndex(slot, kBlueYellowPlane0, pixel)],
-                              planes[planeIndex(slot, kBlueYellowPlane1, pixel)]);
-        vec3 featurePlanes = vec3(planes[planeIndex(slot, kSlopePlane, pixel)],
-                                  planes[planeIndex(slot, kCurvaturePlane, pixel)],
-                                  planes[planeIndex(slot, kBlurredPlane, pixel)]);
-        for (int i = 0; i < kColumnRows; ++i) {
-            int k = j - i;  // the tap of row j for output row firstRow + i
-            if (abs(k) <= settings.csfRadius)
-                filtered[i].ycxcz += vec3(
-                    csfTap(kAchromaticTaps, k) * csfPlanes.x,
-                    csfTap(kRedGreenTaps, k) * csfPlanes.y,
-                    csfTap(kBlueYellowTaps0, k) * csfPlanes.z +
-                        csfTap(kBlueYellowTaps1, k) * csfPlanes.w);
-            if (abs(k) <= settings.featureRadius) {
-                float gaussian = featureTap(kGaussianTaps, k);
-                filtered[i].edge += vec2(gaussian * featurePlanes.x,
-                                         featureTap(kFirstDerivativeTaps, k) * featurePlanes.z);
-                filtered[i].point += vec2(gaussian * featurePlanes.y,
-                                          featureTap(kSecondDerivativeTaps, k) * featurePlanes.z);
-            }
+    [[unroll]] for (int i = 0; i < kRun; ++i) {
+        int centre = i + kRadius;
+        vec4 csf = csfTaps(0) * csfRows[centre];
+        [[unroll]] for (int k = 1; k <= kCsfRadius; ++k)
+            csf += csfTaps(k) * (csfRows[centre - k] + csfRows[centre + k]);
+        filtered[i].ycxcz = vec3(csf.xy, csf.z + csf.w);
+
+        // featureRows: (∂x, ∂²x, Gaussian along x); along y the Gaussian filters the first
+        // two, the derivatives (odd, even) the third.
+        vec3 feature = featureRows[centre].xyz;
+        vec4 sums = vec4(featureTap(kGaussianTaps, 0) * feature.xy,
+                         featureTap(kFirstDerivativeTaps, 0) * feature.z,
+                         featureTap(kSecondDerivativeTaps, 0) * feature.z);
+        [[unroll]] for (int k = 1; k <= kFeatureRadius; ++k) {
+            vec3 above = featureRows[centre - k].xyz, below = featureRows[centre + k].xyz;
+            float gaussian = featureTap(kGaussianTaps, k);
+            sums += vec4(gaussian * (above.xy + below.xy),
+                         featureTap(kFirstDerivativeTaps, k) * (below.z - above.z),
+                         featureTap(kSecondDerivativeTaps, k) * (above.z + below.z));
         }
+        filtered[i].edge = sums.xz;
+        filtered[i].point = sums.yw;
+        filtered[i].alpha = featureRows[centre].w;
     }
 }
 
@@ -103,13 +98,14 @@ void main() {
     int pixelCount = settings.width * settings.height;
     int x = int(gl_GlobalInvocationID.x);
     if (x >= settings.width) return;
-    int firstRow = int(gl_GlobalInvocationID.y) * kColumnRows;
+    int firstRow = int(gl_GlobalInvocationID.y) * kRun;
     uint candidate = gl_GlobalInvocationID.z;
 
-    Filtered reference[kColumnRows], test[kColumnRows];
-    columnPasses(0, x, firstRow, reference);
-    columnPasses(1 + candidate, x, firstRow, test);
-    for (int i = 0; i < kColumnRows && firstRow + i < settings.height; ++i) {
+    Filtered reference[kRun], test[kRun];
+    columnPass(0, x, firstRow, reference);
+    columnPass(1 + candidate, x, firstRow, test);
+    [[unroll]] for (int i = 0; i < kRun; ++i) {
+        if (firstRow + i >= settings.height) continue;
         uint pixel = uint((firstRow + i) * settings.width + x);
         float colorError = colorDifference(reference[i].ycxcz, test[i].ycxcz);
         float featureError = featureDifference(reference[i], test[i]);
@@ -117,10 +113,7 @@ void main() {
         float error = featureError >= 1.0 ? 1.0 : pow(colorError, 1.0 - featureError);
 
         uint index = candidate * uint(pixelCount) + pixel;
-        bool pooled =
-            referencePixels[settings.referenceImage * uint(pixelCount) + pixel].a >= 0.5 &&
-            candidatePixels[(settings.firstCandidate + candidate) * uint(pixelCount) + pixel].a >=
-                0.5;
+        bool pooled = reference[i].alpha >= 0.5 && test[i].alpha >= 0.5;
         flipError[index] = pooled ? error : -1.0 - error;
         heatmapPixels[index] = pooled ? colormap[uint(floor(clamp(error, 0.0, 1.0) * 255.0 + 0.5))]
                                       : vec4(0.0);

@@ -1,27 +1,34 @@
-// What the two ꟻLIP passes share (core/gpu/FlipPass.h): their settings, the layout of the
-// filter taps and of the row-filtered planes. Mirrors core/color/FlipStages.h.
+// What the two ꟻLIP passes share (core/gpu/FlipPass.h): their settings, the filter radii and
+// taps, the layout of the row-filtered planes. Mirrors core/color/FlipStages.h.
 
 layout(push_constant) uniform Settings {
     int width;
     int height;
     uint referenceImage;  // index of the reference in its binding
     uint firstCandidate;  // index of the first candidate in its binding
-    int csfRadius;        // contrast-sensitivity taps: 2 csfRadius + 1 per filter
-    int featureRadius;    // feature-detector taps: 2 featureRadius + 1 per filter
     float maxColorDistance;  // c_max: the Hunt-adjusted HyAB distance green-blue, ^ q_c
 } settings;
 
-// The largest filter radius the passes take (FlipRowFilter.comp's shared tile is sized by it):
-// the contrast-sensitivity radius at 1000 pixels per degree, the most FlipSettings allows.
-// Mirrored by kMaxFlipFilterRadius in core/gpu/FlipPass.cpp.
-const int kMaxFilterRadius = 136;
+// The filter radii of the viewing condition, fixed when the pipeline is made (FlipPass makes
+// one per viewing condition): every filter loop then has a known length and is unrolled, so
+// each tap is read at a constant offset, once for all invocations, and the pixels a pass
+// filters stay in registers. (lavapipe turns every storage-buffer or shared-memory read at an
+// offset that varies per invocation into one load per SIMD lane, and every uniform-buffer read
+// at a loop-dependent offset into a gather: those reads, not the arithmetic, were the cost.)
+layout(constant_id = 0) const int kCsfRadius = 10;     // taps: 2 kCsfRadius + 1 per filter
+layout(constant_id = 1) const int kFeatureRadius = 9;  // taps: 2 kFeatureRadius + 1 per filter
+const int kRadius = kCsfRadius > kFeatureRadius ? kCsfRadius : kFeatureRadius;
+
+// The widest filters the passes take (FlipPass refuses wider ones: about 148 pixels per
+// degree), and the most taps the uniform block holds. Mirrored by kMaxFlipFilterRadius in
+// core/gpu/FlipPass.cpp.
+const int kMaxFilterRadius = 20;
 
 // The taps, one filter after another: the contrast-sensitivity filters (achromatic,
 // red-green, the two blue-yellow terms), then the feature detectors (Gaussian, its first and
-// second derivative). Rows and columns use the same taps.
-// A uniform buffer, not a storage buffer: every invocation reads the same tap, and lavapipe
-// loads a uniform-buffer value at a uniform offset once for all lanes, where a storage-buffer
-// read is a gather per lane.
+// second derivative). Rows and columns use the same taps. Each filter is even or odd
+// (core/color/FlipStages.cpp), so the passes add (or subtract) mirrored pixels first and
+// multiply once per pair, as the CPU reference does.
 const int kMaxTapVectors = (7 * (2 * kMaxFilterRadius + 1) + 3) / 4;
 layout(std140, binding = 2) uniform Taps { vec4 tapVectors[kMaxTapVectors]; };
 float tapAt(int index) { return tapVectors[index >> 2][index & 3]; }
@@ -29,22 +36,28 @@ const int kAchromaticTaps = 0, kRedGreenTaps = 1, kBlueYellowTaps0 = 2, kBlueYel
 const int kGaussianTaps = 0, kFirstDerivativeTaps = 1, kSecondDerivativeTaps = 2;
 
 float csfTap(int which, int offset) {
-    return tapAt(which * (2 * settings.csfRadius + 1) + offset + settings.csfRadius);
+    return tapAt(which * (2 * kCsfRadius + 1) + offset + kCsfRadius);
+}
+vec4 csfTaps(int offset) {
+    return vec4(csfTap(kAchromaticTaps, offset), csfTap(kRedGreenTaps, offset),
+                csfTap(kBlueYellowTaps0, offset), csfTap(kBlueYellowTaps1, offset));
 }
 float featureTap(int which, int offset) {
-    int featureStart = 4 * (2 * settings.csfRadius + 1);
-    return tapAt(featureStart + which * (2 * settings.featureRadius + 1) + offset +
-                 settings.featureRadius);
+    const int featureStart = 4 * (2 * kCsfRadius + 1);
+    return tapAt(featureStart + which * (2 * kFeatureRadius + 1) + offset + kFeatureRadius);
 }
 
-// The row pass's output: per image (slot 0 the reference, slot 1 + i candidate i) seven
-// planes, each filtered along x only: the opponent channels through their contrast-sensitivity
-// filters, and the normalised achromatic channel through the feature detectors.
-const uint kPlanes = 7;
-const uint kAchromaticPlane = 0, kRedGreenPlane = 1, kBlueYellowPlane0 = 2,
-           kBlueYellowPlane1 = 3, kSlopePlane = 4, kCurvaturePlane = 5, kBlurredPlane = 6;
+// Each invocation of either pass filters a run of kRun pixels (a row segment, a column
+// segment) from the kRun + 2 kRadius pixels it loads once: a pixel near the run is loaded
+// by the two or three runs it reaches, not once per output it reaches.
+const int kRun = 32;
 
-uint planeIndex(uint slot, uint plane, uint pixel) {
+// The row pass's output: per image (slot 0 the reference, slot 1 + i candidate i) and pixel,
+// two vec4 filtered along x only. The first: the opponent channels through their
+// contrast-sensitivity filters (achromatic, red-green, the two blue-yellow terms); the
+// second: the normalised achromatic channel through the feature detectors (first and second
+// derivative, Gaussian) and, in w, the pixel's own alpha (the pooling needs it).
+uint planeIndex(uint slot, uint pixel, uint which) {
     uint pixelCount = uint(settings.width * settings.height);
-    return (slot * kPlanes + plane) * pixelCount + pixel;
+    return 2 * (slot * pixelCount + pixel) + which;
 }

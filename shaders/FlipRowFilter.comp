@@ -1,23 +1,20 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 // The first of the two ꟻLIP passes (core/gpu/FlipPass.h): each image composited over black,
 // to YyCxCz, and filtered along x (edge pixels repeated) by every separable filter of
-// LDR-ꟻLIP, as core/color/Flip.cpp's row pass. A workgroup takes kRowTile pixels of one row
-// (gl_WorkGroupID.y) of one image (gl_WorkGroupID.z: 0 the reference, 1 + i candidate i): it
-// converts them and the filter radius on either side once into shared memory, and every
-// invocation filters from there (each pixel is converted once, not once per tap).
-layout(local_size_x = 64) in;
-const int kRowTile = 64;  // local_size_x
+// LDR-ꟻLIP, as core/color/Flip.cpp's row pass. An invocation takes kRun pixels of one row
+// (gl_GlobalInvocationID.y) of one image (gl_GlobalInvocationID.z: 0 the reference, 1 + i
+// candidate i): it loads and converts them and the filter radius on either side once, into
+// registers, and filters from there.
+layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 0) readonly buffer Reference { vec4 referencePixels[]; };
 layout(std430, binding = 1) readonly buffer Candidates { vec4 candidatePixels[]; };
-layout(std430, binding = 3) writeonly buffer Planes { float planes[]; };
+layout(std430, binding = 3) writeonly buffer Planes { vec4 planes[]; };
 
 #include "FlipCommon.glsl"
 #include "LinearSrgbToLab.glsl"
-
-// The tile's opponent colours, from kMaxFilterRadius pixels left of it to as many right.
-shared vec4 tile[kRowTile + 2 * kMaxFilterRadius];
 
 vec4 pixelOf(uint slot, uint pixel) {
     uint pixelCount = uint(settings.width * settings.height);
@@ -35,43 +32,42 @@ vec4 opponent(vec4 pixel) {
 }
 
 void main() {
-    uint slot = gl_WorkGroupID.z;
-    int y = int(gl_WorkGroupID.y);
-    int tileStart = int(gl_WorkGroupID.x) * kRowTile;
-    int radius = max(settings.csfRadius, settings.featureRadius);
+    uint slot = gl_GlobalInvocationID.z;
+    int y = int(gl_GlobalInvocationID.y);
+    int firstColumn = int(gl_GlobalInvocationID.x) * kRun;
+    if (y >= settings.height || firstColumn >= settings.width) return;
     int rowStart = y * settings.width;
 
-    // tile[i] holds column tileStart − radius + i, clamped to the row.
-    for (int i = int(gl_LocalInvocationID.x); i < kRowTile + 2 * radius; i += kRowTile) {
-        int column = clamp(tileStart - radius + i, 0, settings.width - 1);
-        tile[i] = opponent(pixelOf(slot, uint(rowStart + column)));
+    // window[j] holds column firstColumn − kRadius + j, clamped to the row; alphas[i] the
+    // alpha of output i.
+    vec4 window[kRun + 2 * kRadius];
+    float alphas[kRun];
+    [[unroll]] for (int j = 0; j < kRun + 2 * kRadius; ++j) {
+        int column = clamp(firstColumn - kRadius + j, 0, settings.width - 1);
+        vec4 pixel = pixelOf(slot, uint(rowStart + column));
+        window[j] = opponent(pixel);
+        if (j >= kRadius && j < kRadius + kRun) alphas[j - kRadius] = pixel.a;
     }
-    barrier();
 
-    int x = tileStart + int(gl_LocalInvocationID.x);
-    if (x >= settings.width) return;
-    int centre = int(gl_LocalInvocationID.x) + radius;
-    float achromatic = 0.0, redGreen = 0.0, blueYellow0 = 0.0, blueYellow1 = 0.0;
-    for (int k = -settings.csfRadius; k <= settings.csfRadius; ++k) {
-        vec4 color = tile[centre + k];
-        achromatic += csfTap(kAchromaticTaps, k) * color.x;
-        redGreen += csfTap(kRedGreenTaps, k) * color.y;
-        blueYellow0 += csfTap(kBlueYellowTaps0, k) * color.z;
-        blueYellow1 += csfTap(kBlueYellowTaps1, k) * color.z;
+    [[unroll]] for (int i = 0; i < kRun; ++i) {
+        int centre = i + kRadius;
+        vec4 csf = csfTaps(0) * window[centre].xyzz;
+        [[unroll]] for (int k = 1; k <= kCsfRadius; ++k)
+            csf += csfTaps(k) * (window[centre - k] + window[centre + k]).xyzz;
+        vec3 feature = vec3(featureTap(kFirstDerivativeTaps, 0), featureTap(kSecondDerivativeTaps, 0),
+                            featureTap(kGaussianTaps, 0)) * window[centre].w;
+        [[unroll]] for (int k = 1; k <= kFeatureRadius; ++k) {
+            // The first derivative is odd (tap −k = −tap k), the others even.
+            float sum = window[centre - k].w + window[centre + k].w;
+            float difference = window[centre + k].w - window[centre - k].w;
+            feature += vec3(featureTap(kFirstDerivativeTaps, k) * difference,
+                            featureTap(kSecondDerivativeTaps, k) * sum,
+                            featureTap(kGaussianTaps, k) * sum);
+        }
+        if (firstColumn + i < settings.width) {
+            uint pixel = uint(rowStart + firstColumn + i);
+            planes[planeIndex(slot, pixel, 0)] = csf;
+            planes[planeIndex(slot, pixel, 1)] = vec4(feature, alphas[i]);
+        }
     }
-    float slope = 0.0, curvature = 0.0, blurred = 0.0;
-    for (int k = -settings.featureRadius; k <= settings.featureRadius; ++k) {
-        float lightness = tile[centre + k].w;
-        blurred += featureTap(kGaussianTaps, k) * lightness;
-        slope += featureTap(kFirstDerivativeTaps, k) * lightness;
-        curvature += featureTap(kSecondDerivativeTaps, k) * lightness;
-    }
-    uint pixel = uint(rowStart + x);
-    planes[planeIndex(slot, kAchromaticPlane, pixel)] = achromatic;
-    planes[planeIndex(slot, kRedGreenPlane, pixel)] = redGreen;
-    planes[planeIndex(slot, kBlueYellowPlane0, pixel)] = blueYellow0;
-    planes[planeIndex(slot, kBlueYellowPlane1, pixel)] = blueYellow1;
-    planes[planeIndex(slot, kSlopePlane, pixel)] = slope;
-    planes[planeIndex(slot, kCurvaturePlane, pixel)] = curvature;
-    planes[planeIndex(slot, kBlurredPlane, pixel)] = blurred;
 }

@@ -44,4 +44,17 @@ Result<Buffer> Buffer::create(const Device& device, VkDeviceSize size, VkBufferU
     return buffer;
 }
 
+Result<UniqueBufferView> createTexelView(const Device& device, const Buffer& buffer,
+                                         VkFormat format) {
+    VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+    info.buffer = buffer.handle();
+    info.format = format;
+    info.range = VK_WHOLE_SIZE;
+    VkBufferView view = VK_NULL_HANDLE;
+    if (VkResult result = vkCreateBufferView(device.handle(), &info, nullptr, &view);
+        result != VK_SUCCESS)
+        return vulkanError("creating a texel buffer view", result);
+    return UniqueBufferView(device.handle(), view);
+}
+
 }  // namespace matevo::gpu

@@ -35,4 +35,10 @@ private:
     void* mapped_ = nullptr;  // unmapped implicitly when memory_ is freed
 };
 
+// The whole buffer as texels of `format`, for a uniform texel buffer (the buffer needs
+// VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT). llvmpipe fetches texels for all SIMD lanes at
+// once, where it loads a storage buffer at a varying index one lane at a time.
+Result<UniqueBufferView> createTexelView(const Device& device, const Buffer& buffer,
+                                         VkFormat format);
+
 }  // namespace matevo::gpu

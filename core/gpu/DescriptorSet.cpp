@@ -15,12 +15,7 @@ Result<DescriptorSet> DescriptorSet::create(const Device& device,
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
     std::vector<VkDescriptorPoolSize> poolSizes;
     for (uint32_t index = 0; index < set.bindings_.size(); ++index) {
-        // Only a fragment shader can read an input attachment.
-        const VkShaderStageFlags bindingStages =
-            set.bindings_[index] == VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT
-                ? stages & VK_SHADER_STAGE_FRAGMENT_BIT
-                : stages;
-        layoutBindings.push_back({index, set.bindings_[index], 1, bindingStages, nullptr});
+        layoutBindings.push_back({index, set.bindings_[index], 1, stages, nullptr});
         poolSizes.push_back({set.bindings_[index], 1});
     }
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -53,7 +48,8 @@ Result<DescriptorSet> DescriptorSet::create(const Device& device,
 }
 
 void DescriptorSet::write(uint32_t binding, const VkDescriptorBufferInfo* bufferInfo,
-                          const VkDescriptorImageInfo* imageInfo) const {
+                          const VkDescriptorImageInfo* imageInfo,
+                          const VkBufferView* texelBufferView) const {
     VkWriteDescriptorSet descriptor{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     descriptor.dstSet = set_;
     descriptor.dstBinding = binding;
@@ -61,6 +57,7 @@ void DescriptorSet::write(uint32_t binding, const VkDescriptorBufferInfo* buffer
     descriptor.descriptorType = bindings_.at(binding);
     descriptor.pBufferInfo = bufferInfo;
     descriptor.pImageInfo = imageInfo;
+    descriptor.pTexelBufferView = texelBufferView;
     vkUpdateDescriptorSets(device_, 1, &descriptor, 0, nullptr);
 }
 
@@ -79,10 +76,8 @@ void DescriptorSet::bindStorageImage(uint32_t binding, VkImageView view) const {
     write(binding, nullptr, &info);
 }
 
-void DescriptorSet::bindInputAttachment(uint32_t binding, VkImageView view) const {
-    const VkDescriptorImageInfo info{VK_NULL_HANDLE, view,
-                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    write(binding, nullptr, &info);
+void DescriptorSet::bindTexelBuffer(uint32_t binding, VkBufferView view) const {
+    write(binding, nullptr, nullptr, &view);
 }
 
 }  // namespace matevo::gpu

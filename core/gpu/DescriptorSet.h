@@ -24,11 +24,12 @@ public:
     void bindBuffer(uint32_t binding, const Buffer& buffer) const;
     void bindSampledImage(uint32_t binding, VkImageView view, VkSampler sampler) const;
     void bindStorageImage(uint32_t binding, VkImageView view) const;
-    void bindInputAttachment(uint32_t binding, VkImageView view) const;
+    void bindTexelBuffer(uint32_t binding, VkBufferView view) const;
 
 private:
     void write(uint32_t binding, const VkDescriptorBufferInfo* bufferInfo,
-               const VkDescriptorImageInfo* imageInfo) const;
+               const VkDescriptorImageInfo* imageInfo,
+               const VkBufferView* texelBufferView = nullptr) const;
 
     VkDevice device_ = VK_NULL_HANDLE;
     std::vector<VkDescriptorType> bindings_;

@@ -49,6 +49,17 @@ std::optional<uint32_t> findQueueFamily(VkPhysicalDevice device, VkSurfaceKHR su
     return std::nullopt;
 }
 
+// 64-bit integers and 64-bit atomics on storage buffers: the scene's visibility pass keeps
+// depth and triangle of each pixel's nearest surface in one 64-bit word (atomicMin).
+bool supportsInt64Atomics(VkPhysicalDevice device) {
+    VkPhysicalDeviceVulkan12Features features12{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    features.pNext = &features12;
+    vkGetPhysicalDeviceFeatures2(device, &features);
+    return features.features.shaderInt64 && features12.shaderBufferInt64Atomics;
+}
+
 }  // namespace
 
 Result<uint32_t> Device::memoryTypeFor(uint32_t typeBits, MemoryUse use) const {
@@ -123,7 +134,16 @@ Result<Device> DeviceBuilder::build() const {
     std::vector<const char*> extensionNames;
     for (const auto& name : extensions_) extensionNames.push_back(name.c_str());
 
+    device.int64Atomics_ = supportsInt64Atomics(device.physicalDevice_);
+    VkPhysicalDeviceVulkan12Features features12{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    features12.shaderBufferInt64Atomics = device.int64Atomics_;
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    features.pNext = &features12;
+    features.features.shaderInt64 = device.int64Atomics_;
+
     VkDeviceCreateInfo createInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    createInfo.pNext = &features;
     createInfo.queueCreateInfoCount = 1;
     createInfo.pQueueCreateInfos = &queueInfo;
     createInfo.enabledExtensionCount = uint32_t(extensionNames.size());

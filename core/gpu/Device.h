@@ -31,6 +31,9 @@ public:
     uint32_t queueFamily() const { return queueFamily_; }
     const std::string& name() const { return name_; }
     bool isCpu() const { return isCpu_; }
+    // shaderInt64 and shaderBufferInt64Atomics, enabled when the device has them (the scene
+    // renderer needs them).
+    bool int64Atomics() const { return int64Atomics_; }
 
     // Index of a memory type allowed by typeBits that suits the use, or an Error.
     Result<uint32_t> memoryTypeFor(uint32_t typeBits, MemoryUse use) const;
@@ -51,6 +54,7 @@ private:
     uint32_t queueFamily_ = 0;
     std::string name_;
     bool isCpu_ = false;
+    bool int64Atomics_ = false;
     std::unique_ptr<std::mutex> queueMutex_ = std::make_unique<std::mutex>();
 };
 

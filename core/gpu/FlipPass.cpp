@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include <shaders/kFlipCombineSpirv.h>
@@ -12,10 +13,11 @@
 namespace matevo::gpu {
 namespace {
 
-constexpr uint32_t kWorkgroupSize = 64;      // local_size_x in both shaders
-constexpr VkDeviceSize kPlanesPerImage = 7;  // kPlanes in shaders/FlipCommon.glsl
-constexpr int kMaxFlipFilterRadius = 136;    // kMaxFilterRadius in shaders/FlipCommon.glsl
-constexpr uint32_t kCombineRows = 8;         // kColumnRows in shaders/FlipCombine.comp
+constexpr uint32_t kRowGroupSize = 8;             // local_size_x and _y in FlipRowFilter.comp
+constexpr uint32_t kCombineGroupSize = 64;        // local_size_x in FlipCombine.comp
+constexpr uint32_t kRun = 32;                     // kRun in shaders/FlipCommon.glsl
+constexpr VkDeviceSize kPlaneFloatsPerPixel = 8;  // two vec4 (planeIndex in FlipCommon.glsl)
+constexpr int kMaxFlipFilterRadius = 20;          // kMaxFilterRadius in shaders/FlipCommon.glsl
 // The taps' uniform block (kMaxTapVectors vec4 in shaders/FlipCommon.glsl).
 constexpr std::size_t kTapBufferFloats = 4 * ((7 * (2 * kMaxFlipFilterRadius + 1) + 3) / 4);
 
@@ -24,8 +26,6 @@ struct PushConstants {
     int32_t height;
     uint32_t referenceImage;
     uint32_t firstCandidate;
-    int32_t csfRadius;
-    int32_t featureRadius;
     float maxColorDistance;
 };
 
@@ -44,45 +44,61 @@ std::vector<float> tapsOf(const flip::CsfKernels& csf, const flip::FeatureKernel
 Result<FlipPass> FlipPass::create(const Device& device, const DeltaE00Pass::Colormap& colormap) {
     auto colormapBuffer = createColormapBuffer(device, colormap);
     if (!colormapBuffer) return colormapBuffer.error();
-
-    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    auto rowFilter = ComputeKernel::create(
-        device, kFlipRowFilterSpirv, {storage, storage, uniform, storage}, sizeof(PushConstants));
-    if (!rowFilter) return rowFilter.error();
-    auto combine = ComputeKernel::create(
-        device, kFlipCombineSpirv, {storage, storage, uniform, storage, storage, storage, storage},
-        sizeof(PushConstants));
-    if (!combine) return combine.error();
     FlipPass pass;
     pass.device_ = &device;
     pass.colormap_ = std::move(colormapBuffer).value();
-    pass.rowFilter_ = std::move(rowFilter).value();
-    pass.combine_ = std::move(combine).value();
-    pass.combine_.bindBuffer(6, pass.colormap_);
+    // The kernels follow the viewing condition: prepare() makes them for the first batch.
     return pass;
+}
+
+Result<const FlipPass::Kernels*> FlipPass::kernelsFor(int csfRadius, int featureRadius) {
+    for (const Kernels& kernels : kernels_)
+        if (kernels.csfRadius == csfRadius && kernels.featureRadius == featureRadius)
+            return &kernels;
+    // constant_id 0 and 1 in shaders/FlipCommon.glsl.
+    const uint32_t radii[] = {uint32_t(csfRadius), uint32_t(featureRadius)};
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    auto rowFilter =
+        ComputeKernel::create(*device_, kFlipRowFilterSpirv, {storage, storage, uniform, storage},
+                              sizeof(PushConstants), radii);
+    if (!rowFilter) return rowFilter.error();
+    // The combination reads the planes, not the images: bindings 0 and 1 are bound, not read.
+    auto combine =
+        ComputeKernel::create(*device_, kFlipCombineSpirv,
+                              {storage, storage, uniform, storage, storage, storage, storage},
+                              sizeof(PushConstants), radii);
+    if (!combine) return combine.error();
+    combine->bindBuffer(6, colormap_);
+    kernels_.push_back(
+        {csfRadius, featureRadius, std::move(rowFilter).value(), std::move(combine).value()});
+    return &kernels_.back();
 }
 
 Status FlipPass::prepare(const FlipBatch& batch, const FlipSettings& settings) {
     if (!(settings.pixelsPerDegree > 0.0) || settings.pixelsPerDegree > 1000.0)
         return Error{"pixels per degree must be in (0, 1000]"};
     if (!taps_.handle() || settings.pixelsPerDegree != tapsPixelsPerDegree_) {
-        csf_ = flip::makeCsfKernels(settings.pixelsPerDegree);
-        feature_ = flip::makeFeatureKernels(settings.pixelsPerDegree);
-        std::vector<float> taps = tapsOf(csf_, feature_);
+        auto csf = flip::makeCsfKernels(settings.pixelsPerDegree);
+        auto feature = flip::makeFeatureKernels(settings.pixelsPerDegree);
+        if (std::max(csf.radius, feature.radius) > kMaxFlipFilterRadius)
+            return Error{"FLIP on the GPU takes at most " + std::to_string(kMaxFlipFilterRadius) +
+                         "-pixel filters (about 148 pixels per degree)"};
+        std::vector<float> taps = tapsOf(csf, feature);
         taps.resize(kTapBufferFloats, 0.0f);  // the whole uniform block the shaders declare
         auto buffer = Buffer::create(*device_, taps.size() * sizeof(float),
                                      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
         if (!buffer) return buffer.error();
         std::memcpy(buffer->bytes().data(), taps.data(), taps.size() * sizeof(float));
         taps_ = std::move(buffer).value();
+        csf_ = std::move(csf);
+        feature_ = std::move(feature);
         tapsPixelsPerDegree_ = settings.pixelsPerDegree;
     }
-    if (std::max(csf_.radius, feature_.radius) > kMaxFlipFilterRadius)
-        return Error{"FLIP filters wider than the GPU pass takes"};
     // The reference's planes and each candidate's.
     const VkDeviceSize planeBytes = VkDeviceSize(batch.width) * VkDeviceSize(batch.height) *
-                                    (batch.candidateCount + 1) * kPlanesPerImage * sizeof(float);
+                                    (batch.candidateCount + 1) * kPlaneFloatsPerPixel *
+                                    sizeof(float);
     if (!planes_.handle() || planes_.size() < planeBytes) {
         auto buffer = Buffer::create(*device_, planeBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                      MemoryUse::DeviceLocal);
@@ -96,28 +112,32 @@ Status FlipPass::record(VkCommandBuffer commands, const FlipBatch& batch,
                         const FlipSettings& settings) {
     if (batch.candidateCount == 0 || batch.width <= 0 || batch.height <= 0) return Ok{};
     if (auto prepared = prepare(batch, settings); !prepared) return prepared;
-    const PushConstants constants{
-        batch.width, batch.height,    batch.referenceImage,           batch.firstCandidate,
-        csf_.radius, feature_.radius, float(flip::maxColorDistance())};
-    for (const ComputeKernel* kernel : {&rowFilter_, &combine_}) {
+    auto kernels = kernelsFor(csf_.radius, feature_.radius);
+    if (!kernels) return kernels.error();
+    const ComputeKernel& rowFilter = (*kernels)->rowFilter;
+    const ComputeKernel& combine = (*kernels)->combine;
+    const PushConstants constants{batch.width, batch.height, batch.referenceImage,
+                                  batch.firstCandidate, float(flip::maxColorDistance())};
+    for (const ComputeKernel* kernel : {&rowFilter, &combine}) {
         kernel->bindBuffer(0, *batch.reference);
         kernel->bindBuffer(1, *batch.candidates);
         kernel->bindBuffer(2, taps_);
         kernel->bindBuffer(3, planes_);
     }
-    combine_.bindBuffer(4, *batch.error);
-    combine_.bindBuffer(5, *batch.heatmaps);
+    combine.bindBuffer(4, *batch.error);
+    combine.bindBuffer(5, *batch.heatmaps);
 
-    // The row pass: tiles of a row × rows × images.
-    rowFilter_.record(commands, &constants,
-                      (uint32_t(batch.width) + kWorkgroupSize - 1) / kWorkgroupSize,
-                      uint32_t(batch.height), batch.candidateCount + 1);
+    auto groups = [](uint32_t items, uint32_t perGroup) {
+        return (items + perGroup - 1) / perGroup;
+    };
+    // The row pass: runs of a row × rows × images.
+    rowFilter.record(commands, &constants,
+                     groups(groups(uint32_t(batch.width), kRun), kRowGroupSize),
+                     groups(uint32_t(batch.height), kRowGroupSize), batch.candidateCount + 1);
     computeWriteToComputeReadBarrier(commands);
-    // The combination: columns × runs of kCombineRows rows × candidates.
-    combine_.record(commands, &constants,
-                    (uint32_t(batch.width) + kWorkgroupSize - 1) / kWorkgroupSize,
-                    (uint32_t(batch.height) + kCombineRows - 1) / kCombineRows,
-                    batch.candidateCount);
+    // The combination: columns × runs of a column × candidates.
+    combine.record(commands, &constants, groups(uint32_t(batch.width), kCombineGroupSize),
+                   groups(uint32_t(batch.height), kRun), batch.candidateCount);
     return Ok{};
 }
 

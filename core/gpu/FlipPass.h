@@ -3,7 +3,12 @@
 // one reference image against a batch of candidates, all linear RGBA float buffers laid out
 // like Image::rgba, as the ΔE00 pass takes them. Writes per-pixel ꟻLIP and a magma heatmap.
 // core/color/Flip is the reference these passes follow step by step (tests/gpu compares them).
+// The passes unroll their filters for the viewing condition's radii, and lavapipe's compile
+// time grows steeply with them (uncached, in CPU time: 15 s at the default 67 pixels per degree,
+// 39 s at 200, over 5 minutes at 1000): they take filter radii up to 20 pixels, about 148
+// pixels per degree, and refuse wider ones with an error (the CPU path takes any).
 #include <cstdint>
+#include <vector>
 
 #include "color/Flip.h"
 #include "common/Result.h"
@@ -38,12 +43,22 @@ public:
     Status record(VkCommandBuffer commands, const FlipBatch& batch, const FlipSettings& settings);
 
 private:
+    // The shaders specialised for one pair of filter radii (a viewing condition).
+    struct Kernels {
+        int csfRadius = 0;
+        int featureRadius = 0;
+        ComputeKernel rowFilter;
+        ComputeKernel combine;
+    };
+
     Status prepare(const FlipBatch& batch, const FlipSettings& settings);
+    // The kernels for the current radii, made on first use and kept: lavapipe takes a second
+    // or two to compile the unrolled filters.
+    Result<const Kernels*> kernelsFor(int csfRadius, int featureRadius);
 
     const Device* device_ = nullptr;
     Buffer colormap_;
-    ComputeKernel rowFilter_;
-    ComputeKernel combine_;
+    std::vector<Kernels> kernels_;
     Buffer taps_;
     double tapsPixelsPerDegree_ = 0;
     flip::CsfKernels csf_;

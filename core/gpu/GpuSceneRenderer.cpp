@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -11,26 +12,20 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <shaders/kSceneDisplaySpirv.h>
+#include <shaders/kSceneRasterizeSpirv.h>
 #include <shaders/kSceneShadeFragmentSpirv.h>
 #include <shaders/kSceneShadeVertexSpirv.h>
-#include <shaders/kSceneSurfaceFragmentSpirv.h>
-#include <shaders/kSceneSurfaceVertexSpirv.h>
 
 #include "gpu/GraphicsPipeline.h"
 #include "gpu/ShaderModule.h"
 #include "gpu/VulkanError.h"
-#include "mesh/MeshSimplification.h"
+#include "mesh/MeshClusters.h"
 #include "scene/EnvironmentBackdrop.h"
 
 namespace matevo::gpu {
 namespace {
 
-constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-constexpr VkFormat kSurfaceFormat = VK_FORMAT_R32G32B32A32_UINT;  // shaders/SceneSurface.glsl
-// Screen pixels per triangle of a level of detail, counted over the instance's whole disc
-// (about half the triangles face away): smaller triangles change nothing visible.
-constexpr double kPixelsPerTriangle = 2.0;
-
+// The shading pass's descriptor set (SceneShade.frag).
 enum Binding : uint32_t {
     kInstances = 0,
     kFrame = 1,
@@ -39,8 +34,38 @@ enum Binding : uint32_t {
     kRoughness = 4,
     kBaseColor = 5,
     kEnvironment = 6,
-    kSurfaces = 7,
+    kVisibility = 7,
+    kVertices = 8,
+    kTriangles = 9,
+    kClusters = 10,
 };
+
+// The visibility pass's (SceneRasterize.comp) bindings and push constants.
+enum RasterizeBinding : uint32_t {
+    kRasterizeVertices = 0,
+    kRasterizeTriangles = 1,
+    kRasterizeClusters = 2,
+    kRasterizeVisibility = 3,
+};
+
+struct RasterizeConstants {
+    float clipFromObject[16];
+    float viewportSize[2];
+    uint32_t firstEntry;
+    uint32_t entries;
+    uint32_t triangleCount;
+};
+
+// Texel formats of the buffers both passes read (shaders/SceneVisibility.glsl).
+constexpr VkFormat kInstanceTexel = VK_FORMAT_R32G32B32A32_SFLOAT;
+constexpr VkFormat kVertexTexel = VK_FORMAT_R32G32B32A32_SFLOAT;
+constexpr VkFormat kTriangleTexel = VK_FORMAT_R32G32B32A32_UINT;
+constexpr VkFormat kClusterTexel = VK_FORMAT_R32G32_UINT;
+constexpr VkFormat kVisibilityTexel = VK_FORMAT_R32G32_UINT;  // (triangle, depth bits)
+
+// Work groups of the visibility pass per row of its dispatch (a dispatch has at most 65535
+// groups per dimension).
+constexpr uint32_t kClusterGroupsPerRow = 1024;
 
 // SceneDisplay.comp's bindings and push constants.
 enum DisplayBinding : uint32_t {
@@ -56,16 +81,10 @@ struct DisplayConstants {
     uint32_t aces;
 };
 
-enum Attachment : uint32_t {
-    kSurfaceAttachment = 0,
-    kDepthAttachment = 1,
-    kRadianceAttachment = 2
-};
-
 // std430 mirrors of the shaders' blocks.
 struct GpuInstance {
     float transform[16];
-    uint32_t material[4];
+    float material[4];  // x: the index, exact as a float
 };
 
 struct GpuFrame {
@@ -83,8 +102,7 @@ void store(float (&target)[4], const std::array<double, 3>& xyz, double w) {
     target[3] = float(w);
 }
 
-GpuFrame toGpu(const SceneFrame& frame, const SceneSettings& scene,
-               const GpuSceneTextures& textures) {
+glm::dmat4 viewProjectionOf(const SceneFrame& frame) {
     const SceneCamera& camera = frame.camera;
     const glm::dmat4 view = glm::lookAt(camera.position, camera.target, glm::dvec3(0, 1, 0));
     // Depth range [0, 1]; the near plane close enough for a camera inside the crowd.
@@ -92,8 +110,28 @@ GpuFrame toGpu(const SceneFrame& frame, const SceneSettings& scene,
         glm::perspectiveRH_ZO(camera.fieldOfViewDegrees * std::numbers::pi / 180.0,
                               double(frame.width) / double(frame.height), 0.05, 1000.0);
     projection[1][1] *= -1.0;  // Vulkan's framebuffer y points down
-    const glm::mat4 viewProjection(projection * view);
-    const glm::mat4 inverseViewProjection(glm::inverse(projection * view));
+    return projection * view;
+}
+
+// True when no point within `radius` of `center` is inside the view's frustum (clip space
+// -w <= x, y <= w, 0 <= z <= w): the sphere lies wholly outside one of its planes.
+bool outsideFrustum(const glm::dmat4& viewProjection, const glm::dvec3& center, double radius) {
+    const glm::dmat4 rows = glm::transpose(viewProjection);
+    const glm::dvec4 planes[6] = {rows[3] + rows[0], rows[3] - rows[0], rows[3] + rows[1],
+                                  rows[3] - rows[1], rows[2],           rows[3] - rows[2]};
+    for (const glm::dvec4& plane : planes) {
+        const double normalLength = glm::length(glm::dvec3(plane));
+        if (glm::dot(glm::dvec3(plane), center) + plane.w < -radius * normalLength) return true;
+    }
+    return false;
+}
+
+GpuFrame toGpu(const SceneFrame& frame, const SceneSettings& scene,
+               const GpuSceneTextures& textures) {
+    const SceneCamera& camera = frame.camera;
+    const glm::dmat4 viewProjectionD = viewProjectionOf(frame);
+    const glm::mat4 viewProjection(viewProjectionD);
+    const glm::mat4 inverseViewProjection(glm::inverse(viewProjectionD));
     GpuFrame gpu{};
     std::memcpy(gpu.viewProjection, glm::value_ptr(viewProjection), sizeof gpu.viewProjection);
     std::memcpy(gpu.inverseViewProjection, glm::value_ptr(inverseViewProjection),
@@ -117,82 +155,40 @@ Result<Buffer> createFilledBuffer(const Device& device, std::span<const std::byt
     return buffer;
 }
 
-// Deferred shading in two subpasses. The surface subpass draws the instances with a depth
-// test and stores the nearest surface per pixel; the shading subpass shades each covered pixel
-// once into the radiance image, which a transfer (or, in the editor, a shader) reads after the
-// pass. The surfaces and the depth live only within the pass.
+// The shading pass: one subpass that shades each covered pixel into the radiance image, which
+// a transfer (or, in the editor, a shader) reads after the pass.
 Result<UniqueRenderPass> createRenderPass(VkDevice device) {
-    VkAttachmentDescription attachments[3]{};
-    VkAttachmentDescription& surfaces = attachments[kSurfaceAttachment];
-    surfaces.format = kSurfaceFormat;
-    surfaces.samples = VK_SAMPLE_COUNT_1_BIT;
-    surfaces.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    surfaces.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    surfaces.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    surfaces.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    surfaces.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    surfaces.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    VkAttachmentDescription& depth = attachments[kDepthAttachment];
-    depth = surfaces;
-    depth.format = kDepthFormat;
-    depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    VkAttachmentDescription& radiance = attachments[kRadianceAttachment];
-    radiance = surfaces;
+    VkAttachmentDescription radiance{};
     radiance.format = GpuSceneRenderer::kColorFormat;
+    radiance.samples = VK_SAMPLE_COUNT_1_BIT;
+    radiance.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     radiance.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    radiance.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    radiance.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    radiance.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     radiance.finalLayout = VK_IMAGE_LAYOUT_GENERAL;  // copied or read by SceneDisplay.comp
+    const VkAttachmentReference radianceOutput{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpass{};
+    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpass.colorAttachmentCount = 1;
+    subpass.pColorAttachments = &radianceOutput;
 
-    const VkAttachmentReference surfaceOutput{kSurfaceAttachment,
-                                              VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference depthWritten{kDepthAttachment,
-                                             VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference surfaceInput{kSurfaceAttachment,
-                                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    const VkAttachmentReference radianceOutput{kRadianceAttachment,
-                                               VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpasses[2]{};
-    subpasses[0].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpasses[0].colorAttachmentCount = 1;
-    subpasses[0].pColorAttachments = &surfaceOutput;
-    subpasses[0].pDepthStencilAttachment = &depthWritten;
-    subpasses[1].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpasses[1].inputAttachmentCount = 1;
-    subpasses[1].pInputAttachments = &surfaceInput;
-    subpasses[1].colorAttachmentCount = 1;
-    subpasses[1].pColorAttachments = &radianceOutput;
-
-    const VkPipelineStageFlags attachmentStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                                  VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                                                  VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    const VkAccessFlags attachmentAccess =
-        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
-        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
-    VkSubpassDependency dependencies[4]{};
-    // The previous frame's attachment writes, its input reads and its read of the radiance
-    // image come before either subpass touches an attachment.
-    for (uint32_t subpass = 0; subpass < 2; ++subpass) {
-        VkSubpassDependency& previous = dependencies[subpass];
-        previous.srcSubpass = VK_SUBPASS_EXTERNAL;
-        previous.dstSubpass = subpass;
-        previous.srcStageMask = attachmentStages | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
-                                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
-        previous.srcAccessMask = attachmentAccess;
-        previous.dstStageMask = attachmentStages;
-        previous.dstAccessMask = attachmentAccess;
-    }
-    // The shading subpass reads the surfaces the first one wrote.
-    VkSubpassDependency& surfacesToShading = dependencies[2];
-    surfacesToShading.srcSubpass = 0;
-    surfacesToShading.dstSubpass = 1;
-    surfacesToShading.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    surfacesToShading.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    surfacesToShading.dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-    surfacesToShading.dstAccessMask = VK_ACCESS_INPUT_ATTACHMENT_READ_BIT;
-    surfacesToShading.dependencyFlags = VK_DEPENDENCY_BY_REGION_BIT;
+    VkSubpassDependency dependencies[2]{};
+    // The previous frame's reads of the radiance image (a copy or the display pass) come
+    // before this frame writes it; the visibility pass's words before the shader reads them.
+    VkSubpassDependency& previous = dependencies[0];
+    previous.srcSubpass = VK_SUBPASS_EXTERNAL;
+    previous.dstSubpass = 0;
+    previous.srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
+                            VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    previous.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    previous.dstStageMask =
+        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    previous.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                             VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
     // The radiance image is read by a transfer or the display pass after the pass.
-    VkSubpassDependency& radianceOut = dependencies[3];
-    radianceOut.srcSubpass = 1;
+    VkSubpassDependency& radianceOut = dependencies[1];
+    radianceOut.srcSubpass = 0;
     radianceOut.dstSubpass = VK_SUBPASS_EXTERNAL;
     radianceOut.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
     radianceOut.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
@@ -200,39 +196,17 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
     radianceOut.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 3;
-    info.pAttachments = attachments;
-    info.subpassCount = 2;
-    info.pSubpasses = subpasses;
-    info.dependencyCount = 4;
+    info.attachmentCount = 1;
+    info.pAttachments = &radiance;
+    info.subpassCount = 1;
+    info.pSubpasses = &subpass;
+    info.dependencyCount = 2;
     info.pDependencies = dependencies;
     VkRenderPass renderPass = VK_NULL_HANDLE;
     if (VkResult result = vkCreateRenderPass(device, &info, nullptr, &renderPass);
         result != VK_SUCCESS)
         return vulkanError("creating a render pass", result);
     return UniqueRenderPass(device, renderPass);
-}
-
-Result<UniquePipeline> createSurfacePipeline(VkDevice device, VkRenderPass renderPass,
-                                             VkPipelineLayout layout) {
-    const VkVertexInputAttributeDescription attributes[3] = {
-        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, uint32_t(offsetof(MeshVertex, position))},
-        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, uint32_t(offsetof(MeshVertex, normal))},
-        {2, 0, VK_FORMAT_R32G32_SFLOAT, uint32_t(offsetof(MeshVertex, uv))},
-    };
-    GraphicsPipelineSpec spec;
-    spec.vertexSpirv = kSceneSurfaceVertexSpirv;
-    spec.fragmentSpirv = kSceneSurfaceFragmentSpirv;
-    spec.vertexBinding = {0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX};
-    spec.vertexAttributes = attributes;
-    // The projection's y flip keeps the mesh's counter-clockwise front faces so on screen.
-    spec.cullMode = VK_CULL_MODE_BACK_BIT;
-    spec.depthTested = true;
-    spec.layout = layout;
-    spec.renderPass = renderPass;
-    spec.subpass = 0;
-    spec.name = "scene surface";
-    return createGraphicsPipeline(device, spec);
 }
 
 // Specialised for the textures and the environment the scene has.
@@ -248,7 +222,6 @@ Result<UniquePipeline> createShadingPipeline(VkDevice device, VkRenderPass rende
     spec.fragmentSpecialization = constants.info();
     spec.layout = layout;
     spec.renderPass = renderPass;
-    spec.subpass = 1;
     spec.name = "scene shading";
     return createGraphicsPipeline(device, spec);
 }
@@ -266,39 +239,60 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
     if (!uploaded) return uploaded.error();
     renderer.textures_ = std::move(uploaded).value();
 
-    // Every level in one vertex and one index buffer.
-    std::vector<MeshVertex> allVertices;
-    std::vector<uint32_t> allIndices;
-    for (const Mesh& level : levelsOfDetail(mesh)) {
-        renderer.levels_.push_back({uint32_t(allIndices.size()), uint32_t(level.indices.size()),
-                                    int32_t(allVertices.size())});
-        allVertices.insert(allVertices.end(), level.vertices.begin(), level.vertices.end());
-        allIndices.insert(allIndices.end(), level.indices.begin(), level.indices.end());
-    }
-    auto vertices = createFilledBuffer(device, std::as_bytes(std::span(allVertices)),
-                                       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    if (!device.int64Atomics())
+        return Error{"Vulkan: " + device.name() +
+                     " lacks 64-bit integer atomics on storage buffers, which the scene needs"};
+
+    // The mesh's triangles in clusters (core/mesh/MeshClusters.h), read by both passes.
+    ClusteredMesh clustered = clusterTriangles(mesh);
+    renderer.triangleCount_ = uint32_t(clustered.mesh.triangleCount());
+    renderer.clusters_ = std::move(clustered.clusters);
+    std::vector<glm::uvec4> triangles(renderer.triangleCount_);
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        triangles[t] = {clustered.mesh.indices[t * 3], clustered.mesh.indices[t * 3 + 1],
+                        clustered.mesh.indices[t * 3 + 2], 0u};
+    const VkBufferUsageFlags texelUsage = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+    auto vertices =
+        createFilledBuffer(device, std::as_bytes(std::span(clustered.mesh.vertices)), texelUsage);
     if (!vertices) return vertices.error();
-    auto indices = createFilledBuffer(device, std::as_bytes(std::span(allIndices)),
-                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    if (!indices) return indices.error();
+    auto triangleBuffer =
+        createFilledBuffer(device, std::as_bytes(std::span(triangles)), texelUsage);
+    if (!triangleBuffer) return triangleBuffer.error();
+    auto verticesView = createTexelView(device, *vertices, kVertexTexel);
+    if (!verticesView) return verticesView.error();
+    auto trianglesView = createTexelView(device, *triangleBuffer, kTriangleTexel);
+    if (!trianglesView) return trianglesView.error();
     auto frameBuffer = Buffer::create(device, sizeof(GpuFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                       MemoryUse::Upload);
     if (!frameBuffer) return frameBuffer.error();
     renderer.vertices_ = std::move(vertices).value();
-    renderer.indices_ = std::move(indices).value();
+    renderer.triangles_ = std::move(triangleBuffer).value();
+    renderer.verticesView_ = std::move(verticesView).value();
+    renderer.trianglesView_ = std::move(trianglesView).value();
     renderer.frameBuffer_ = std::move(frameBuffer).value();
 
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    auto descriptors =
-        DescriptorSet::create(device,
-                              {storage, storage, storage, storage, sampled, sampled, sampled,
-                               VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT},
-                              VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+    const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    auto descriptors = DescriptorSet::create(device,
+                                             {texels, storage, storage, storage, sampled, sampled,
+                                              sampled, texels, texels, texels, texels},
+                                             VK_SHADER_STAGE_FRAGMENT_BIT);
     if (!descriptors) return descriptors.error();
     renderer.descriptors_ = std::move(descriptors).value();
     renderer.descriptors_.bindBuffer(kFrame, renderer.frameBuffer_);
+    renderer.descriptors_.bindTexelBuffer(kVertices, renderer.verticesView_.get());
+    renderer.descriptors_.bindTexelBuffer(kTriangles, renderer.trianglesView_.get());
     renderer.textures_.bind(renderer.descriptors_, kRoughness, kBaseColor, kEnvironment);
+
+    auto rasterizeKernel =
+        ComputeKernel::create(device, kSceneRasterizeSpirv, {texels, texels, texels, storage},
+                              sizeof(RasterizeConstants));
+    if (!rasterizeKernel) return rasterizeKernel.error();
+    renderer.rasterizeKernel_ = std::move(rasterizeKernel).value();
+    const DescriptorSet& rasterizeSet = renderer.rasterizeKernel_.descriptors();
+    rasterizeSet.bindTexelBuffer(kRasterizeVertices, renderer.verticesView_.get());
+    rasterizeSet.bindTexelBuffer(kRasterizeTriangles, renderer.trianglesView_.get());
 
     auto renderPass = createRenderPass(vkDevice);
     if (!renderPass) return renderPass.error();
@@ -312,10 +306,6 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
         result != VK_SUCCESS)
         return vulkanError("creating a pipeline layout", result);
     renderer.pipelineLayout_ = UniquePipelineLayout(vkDevice, pipelineLayout);
-    auto surfacePipeline =
-        createSurfacePipeline(vkDevice, renderer.renderPass_.get(), pipelineLayout);
-    if (!surfacePipeline) return surfacePipeline.error();
-    renderer.surfacePipeline_ = std::move(surfacePipeline).value();
     auto shadingPipeline = createShadingPipeline(vkDevice, renderer.renderPass_.get(),
                                                  pipelineLayout, renderer.textures_);
     if (!shadingPipeline) return shadingPipeline.error();
@@ -345,48 +335,41 @@ Status GpuSceneRenderer::setMaterials(std::span<const MaterialInstance> material
 
 Status GpuSceneRenderer::prepareTarget(int width, int height) {
     if (width == width_ && height == height_) return Ok{};
-    const VkExtent3D extent{uint32_t(width), uint32_t(height), 1};
-    GpuImageSpec surfaceSpec;
-    surfaceSpec.format = kSurfaceFormat;
-    surfaceSpec.extent = extent;
-    surfaceSpec.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT |
-                        VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
-    GpuImageSpec depthSpec = surfaceSpec;
-    depthSpec.format = kDepthFormat;
-    depthSpec.usage =
-        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
-    depthSpec.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-    GpuImageSpec radianceSpec = surfaceSpec;
+    GpuImageSpec radianceSpec;
     radianceSpec.format = kColorFormat;
+    radianceSpec.extent = {uint32_t(width), uint32_t(height), 1};
     radianceSpec.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                          VK_IMAGE_USAGE_STORAGE_BIT;
-    auto surfaces = GpuImage::create(*device_, surfaceSpec);
-    if (!surfaces) return surfaces.error();
-    auto depth = GpuImage::create(*device_, depthSpec);
-    if (!depth) return depth.error();
     auto radiance = GpuImage::create(*device_, radianceSpec);
     if (!radiance) return radiance.error();
+    // One 64-bit visibility word per pixel.
+    auto visibility = Buffer::create(
+        *device_, VkDeviceSize(width) * VkDeviceSize(height) * sizeof(uint64_t),
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+            VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        MemoryUse::DeviceLocal);
+    if (!visibility) return visibility.error();
+    auto visibilityView = createTexelView(*device_, *visibility, kVisibilityTexel);
+    if (!visibilityView) return visibilityView.error();
 
-    VkImageView views[3];
-    views[kSurfaceAttachment] = surfaces->view();
-    views[kDepthAttachment] = depth->view();
-    views[kRadianceAttachment] = radiance->view();
+    const VkImageView view = radiance->view();
     VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     info.renderPass = renderPass_.get();
-    info.attachmentCount = 3;
-    info.pAttachments = views;
-    info.width = extent.width;
-    info.height = extent.height;
+    info.attachmentCount = 1;
+    info.pAttachments = &view;
+    info.width = uint32_t(width);
+    info.height = uint32_t(height);
     info.layers = 1;
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
     if (VkResult result = vkCreateFramebuffer(device_->handle(), &info, nullptr, &framebuffer);
         result != VK_SUCCESS)
         return vulkanError("creating a framebuffer", result);
     framebuffer_ = UniqueFramebuffer(device_->handle(), framebuffer);
-    surfaces_ = std::move(surfaces).value();
-    depth_ = std::move(depth).value();
     radiance_ = std::move(radiance).value();
-    descriptors_.bindInputAttachment(kSurfaces, surfaces_.view());
+    visibility_ = std::move(visibility).value();
+    visibilityView_ = std::move(visibilityView).value();
+    descriptors_.bindTexelBuffer(kVisibility, visibilityView_.get());
+    rasterizeKernel_.bindBuffer(kRasterizeVisibility, visibility_);
     displayKernel_.bindStorageImage(kDisplayRadiance, radiance_.view());
     width_ = width;
     height_ = height;
@@ -395,56 +378,64 @@ Status GpuSceneRenderer::prepareTarget(int width, int height) {
 
 Status GpuSceneRenderer::prepareInstances(const SceneFrame& frame) {
     const std::span<const SceneInstance> instances = frame.instances;
-    struct Placed {
-        std::size_t instance;
-        std::size_t level;
-        double distance;
-    };
-    std::vector<Placed> placed;
-    placed.reserve(instances.size());
-    const SceneCamera& camera = frame.camera;
-    // Pixels per unit length at distance 1 from the camera.
-    const double focalPixels =
-        0.5 * frame.height / std::tan(camera.fieldOfViewDegrees * std::numbers::pi / 360.0);
-    for (std::size_t i = 0; i < instances.size(); ++i) {
-        if (instances[i].material >= materialCount_)
-            return Error{"scene instance " + std::to_string(i) + " names material " +
-                         std::to_string(instances[i].material) + " of " +
-                         std::to_string(materialCount_)};
-        // Meshes fit the unit sphere (core/mesh/Mesh.h): its image is a disc of about this
-        // radius; the level is the finest whose triangles get kPixelsPerTriangle of it.
-        const glm::mat4& transform = instances[i].transform;
-        const double scale = glm::length(glm::dvec3(transform[0]));
-        const double distance = glm::length(glm::dvec3(transform[3]) - camera.position);
-        const double radius = distance > scale ? focalPixels * scale / distance : INFINITY;
-        const double pixels = std::numbers::pi * radius * radius;
-        std::size_t level = 0;
-        while (level + 1 < levels_.size() &&
-               double(levels_[level].indexCount / 3) * kPixelsPerTriangle > pixels)
-            ++level;
-        placed.push_back({i, level, distance});
-    }
-    std::stable_sort(placed.begin(), placed.end(), [](const Placed& a, const Placed& b) {
-        return a.level != b.level ? a.level < b.level : a.distance < b.distance;
-    });
+    const glm::dmat4 viewProjection = viewProjectionOf(frame);
     std::vector<GpuInstance> gpuInstances(std::max<std::size_t>(instances.size(), 1));
-    levelInstances_.assign(levels_.size(), 0);
-    for (std::size_t i = 0; i < placed.size(); ++i) {
-        const SceneInstance& instance = instances[placed[i].instance];
-        std::memcpy(gpuInstances[i].transform, glm::value_ptr(instance.transform),
-                    sizeof gpuInstances[i].transform);
-        gpuInstances[i].material[0] = instance.material;
-        ++levelInstances_[placed[i].level];
+    std::vector<glm::uvec2> entries;  // (instance, cluster)
+    instanceWork_.clear();
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+        const SceneInstance& instance = instances[i];
+        if (instance.material >= materialCount_)
+            return Error{"scene instance " + std::to_string(i) + " names material " +
+                         std::to_string(instance.material) + " of " +
+                         std::to_string(materialCount_)};
+        GpuInstance& gpu = gpuInstances[i];
+        std::memcpy(gpu.transform, glm::value_ptr(instance.transform), sizeof gpu.transform);
+        gpu.material[0] = float(instance.material);
+        // Meshes fit the unit sphere (core/mesh/Mesh.h).
+        const double scale = glm::length(glm::dvec3(instance.transform[0]));
+        if (outsideFrustum(viewProjection, glm::dvec3(instance.transform[3]), scale)) continue;
+        const std::size_t firstEntry = entries.size();
+        for (std::size_t c = 0; c < clusters_.size(); ++c)
+            if (!frame.cullClusters ||
+                !facesAwayFrom(clusters_[c], instance.transform, frame.camera.position))
+                entries.push_back({uint32_t(i), uint32_t(c)});
+        if (entries.size() > firstEntry)
+            instanceWork_.push_back({glm::mat4(viewProjection * glm::dmat4(instance.transform)),
+                                     uint32_t(firstEntry), uint32_t(entries.size() - firstEntry)});
     }
-    const VkDeviceSize bytes = gpuInstances.size() * sizeof(GpuInstance);
-    if (instances_.size() < bytes) {
-        auto grown =
-            Buffer::create(*device_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+    if (entries.size() > std::numeric_limits<uint32_t>::max() / kClusterTriangles)
+        return Error{"the scene has too many instances of too large a mesh (" +
+                     std::to_string(entries.size()) + " clusters in view)"};
+    trianglesSubmitted_ = 0;
+    for (const glm::uvec2& entry : entries)
+        trianglesSubmitted_ += std::min<uint64_t>(
+            kClusterTriangles, triangleCount_ - uint64_t(entry.y) * kClusterTriangles);
+    if (auto ok = upload(instances_, std::as_bytes(std::span(gpuInstances)), kInstanceTexel,
+                         kInstances, std::nullopt);
+        !ok)
+        return ok;
+    if (entries.empty()) entries.push_back({0, 0});  // a buffer is never empty
+    return upload(visibleClusters_, std::as_bytes(std::span(entries)), kClusterTexel, kClusters,
+                  kRasterizeClusters);
+}
+
+Status GpuSceneRenderer::upload(TexelBuffer& target, std::span<const std::byte> bytes,
+                                VkFormat format, uint32_t shadingBinding,
+                                std::optional<uint32_t> rasterizeBinding) {
+    Buffer& buffer = target.buffer;
+    if (buffer.size() < bytes.size()) {
+        auto grown = Buffer::create(*device_, bytes.size(),
+                                    VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, MemoryUse::Upload);
         if (!grown) return grown.error();
-        instances_ = std::move(grown).value();
-        descriptors_.bindBuffer(kInstances, instances_);
+        auto view = createTexelView(*device_, *grown, format);
+        if (!view) return view.error();
+        buffer = std::move(grown).value();
+        target.view = std::move(view).value();
+        descriptors_.bindTexelBuffer(shadingBinding, target.view.get());
+        if (rasterizeBinding)
+            rasterizeKernel_.descriptors().bindTexelBuffer(*rasterizeBinding, target.view.get());
     }
-    std::memcpy(instances_.bytes().data(), gpuInstances.data(), bytes);
+    std::memcpy(buffer.bytes().data(), bytes.data(), bytes.size());
     return Ok{};
 }
 
@@ -457,35 +448,48 @@ Status GpuSceneRenderer::record(VkCommandBuffer commands, const SceneFrame& fram
     const GpuFrame gpuFrame = toGpu(frame, scene, textures_);
     std::memcpy(frameBuffer_.bytes().data(), &gpuFrame, sizeof gpuFrame);
 
-    VkClearValue clears[3]{};  // surfaces 0: background
-    clears[kDepthAttachment].depthStencil = {1.0f, 0};
+    // The visibility pass: every word to "no surface" (after the previous frame's shading read
+    // them), then the nearest surface of each pixel.
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = 0;
+    barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+    vkCmdFillBuffer(commands, visibility_.handle(), 0, VK_WHOLE_SIZE, 0xffffffffu);
+    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                         nullptr);
+    for (const InstanceWork& work : instanceWork_) {
+        RasterizeConstants constants{{},
+                                     {float(frame.width), float(frame.height)},
+                                     work.firstEntry,
+                                     work.entries,
+                                     triangleCount_};
+        std::memcpy(constants.clipFromObject, glm::value_ptr(work.clipFromObject),
+                    sizeof constants.clipFromObject);
+        const uint32_t groupsX = std::min(work.entries, kClusterGroupsPerRow);
+        rasterizeKernel_.record(commands, &constants, groupsX,
+                                (work.entries + groupsX - 1) / groupsX, 1);
+    }
+
+    // The shading pass (its subpass dependency orders it after the visibility pass).
+    VkClearValue clear{};  // transparent background
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = renderPass_.get();
     begin.framebuffer = framebuffer_.get();
     begin.renderArea = {{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
-    begin.clearValueCount = 3;
-    begin.pClearValues = clears;
+    begin.clearValueCount = 1;
+    begin.pClearValues = &clear;
     vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
     const VkViewport viewport{0.0f, 0.0f, float(frame.width), float(frame.height), 0.0f, 1.0f};
     vkCmdSetViewport(commands, 0, 1, &viewport);
     vkCmdSetScissor(commands, 0, 1, &begin.renderArea);
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, surfacePipeline_.get());
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, shadingPipeline_.get());
     const VkDescriptorSet set = descriptors_.handle();
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_.get(), 0, 1,
                             &set, 0, nullptr);
-    const VkBuffer vertexBuffer = vertices_.handle();
-    const VkDeviceSize offset = 0;
-    vkCmdBindVertexBuffers(commands, 0, 1, &vertexBuffer, &offset);
-    vkCmdBindIndexBuffer(commands, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-    uint32_t firstInstance = 0;
-    for (std::size_t level = 0; level < levels_.size(); ++level) {
-        if (levelInstances_[level] > 0)
-            vkCmdDrawIndexed(commands, levels_[level].indexCount, levelInstances_[level],
-                             levels_[level].firstIndex, levels_[level].vertexOffset, firstInstance);
-        firstInstance += levelInstances_[level];
-    }
-    vkCmdNextSubpass(commands, VK_SUBPASS_CONTENTS_INLINE);
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, shadingPipeline_.get());
     vkCmdDraw(commands, 3, 1, 0, 0);  // the full-screen triangle
     vkCmdEndRenderPass(commands);
     return Ok{};

@@ -1,25 +1,21 @@
 #pragma once
-// The scene view's renderer: one mesh drawn with one instanced draw, every instance with its
-// own transform and material, deferred-shaded into an RGBA16F image. Materials reach the GPU
-// as the sphere compute shader's lobe tables (GpuMaterialTables) and are shaded by the same
-// GLSL, so the two paths draw one BSDF.
+// The scene view's renderer: every instance of one mesh with its own transform and material,
+// shaded into an RGBA16F image. Materials reach the GPU as the sphere compute shader's lobe
+// tables (GpuMaterialTables) and are shaded by the same GLSL, so the two paths draw one BSDF.
 //
-// Deferred, one sample per pixel, chosen by measurement on lavapipe (docs/scene-view.md): a
-// surface pass (shaders/SceneSurface.frag) stores each pixel's nearest normal, texture
-// coordinates and material, then a full-screen pass (shaders/SceneShade.frag) shades each
-// covered pixel once. lavapipe shades fragments in 4x4-pixel blocks, so forward shading of a
-// mesh whose triangles are a few pixels each shaded most pixels several times; 4x MSAA cost
-// 2.4x more again.
-//
-// Levels of detail (core/mesh/MeshSimplification.h): each instance is drawn from the finest
-// level that gives its triangles a few pixels each on screen, one instanced draw per level,
-// nearer instances first within a level so that the depth test rejects what they hide.
+// Two passes, chosen by measurement on lavapipe (docs/scene-view.md). The visibility pass
+// (shaders/SceneRasterize.comp) is a rasteriser in a compute shader: for every pixel it keeps
+// the depth and the triangle of the nearest surface in one 64-bit word. The shading pass
+// (shaders/SceneShade.frag) then shades each covered pixel once, interpolating the triangle's
+// normal and texture coordinates where the pixel's ray meets it. Every instance is drawn with
+// the whole mesh; what cannot be seen is dropped on the CPU first: instances outside the view
+// and clusters of triangles that all face away from the camera (core/mesh/MeshClusters.h).
 #include <optional>
 #include <span>
 #include <vector>
 
-#include "common/Image.h"
 #include "color/ToneMap.h"
+#include "common/Image.h"
 #include "common/Result.h"
 #include "gpu/Buffer.h"
 #include "gpu/CommandRunner.h"
@@ -31,6 +27,7 @@
 #include "material/FgdTables.h"
 #include "material/MaterialInstance.h"
 #include "mesh/Mesh.h"
+#include "mesh/MeshClusters.h"
 #include "scene/SceneLayout.h"
 #include "scene/SceneSettings.h"
 #include "scene/SceneTextures.h"
@@ -42,6 +39,9 @@ struct SceneFrame {
     int height = 0;
     SceneCamera camera;
     std::span<const SceneInstance> instances;
+    // Drop the clusters that face away from the camera before the visibility pass. It changes
+    // no pixel (the pass drops back faces itself); off only to show that (tests, bench).
+    bool cullClusters = true;
 };
 
 // How the scene becomes a displayable picture (SceneDisplay.comp).
@@ -85,39 +85,57 @@ public:
                          std::optional<SceneDisplay> display = std::nullopt);
 
     const GpuImage& radianceImage() const { return radiance_; }
+    // The last recorded frame's triangles sent to the visibility pass, after culling.
+    uint64_t trianglesSubmitted() const { return trianglesSubmitted_; }
 
 private:
     Status prepareTarget(int width, int height);
-    // Uploads the instances grouped by level of detail; fills levelInstances_.
+    // Uploads the instances and the clusters in view; fills instanceWork_.
     Status prepareInstances(const SceneFrame& frame);
+    // A host-visible buffer both passes read as texels of one format.
+    struct TexelBuffer {
+        Buffer buffer;
+        UniqueBufferView view;
+    };
+    // Copies `bytes` into `target`, grown (and rebound in both passes' descriptor sets) when
+    // too small.
+    Status upload(TexelBuffer& target, std::span<const std::byte> bytes, VkFormat format,
+                  uint32_t shadingBinding, std::optional<uint32_t> rasterizeBinding);
 
     const Device* device_ = nullptr;
     const FgdTables* tables_ = nullptr;
     GpuSceneTextures textures_;
     GpuMaterialTables materials_;
     uint32_t materialCount_ = 0;
+    // The mesh, its triangles in clusters (core/mesh/MeshClusters.h), as texel buffers.
     Buffer vertices_;
-    Buffer indices_;
-    struct DetailLevel {
-        uint32_t firstIndex = 0;
-        uint32_t indexCount = 0;
-        int32_t vertexOffset = 0;
+    Buffer triangles_;
+    UniqueBufferView verticesView_;
+    UniqueBufferView trianglesView_;
+    uint32_t triangleCount_ = 0;
+    std::vector<MeshCluster> clusters_;
+    Buffer frameBuffer_;           // the shaders' Frame block
+    TexelBuffer instances_;        // every instance, in the frame's order
+    TexelBuffer visibleClusters_;  // (instance, cluster) pairs of this frame
+    // One visibility dispatch per instance with clusters in view.
+    struct InstanceWork {
+        glm::mat4 clipFromObject;
+        uint32_t firstEntry = 0;
+        uint32_t entries = 0;
     };
-    std::vector<DetailLevel> levels_;       // finest first, in vertices_ and indices_
-    std::vector<uint32_t> levelInstances_;  // instances per level, consecutive in instances_
-    Buffer frameBuffer_;                    // the shaders' Frame block
-    Buffer instances_;
-    DescriptorSet descriptors_;
+    std::vector<InstanceWork> instanceWork_;
+    uint64_t trianglesSubmitted_ = 0;
+    ComputeKernel rasterizeKernel_;
+    DescriptorSet descriptors_;  // the shading pass's
     UniqueRenderPass renderPass_;
     UniquePipelineLayout pipelineLayout_;
-    UniquePipeline surfacePipeline_;
     UniquePipeline shadingPipeline_;
     ComputeKernel displayKernel_;
     // Size-dependent: recreated by prepareTarget.
     int width_ = 0;
     int height_ = 0;
-    GpuImage surfaces_;
-    GpuImage depth_;
+    Buffer visibility_;  // one 64-bit word per pixel (shaders/SceneVisibility.glsl)
+    UniqueBufferView visibilityView_;
     GpuImage radiance_;
     UniqueFramebuffer framebuffer_;
 };

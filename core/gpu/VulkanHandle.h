@@ -71,6 +71,7 @@ private:
 using UniqueInstance = OwnedRoot<VkInstance, vkDestroyInstance>;
 using UniqueDevice = OwnedRoot<VkDevice, vkDestroyDevice>;
 using UniqueBuffer = OwnedHandle<VkDevice, VkBuffer, vkDestroyBuffer>;
+using UniqueBufferView = OwnedHandle<VkDevice, VkBufferView, vkDestroyBufferView>;
 using UniqueMemory = OwnedHandle<VkDevice, VkDeviceMemory, vkFreeMemory>;
 using UniqueImage = OwnedHandle<VkDevice, VkImage, vkDestroyImage>;
 using UniqueImageView = OwnedHandle<VkDevice, VkImageView, vkDestroyImageView>;

@@ -36,6 +36,11 @@ struct PresetCase {
     SceneSettings scene;
 };
 
+// The studio at a coarse resolution, quick to prefilter.
+Result<PrefilteredEnvironment> smallStudio() {
+    return loadEnvironment("studio", {.width = 64, .levels = 7, .samplesPerTexel = 16});
+}
+
 std::vector<PresetCase> validationPresets() {
     std::vector<PresetCase> cases;
     for (const char* name : {"validation_metal.json", "validation_metal_depth.json",
@@ -96,6 +101,101 @@ TEST(GpuSceneRenderer, SphereMatchesTheComputeSphereRender) {
     test::expectNoValidationMessages(*context);
 }
 
+// The visibility pass leaves no crack between triangles: every pixel whose ray passes well
+// inside the tessellated unit sphere is covered (each pixel centre on an edge shared by two
+// triangles belongs to exactly one of them), and none well outside is.
+TEST(GpuSceneRenderer, TheSphereIsCoveredWithoutCracks) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    auto runner = gpu::CommandRunner::create(context->device);
+    ASSERT_TRUE(runner.ok());
+    const std::vector<PresetCase> presets = validationPresets();
+    ASSERT_FALSE(presets.empty());
+    auto raster = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
+                                                SceneTextures{}, makeSphereMesh());
+    ASSERT_TRUE(raster.ok()) << raster.error().message;
+    ASSERT_TRUE(raster->setMaterials(std::span(&presets[0].material, 1)).ok());
+    const SceneInstance instance;
+    const int size = 256;
+    const SceneCamera camera{{0.3, 0.5, 3.2}, glm::dvec3(0.0), 40.0};
+    auto image = raster->render(*runner, {size, size, camera, std::span(&instance, 1)},
+                                paperLight(presets[0].scene));
+    ASSERT_TRUE(image.ok()) << image.error().message;
+    // The pixel's ray as SceneShade.frag forms it, and its closest approach to the centre.
+    const glm::dmat4 view = glm::lookAt(camera.position, camera.target, glm::dvec3(0, 1, 0));
+    glm::dmat4 projection =
+        glm::perspectiveRH_ZO(glm::radians(camera.fieldOfViewDegrees), 1.0, 0.05, 1000.0);
+    projection[1][1] *= -1.0;
+    const glm::dmat4 inverse = glm::inverse(projection * view);
+    std::size_t inside = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / double(size) * 2.0 - 1.0;
+            const glm::dvec4 far = inverse * glm::dvec4(ndc, 1.0, 1.0);
+            const glm::dvec3 direction = glm::normalize(glm::dvec3(far) / far.w - camera.position);
+            const double along = -glm::dot(camera.position, direction);
+            const double miss = glm::length(camera.position + along * direction);
+            const float alpha = image->pixel(x, y)[3];
+            if (miss < 0.995) {
+                ++inside;
+                ASSERT_EQ(alpha, 1.0f) << "a crack at pixel " << x << ", " << y;
+            } else if (miss > 1.005) {
+                ASSERT_EQ(alpha, 0.0f) << "a stray pixel at " << x << ", " << y;
+            }
+        }
+    EXPECT_GT(inside, std::size_t(size * size / 10));
+    test::expectNoValidationMessages(*context);
+}
+
+// Culling clusters that face away from the camera only saves work: the picture is the same,
+// value for value, for a crowd seen from afar and for a camera among the instances (whose
+// nearest triangles cross the near plane).
+TEST(GpuSceneRenderer, ClusterCullingChangesNoPixel) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    auto runner = gpu::CommandRunner::create(context->device);
+    ASSERT_TRUE(runner.ok());
+    const std::vector<PresetCase> presets = validationPresets();
+    ASSERT_EQ(presets.size(), 3u);
+    auto environment = smallStudio();
+    ASSERT_TRUE(environment.ok());
+    SceneTextures textures = presets[1].textures;  // the base-colour texture
+    textures.environment = *environment;
+    SceneSettings scene = presets[1].scene;
+    scene.mode = SceneMode::Environment;
+    auto raster = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
+                                                textures, makeShaderBallMesh());
+    ASSERT_TRUE(raster.ok()) << raster.error().message;
+    std::vector<MaterialInstance> materials;
+    for (const PresetCase& preset : presets) materials.push_back(preset.material);
+    ASSERT_TRUE(raster->setMaterials(materials).ok());
+    const std::vector<SceneInstance> instances = layoutInstances(12, InstanceLayout::Crowd, 3);
+    const SceneCamera cameras[] = {
+        frameInstances(instances, 320.0 / 180.0),
+        orbitCamera(glm::dvec3(instances[0].transform[3]), 30.0, 10.0, 1.02),
+    };
+    for (const SceneCamera& camera : cameras) {
+        gpu::SceneFrame frame{320, 180, camera, instances};
+        frame.cullClusters = false;
+        auto everything = raster->render(*runner, frame, scene);
+        ASSERT_TRUE(everything.ok()) << everything.error().message;
+        const uint64_t allTriangles = raster->trianglesSubmitted();
+        frame.cullClusters = true;
+        auto culled = raster->render(*runner, frame, scene);
+        ASSERT_TRUE(culled.ok()) << culled.error().message;
+        EXPECT_LT(double(raster->trianglesSubmitted()), 0.85 * double(allTriangles))
+            << "culling drops a good part of the back faces";
+        std::size_t covered = 0, differing = 0;
+        for (std::size_t i = 0; i < culled->rgba.size(); ++i) {
+            if (culled->rgba[i] != everything->rgba[i]) ++differing;
+            if (i % 4 == 3 && culled->rgba[i] == 1.0f) ++covered;
+        }
+        EXPECT_GT(covered, std::size_t(2000)) << "the instances are in view";
+        EXPECT_EQ(differing, 0u);
+    }
+    test::expectNoValidationMessages(*context);
+}
+
 // Instances wear their own materials: rendering the same row of instances with material 1
 // replaced by material 0 changes the middle instance only.
 TEST(GpuSceneRenderer, InstancesWearTheirOwnMaterials) {
@@ -149,7 +249,7 @@ TEST(GpuSceneRenderer, StudioLightingMatchesTheCpuReferenceOnTheSphere) {
     ASSERT_NE(context, nullptr);
     auto runner = gpu::CommandRunner::create(context->device);
     ASSERT_TRUE(runner.ok());
-    auto environment = loadEnvironment("studio", {.width = 64, .levels = 7, .samplesPerTexel = 16});
+    auto environment = smallStudio();
     ASSERT_TRUE(environment.ok());
     for (PresetCase& preset : validationPresets()) {
         preset.textures.environment = *environment;
@@ -183,7 +283,7 @@ TEST(GpuSceneRenderer, DisplayPassMatchesTheCpuBackdropAndToneMap) {
     ASSERT_TRUE(runner.ok());
     std::vector<PresetCase> presets = validationPresets();
     ASSERT_FALSE(presets.empty());
-    auto environment = loadEnvironment("studio", {.width = 64, .levels = 7, .samplesPerTexel = 16});
+    auto environment = smallStudio();
     ASSERT_TRUE(environment.ok());
     SceneTextures textures;
     textures.environment = *environment;
