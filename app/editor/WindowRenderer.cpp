@@ -35,6 +35,18 @@ Result<gpu::UniqueSemaphore> createSemaphore(VkDevice device) {
     return gpu::UniqueSemaphore(device, semaphore);
 }
 
+VkRect2D unite(const VkRect2D& a, const VkRect2D& b) {
+    if (a.extent.width == 0 || a.extent.height == 0) return b;
+    if (b.extent.width == 0 || b.extent.height == 0) return a;
+    const std::int32_t x0 = std::min(a.offset.x, b.offset.x);
+    const std::int32_t y0 = std::min(a.offset.y, b.offset.y);
+    const std::int32_t x1 = std::max(a.offset.x + std::int32_t(a.extent.width),
+                                     b.offset.x + std::int32_t(b.extent.width));
+    const std::int32_t y1 = std::max(a.offset.y + std::int32_t(a.extent.height),
+                                     b.offset.y + std::int32_t(b.extent.height));
+    return {{x0, y0}, {std::uint32_t(x1 - x0), std::uint32_t(y1 - y0)}};
+}
+
 }  // namespace
 
 Result<std::unique_ptr<WindowRenderer>> WindowRenderer::create(const VulkanContext& context,
@@ -44,7 +56,7 @@ Result<std::unique_ptr<WindowRenderer>> WindowRenderer::create(const VulkanConte
     renderer->surfaceFormat_ = chooseSurfaceFormat(context);
     if (renderer->surfaceFormat_.format == VK_FORMAT_UNDEFINED)
         return Error{"the window's surface offers no image format"};
-    if (Status s = renderer->createRenderPass(); !s) return s.error();
+    if (Status s = renderer->createRenderPasses(); !s) return s.error();
     if (Status s = renderer->createFrames(); !s) return s.error();
     if (Status s = renderer->createSwapchain(size); !s) return s.error();
     return renderer;
@@ -55,46 +67,54 @@ WindowRenderer::~WindowRenderer() {
     (void)waitIdle();
 }
 
+void WindowRenderer::forgetPictures() {
+    for (SwapchainImage& image : images_) image.holdsFrame = 0;
+}
+
 Status WindowRenderer::waitIdle() {
     const auto queueLock = context_.device().lockQueue();
     return gpu::checkVulkan(vkQueueWaitIdle(context_.device().queue()), "waiting for the queue");
 }
 
-Status WindowRenderer::createRenderPass() {
-    VkAttachmentDescription color{};
-    color.format = surfaceFormat_.format;
-    color.samples = VK_SAMPLE_COUNT_1_BIT;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    color.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    color.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    VkAttachmentReference reference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &reference;
-    // The acquired image may still be read by presentation until the acquire semaphore fires.
-    VkSubpassDependency dependency{};
-    dependency.srcSubpass = VK_SUBPASS_EXTERNAL;
-    dependency.dstSubpass = 0;
-    dependency.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    dependency.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    dependency.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 1;
-    info.pAttachments = &color;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 1;
-    info.pDependencies = &dependency;
-    VkRenderPass renderPass = VK_NULL_HANDLE;
-    if (Status s = gpu::checkVulkan(vkCreateRenderPass(device_, &info, nullptr, &renderPass),
-                                    "creating the window's render pass");
-        !s)
-        return s;
-    renderPass_ = gpu::UniqueRenderPass(device_, renderPass);
+Status WindowRenderer::createRenderPasses() {
+    for (bool keep : {false, true}) {
+        VkAttachmentDescription color{};
+        color.format = surfaceFormat_.format;
+        color.samples = VK_SAMPLE_COUNT_1_BIT;
+        color.loadOp = keep ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
+        color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        color.initialLayout = keep ? VK_IMAGE_LAYOUT_PRESENT_SRC_KHR : VK_IMAGE_LAYOUT_UNDEFINED;
+        color.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+        VkAttachmentReference reference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+        VkSubpassDescription subpass{};
+        subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+        subpass.colorAttachmentCount = 1;
+        subpass.pColorAttachments = &reference;
+        // The acquired image may still be read by presentation until the acquire semaphore
+        // fires. The same dependency in both passes: pipelines need compatible passes.
+        VkSubpassDependency dependency{};
+        dependency.srcSubpass = VK_SUBPASS_EXTERNAL;
+        dependency.dstSubpass = 0;
+        dependency.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+        dependency.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+        dependency.dstAccessMask =
+            VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+        info.attachmentCount = 1;
+        info.pAttachments = &color;
+        info.subpassCount = 1;
+        info.pSubpasses = &subpass;
+        info.dependencyCount = 1;
+        info.pDependencies = &dependency;
+        VkRenderPass renderPass = VK_NULL_HANDLE;
+        if (Status s = gpu::checkVulkan(vkCreateRenderPass(device_, &info, nullptr, &renderPass),
+                                        "creating the window's render pass");
+            !s)
+            return s;
+        (keep ? redrawPass_ : renderPass_) = gpu::UniqueRenderPass(device_, renderPass);
+    }
     return Ok{};
 }
 
@@ -159,7 +179,8 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
     info.preTransform = capabilities.currentTransform;
     info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
     info.presentMode = VK_PRESENT_MODE_FIFO_KHR;  // always available; no tearing
-    info.clipped = VK_TRUE;
+    // Whole images: a frame redraws only what changed and keeps the rest, obscured or not.
+    info.clipped = VK_FALSE;
     info.oldSwapchain = swapchain_.get();
     VkSwapchainKHR created = VK_NULL_HANDLE;
     if (Status s = gpu::checkVulkan(vkCreateSwapchainKHR(device_, &info, nullptr, &created),
@@ -209,6 +230,31 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
     return Ok{};
 }
 
+VkRect2D WindowRenderer::areaToDraw(const SwapchainImage& target,
+                                    const FrameRecording& recording) const {
+    const VkRect2D whole{{0, 0}, extent_};
+    if (target.holdsFrame == 0 || !recording.changed) return whole;
+    // The changes of the frames drawn since the image's picture, then this frame's.
+    VkRect2D area = *recording.changed;
+    std::uint64_t covered = lastFrame_;
+    for (auto change = changes_.rbegin(); change != changes_.rend(); ++change) {
+        if (change->frame <= target.holdsFrame) break;
+        area = unite(area, change->area);
+        covered = change->frame - 1;
+    }
+    if (covered != target.holdsFrame) return whole;
+    // Within the image, whatever size the caller's picture had.
+    const std::int32_t x1 = std::min(area.offset.x + std::int32_t(area.extent.width),
+                                     std::int32_t(extent_.width));
+    const std::int32_t y1 = std::min(area.offset.y + std::int32_t(area.extent.height),
+                                     std::int32_t(extent_.height));
+    area.offset.x = std::max(area.offset.x, 0);
+    area.offset.y = std::max(area.offset.y, 0);
+    area.extent = {std::uint32_t(std::max(0, x1 - area.offset.x)),
+                   std::uint32_t(std::max(0, y1 - area.offset.y))};
+    return area;
+}
+
 Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& recording,
                                        Rgba8Image* capture) {
     if (needsRebuild_ || size.width != extent_.width || size.height != extent_.height) {
@@ -241,16 +287,24 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
             gpu::checkVulkan(vkBeginCommandBuffer(frame.commands, &begin), "recording a frame");
         !s)
         return s.error();
+    SwapchainImage& target = images_[imageIndex];
+    const VkRect2D area = areaToDraw(target, recording);
+    const bool whole = area.extent.width == extent_.width && area.extent.height == extent_.height;
     VkClearValue clear{};
     clear.color = {{0.09f, 0.09f, 0.10f, 1.0f}};
     VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    pass.renderPass = renderPass_.get();
-    pass.framebuffer = images_[imageIndex].framebuffer.get();
+    pass.renderPass = whole ? renderPass_.get() : redrawPass_.get();
+    pass.framebuffer = target.framebuffer.get();
     pass.renderArea.extent = extent_;
-    pass.clearValueCount = 1;
+    pass.clearValueCount = whole ? 1 : 0;
     pass.pClearValues = &clear;
     vkCmdBeginRenderPass(frame.commands, &pass, VK_SUBPASS_CONTENTS_INLINE);
-    if (recording.inPass) recording.inPass(frame.commands, frameIndex_);
+    if (!whole && area.extent.width > 0 && area.extent.height > 0) {
+        const VkClearAttachment attachment{VK_IMAGE_ASPECT_COLOR_BIT, 0, clear};
+        const VkClearRect rect{area, 0, 1};
+        vkCmdClearAttachments(frame.commands, 1, &attachment, 1, &rect);
+    }
+    if (recording.inPass) recording.inPass(frame.commands, frameIndex_, area);
     vkCmdEndRenderPass(frame.commands);
     if (capture)
         if (Status s = recordCapture(frame.commands, imageIndex); !s) return s.error();
@@ -284,6 +338,9 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
             return s.error();
         presented = vkQueuePresentKHR(context_.device().queue(), &present);
     }
+    target.holdsFrame = ++lastFrame_;
+    changes_.push_back({lastFrame_, recording.changed.value_or(VkRect2D{{0, 0}, extent_})});
+    while (changes_.size() > images_.size()) changes_.pop_front();
     if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
         acquired == VK_SUBOPTIMAL_KHR)
         needsRebuild_ = true;
