@@ -38,19 +38,10 @@ PixelArea drawnArea(const ImDrawList& list, const ImDrawCmd& command, const ImDr
                         int(std::floor(low.y - drawData.DisplayPos.y)),
                         int(std::ceil(high.x - drawData.DisplayPos.x)),
                         int(std::ceil(high.y - drawData.DisplayPos.y))};
-    const PixelArea inside{std::max(box.x0, scissor.x0), std::max(box.y0, scissor.y0),
-                           std::min(box.x1, scissor.x1), std::min(box.y1, scissor.y1)};
-    return inside.empty() ? PixelArea{} : inside;
+    return intersect(box, scissor);
 }
 
 }  // namespace
-
-PixelArea unite(const PixelArea& a, const PixelArea& b) {
-    if (a.empty()) return b;
-    if (b.empty()) return a;
-    return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1),
-            std::max(a.y1, b.y1)};
-}
 
 template <typename T>
 void DrawDataSnapshot::append(const T& value) {
@@ -106,7 +97,7 @@ void DrawDataSnapshot::capture(const ImDrawData& drawData, std::span<const std::
     }
 }
 
-PixelArea DrawDataSnapshot::changedSince(const DrawDataSnapshot& before) const {
+std::vector<PixelArea> DrawDataSnapshot::changedSince(const DrawDataSnapshot& before) const {
     const auto same = [&](std::size_t begin, std::size_t end, std::size_t otherBegin,
                           std::size_t otherEnd) {
         return end - begin == otherEnd - otherBegin &&
@@ -115,38 +106,48 @@ PixelArea DrawDataSnapshot::changedSince(const DrawDataSnapshot& before) const {
     };
     if (before.empty() || empty() || !unitScale_ ||
         !same(0, headerEnd_, 0, before.headerEnd_))
-        return whole_;
+        return {whole_};
     // Lists are matched by position (ImGui orders them by window depth): a window that opens,
     // closes or comes to the front changes the lists after it, which are then redrawn whole.
-    PixelArea changed;
+    std::vector<PixelArea> changed;
     const std::size_t common = std::min(lists_.size(), before.lists_.size());
     for (std::size_t l = 0; l < common; ++l) {
         const List& now = lists_[l];
         const List& then = before.lists_[l];
-        if (!same(now.begin, now.end, then.begin, then.end))
-            changed = unite(changed, unite(now.area, then.area));
+        if (same(now.begin, now.end, then.begin, then.end)) continue;
+        addDisjoint(changed, now.area);
+        addDisjoint(changed, then.area);
     }
-    for (std::size_t l = common; l < lists_.size(); ++l) changed = unite(changed, lists_[l].area);
+    for (std::size_t l = common; l < lists_.size(); ++l) addDisjoint(changed, lists_[l].area);
     for (std::size_t l = common; l < before.lists_.size(); ++l)
-        changed = unite(changed, before.lists_[l].area);
+        addDisjoint(changed, before.lists_[l].area);
     return changed;
 }
 
-void clipDrawData(ImDrawData& drawData, const PixelArea& area) {
+void clipDrawData(ImDrawData& drawData, std::span<const PixelArea> areas) {
     const PixelArea whole{0, 0, int(drawData.DisplaySize.x * drawData.FramebufferScale.x),
                           int(drawData.DisplaySize.y * drawData.FramebufferScale.y)};
-    for (int l = 0; l < drawData.CmdListsCount; ++l)
-        for (ImDrawCmd& command : drawData.CmdLists[l]->CmdBuffer) {
-            if (command.UserCallback) continue;
+    const ImVec2 origin = drawData.DisplayPos;
+    for (int l = 0; l < drawData.CmdListsCount; ++l) {
+        ImVector<ImDrawCmd>& commands = drawData.CmdLists[l]->CmdBuffer;
+        ImVector<ImDrawCmd> clipped;
+        for (const ImDrawCmd& command : commands) {
+            if (command.UserCallback) {
+                clipped.push_back(command);
+                continue;
+            }
             const PixelArea scissor = scissorOf(command.ClipRect, drawData, whole);
-            PixelArea inside{std::max(scissor.x0, area.x0), std::max(scissor.y0, area.y0),
-                             std::min(scissor.x1, area.x1), std::min(scissor.y1, area.y1)};
-            if (inside.empty()) inside = {};
-            command.ClipRect = ImVec4(float(inside.x0) + drawData.DisplayPos.x,
-                                      float(inside.y0) + drawData.DisplayPos.y,
-                                      float(inside.x1) + drawData.DisplayPos.x,
-                                      float(inside.y1) + drawData.DisplayPos.y);
+            for (const PixelArea& area : areas) {
+                const PixelArea inside = intersect(scissor, area);
+                if (inside.empty()) continue;
+                ImDrawCmd part = command;
+                part.ClipRect = ImVec4(float(inside.x0) + origin.x, float(inside.y0) + origin.y,
+                                       float(inside.x1) + origin.x, float(inside.y1) + origin.y);
+                clipped.push_back(part);
+            }
         }
+        commands.swap(clipped);
+    }
 }
 
 }  // namespace matevo::ui

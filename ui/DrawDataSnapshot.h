@@ -11,14 +11,9 @@
 
 #include <imgui.h>
 
-namespace matevo::ui {
+#include "PixelArea.h"
 
-// A rectangle of framebuffer pixels, [x0, x1) × [y0, y1).
-struct PixelArea {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    bool empty() const { return x1 <= x0 || y1 <= y0; }
-    bool operator==(const PixelArea&) const = default;
-};
+namespace matevo::ui {
 
 class DrawDataSnapshot {
 public:
@@ -30,11 +25,12 @@ public:
     bool operator==(const DrawDataSnapshot& other) const {
         return !bytes_.empty() && bytes_ == other.bytes_;
     }
-    // The framebuffer pixels that may differ between `before`'s picture and this one: the
-    // area of every draw list that changed, in the old and the new frame (a list's pixels lie
-    // within its commands' clip rectangles); the whole framebuffer when the display, the
-    // extra bytes or the framebuffer scale changed, or `before` is empty.
-    PixelArea changedSince(const DrawDataSnapshot& before) const;
+    // The framebuffer pixels that may differ between `before`'s picture and this one, as
+    // disjoint rectangles (none: nothing changed): the area of every draw list that changed, in
+    // the old and the new frame (where its vertices lie within its commands' scissors); the
+    // whole framebuffer when the display, the extra bytes or the framebuffer scale changed, or
+    // `before` is empty.
+    std::vector<PixelArea> changedSince(const DrawDataSnapshot& before) const;
     PixelArea whole() const { return whole_; }
 
 private:
@@ -53,13 +49,11 @@ private:
     bool unitScale_ = false;  // areas are exact only at one framebuffer pixel per display unit
 };
 
-// The smallest area holding both.
-PixelArea unite(const PixelArea& a, const PixelArea& b);
-
-// Restricts every command of `drawData` to `area`: its clip rectangle becomes the part of the
-// scissor the Vulkan backends derive from it (whole pixels) that lies within `area`, empty when
-// none does. The commands then draw exactly the pixels of `area` they drew before. Needs one
-// framebuffer pixel per display unit (changedSince returns the whole framebuffer otherwise).
-void clipDrawData(ImDrawData& drawData, const PixelArea& area);
+// Restricts `drawData` to `areas` (disjoint): each command becomes one per area it reaches,
+// whose clip rectangle is the part of the command's scissor (whole pixels, as the Vulkan
+// backends derive it) within that area. The commands then draw exactly the pixels of `areas`
+// they drew before, each once, in the same order. Needs one framebuffer pixel per display unit
+// (changedSince returns the whole framebuffer otherwise).
+void clipDrawData(ImDrawData& drawData, std::span<const PixelArea> areas);
 
 }  // namespace matevo::ui

@@ -401,15 +401,12 @@ EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& s
     if (redraw) renderer_->forgetPictures();
     if (!captureNow && !redraw && next_ == onScreen_) return FrameOutcome::Unchanged;
     FrameRecording recording;
-    if (const ui::PixelArea changed = next_.changedSince(onScreen_); changed != next_.whole())
-        recording.changed = VkRect2D{{changed.x0, changed.y0},
-                                     {std::uint32_t(changed.x1 - changed.x0),
-                                      std::uint32_t(changed.y1 - changed.y0)}};
+    if (std::vector<ui::PixelArea> changed = next_.changedSince(onScreen_);
+        changed != std::vector<ui::PixelArea>{next_.whole()})
+        recording.changed = std::move(changed);
     recording.inPass = [this, drawData](VkCommandBuffer commands, std::size_t frameSlot,
-                                        const VkRect2D& area) {
-        ui::clipDrawData(*drawData, {area.offset.x, area.offset.y,
-                                     area.offset.x + std::int32_t(area.extent.width),
-                                     area.offset.y + std::int32_t(area.extent.height)});
+                                        std::span<const ui::PixelArea> areas) {
+        ui::clipDrawData(*drawData, areas);
         bridge_->prepare(*drawData, commands, frameSlot);
         ImGui_ImplVulkan_RenderDrawData(drawData, commands);
     };

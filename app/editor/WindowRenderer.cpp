@@ -35,18 +35,6 @@ Result<gpu::UniqueSemaphore> createSemaphore(VkDevice device) {
     return gpu::UniqueSemaphore(device, semaphore);
 }
 
-VkRect2D unite(const VkRect2D& a, const VkRect2D& b) {
-    if (a.extent.width == 0 || a.extent.height == 0) return b;
-    if (b.extent.width == 0 || b.extent.height == 0) return a;
-    const std::int32_t x0 = std::min(a.offset.x, b.offset.x);
-    const std::int32_t y0 = std::min(a.offset.y, b.offset.y);
-    const std::int32_t x1 = std::max(a.offset.x + std::int32_t(a.extent.width),
-                                     b.offset.x + std::int32_t(b.extent.width));
-    const std::int32_t y1 = std::max(a.offset.y + std::int32_t(a.extent.height),
-                                     b.offset.y + std::int32_t(b.extent.height));
-    return {{x0, y0}, {std::uint32_t(x1 - x0), std::uint32_t(y1 - y0)}};
-}
-
 }  // namespace
 
 Result<std::unique_ptr<WindowRenderer>> WindowRenderer::create(const VulkanContext& context,
@@ -230,29 +218,26 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
     return Ok{};
 }
 
-VkRect2D WindowRenderer::areaToDraw(const SwapchainImage& target,
-                                    const FrameRecording& recording) const {
-    const VkRect2D whole{{0, 0}, extent_};
-    if (target.holdsFrame == 0 || !recording.changed) return whole;
+std::vector<ui::PixelArea> WindowRenderer::areasToDraw(const SwapchainImage& target,
+                                                       const FrameRecording& recording) const {
+    const ui::PixelArea whole{0, 0, int(extent_.width), int(extent_.height)};
+    if (target.holdsFrame == 0 || !recording.changed) return {whole};
     // The changes of the frames drawn since the image's picture, then this frame's.
-    VkRect2D area = *recording.changed;
+    std::vector<ui::PixelArea> areas;
     std::uint64_t covered = lastFrame_;
     for (auto change = changes_.rbegin(); change != changes_.rend(); ++change) {
         if (change->frame <= target.holdsFrame) break;
-        area = unite(area, change->area);
+        for (const ui::PixelArea& area : change->areas) ui::addDisjoint(areas, area);
         covered = change->frame - 1;
     }
-    if (covered != target.holdsFrame) return whole;
+    if (covered != target.holdsFrame) return {whole};
+    for (const ui::PixelArea& area : *recording.changed) ui::addDisjoint(areas, area);
     // Within the image, whatever size the caller's picture had.
-    const std::int32_t x1 = std::min(area.offset.x + std::int32_t(area.extent.width),
-                                     std::int32_t(extent_.width));
-    const std::int32_t y1 = std::min(area.offset.y + std::int32_t(area.extent.height),
-                                     std::int32_t(extent_.height));
-    area.offset.x = std::max(area.offset.x, 0);
-    area.offset.y = std::max(area.offset.y, 0);
-    area.extent = {std::uint32_t(std::max(0, x1 - area.offset.x)),
-                   std::uint32_t(std::max(0, y1 - area.offset.y))};
-    return area;
+    std::vector<ui::PixelArea> inside;
+    for (const ui::PixelArea& area : areas)
+        if (const ui::PixelArea part = ui::intersect(area, whole); !part.empty())
+            inside.push_back(part);
+    return inside;
 }
 
 Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& recording,
@@ -288,8 +273,9 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
         !s)
         return s.error();
     SwapchainImage& target = images_[imageIndex];
-    const VkRect2D area = areaToDraw(target, recording);
-    const bool whole = area.extent.width == extent_.width && area.extent.height == extent_.height;
+    const std::vector<ui::PixelArea> areas = areasToDraw(target, recording);
+    const bool whole = areas.size() == 1 &&
+                       areas[0] == ui::PixelArea{0, 0, int(extent_.width), int(extent_.height)};
     VkClearValue clear{};
     clear.color = {{0.09f, 0.09f, 0.10f, 1.0f}};
     VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
@@ -299,12 +285,18 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
     pass.clearValueCount = whole ? 1 : 0;
     pass.pClearValues = &clear;
     vkCmdBeginRenderPass(frame.commands, &pass, VK_SUBPASS_CONTENTS_INLINE);
-    if (!whole && area.extent.width > 0 && area.extent.height > 0) {
+    if (!whole && !areas.empty()) {
         const VkClearAttachment attachment{VK_IMAGE_ASPECT_COLOR_BIT, 0, clear};
-        const VkClearRect rect{area, 0, 1};
-        vkCmdClearAttachments(frame.commands, 1, &attachment, 1, &rect);
+        std::vector<VkClearRect> rects;
+        for (const ui::PixelArea& area : areas)
+            rects.push_back({{{area.x0, area.y0},
+                              {std::uint32_t(area.x1 - area.x0), std::uint32_t(area.y1 - area.y0)}},
+                             0,
+                             1});
+        vkCmdClearAttachments(frame.commands, 1, &attachment, std::uint32_t(rects.size()),
+                              rects.data());
     }
-    if (recording.inPass) recording.inPass(frame.commands, frameIndex_, area);
+    if (recording.inPass) recording.inPass(frame.commands, frameIndex_, areas);
     vkCmdEndRenderPass(frame.commands);
     if (capture)
         if (Status s = recordCapture(frame.commands, imageIndex); !s) return s.error();
@@ -339,7 +331,8 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
         presented = vkQueuePresentKHR(context_.device().queue(), &present);
     }
     target.holdsFrame = ++lastFrame_;
-    changes_.push_back({lastFrame_, recording.changed.value_or(VkRect2D{{0, 0}, extent_})});
+    changes_.push_back({lastFrame_, recording.changed.value_or(std::vector<ui::PixelArea>{
+                                        {0, 0, int(extent_.width), int(extent_.height)}})});
     while (changes_.size() > images_.size()) changes_.pop_front();
     if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
         acquired == VK_SUBOPTIMAL_KHR)

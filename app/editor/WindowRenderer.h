@@ -9,10 +9,12 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
+#include "PixelArea.h"
 #include "Rgba8Image.h"
 #include "common/Result.h"
 #include "gpu/Buffer.h"
@@ -23,13 +25,15 @@ namespace matevo::editor {
 class VulkanContext;
 
 struct FrameRecording {
-    // Records the frame's draws inside the render pass, within `area` only (already cleared;
-    // the pixels outside it hold this frame's picture). `frameSlot` (below kFramesInFlight)
-    // names the frame: what it uses must live until that slot is drawn again.
-    std::function<void(VkCommandBuffer commands, std::size_t frameSlot, const VkRect2D& area)>
+    // Records the frame's draws inside the render pass, within `areas` only (disjoint, already
+    // cleared; the pixels outside them hold this frame's picture). `frameSlot` (below
+    // kFramesInFlight) names the frame: what it uses must live until that slot is drawn again.
+    std::function<void(VkCommandBuffer commands, std::size_t frameSlot,
+                       std::span<const ui::PixelArea> areas)>
         inPass;
-    // The pixels whose picture differs from the last frame drawn; nullopt: possibly all.
-    std::optional<VkRect2D> changed;
+    // The pixels whose picture differs from the last frame drawn, as disjoint rectangles;
+    // nullopt: possibly all.
+    std::optional<std::vector<ui::PixelArea>> changed;
 };
 
 class WindowRenderer {
@@ -75,13 +79,14 @@ private:
     };
     struct Change {
         std::uint64_t frame;
-        VkRect2D area;  // what differs from the frame before
+        std::vector<ui::PixelArea> areas;  // what differs from the frame before
     };
 
     explicit WindowRenderer(const VulkanContext& context) : context_(context) {}
     Status createRenderPasses();
     // What must be drawn into `target` for it to show the next frame's picture.
-    VkRect2D areaToDraw(const SwapchainImage& target, const FrameRecording& recording) const;
+    std::vector<ui::PixelArea> areasToDraw(const SwapchainImage& target,
+                                           const FrameRecording& recording) const;
     Status createFrames();
     Status createSwapchain(VkExtent2D size);
     Status recordCapture(VkCommandBuffer commands, std::uint32_t imageIndex);
