@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,8 @@ struct SceneCase {
     const Mesh* mesh;
     int width;
     int height;
+    std::span<const SceneInstance> instances;
+    SceneCamera camera;
     std::string what;
 };
 
@@ -50,16 +53,23 @@ void benchScene(BenchReport& report, int instanceCount) {
 
     // The figure, then the same frame with fewer pixels and with fewer triangles: which one
     // moves the time says what limits it.
+    // And a close-up: one instance filling the view, its triangles tens of pixels wide.
     const Mesh shaderBall = makeShaderBallMesh();
     const Mesh coarseSphere = makeSphereMesh(32, 16);
     const std::string count = std::to_string(instanceCount);
+    const SceneCamera crowdCamera = frameInstances(instances, 1280.0 / 720.0);
+    const SceneCamera smallCrowdCamera = frameInstances(instances, 320.0 / 180.0);
+    const SceneInstance single;
+    const SceneCamera closeUp = orbitCamera(glm::dvec3(0.0, 0.1, 0.0), 30.0, 15.0, 1.6);
     const SceneCase cases[] = {
-        {"scene_" + count + "x_shaderball_1280x720_ms", &shaderBall, 1280, 720,
-         count + " shader balls"},
-        {"scene_" + count + "x_shaderball_320x180_ms", &shaderBall, 320, 180,
-         "the same at 1/16 of the pixels"},
-        {"scene_" + count + "x_sphere992_1280x720_ms", &coarseSphere, 1280, 720,
-         count + " spheres of 992 triangles"},
+        {"scene_" + count + "x_shaderball_1280x720_ms", &shaderBall, 1280, 720, instances,
+         crowdCamera, count + " shader balls"},
+        {"scene_" + count + "x_shaderball_320x180_ms", &shaderBall, 320, 180, instances,
+         smallCrowdCamera, "the same at 1/16 of the pixels"},
+        {"scene_" + count + "x_sphere992_1280x720_ms", &coarseSphere, 1280, 720, instances,
+         crowdCamera, count + " spheres of 992 triangles"},
+        {"scene_closeup_shaderball_1280x720_ms", &shaderBall, 1280, 720,
+         std::span(&single, 1), closeUp, "one shader ball filling the view"},
     };
     for (const SceneCase& sceneCase : cases) {
         auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
@@ -68,9 +78,8 @@ void benchScene(BenchReport& report, int instanceCount) {
             std::fprintf(stderr, "matevo bench: the scene renderer failed\n");
             return;
         }
-        const gpu::SceneFrame frame{
-            sceneCase.width, sceneCase.height,
-            frameInstances(instances, double(sceneCase.width) / sceneCase.height), instances};
+        const gpu::SceneFrame frame{sceneCase.width, sceneCase.height, sceneCase.camera,
+                                    sceneCase.instances};
         bool failed = false;
         auto drawFrame = [&] {
             auto commands = runner->begin();
@@ -83,7 +92,8 @@ void benchScene(BenchReport& report, int instanceCount) {
         report.push_back({sceneCase.key, times.wallMilliseconds,
                           sceneCase.what + " (" + std::to_string(sceneCase.mesh->triangleCount()) +
                               " triangles each, " + std::to_string(renderer->trianglesSubmitted()) +
-                              " in clusters that may face the camera), " + count +
+                              " in clusters that may face the camera), " +
+                              std::to_string(sceneCase.instances.size()) +
                               " materials, studio environment, " + std::to_string(sceneCase.width) +
                               "x" + std::to_string(sceneCase.height) + " on " +
                               context->device.name() + ": one frame, no read-back"});

@@ -1,13 +1,19 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The scene view's shading pass: each covered pixel shaded once from its visibility word
-// (SceneVisibility.glsl), with the material's lobes from its LobeTable and the same lighting
-// as the sphere compute shader (LobeTable.glsl, SceneLighting.glsl), so one BSDF source serves
-// both. The triangle's normal and texture coordinates are interpolated where the pixel's ray
-// meets it, which is the perspective-correct interpolation a fixed-function rasteriser does at
-// the pixel's centre. Output is linear radiance with alpha 1; the background is left clear.
+// The scene view's shading pass. Each pixel has kSamplesPerPixel visibility words
+// (SceneVisibility.glsl); its samples are grouped into surfaces, and each surface is shaded
+// once and weighted by its samples: a pixel inside an instance is shaded once, a pixel on a
+// silhouette blends the surfaces (and the background) it holds. Samples are one surface when
+// they belong to the same instance at about the same distance (within kSurfacePixels pixels'
+// width), so an instance's own silhouettes (the ball over its pedestal) are blended too.
+// A surface is shaded with the material's lobes from its LobeTable and the same lighting as
+// the sphere compute shader (LobeTable.glsl, SceneLighting.glsl), so one BSDF source serves
+// both, where a ray through the pixel meets the triangle of its first sample (below): the
+// normal and texture coordinates are interpolated there, perspective-correct. Output is linear radiance, not premultiplied,
+// with alpha the covered fraction of the samples; the background is left clear.
 // lavapipe runs both sides of every branch, so the textures and the environment are
-// specialised away when the scene has none.
+// specialised away when the scene has none, and the surfaces are shaded in a loop, which it
+// leaves as soon as every pixel of a SIMD vector is done.
 layout(constant_id = 0) const bool kTextured = false;
 layout(constant_id = 1) const bool kEnvironmentLit = false;
 layout(std430, binding = 2) readonly buffer LobeTables { vec4 lobeEntries[]; };
@@ -32,13 +38,21 @@ layout(binding = 7) uniform usamplerBuffer visibility;
 
 layout(location = 0) out vec4 color;
 
-void main() {
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
-    uint payload = texelFetch(visibility, pixel.y * int(frame.viewportSize.x) + pixel.x).x;
-    // Background: nothing to shade. A discard, not a depth test: llvmpipe skips the rest of
-    // the shader for a SIMD vector whose pixels are all discarded, while it shades depth-
-    // rejected pixels and masks them afterwards (docs/scene-view.md).
-    if (payload == kNoSurface) discard;
+// Tells apart the surfaces within a pixel: samples closer than this many pixels' width (at
+// their distance) along the view axis, on the same instance, are shaded as one.
+const float kSurfacePixels = 3.0;
+
+// Samples s and t (s < t) are one surface: both covered, by the same instance, at about the
+// same distance (along the view axis, in units of the near plane's distance).
+bool sameSurface(int s, int t, bvec4 covered, uvec4 instances, vec4 distances,
+                 float tolerance) {
+    return covered[s] && covered[t] && instances[s] == instances[t] &&
+           abs(distances[s] - distances[t]) < tolerance * min(distances[s], distances[t]);
+}
+
+// The radiance of the surface `payload` (a visibility word's triangle) where the ray through
+// `position` (pixels, y down) meets it.
+vec3 shadeSurface(uint payload, vec2 position) {
     uvec2 cluster = texelFetch(visibleClusters, int(payload / kClusterTriangles)).xy;
     uint triangle = cluster.y * kClusterTriangles + payload % kClusterTriangles;
     int instanceTexel = int(cluster.x) * 5;
@@ -58,8 +72,8 @@ void main() {
     vec3 p1 = (transform * vec4(corner1a.xyz, 1.0)).xyz;
     vec3 p2 = (transform * vec4(corner2a.xyz, 1.0)).xyz;
 
-    // The pixel's ray: from the camera through a point of it on the far plane.
-    vec2 ndc = gl_FragCoord.xy / frame.viewportSize.xy * 2.0 - 1.0;
+    // The ray: from the camera through the sample's point on the far plane.
+    vec2 ndc = position / frame.viewportSize.xy * 2.0 - 1.0;
     vec4 far = frame.inverseViewProjection * vec4(ndc, 1.0, 1.0);
     vec3 toViewer = normalize(frame.cameraPosition.xyz - far.xyz / far.w);
     // Where it meets the triangle's plane, as barycentric weights of corners 1 and 2.
@@ -89,5 +103,73 @@ void main() {
     vec2 environmentUv = kEnvironmentLit ? latLongUv(reflect(-toViewer, normal)) : vec2(0.0);
     ShadingPoint point = shadingPoint(normal, toViewer, lighting.toLight, environmentUv);
     LobeSet lobes = lobesAt(materials[materialIndex], point.cosView, roughnessTexel, baseColor);
-    color = vec4(shadeLobes(lobes, point, lighting), 1.0);
+    return shadeLobes(lobes, point, lighting);
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    // Two samples' words per texel: (triangle, depth bits) twice.
+    int firstTexel = (pixel.y * int(frame.viewportSize.x) + pixel.x) * (kSamplesPerPixel / 2);
+    uvec4 words01 = texelFetch(visibility, firstTexel);
+    uvec4 words23 = texelFetch(visibility, firstTexel + 1);
+    uvec4 payloads = uvec4(words01.xz, words23.xz);
+    bvec4 covered = notEqual(payloads, uvec4(kNoSurface));
+    // Background: nothing to shade. A discard, not a depth test: llvmpipe skips the rest of
+    // the shader for a SIMD vector whose pixels are all discarded, while it shades depth-
+    // rejected pixels and masks them afterwards (docs/scene-view.md).
+    if (!any(covered)) discard;
+
+    // Which instance and how far each sample is (written out per sample: llvmpipe keeps
+    // a vector's components in registers, but an array indexed in a loop in memory).
+    uvec4 clusterEntries = uvec4(covered) * (payloads / kClusterTriangles);
+    uvec4 instances = uvec4(texelFetch(visibleClusters, int(clusterEntries.x)).x,
+                            texelFetch(visibleClusters, int(clusterEntries.y)).x,
+                            texelFetch(visibleClusters, int(clusterEntries.z)).x,
+                            texelFetch(visibleClusters, int(clusterEntries.w)).x);
+    vec4 distances = 1.0 / (1.0 - frame.sampling.x * uintBitsToFloat(
+                                                         uvec4(words01.yw, words23.yw)));
+    float tolerance = kSurfacePixels * frame.sampling.y;
+    // Each covered sample joins the surface of the first earlier sample of the same instance
+    // at about its distance; owner[s] is the sample that stands for its surface.
+    ivec4 owner = ivec4(0, 1, 2, 3);
+    owner.y = sameSurface(0, 1, covered, instances, distances, tolerance) ? 0 : 1;
+    owner.z = sameSurface(0, 2, covered, instances, distances, tolerance) ? 0
+            : sameSurface(1, 2, covered, instances, distances, tolerance) ? owner.y
+                                                                          : 2;
+    owner.w = sameSurface(0, 3, covered, instances, distances, tolerance) ? 0
+            : sameSurface(1, 3, covered, instances, distances, tolerance) ? owner.y
+            : sameSurface(2, 3, covered, instances, distances, tolerance) ? owner.z
+                                                                          : 3;
+    // The surfaces as a list of (the sample that stands for it, a mask of its samples), 8 bits
+    // each.
+    uint surfaceList = 0u;
+    int surfaceCount = 0;
+    for (int s = 0; s < kSamplesPerPixel; ++s) {
+        uvec4 isMember = uvec4(covered) & uvec4(equal(owner, ivec4(s)));
+        uint members = isMember.x | isMember.y << 1 | isMember.z << 2 | isMember.w << 3;
+        bool standsForOne = covered[s] && owner[s] == s;
+        surfaceList |= standsForOne ? (uint(s) | members << 2) << (8 * surfaceCount) : 0u;
+        surfaceCount += standsForOne ? 1 : 0;
+    }
+
+    // A surface that holds every sample is shaded at the pixel's centre, as a one-sample
+    // renderer shades it (its first sample's triangle, tiny as it may be, extended there: the
+    // normals vary smoothly inside a surface). A surface on an edge is shaded at its first
+    // sample, which lies on that triangle: past a silhouette or a crease the triangle's
+    // normals, extended, would describe a point the mesh does not have.
+    vec3 radiance = vec3(0.0);
+    for (int i = 0; i < surfaceCount; ++i) {
+        uint entry = (surfaceList >> (8 * i)) & 0xffu;
+        uint members = entry >> 2;
+        uint standIn = entry & 3u;
+        uint payload = standIn == 0u ? payloads.x
+                     : standIn == 1u ? payloads.y
+                     : standIn == 2u ? payloads.z
+                                     : payloads.w;
+        vec2 position = members == 15u ? vec2(0.5) : kSampleOffsets[standIn];
+        radiance += float(bitCount(members)) * shadeSurface(payload, vec2(pixel) + position);
+    }
+    uvec4 coveredBits = uvec4(covered);
+    int coveredCount = int(coveredBits.x + coveredBits.y + coveredBits.z + coveredBits.w);
+    color = vec4(radiance / float(coveredCount), float(coveredCount) / float(kSamplesPerPixel));
 }

@@ -61,7 +61,11 @@ constexpr VkFormat kInstanceTexel = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat kVertexTexel = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat kTriangleTexel = VK_FORMAT_R32G32B32A32_UINT;
 constexpr VkFormat kClusterTexel = VK_FORMAT_R32G32_UINT;
-constexpr VkFormat kVisibilityTexel = VK_FORMAT_R32G32_UINT;  // (triangle, depth bits)
+// Two samples' (triangle, depth bits) per texel.
+constexpr VkFormat kVisibilityTexel = VK_FORMAT_R32G32B32A32_UINT;
+// Visibility samples per pixel, at the standard 4x multisample positions
+// (shaders/SceneVisibility.glsl).
+constexpr VkDeviceSize kSamplesPerPixel = 4;
 
 // Work groups of the visibility pass per row of its dispatch (a dispatch has at most 65535
 // groups per dimension).
@@ -95,6 +99,7 @@ struct GpuFrame {
     float lightRadiance[4];
     float ambient[4];  // w: environment levels
     float viewportSize[4];
+    float sampling[4];  // x: (far - near) / far; y: a pixel's width at unit distance
 };
 
 void store(float (&target)[4], const std::array<double, 3>& xyz, double w) {
@@ -102,13 +107,20 @@ void store(float (&target)[4], const std::array<double, 3>& xyz, double w) {
     target[3] = float(w);
 }
 
+// Depth range [0, 1]; the near plane close enough for a camera inside the crowd.
+constexpr double kNearPlane = 0.05;
+constexpr double kFarPlane = 1000.0;
+
+double fieldOfViewRadians(const SceneCamera& camera) {
+    return camera.fieldOfViewDegrees * std::numbers::pi / 180.0;
+}
+
 glm::dmat4 viewProjectionOf(const SceneFrame& frame) {
     const SceneCamera& camera = frame.camera;
     const glm::dmat4 view = glm::lookAt(camera.position, camera.target, glm::dvec3(0, 1, 0));
-    // Depth range [0, 1]; the near plane close enough for a camera inside the crowd.
     glm::dmat4 projection =
-        glm::perspectiveRH_ZO(camera.fieldOfViewDegrees * std::numbers::pi / 180.0,
-                              double(frame.width) / double(frame.height), 0.05, 1000.0);
+        glm::perspectiveRH_ZO(fieldOfViewRadians(camera),
+                              double(frame.width) / double(frame.height), kNearPlane, kFarPlane);
     projection[1][1] *= -1.0;  // Vulkan's framebuffer y points down
     return projection * view;
 }
@@ -143,6 +155,10 @@ GpuFrame toGpu(const SceneFrame& frame, const SceneSettings& scene,
     store(gpu.lightRadiance, scene.lightRadiance, 0.0);
     store(gpu.ambient, ambientRadiance(scene), textures.environmentLevels());
     store(gpu.viewportSize, {double(frame.width), double(frame.height), 0.0}, 0.0);
+    store(gpu.sampling,
+          {(kFarPlane - kNearPlane) / kFarPlane,
+           2.0 * std::tan(fieldOfViewRadians(camera) / 2.0) / double(frame.height), 0.0},
+          0.0);
     return gpu;
 }
 
@@ -342,9 +358,9 @@ Status GpuSceneRenderer::prepareTarget(int width, int height) {
                          VK_IMAGE_USAGE_STORAGE_BIT;
     auto radiance = GpuImage::create(*device_, radianceSpec);
     if (!radiance) return radiance.error();
-    // One 64-bit visibility word per pixel.
+    // One 64-bit visibility word per sample.
     auto visibility = Buffer::create(
-        *device_, VkDeviceSize(width) * VkDeviceSize(height) * sizeof(uint64_t),
+        *device_, VkDeviceSize(width) * VkDeviceSize(height) * kSamplesPerPixel * sizeof(uint64_t),
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
             VK_BUFFER_USAGE_TRANSFER_DST_BIT,
         MemoryUse::DeviceLocal);
@@ -568,7 +584,7 @@ Result<Image> GpuSceneRenderer::render(CommandRunner& runner, const SceneFrame& 
         std::copy(floats.begin(), floats.begin() + std::ptrdiff_t(image.rgba.size()),
                   image.rgba.begin());
     } else {
-        // (radiance, 1) where a surface was drawn, (0, 0) elsewhere.
+        // (radiance, the share of the samples covered); (0, 0) where no surface was drawn.
         const auto halves = readback->as<const uint16_t>();
         for (std::size_t i = 0; i < image.rgba.size(); ++i)
             image.rgba[i] = glm::unpackHalf1x16(halves[i]);

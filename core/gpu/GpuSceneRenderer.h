@@ -4,10 +4,12 @@
 // tables (GpuMaterialTables) and are shaded by the same GLSL, so the two paths draw one BSDF.
 //
 // Two passes, chosen by measurement on lavapipe (docs/scene-view.md). The visibility pass
-// (shaders/SceneRasterize.comp) is a rasteriser in a compute shader: for every pixel it keeps
-// the depth and the triangle of the nearest surface in one 64-bit word. The shading pass
-// (shaders/SceneShade.frag) then shades each covered pixel once, interpolating the triangle's
-// normal and texture coordinates where the pixel's ray meets it. Every instance is drawn with
+// (shaders/SceneRasterize.comp) is a rasteriser in a compute shader: for each of a pixel's 4
+// samples (the standard 4x multisample positions) it keeps the depth and the triangle of the
+// nearest surface in one 64-bit word. The shading pass (shaders/SceneShade.frag) then shades
+// each surface among a pixel's samples once, interpolating the triangle's normal and texture
+// coordinates where the pixel's ray meets it, and weights it by its samples: silhouettes are
+// blended, and alpha is the share of the samples covered. Every instance is drawn with
 // the whole mesh; what cannot be seen is dropped on the CPU first: instances outside the view
 // and clusters of triangles that all face away from the camera (core/mesh/MeshClusters.h).
 #include <optional>
@@ -77,8 +79,9 @@ public:
     Status recordDisplay(VkCommandBuffer commands, const GpuImage& target,
                          const SceneDisplay& display);
 
-    // One submission: renders the frame and reads it back. Without `display`: linear RGB,
-    // alpha 1 where an instance is drawn, the background transparent. With it: the
+    // One submission: renders the frame and reads it back. Without `display`: linear RGB (not
+    // premultiplied), alpha the share of a pixel's samples an instance covers, the background
+    // transparent. With it: the
     // displayable picture recordDisplay makes.
     Result<Image> render(CommandRunner& runner, const SceneFrame& frame,
                          const SceneSettings& scene,
@@ -134,7 +137,7 @@ private:
     // Size-dependent: recreated by prepareTarget.
     int width_ = 0;
     int height_ = 0;
-    Buffer visibility_;  // one 64-bit word per pixel (shaders/SceneVisibility.glsl)
+    Buffer visibility_;  // one 64-bit word per sample (shaders/SceneVisibility.glsl)
     UniqueBufferView visibilityView_;
     GpuImage radiance_;
     UniqueFramebuffer framebuffer_;
