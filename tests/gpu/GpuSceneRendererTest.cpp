@@ -96,6 +96,22 @@ protected:
         return std::move(renderer).value();
     }
 
+    // `mesh` as one instance at the origin wearing the first preset's material under the
+    // paper's light, size x size; nullopt (and a failure) if it fails.
+    std::optional<Image> renderOneInstance(const Mesh& mesh, const SceneCamera& camera,
+                                           int size) {
+        auto raster = rendererOf(mesh, std::span(&presets[0].material, 1));
+        if (!raster) return std::nullopt;
+        const SceneInstance instance;
+        auto image = raster->render(*runner, {size, size, camera, std::span(&instance, 1)},
+                                    paperLight(presets[0].scene));
+        if (!image) {
+            ADD_FAILURE() << image.error().message;
+            return std::nullopt;
+        }
+        return std::move(image).value();
+    }
+
     gpu::GpuContext* context = nullptr;
     std::optional<gpu::CommandRunner> runner;
     std::vector<PresetCase> presets;
@@ -195,14 +211,10 @@ constexpr glm::dvec2 kSamplePositions[4] = {{0.375, 0.125}, {0.875, 0.375}, {0.1
 // Samples within the tessellation's reach of the silhouette are not judged. The silhouette's
 // pixels get fractional alpha: they blend the sphere with what lies behind it.
 TEST_F(GpuSceneRendererTest, AlphaIsTheSpheresShareOfEachPixelsSamples) {
-    auto raster = rendererOf(makeSphereMesh(), std::span(&presets[0].material, 1));
-    ASSERT_TRUE(raster);
-    const SceneInstance instance;
     const int size = 256;
     const SceneCamera camera{{0.3, 0.5, 3.2}, glm::dvec3(0.0), 40.0};
-    auto image = raster->render(*runner, {size, size, camera, std::span(&instance, 1)},
-                                paperLight(presets[0].scene));
-    ASSERT_TRUE(image.ok()) << image.error().message;
+    const std::optional<Image> image = renderOneInstance(makeSphereMesh(), camera, size);
+    ASSERT_TRUE(image);
     const RayToSphere rays(camera, size);
     std::size_t judged = 0, inside = 0, fractional = 0;
     for (int y = 0; y < size; ++y)
@@ -224,6 +236,36 @@ TEST_F(GpuSceneRendererTest, AlphaIsTheSpheresShareOfEachPixelsSamples) {
     EXPECT_GT(inside, std::size_t(size * size / 10));
     EXPECT_GT(judged, std::size_t(size * size * 9 / 10)) << "few samples lie on the silhouette";
     EXPECT_GT(fractional, std::size_t(100)) << "the silhouette's pixels are blended";
+}
+
+// Triangles tens of pixels wide (a coarse sphere seen close, as in a close-up) leave no crack
+// either. A pixel whose samples' rays all pass well inside the facets' reach (0.95 of the
+// radius: every facet plane of this sphere lies farther than that from its centre) is covered,
+// one whose samples all miss the unit sphere is not.
+TEST_F(GpuSceneRendererTest, LargeTrianglesLeaveNoCrackEither) {
+    const int size = 256;
+    const SceneCamera camera{{0.4, 0.6, 2.0}, glm::dvec3(0.0), 60.0};
+    const std::optional<Image> image = renderOneInstance(makeSphereMesh(16, 8), camera, size);
+    ASSERT_TRUE(image);
+    const RayToSphere rays(camera, size);
+    std::size_t inside = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            double nearest = 2.0, farthest = 0.0;
+            for (const glm::dvec2& sample : kSamplePositions) {
+                const double miss = rays.miss(glm::dvec2(x, y) + sample);
+                nearest = std::min(nearest, miss);
+                farthest = std::max(farthest, miss);
+            }
+            const float alpha = image->pixel(x, y)[3];
+            if (farthest < 0.95) {
+                ++inside;
+                ASSERT_EQ(alpha, 1.0f) << "a crack at pixel " << x << ", " << y;
+            } else if (nearest > 1.0) {
+                ASSERT_EQ(alpha, 0.0f) << "a stray sample at pixel " << x << ", " << y;
+            }
+        }
+    EXPECT_GT(inside, std::size_t(size * size / 4)) << "the sphere fills much of the view";
 }
 
 // Where one instance passes in front of another, a pixel blends the two surfaces by their
