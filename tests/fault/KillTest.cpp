@@ -317,9 +317,10 @@ void killDuringExport(const std::string& extension) {
             // An orphan of this or an earlier killed export (removed by the next whole write of
             // the main file, io/CompanionFiles.h): whole, byte for byte.
             const bool wholeCompanion =
-                std::any_of(wholeExports.begin(), wholeExports.end(), [&](const FileSet& exported) {
-                    return exported.count(name) && exported.at(name) == bytes;
-                });
+                std::any_of(wholeExports.begin(), wholeExports.end(),
+                            [&name = name, &bytes = bytes](const FileSet& exported) {
+                                return exported.count(name) && exported.at(name) == bytes;
+                            });
             EXPECT_TRUE(wholeCompanion)
                 << "attempt " << attempt << ": " << name << " belongs to no whole export";
         }

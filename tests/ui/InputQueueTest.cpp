@@ -30,7 +30,7 @@ protected:
     void button(bool down) { queue.push({.kind = Kind::Button, .code = 0, .down = down}); }
 
     InputQueue queue;  // GLFW's key codes for the modifiers, as in the app
-    const ui::ModifierKeys modifiers;
+    const ui::ModifierKeys modifiers{};
 };
 
 TEST_F(InputEvents, CtrlZTappedWithinOneFrameUndoes) {
