@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -19,6 +18,7 @@
 #include "CandidateGrid.h"
 #include "CompareMetricsDisplay.h"
 #include "CompareMetricsWorker.h"
+#include "DrawDataSnapshot.h"
 #include "EditorStyle.h"
 #include "EditorTimings.h"
 #include "EditorUi.h"
@@ -43,7 +43,14 @@
 namespace matevo::editor {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+// How error maps are coloured: drawn by the image bridge, so not in ImGui's draw data.
+struct HeatmapDisplay {
+    ImageMetric metric;
+    float minDeltaE;
+    float maxDeltaE;
+};
+static_assert(sizeof(HeatmapDisplay) == sizeof(ImageMetric) + 2 * sizeof(float),
+              "no padding: a snapshot compares its bytes");
 
 // Signal handlers can only set a flag; the frame loop reads it.
 std::atomic<bool> terminationRequested{false};
@@ -114,7 +121,12 @@ private:
         ImGuiSession& operator=(const ImGuiSession&) = delete;
     };
 
-    bool frame(std::optional<std::filesystem::path>& screenshotPath);
+    enum class FrameOutcome {
+        Drawn,
+        Unchanged,  // the same picture as the one on screen: not drawn again
+        Skipped,    // nothing drawn (the swapchain is being rebuilt, or a failure)
+    };
+    FrameOutcome frame(std::optional<std::filesystem::path>& screenshotPath);
     ui::VariantsActions playScript(std::optional<std::filesystem::path>& screenshotPath);
     // Whether the GA run and the variant search a script may wait for are done and shown.
     ScriptPlayer::Settled scriptSettled();
@@ -149,6 +161,9 @@ private:
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
+    bool redrawRequested_ = false;  // by a script: the whole window, on the next frame
+    ui::DrawDataSnapshot onScreen_;  // what the last frame drawn shows
+    ui::DrawDataSnapshot next_;      // this frame's, compared with it
     // Frames drawn after input or a finished job, so that hover states and popups settle
     // before waiting.
     static constexpr int kSettleFrames = 3;
@@ -316,11 +331,14 @@ int EditorApp::run() {
         }
 
         const bool evolving = worker_->busy();
-        const auto started = Clock::now();
-        if (!frame(screenshotPath)) continue;
-        const auto finished = Clock::now();
-        timings_.addFrame(std::chrono::duration<double, std::milli>(finished - started).count(),
-                          evolving);
+        const EditorTimings::Mark started = EditorTimings::now();
+        const FrameOutcome outcome = frame(screenshotPath);
+        if (outcome == FrameOutcome::Skipped) continue;
+        const EditorTimings::Mark finished = EditorTimings::now();
+        if (outcome == FrameOutcome::Drawn)
+            timings_.addFrame(EditorTimings::between(started, finished), evolving);
+        else
+            timings_.frameUnchanged();
         timings_.resultsShown(display_->shownJob(), display_->shownFinished(), finished);
         if (options_.maxFrames > 0 && ++frames >= options_.maxFrames) break;
     }
@@ -337,7 +355,7 @@ int EditorApp::run() {
     return 0;
 }
 
-bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
+EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     // A screenshot shows the frame after the one that asked, so the request has settled; the
     // script waits for it.
     const std::optional<std::filesystem::path> captureNow = std::exchange(screenshotPath, {});
@@ -373,10 +391,22 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
     ImDrawData* drawData = ImGui::GetDrawData();
-    bridge_->setHeatmap(ui_.state().evolution.heatmapMetric, ui_.state().heatmap.minDeltaE,
-                        ui_.state().heatmap.maxDeltaE);
+    const HeatmapDisplay heatmap{ui_.state().evolution.heatmapMetric,
+                                 ui_.state().heatmap.minDeltaE, ui_.state().heatmap.maxDeltaE};
+    bridge_->setHeatmap(heatmap.metric, heatmap.minDeltaE, heatmap.maxDeltaE);
+    // Hover, progress and worker wakes often end in the picture already on screen.
+    next_.capture(*drawData, std::as_bytes(std::span(&heatmap, 1)));
+    // The window lost its contents (uncovered), or a script asks for a whole redraw.
+    const bool redraw = input_->takeRefreshRequest() || std::exchange(redrawRequested_, false);
+    if (redraw) renderer_->forgetPictures();
+    if (!captureNow && !redraw && next_ == onScreen_) return FrameOutcome::Unchanged;
     FrameRecording recording;
-    recording.inPass = [this, drawData](VkCommandBuffer commands, std::size_t frameSlot) {
+    if (std::vector<ui::PixelArea> changed = next_.changedSince(onScreen_);
+        changed != std::vector<ui::PixelArea>{next_.whole()})
+        recording.changed = std::move(changed);
+    recording.inPass = [this, drawData](VkCommandBuffer commands, std::size_t frameSlot,
+                                        std::span<const ui::PixelArea> areas) {
+        ui::clipDrawData(*drawData, areas);
         bridge_->prepare(*drawData, commands, frameSlot);
         ImGui_ImplVulkan_RenderDrawData(drawData, commands);
     };
@@ -387,7 +417,12 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     const bool drawn = drawFrame && *drawFrame;
     if (drawn && captureNow) saveScreenshot(captured, *captureNow);
     if (!drawn && captureNow) screenshotPath = captureNow;  // try again next frame
-    return drawn;
+    if (!drawn) {
+        onScreen_.clear();  // whatever is on screen now, the next frame draws
+        return FrameOutcome::Skipped;
+    }
+    std::swap(onScreen_, next_);
+    return FrameOutcome::Drawn;
 }
 
 ScriptPlayer::Settled EditorApp::scriptSettled() {
@@ -401,6 +436,7 @@ ui::VariantsActions EditorApp::playScript(std::optional<std::filesystem::path>& 
     if (effects.quit) quitRequested_ = true;
     if (effects.resize)
         glfwSetWindowSize(window_.get(), effects.resize->first, effects.resize->second);
+    if (effects.redraw) redrawRequested_ = true;
     screenshotPath = effects.screenshot;
     return effects.variants;
 }
@@ -565,7 +601,7 @@ void EditorApp::submitChangesToWorker() {
     const std::uint64_t jobId = worker_->submit(
         {preset, ui_.state().presetPath, false, imageFitness, heatmapMetric});
     ui_.state().evolution.running = true;
-    timings_.changeSubmitted(jobId, Clock::now());
+    timings_.changeSubmitted(jobId, EditorTimings::now());
 }
 
 std::filesystem::path EditorApp::nextSnapshotPath() const {
