@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -155,6 +156,7 @@ private:
     ScriptPlayer script_;
     EditorTimings timings_;
     std::optional<Preset> submittedPreset_;
+    std::uint64_t submittedJob_ = 0;  // the GA job last asked for
     bool submittedImageFitness_ = false;
     std::optional<Preset> previewedPreset_;  // the target shown while a slider is dragged
     ImageMetric submittedHeatmapMetric_ = ImageMetric::DeltaE00;
@@ -167,6 +169,9 @@ private:
     // Frames drawn after input or a finished job, so that hover states and popups settle
     // before waiting.
     static constexpr int kSettleFrames = 3;
+    // While a job runs, its progress is drawn at most this often: on lavapipe every frame takes
+    // both cores from the job for 10-30 ms.
+    static constexpr std::chrono::milliseconds kProgressInterval{100};
     std::atomic<bool> workerPosted_{false};  // a worker has a result or progress to show
     std::vector<std::shared_ptr<ShownImage>> compareImages_;   // what Compare metrics shows
     std::vector<std::shared_ptr<ShownImage>> variantsImages_;  // what Variants shows
@@ -291,6 +296,8 @@ int EditorApp::run() {
     int frames = 0;
     std::optional<std::filesystem::path> screenshotPath;
     int framesToSettle = 0;
+    bool resultWaiting = false;  // a worker posted something no frame has shown yet
+    auto lastDrawn = std::chrono::steady_clock::time_point{};
     while (!shouldQuit()) {
         // Draw only when something changed: input (and a few frames after it, for ImGui's
         // hover and popups to settle), a worker's result (it posts an empty event), a due script
@@ -306,21 +313,30 @@ int EditorApp::run() {
                                            : !script_.idling() || script_.idleOver());
         const bool due = screenshotPath || scriptDue || input_->hasPending() || framesToSettle > 0;
         const bool busy = workersBusy();
+        const auto sinceDrawn = std::chrono::steady_clock::now() - lastDrawn;
         if (due)
             glfwPollEvents();
+        else if (busy)  // until the next progress frame is due
+            glfwWaitEventsTimeout(
+                std::max(0.001, std::chrono::duration<double>(kProgressInterval - sinceDrawn).count()));
         else
-            glfwWaitEventsTimeout(busy ? 0.1 : 0.25);
+            glfwWaitEventsTimeout(0.25);
         if (shouldQuit()) break;
         if (input_->takeCloseRequest()) ui_.requestQuit();
         if (auto dropped = input_->takeDroppedFiles(); !dropped.empty())
             ui_.dropFile(dropped.front());
-        const bool woken = workerPosted_.exchange(false);
+        if (workerPosted_.exchange(false)) resultWaiting = true;
         if (input_->takeChanged()) framesToSettle = kSettleFrames;
-        // A worker's result needs one frame while its job still runs (the next result or the
-        // periodic frame follows anyway); the job's last one settles like input. On lavapipe
-        // every frame takes 20-35 ms of both cores from the worker.
-        if (woken) framesToSettle = std::max(framesToSettle, workersBusy() ? 1 : kSettleFrames);
-        if (!due && !busy && framesToSettle == 0) continue;  // nothing changed: draw nothing
+        // While jobs run, their results and progress are drawn every kProgressInterval (the
+        // first result of a new GA job at once); the last result settles like input once they
+        // are done.
+        const bool jobsRunning = workersBusy();
+        if (resultWaiting && !jobsRunning) framesToSettle = std::max(framesToSettle, kSettleFrames);
+        const bool firstResult = resultWaiting && display_->shownJob() != submittedJob_;
+        const bool progressDue =
+            jobsRunning && (firstResult ||
+                            std::chrono::steady_clock::now() - lastDrawn >= kProgressInterval);
+        if (!due && !progressDue && framesToSettle == 0) continue;  // draw nothing now
         framesToSettle = std::max(0, framesToSettle - 1);
         if (script_.idling()) timings_.frameWhileScriptIdle();
         int width = 0, height = 0;
@@ -334,6 +350,8 @@ int EditorApp::run() {
         const EditorTimings::Mark started = EditorTimings::now();
         const FrameOutcome outcome = frame(screenshotPath);
         if (outcome == FrameOutcome::Skipped) continue;
+        resultWaiting = false;  // the frame applied every result posted so far
+        lastDrawn = std::chrono::steady_clock::now();
         const EditorTimings::Mark finished = EditorTimings::now();
         if (outcome == FrameOutcome::Drawn)
             timings_.addFrame(EditorTimings::between(started, finished), evolving);
@@ -580,7 +598,8 @@ void EditorApp::submitChangesToWorker() {
         const Preset& shown = previewedPreset_ ? *previewedPreset_ : *submittedPreset_;
         if (preset.target == shown.target && preset.baseKappa == shown.baseKappa) return;
         previewedPreset_ = preset;
-        worker_->submit({preset, ui_.state().presetPath, true, false, heatmapMetric});
+        submittedJob_ =
+            worker_->submit({preset, ui_.state().presetPath, true, false, heatmapMetric});
         return;
     }
     // A preview replaced the target and stopped the run: a full job follows even when the
@@ -600,6 +619,7 @@ void EditorApp::submitChangesToWorker() {
     submittedHeatmapMetric_ = heatmapMetric;
     const std::uint64_t jobId = worker_->submit(
         {preset, ui_.state().presetPath, false, imageFitness, heatmapMetric});
+    submittedJob_ = jobId;
     ui_.state().evolution.running = true;
     timings_.changeSubmitted(jobId, EditorTimings::now());
 }
