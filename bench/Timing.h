@@ -28,18 +28,19 @@ struct WallAndCpu {
     double cpuMilliseconds = 0;
 };
 
+inline double processCpuMilliseconds() {
+    timespec now{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) / 1e6;
+}
+
 template <typename Work>
 WallAndCpu medianWallAndCpu(int repetitions, Work&& work) {
-    auto cpuNow = [] {
-        timespec now{};
-        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-        return double(now.tv_sec) * 1e3 + double(now.tv_nsec) / 1e6;
-    };
     std::vector<double> cpuTimes;
     const double wall = medianMilliseconds(repetitions, [&] {
-        const double start = cpuNow();
+        const double start = processCpuMilliseconds();
         work();
-        cpuTimes.push_back(cpuNow() - start);
+        cpuTimes.push_back(processCpuMilliseconds() - start);
     });
     std::nth_element(cpuTimes.begin(), cpuTimes.begin() + cpuTimes.size() / 2, cpuTimes.end());
     return {wall, cpuTimes[cpuTimes.size() / 2]};

@@ -32,17 +32,28 @@ struct Filtered {
     float alpha;       // the pixel's own
 };
 
-// Each invocation filters kRun consecutive rows of its column (FlipCommon.glsl), for one
-// image: the plane rows it needs are loaded once, into registers.
-void columnPass(uint slot, int x, int firstRow, out Filtered filtered[kRun]) {
-    vec4 csfRows[kRun + 2 * kRadius], featureRows[kRun + 2 * kRadius];
-    [[unroll]] for (int j = 0; j < kRun + 2 * kRadius; ++j) {
-        int row = clamp(firstRow - kRadius + j, 0, settings.height - 1);
-        uint pixel = uint(row * settings.width + x);
+// The planes of one image in a column's window (FlipCommon.glsl): rows top + j, j in
+// [first, end), clamped to the image.
+void loadRows(uint slot, int x, int top, int first, int end, inout vec4 csfRows[kWindow],
+              inout vec4 featureRows[kWindow]) {
+    [[unroll]] for (int j = first; j < end; ++j) {
+        uint pixel = uint(clamp(top + j, 0, settings.height - 1) * settings.width + x);
         csfRows[j] = planes[planeIndex(slot, pixel, 0)];
         featureRows[j] = planes[planeIndex(slot, pixel, 1)];
     }
-    [[unroll]] for (int i = 0; i < kRun; ++i) {
+}
+
+// Slide: the next block's first 2 kRadius rows are this block's last.
+void slide(inout vec4 csfRows[kWindow], inout vec4 featureRows[kWindow]) {
+    [[unroll]] for (int j = 0; j < 2 * kRadius; ++j) {
+        csfRows[j] = csfRows[j + kBlock];
+        featureRows[j] = featureRows[j + kBlock];
+    }
+}
+
+// The window's kBlock centre rows filtered along y.
+void filterBlock(vec4 csfRows[kWindow], vec4 featureRows[kWindow], out Filtered filtered[kBlock]) {
+    [[unroll]] for (int i = 0; i < kBlock; ++i) {
         int centre = i + kRadius;
         vec4 csf = csfTaps(0) * csfRows[centre];
         [[unroll]] for (int k = 1; k <= kCsfRadius; ++k)
@@ -97,25 +108,39 @@ float featureDifference(Filtered reference, Filtered test) {
 void main() {
     int pixelCount = settings.width * settings.height;
     int x = int(gl_GlobalInvocationID.x);
-    if (x >= settings.width) return;
     int firstRow = int(gl_GlobalInvocationID.y) * kRun;
+    if (x >= settings.width || firstRow >= settings.height) return;
+    int endRow = min(firstRow + kRun, settings.height);
     uint candidate = gl_GlobalInvocationID.z;
 
-    Filtered reference[kRun], test[kRun];
-    columnPass(0, x, firstRow, reference);
-    columnPass(1 + candidate, x, firstRow, test);
-    [[unroll]] for (int i = 0; i < kRun; ++i) {
-        if (firstRow + i >= settings.height) continue;
-        uint pixel = uint((firstRow + i) * settings.width + x);
-        float colorError = colorDifference(reference[i].ycxcz, test[i].ycxcz);
-        float featureError = featureDifference(reference[i], test[i]);
-        // pow(0, 0) is undefined in GLSL; C's 1 is what the CPU reference gives.
-        float error = featureError >= 1.0 ? 1.0 : pow(colorError, 1.0 - featureError);
+    // For the block whose first output is row `start`: row start − kRadius + j at j, of the
+    // reference and of the candidate.
+    vec4 referenceCsf[kWindow], referenceFeature[kWindow], testCsf[kWindow], testFeature[kWindow];
+    // The first 2 kRadius rows of the first block's window; each block loads the rest.
+    loadRows(0, x, firstRow - kRadius, 0, 2 * kRadius, referenceCsf, referenceFeature);
+    loadRows(1 + candidate, x, firstRow - kRadius, 0, 2 * kRadius, testCsf, testFeature);
+    [[dont_unroll]] for (int start = firstRow; start < endRow; start += kBlock) {
+        int top = start - kRadius;
+        loadRows(0, x, top, 2 * kRadius, kWindow, referenceCsf, referenceFeature);
+        loadRows(1 + candidate, x, top, 2 * kRadius, kWindow, testCsf, testFeature);
+        Filtered reference[kBlock], test[kBlock];
+        filterBlock(referenceCsf, referenceFeature, reference);
+        filterBlock(testCsf, testFeature, test);
+        [[unroll]] for (int i = 0; i < kBlock; ++i) {
+            if (start + i >= endRow) continue;
+            uint pixel = uint((start + i) * settings.width + x);
+            float colorError = colorDifference(reference[i].ycxcz, test[i].ycxcz);
+            float featureError = featureDifference(reference[i], test[i]);
+            // pow(0, 0) is undefined in GLSL; C's 1 is what the CPU reference gives.
+            float error = featureError >= 1.0 ? 1.0 : pow(colorError, 1.0 - featureError);
 
-        uint index = candidate * uint(pixelCount) + pixel;
-        bool pooled = reference[i].alpha >= 0.5 && test[i].alpha >= 0.5;
-        flipError[index] = pooled ? error : -1.0 - error;
-        heatmapPixels[index] = pooled ? colormap[uint(floor(clamp(error, 0.0, 1.0) * 255.0 + 0.5))]
-                                      : vec4(0.0);
+            uint index = candidate * uint(pixelCount) + pixel;
+            bool pooled = reference[i].alpha >= 0.5 && test[i].alpha >= 0.5;
+            flipError[index] = pooled ? error : -1.0 - error;
+            heatmapPixels[index] =
+                pooled ? colormap[uint(floor(clamp(error, 0.0, 1.0) * 255.0 + 0.5))] : vec4(0.0);
+        }
+        slide(referenceCsf, referenceFeature);
+        slide(testCsf, testFeature);
     }
 }

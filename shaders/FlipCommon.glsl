@@ -48,9 +48,16 @@ float featureTap(int which, int offset) {
 }
 
 // Each invocation of either pass filters a run of kRun pixels (a row segment, a column
-// segment) from the kRun + 2 kRadius pixels it loads once: a pixel near the run is loaded
-// by the two or three runs it reaches, not once per output it reaches.
-const int kRun = 32;
+// segment), kBlock at a time: a loop over the run's blocks (not unrolled), each block's
+// kBlock outputs unrolled. A window of kBlock + 2 kRadius pixels slides along the run: each
+// block loads its kBlock new pixels once and keeps the 2 kRadius before them from the last
+// block, so a pixel is loaded once per run it reaches, not once per output it reaches
+// ((kRun + 2 kRadius) / kRun loads per output). Only the block is unrolled, which keeps
+// lavapipe's compile time (paid at the first dispatch, on the queue) a fraction of an
+// unrolled run's; FlipPass sets both (docs/flip.md has the trade-off).
+layout(constant_id = 2) const int kRun = 32;
+layout(constant_id = 3) const int kBlock = 4;
+const int kWindow = kBlock + 2 * kRadius;
 
 // The row pass's output: per image (slot 0 the reference, slot 1 + i candidate i) and pixel,
 // two vec4 filtered along x only. The first: the opponent channels through their

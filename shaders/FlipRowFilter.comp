@@ -5,8 +5,8 @@
 // to YyCxCz, and filtered along x (edge pixels repeated) by every separable filter of
 // LDR-ꟻLIP, as core/color/Flip.cpp's row pass. An invocation takes kRun pixels of one row
 // (gl_GlobalInvocationID.y) of one image (gl_GlobalInvocationID.z: 0 the reference, 1 + i
-// candidate i): it loads and converts them and the filter radius on either side once, into
-// registers, and filters from there.
+// candidate i), kBlock at a time: it loads and converts each pixel of the run and the filter
+// radius on either side once, into registers, and filters from there (FlipCommon.glsl).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 0) readonly buffer Reference { vec4 referencePixels[]; };
@@ -37,37 +37,52 @@ void main() {
     int firstColumn = int(gl_GlobalInvocationID.x) * kRun;
     if (y >= settings.height || firstColumn >= settings.width) return;
     int rowStart = y * settings.width;
+    int endColumn = min(firstColumn + kRun, settings.width);
 
-    // window[j] holds column firstColumn − kRadius + j, clamped to the row; alphas[i] the
-    // alpha of output i.
-    vec4 window[kRun + 2 * kRadius];
-    float alphas[kRun];
-    [[unroll]] for (int j = 0; j < kRun + 2 * kRadius; ++j) {
+    // For the block whose first output is column `start`: window[j] holds column
+    // start − kRadius + j, clamped to the row, and alphas[j] its alpha.
+    vec4 window[kWindow];
+    float alphas[kWindow];
+    // The first 2 kRadius columns of the first block's window; each block loads the rest.
+    [[unroll]] for (int j = 0; j < 2 * kRadius; ++j) {
         int column = clamp(firstColumn - kRadius + j, 0, settings.width - 1);
         vec4 pixel = pixelOf(slot, uint(rowStart + column));
         window[j] = opponent(pixel);
-        if (j >= kRadius && j < kRadius + kRun) alphas[j - kRadius] = pixel.a;
+        alphas[j] = pixel.a;
     }
-
-    [[unroll]] for (int i = 0; i < kRun; ++i) {
-        int centre = i + kRadius;
-        vec4 csf = csfTaps(0) * window[centre].xyzz;
-        [[unroll]] for (int k = 1; k <= kCsfRadius; ++k)
-            csf += csfTaps(k) * (window[centre - k] + window[centre + k]).xyzz;
-        vec3 feature = vec3(featureTap(kFirstDerivativeTaps, 0), featureTap(kSecondDerivativeTaps, 0),
-                            featureTap(kGaussianTaps, 0)) * window[centre].w;
-        [[unroll]] for (int k = 1; k <= kFeatureRadius; ++k) {
-            // The first derivative is odd (tap −k = −tap k), the others even.
-            float sum = window[centre - k].w + window[centre + k].w;
-            float difference = window[centre + k].w - window[centre - k].w;
-            feature += vec3(featureTap(kFirstDerivativeTaps, k) * difference,
-                            featureTap(kSecondDerivativeTaps, k) * sum,
-                            featureTap(kGaussianTaps, k) * sum);
+    [[dont_unroll]] for (int start = firstColumn; start < endColumn; start += kBlock) {
+        [[unroll]] for (int j = 2 * kRadius; j < kWindow; ++j) {
+            int column = clamp(start - kRadius + j, 0, settings.width - 1);
+            vec4 pixel = pixelOf(slot, uint(rowStart + column));
+            window[j] = opponent(pixel);
+            alphas[j] = pixel.a;
         }
-        if (firstColumn + i < settings.width) {
-            uint pixel = uint(rowStart + firstColumn + i);
-            planes[planeIndex(slot, pixel, 0)] = csf;
-            planes[planeIndex(slot, pixel, 1)] = vec4(feature, alphas[i]);
+        [[unroll]] for (int i = 0; i < kBlock; ++i) {
+            int centre = i + kRadius;
+            vec4 csf = csfTaps(0) * window[centre].xyzz;
+            [[unroll]] for (int k = 1; k <= kCsfRadius; ++k)
+                csf += csfTaps(k) * (window[centre - k] + window[centre + k]).xyzz;
+            vec3 feature = vec3(featureTap(kFirstDerivativeTaps, 0),
+                                featureTap(kSecondDerivativeTaps, 0), featureTap(kGaussianTaps, 0)) *
+                           window[centre].w;
+            [[unroll]] for (int k = 1; k <= kFeatureRadius; ++k) {
+                // The first derivative is odd (tap −k = −tap k), the others even.
+                float sum = window[centre - k].w + window[centre + k].w;
+                float difference = window[centre + k].w - window[centre - k].w;
+                feature += vec3(featureTap(kFirstDerivativeTaps, k) * difference,
+                                featureTap(kSecondDerivativeTaps, k) * sum,
+                                featureTap(kGaussianTaps, k) * sum);
+            }
+            if (start + i < endColumn) {
+                uint pixel = uint(rowStart + start + i);
+                planes[planeIndex(slot, pixel, 0)] = csf;
+                planes[planeIndex(slot, pixel, 1)] = vec4(feature, alphas[centre]);
+            }
+        }
+        // Slide: the next block's first 2 kRadius columns are this block's last.
+        [[unroll]] for (int j = 0; j < 2 * kRadius; ++j) {
+            window[j] = window[j + kBlock];
+            alphas[j] = alphas[j + kBlock];
         }
     }
 }

@@ -316,7 +316,7 @@ bool drawCandidateGrid(EditorState& state) {
     sameLineIfFits(buttonWidth("Keep"));
     if (ImGui::Button("Keep")) keepPicked(state);
     hoverHint("Put the selected tiles (Ctrl+click for several) in the kept bin: K");
-    if (state.heatmap.enabled) drawHeatmapControls(state.heatmap);
+    if (state.heatmap.enabled) drawHeatmapControls(state.heatmap, state.evolution.heatmapMetric);
     if (!ImGui::BeginTabBar("grid tabs")) return false;
     if (ImGui::BeginTabItem("Population")) {
         drawPopulation(state);

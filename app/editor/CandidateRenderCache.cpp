@@ -44,6 +44,15 @@ Status CandidateRenderCache::createRenderer(const SceneTextures& textures) {
     return Ok{};
 }
 
+Status CandidateRenderCache::prepareFlipRenderer(const SceneTextures& textures) {
+    if (!gpuRenderer_) return Ok{};  // the CPU renderer compiles nothing: it draws them too
+    if (flipRenderer_) return flipRenderer_->setTextures(textures);
+    gpu::RendererRequest headless = request_;
+    headless.device = nullptr;
+    flipRenderer_ = gpu::createPopulationRenderer(headless, textures);
+    return Ok{};
+}
+
 Status CandidateRenderCache::prepare(const Preset& preset, const std::filesystem::path& presetFile,
                                      ImageMetric heatmapMetric) {
     if (drawsTheSame(preset, presetFile, heatmapMetric)) return Ok{};
@@ -54,6 +63,8 @@ Status CandidateRenderCache::prepare(const Preset& preset, const std::filesystem
     } else if (Status set = renderer_->setTextures(*textures); !set) {
         return set;
     }
+    if (heatmapMetric == ImageMetric::Flip || flipRenderer_)
+        if (Status set = prepareFlipRenderer(*textures); !set) return set;
     entries_.clear();
     heatmapMetric_ = heatmapMetric;
     targetPicture_.reset();
@@ -109,10 +120,11 @@ Status CandidateRenderCache::draw(std::span<const Genome> genomes) {
     const MaterialInstance target = material(preset_->target);
     // ΔE00 tiles on the GPU are written in place; anything else goes through the host.
     const bool inPlace = gpuRenderer_ && !flip;
+    PopulationRenderer& renderer = flip && flipRenderer_ ? *flipRenderer_ : *renderer_;
     auto evaluation =
         inPlace ? gpuRenderer_->evaluateIntoTiles(target, materials, preset_->scene, tileSize_,
                                                   options, targets)
-                : renderer_->evaluate(target, materials, preset_->scene, tileSize_, options);
+                : renderer.evaluate(target, materials, preset_->scene, tileSize_, options);
     if (!evaluation) return evaluation.error();
     if (!inPlace) {
         // A ꟻLIP tile's error map holds ꟻLIP where the pixel is pooled (as ΔE00's, "not covered"

@@ -6,8 +6,8 @@
 // much the same population, so most tiles of an update are already drawn. New tiles are drawn
 // by the render interface; on the GPU straight into the tiles (render + ΔE00 + copies in one
 // submission, nothing read back but the ΔE00 maps for their statistics). When the heatmap shows
-// ꟻLIP, the tiles' error maps hold ꟻLIP instead (computed by the same renderer, read back for
-// the pixel readout and uploaded).
+// ꟻLIP, the tiles' error maps hold ꟻLIP instead (computed by a renderer of their own, read back
+// for the pixel readout and uploaded).
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -64,6 +64,7 @@ private:
                       ImageMetric heatmapMetric) const;
     MaterialInstance material(const Genome& genome) const;
     Status createRenderer(const SceneTextures& textures);
+    Status prepareFlipRenderer(const SceneTextures& textures);
     Status drawTarget(const Preset& preset);
     Status draw(std::span<const Genome> genomes);
     Entry* find(const Genome& genome);
@@ -78,6 +79,11 @@ private:
     // The GPU renderer writes ΔE00 tiles on the device itself; the CPU renderer's pictures and
     // every ꟻLIP tile are uploaded with uploadRunner_. Null with the CPU renderer.
     gpu::GpuPopulationRenderer* gpuRenderer_ = nullptr;
+    // With the GPU renderer, draws the ꟻLIP tiles on a headless device of its own (made at the
+    // first ꟻLIP prepare; null with the CPU renderer, which draws them itself). lavapipe compiles the ꟻLIP pipelines at their first dispatch, on the queue that
+    // runs it, for seconds with a cold shader cache (docs/flip.md); on the window's queue the
+    // window's frames would wait behind that compile, and the window would freeze.
+    std::unique_ptr<PopulationRenderer> flipRenderer_;
     std::optional<gpu::CommandRunner> uploadRunner_;
     ImageMetric heatmapMetric_ = ImageMetric::DeltaE00;
     std::optional<Preset> preset_;  // what the cached pictures were drawn from

@@ -19,6 +19,7 @@
 #include "CandidateGrid.h"
 #include "CompareMetricsDisplay.h"
 #include "CompareMetricsWorker.h"
+#include "DrawDataSnapshot.h"
 #include "EditorStyle.h"
 #include "EditorTimings.h"
 #include "EditorUi.h"
@@ -43,7 +44,14 @@
 namespace matevo::editor {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+// How error maps are coloured: drawn by the image bridge, so not in ImGui's draw data.
+struct HeatmapDisplay {
+    ImageMetric metric;
+    float minDeltaE;
+    float maxDeltaE;
+};
+static_assert(sizeof(HeatmapDisplay) == sizeof(ImageMetric) + 2 * sizeof(float),
+              "no padding: a snapshot compares its bytes");
 
 // Signal handlers can only set a flag; the frame loop reads it.
 std::atomic<bool> terminationRequested{false};
@@ -114,7 +122,12 @@ private:
         ImGuiSession& operator=(const ImGuiSession&) = delete;
     };
 
-    bool frame(std::optional<std::filesystem::path>& screenshotPath);
+    enum class FrameOutcome {
+        Drawn,
+        Unchanged,  // the same picture as the one on screen: not drawn again
+        Skipped,    // nothing drawn (the swapchain is being rebuilt, or a failure)
+    };
+    FrameOutcome frame(std::optional<std::filesystem::path>& screenshotPath);
     ui::VariantsActions playScript(std::optional<std::filesystem::path>& screenshotPath);
     // Whether the GA run and the variant search a script may wait for are done and shown.
     ScriptPlayer::Settled scriptSettled();
@@ -143,15 +156,22 @@ private:
     ScriptPlayer script_;
     EditorTimings timings_;
     std::optional<Preset> submittedPreset_;
+    std::uint64_t submittedJob_ = 0;  // the GA job last asked for
     bool submittedImageFitness_ = false;
     std::optional<Preset> previewedPreset_;  // the target shown while a slider is dragged
     ImageMetric submittedHeatmapMetric_ = ImageMetric::DeltaE00;
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
+    bool redrawRequested_ = false;  // by a script: the whole window, on the next frame
+    ui::DrawDataSnapshot onScreen_;  // what the last frame drawn shows
+    ui::DrawDataSnapshot next_;      // this frame's, compared with it
     // Frames drawn after input or a finished job, so that hover states and popups settle
     // before waiting.
     static constexpr int kSettleFrames = 3;
+    // While a job runs, its progress is drawn at most this often: on lavapipe every frame takes
+    // both cores from the job for 10-30 ms.
+    static constexpr std::chrono::milliseconds kProgressInterval{100};
     std::atomic<bool> workerPosted_{false};  // a worker has a result or progress to show
     std::vector<std::shared_ptr<ShownImage>> compareImages_;   // what Compare metrics shows
     std::vector<std::shared_ptr<ShownImage>> variantsImages_;  // what Variants shows
@@ -276,6 +296,8 @@ int EditorApp::run() {
     int frames = 0;
     std::optional<std::filesystem::path> screenshotPath;
     int framesToSettle = 0;
+    bool resultWaiting = false;  // a worker posted something no frame has shown yet
+    auto lastDrawn = std::chrono::steady_clock::time_point{};
     while (!shouldQuit()) {
         // Draw only when something changed: input (and a few frames after it, for ImGui's
         // hover and popups to settle), a worker's result (it posts an empty event), a due script
@@ -291,21 +313,30 @@ int EditorApp::run() {
                                            : !script_.idling() || script_.idleOver());
         const bool due = screenshotPath || scriptDue || input_->hasPending() || framesToSettle > 0;
         const bool busy = workersBusy();
+        const auto sinceDrawn = std::chrono::steady_clock::now() - lastDrawn;
         if (due)
             glfwPollEvents();
+        else if (busy)  // until the next progress frame is due
+            glfwWaitEventsTimeout(
+                std::max(0.001, std::chrono::duration<double>(kProgressInterval - sinceDrawn).count()));
         else
-            glfwWaitEventsTimeout(busy ? 0.1 : 0.25);
+            glfwWaitEventsTimeout(0.25);
         if (shouldQuit()) break;
         if (input_->takeCloseRequest()) ui_.requestQuit();
         if (auto dropped = input_->takeDroppedFiles(); !dropped.empty())
             ui_.dropFile(dropped.front());
-        const bool woken = workerPosted_.exchange(false);
+        if (workerPosted_.exchange(false)) resultWaiting = true;
         if (input_->takeChanged()) framesToSettle = kSettleFrames;
-        // A worker's result needs one frame while its job still runs (the next result or the
-        // periodic frame follows anyway); the job's last one settles like input. On lavapipe
-        // every frame takes 20-35 ms of both cores from the worker.
-        if (woken) framesToSettle = std::max(framesToSettle, workersBusy() ? 1 : kSettleFrames);
-        if (!due && !busy && framesToSettle == 0) continue;  // nothing changed: draw nothing
+        // While jobs run, their results and progress are drawn every kProgressInterval (the
+        // first result of a new GA job at once); the last result settles like input once they
+        // are done.
+        const bool jobsRunning = workersBusy();
+        if (resultWaiting && !jobsRunning) framesToSettle = std::max(framesToSettle, kSettleFrames);
+        const bool firstResult = resultWaiting && display_->shownJob() != submittedJob_;
+        const bool progressDue =
+            jobsRunning && (firstResult ||
+                            std::chrono::steady_clock::now() - lastDrawn >= kProgressInterval);
+        if (!due && !progressDue && framesToSettle == 0) continue;  // draw nothing now
         framesToSettle = std::max(0, framesToSettle - 1);
         if (script_.idling()) timings_.frameWhileScriptIdle();
         int width = 0, height = 0;
@@ -316,11 +347,16 @@ int EditorApp::run() {
         }
 
         const bool evolving = worker_->busy();
-        const auto started = Clock::now();
-        if (!frame(screenshotPath)) continue;
-        const auto finished = Clock::now();
-        timings_.addFrame(std::chrono::duration<double, std::milli>(finished - started).count(),
-                          evolving);
+        const EditorTimings::Mark started = EditorTimings::now();
+        const FrameOutcome outcome = frame(screenshotPath);
+        if (outcome == FrameOutcome::Skipped) continue;
+        resultWaiting = false;  // the frame applied every result posted so far
+        lastDrawn = std::chrono::steady_clock::now();
+        const EditorTimings::Mark finished = EditorTimings::now();
+        if (outcome == FrameOutcome::Drawn)
+            timings_.addFrame(EditorTimings::between(started, finished), evolving);
+        else
+            timings_.frameUnchanged();
         timings_.resultsShown(display_->shownJob(), display_->shownFinished(), finished);
         if (options_.maxFrames > 0 && ++frames >= options_.maxFrames) break;
     }
@@ -337,7 +373,7 @@ int EditorApp::run() {
     return 0;
 }
 
-bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
+EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     // A screenshot shows the frame after the one that asked, so the request has settled; the
     // script waits for it.
     const std::optional<std::filesystem::path> captureNow = std::exchange(screenshotPath, {});
@@ -373,10 +409,22 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
     ImDrawData* drawData = ImGui::GetDrawData();
-    bridge_->setHeatmap(ui_.state().evolution.heatmapMetric, ui_.state().heatmap.minDeltaE,
-                        ui_.state().heatmap.maxDeltaE);
+    const HeatmapDisplay heatmap{ui_.state().evolution.heatmapMetric,
+                                 ui_.state().heatmap.minDeltaE, ui_.state().heatmap.maxDeltaE};
+    bridge_->setHeatmap(heatmap.metric, heatmap.minDeltaE, heatmap.maxDeltaE);
+    // Hover, progress and worker wakes often end in the picture already on screen.
+    next_.capture(*drawData, std::as_bytes(std::span(&heatmap, 1)));
+    // The window lost its contents (uncovered), or a script asks for a whole redraw.
+    const bool redraw = input_->takeRefreshRequest() || std::exchange(redrawRequested_, false);
+    if (redraw) renderer_->forgetPictures();
+    if (!captureNow && !redraw && next_ == onScreen_) return FrameOutcome::Unchanged;
     FrameRecording recording;
-    recording.inPass = [this, drawData](VkCommandBuffer commands, std::size_t frameSlot) {
+    if (std::vector<ui::PixelArea> changed = next_.changedSince(onScreen_);
+        changed != std::vector<ui::PixelArea>{next_.whole()})
+        recording.changed = std::move(changed);
+    recording.inPass = [this, drawData](VkCommandBuffer commands, std::size_t frameSlot,
+                                        std::span<const ui::PixelArea> areas) {
+        ui::clipDrawData(*drawData, areas);
         bridge_->prepare(*drawData, commands, frameSlot);
         ImGui_ImplVulkan_RenderDrawData(drawData, commands);
     };
@@ -387,7 +435,12 @@ bool EditorApp::frame(std::optional<std::filesystem::path>& screenshotPath) {
     const bool drawn = drawFrame && *drawFrame;
     if (drawn && captureNow) saveScreenshot(captured, *captureNow);
     if (!drawn && captureNow) screenshotPath = captureNow;  // try again next frame
-    return drawn;
+    if (!drawn) {
+        onScreen_.clear();  // whatever is on screen now, the next frame draws
+        return FrameOutcome::Skipped;
+    }
+    std::swap(onScreen_, next_);
+    return FrameOutcome::Drawn;
 }
 
 ScriptPlayer::Settled EditorApp::scriptSettled() {
@@ -401,6 +454,7 @@ ui::VariantsActions EditorApp::playScript(std::optional<std::filesystem::path>& 
     if (effects.quit) quitRequested_ = true;
     if (effects.resize)
         glfwSetWindowSize(window_.get(), effects.resize->first, effects.resize->second);
+    if (effects.redraw) redrawRequested_ = true;
     screenshotPath = effects.screenshot;
     return effects.variants;
 }
@@ -544,7 +598,8 @@ void EditorApp::submitChangesToWorker() {
         const Preset& shown = previewedPreset_ ? *previewedPreset_ : *submittedPreset_;
         if (preset.target == shown.target && preset.baseKappa == shown.baseKappa) return;
         previewedPreset_ = preset;
-        worker_->submit({preset, ui_.state().presetPath, true, false, heatmapMetric});
+        submittedJob_ =
+            worker_->submit({preset, ui_.state().presetPath, true, false, heatmapMetric});
         return;
     }
     // A preview replaced the target and stopped the run: a full job follows even when the
@@ -564,8 +619,9 @@ void EditorApp::submitChangesToWorker() {
     submittedHeatmapMetric_ = heatmapMetric;
     const std::uint64_t jobId = worker_->submit(
         {preset, ui_.state().presetPath, false, imageFitness, heatmapMetric});
+    submittedJob_ = jobId;
     ui_.state().evolution.running = true;
-    timings_.changeSubmitted(jobId, Clock::now());
+    timings_.changeSubmitted(jobId, EditorTimings::now());
 }
 
 std::filesystem::path EditorApp::nextSnapshotPath() const {

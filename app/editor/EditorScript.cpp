@@ -44,6 +44,7 @@ const std::map<std::string, Grammar>& grammar() {
         {"resize", {Kind::Resize, 2, false, 64, kMaxWindowSide}},
         {"check-layout", {Kind::CheckLayout, 0, false}},
         {"screenshot", {Kind::Screenshot, 0, true}},
+        {"redraw", {Kind::Redraw, 0, false}},
         {"save", {Kind::Save, 0, true}},
         {"variants-hue", {Kind::VariantsHue, 0, true}},
         {"variants", {Kind::Variants, 1, false, 1, 48}},

@@ -16,6 +16,8 @@
 //   resize W H              resize the window (pixels)
 //   check-layout            fail (exit 1) if a panel cuts off a control at its right edge
 //   screenshot PATH         PNG of the window, as F12
+//   redraw                  draw the whole window again, as after it was uncovered (frames
+//                           otherwise redraw only the windows that changed)
 //   save PATH               save the preset
 //   variants-hue on|off     the Variants window's "Hue variety" (evolve the metal's kappa too)
 //   variants N              open the Variants window and find N variants (its band and spacing)
@@ -49,6 +51,7 @@ struct ScriptAction {
         Resize,
         CheckLayout,
         Screenshot,
+        Redraw,
         Save,
         VariantsHue,
         Variants,

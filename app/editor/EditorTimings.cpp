@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 
 namespace matevo::editor {
 namespace {
@@ -13,43 +14,65 @@ double median(std::vector<double> values) {
     return *middle;
 }
 
-double millisecondsBetween(EditorTimings::Clock::time_point from,
-                           EditorTimings::Clock::time_point to) {
-    return std::chrono::duration<double, std::milli>(to - from).count();
+double medianWall(const std::vector<EditorTimings::Span>& spans) {
+    std::vector<double> values;
+    for (const auto& span : spans) values.push_back(span.wallMs);
+    return median(std::move(values));
+}
+
+double medianCpu(const std::vector<EditorTimings::Span>& spans) {
+    std::vector<double> values;
+    for (const auto& span : spans) values.push_back(span.cpuMs);
+    return median(std::move(values));
 }
 
 }  // namespace
 
-void EditorTimings::addFrame(double milliseconds, bool evolving) {
-    (evolving ? evolvingFrames_ : idleFrames_).push_back(milliseconds);
+EditorTimings::Mark EditorTimings::now() {
+    timespec cpu{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu);
+    return {Clock::now(), double(cpu.tv_sec) * 1e3 + double(cpu.tv_nsec) * 1e-6};
 }
 
-void EditorTimings::changeSubmitted(std::uint64_t jobId, Clock::time_point when) {
+EditorTimings::Span EditorTimings::between(const Mark& from, const Mark& to) {
+    return {std::chrono::duration<double, std::milli>(to.wall - from.wall).count(),
+            to.cpuMs - from.cpuMs};
+}
+
+void EditorTimings::addFrame(const Span& frame, bool evolving) {
+    (evolving ? evolvingFrames_ : idleFrames_).push_back(frame);
+}
+
+void EditorTimings::changeSubmitted(std::uint64_t jobId, const Mark& when) {
     pendingJob_ = jobId;
     firstShown_ = false;
     submittedAt_ = when;
 }
 
-void EditorTimings::resultsShown(std::uint64_t jobId, bool finished, Clock::time_point when) {
+void EditorTimings::resultsShown(std::uint64_t jobId, bool finished, const Mark& when) {
     if (jobId != pendingJob_ || pendingJob_ == 0) return;
-    if (!firstShown_) changeToFirstGrid_.push_back(millisecondsBetween(submittedAt_, when));
+    if (!firstShown_) changeToFirstGrid_.push_back(between(submittedAt_, when));
     firstShown_ = true;
     if (finished) {
-        changeToFinalGrid_.push_back(millisecondsBetween(submittedAt_, when));
+        changeToFinalGrid_.push_back(between(submittedAt_, when));
         pendingJob_ = 0;
     }
 }
 
 std::string EditorTimings::report() const {
-    char line[512];
+    char line[768];
     std::snprintf(line, sizeof line,
                   "{\"frame_idle_ms\":%.2f,\"frame_idle_samples\":%zu,"
                   "\"frame_evolving_ms\":%.2f,\"frame_evolving_samples\":%zu,"
                   "\"change_to_first_grid_ms\":%.1f,\"change_to_final_grid_ms\":%.1f,"
-                  "\"changes\":%zu,\"frames_while_script_idle\":%d}",
-                  median(idleFrames_), idleFrames_.size(), median(evolvingFrames_),
-                  evolvingFrames_.size(), median(changeToFirstGrid_), median(changeToFinalGrid_),
-                  changeToFirstGrid_.size(), framesWhileScriptIdle_);
+                  "\"changes\":%zu,\"frames_while_script_idle\":%d,"
+                  "\"frame_idle_cpu_ms\":%.2f,\"frame_evolving_cpu_ms\":%.2f,"
+                  "\"change_to_final_grid_cpu_ms\":%.1f,\"frames_unchanged\":%d}",
+                  medianWall(idleFrames_), idleFrames_.size(), medianWall(evolvingFrames_),
+                  evolvingFrames_.size(), medianWall(changeToFirstGrid_),
+                  medianWall(changeToFinalGrid_), changeToFirstGrid_.size(),
+                  framesWhileScriptIdle_, medianCpu(idleFrames_), medianCpu(evolvingFrames_),
+                  medianCpu(changeToFinalGrid_), framesUnchanged_);
     return line;
 }
 

@@ -17,7 +17,7 @@ ScriptEffects ScriptPlayer::step(ui::EditorUi& ui, Settled settled) {
     ScriptEffects effects;
     // Window effects take a frame to show, so at most one of them per frame.
     while (!finished() && !effects.quit && !effects.screenshot && !effects.resize &&
-           effects.error.empty()) {
+           !effects.redraw && effects.error.empty()) {
         if (!apply(actions_[next_], ui, settled, effects)) break;
         ++next_;
         framesWaited_ = 0;
@@ -129,6 +129,9 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
             return true;
         case Kind::Screenshot:
             effects.screenshot = action.text;
+            return true;
+        case Kind::Redraw:
+            effects.redraw = true;
             return true;
         case Kind::Save:
             if (!ui.savePreset(action.text)) effects.error = state.status.latest().text;

@@ -16,6 +16,7 @@ struct ScriptEffects {
     bool quit = false;
     std::optional<std::filesystem::path> screenshot;
     std::optional<std::pair<int, int>> resize;
+    bool redraw = false;  // the whole window, on the next frame
     ui::VariantsActions variants;  // as if pressed in the Variants window
     std::string error;  // a failed action (e.g. wait-evolution timed out); the app exits 1
 };

@@ -48,7 +48,8 @@ WindowInput::WindowInput(GLFWwindow* window)
         ImGui::GetIO().AddFocusEvent(focused != 0);
         of(w).changed_ = true;
     });
-    glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { of(w).changed_ = true; });
+    glfwSetWindowRefreshCallback(window,
+                                 [](GLFWwindow* w) { of(w).changed_ = of(w).refreshRequested_ = true; });
     glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { of(w).changed_ = true; });
     glfwSetWindowCloseCallback(window, [](GLFWwindow* w) {
         glfwSetWindowShouldClose(w, GLFW_FALSE);  // the editor decides, after asking
@@ -63,6 +64,8 @@ WindowInput::WindowInput(GLFWwindow* window)
 void WindowInput::applyFrame() { queue_.applyFrame(ImGui::GetIO()); }
 
 bool WindowInput::takeChanged() { return std::exchange(changed_, false); }
+
+bool WindowInput::takeRefreshRequest() { return std::exchange(refreshRequested_, false); }
 
 bool WindowInput::takeCloseRequest() { return std::exchange(closeRequested_, false); }
 

@@ -26,6 +26,9 @@ public:
     bool hasPending() const { return queue_.hasPending(); }
     // Something happened since the last call (input, resize, expose, close, drop).
     bool takeChanged();
+    // The window's contents were lost (exposed, restored) since the last call: the next frame
+    // must be drawn even if it shows what the last one did.
+    bool takeRefreshRequest();
     // The window's close button was pressed since the last call (the close itself is cancelled).
     bool takeCloseRequest();
     std::vector<std::filesystem::path> takeDroppedFiles();
@@ -36,6 +39,7 @@ private:
     ui::InputQueue queue_;
     std::vector<std::filesystem::path> dropped_;
     bool changed_ = true;
+    bool refreshRequested_ = true;
     bool closeRequested_ = false;
 };
 

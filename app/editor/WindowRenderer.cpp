@@ -44,7 +44,7 @@ Result<std::unique_ptr<WindowRenderer>> WindowRenderer::create(const VulkanConte
     renderer->surfaceFormat_ = chooseSurfaceFormat(context);
     if (renderer->surfaceFormat_.format == VK_FORMAT_UNDEFINED)
         return Error{"the window's surface offers no image format"};
-    if (Status s = renderer->createRenderPass(); !s) return s.error();
+    if (Status s = renderer->createRenderPasses(); !s) return s.error();
     if (Status s = renderer->createFrames(); !s) return s.error();
     if (Status s = renderer->createSwapchain(size); !s) return s.error();
     return renderer;
@@ -55,46 +55,54 @@ WindowRenderer::~WindowRenderer() {
     (void)waitIdle();
 }
 
+void WindowRenderer::forgetPictures() {
+    for (SwapchainImage& image : images_) image.holdsFrame = 0;
+}
+
 Status WindowRenderer::waitIdle() {
     const auto queueLock = context_.device().lockQueue();
     return gpu::checkVulkan(vkQueueWaitIdle(context_.device().queue()), "waiting for the queue");
 }
 
-Status WindowRenderer::createRenderPass() {
-    VkAttachmentDescription color{};
-    color.format = surfaceFormat_.format;
-    color.samples = VK_SAMPLE_COUNT_1_BIT;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    color.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    color.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    VkAttachmentReference reference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &reference;
-    // The acquired image may still be read by presentation until the acquire semaphore fires.
-    VkSubpassDependency dependency{};
-    dependency.srcSubpass = VK_SUBPASS_EXTERNAL;
-    dependency.dstSubpass = 0;
-    dependency.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    dependency.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    dependency.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 1;
-    info.pAttachments = &color;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 1;
-    info.pDependencies = &dependency;
-    VkRenderPass renderPass = VK_NULL_HANDLE;
-    if (Status s = gpu::checkVulkan(vkCreateRenderPass(device_, &info, nullptr, &renderPass),
-                                    "creating the window's render pass");
-        !s)
-        return s;
-    renderPass_ = gpu::UniqueRenderPass(device_, renderPass);
+Status WindowRenderer::createRenderPasses() {
+    for (bool keep : {false, true}) {
+        VkAttachmentDescription color{};
+        color.format = surfaceFormat_.format;
+        color.samples = VK_SAMPLE_COUNT_1_BIT;
+        color.loadOp = keep ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
+        color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        color.initialLayout = keep ? VK_IMAGE_LAYOUT_PRESENT_SRC_KHR : VK_IMAGE_LAYOUT_UNDEFINED;
+        color.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+        VkAttachmentReference reference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+        VkSubpassDescription subpass{};
+        subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+        subpass.colorAttachmentCount = 1;
+        subpass.pColorAttachments = &reference;
+        // The acquired image may still be read by presentation until the acquire semaphore
+        // fires. The same dependency in both passes: pipelines need compatible passes.
+        VkSubpassDependency dependency{};
+        dependency.srcSubpass = VK_SUBPASS_EXTERNAL;
+        dependency.dstSubpass = 0;
+        dependency.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+        dependency.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+        dependency.dstAccessMask =
+            VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+        info.attachmentCount = 1;
+        info.pAttachments = &color;
+        info.subpassCount = 1;
+        info.pSubpasses = &subpass;
+        info.dependencyCount = 1;
+        info.pDependencies = &dependency;
+        VkRenderPass renderPass = VK_NULL_HANDLE;
+        if (Status s = gpu::checkVulkan(vkCreateRenderPass(device_, &info, nullptr, &renderPass),
+                                        "creating the window's render pass");
+            !s)
+            return s;
+        (keep ? redrawPass_ : renderPass_) = gpu::UniqueRenderPass(device_, renderPass);
+    }
     return Ok{};
 }
 
@@ -159,7 +167,8 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
     info.preTransform = capabilities.currentTransform;
     info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
     info.presentMode = VK_PRESENT_MODE_FIFO_KHR;  // always available; no tearing
-    info.clipped = VK_TRUE;
+    // Whole images: a frame redraws only what changed and keeps the rest, obscured or not.
+    info.clipped = VK_FALSE;
     info.oldSwapchain = swapchain_.get();
     VkSwapchainKHR created = VK_NULL_HANDLE;
     if (Status s = gpu::checkVulkan(vkCreateSwapchainKHR(device_, &info, nullptr, &created),
@@ -209,6 +218,28 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
     return Ok{};
 }
 
+std::vector<ui::PixelArea> WindowRenderer::areasToDraw(const SwapchainImage& target,
+                                                       const FrameRecording& recording) const {
+    const ui::PixelArea whole{0, 0, int(extent_.width), int(extent_.height)};
+    if (target.holdsFrame == 0 || !recording.changed) return {whole};
+    // The changes of the frames drawn since the image's picture, then this frame's.
+    std::vector<ui::PixelArea> areas;
+    std::uint64_t covered = lastFrame_;
+    for (auto change = changes_.rbegin(); change != changes_.rend(); ++change) {
+        if (change->frame <= target.holdsFrame) break;
+        for (const ui::PixelArea& area : change->areas) ui::addDisjoint(areas, area);
+        covered = change->frame - 1;
+    }
+    if (covered != target.holdsFrame) return {whole};
+    for (const ui::PixelArea& area : *recording.changed) ui::addDisjoint(areas, area);
+    // Within the image, whatever size the caller's picture had.
+    std::vector<ui::PixelArea> inside;
+    for (const ui::PixelArea& area : areas)
+        if (const ui::PixelArea part = ui::intersect(area, whole); !part.empty())
+            inside.push_back(part);
+    return inside;
+}
+
 Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& recording,
                                        Rgba8Image* capture) {
     if (needsRebuild_ || size.width != extent_.width || size.height != extent_.height) {
@@ -241,16 +272,31 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
             gpu::checkVulkan(vkBeginCommandBuffer(frame.commands, &begin), "recording a frame");
         !s)
         return s.error();
+    SwapchainImage& target = images_[imageIndex];
+    const std::vector<ui::PixelArea> areas = areasToDraw(target, recording);
+    const bool whole = areas.size() == 1 &&
+                       areas[0] == ui::PixelArea{0, 0, int(extent_.width), int(extent_.height)};
     VkClearValue clear{};
     clear.color = {{0.09f, 0.09f, 0.10f, 1.0f}};
     VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    pass.renderPass = renderPass_.get();
-    pass.framebuffer = images_[imageIndex].framebuffer.get();
+    pass.renderPass = whole ? renderPass_.get() : redrawPass_.get();
+    pass.framebuffer = target.framebuffer.get();
     pass.renderArea.extent = extent_;
-    pass.clearValueCount = 1;
+    pass.clearValueCount = whole ? 1 : 0;
     pass.pClearValues = &clear;
     vkCmdBeginRenderPass(frame.commands, &pass, VK_SUBPASS_CONTENTS_INLINE);
-    if (recording.inPass) recording.inPass(frame.commands, frameIndex_);
+    if (!whole && !areas.empty()) {
+        const VkClearAttachment attachment{VK_IMAGE_ASPECT_COLOR_BIT, 0, clear};
+        std::vector<VkClearRect> rects;
+        for (const ui::PixelArea& area : areas)
+            rects.push_back({{{area.x0, area.y0},
+                              {std::uint32_t(area.x1 - area.x0), std::uint32_t(area.y1 - area.y0)}},
+                             0,
+                             1});
+        vkCmdClearAttachments(frame.commands, 1, &attachment, std::uint32_t(rects.size()),
+                              rects.data());
+    }
+    if (recording.inPass) recording.inPass(frame.commands, frameIndex_, areas);
     vkCmdEndRenderPass(frame.commands);
     if (capture)
         if (Status s = recordCapture(frame.commands, imageIndex); !s) return s.error();
@@ -284,6 +330,10 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
             return s.error();
         presented = vkQueuePresentKHR(context_.device().queue(), &present);
     }
+    target.holdsFrame = ++lastFrame_;
+    changes_.push_back({lastFrame_, recording.changed.value_or(std::vector<ui::PixelArea>{
+                                        {0, 0, int(extent_.width), int(extent_.height)}})});
+    while (changes_.size() > images_.size()) changes_.pop_front();
     if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
         acquired == VK_SUBOPTIMAL_KHR)
         needsRebuild_ = true;

@@ -5,13 +5,16 @@
 // handle is owned by a core/gpu RAII type; Vulkan failures come back as errors.
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
+#include "PixelArea.h"
 #include "Rgba8Image.h"
 #include "common/Result.h"
 #include "gpu/Buffer.h"
@@ -22,9 +25,15 @@ namespace matevo::editor {
 class VulkanContext;
 
 struct FrameRecording {
-    // Records the frame's draws inside the render pass. `frameSlot` (below kFramesInFlight)
-    // names the frame: what it uses must live until that slot is drawn again.
-    std::function<void(VkCommandBuffer commands, std::size_t frameSlot)> inPass;
+    // Records the frame's draws inside the render pass, within `areas` only (disjoint, already
+    // cleared; the pixels outside them hold this frame's picture). `frameSlot` (below
+    // kFramesInFlight) names the frame: what it uses must live until that slot is drawn again.
+    std::function<void(VkCommandBuffer commands, std::size_t frameSlot,
+                       std::span<const ui::PixelArea> areas)>
+        inPass;
+    // The pixels whose picture differs from the last frame drawn, as disjoint rectangles;
+    // nullopt: possibly all.
+    std::optional<std::vector<ui::PixelArea>> changed;
 };
 
 class WindowRenderer {
@@ -41,11 +50,15 @@ public:
     std::uint32_t minImageCount() const { return minImageCount_; }
     std::uint32_t imageCount() const { return std::uint32_t(images_.size()); }
 
-    // Draws and presents one frame at the window's framebuffer size. false when the frame was
-    // skipped because the swapchain had to be rebuilt. With `capture`, the frame is also read
-    // back (this waits for it to finish).
+    // Draws and presents one frame at the window's framebuffer size. A swapchain image keeps
+    // the picture it was last drawn with, so only the pixels changed since then are drawn
+    // again (on lavapipe the window's pixels are most of a frame's cost). false when the frame
+    // was skipped because the swapchain had to be rebuilt. With `capture`, the frame is also
+    // read back (this waits for it to finish).
     Result<bool> drawFrame(VkExtent2D size, const FrameRecording& recording,
                            Rgba8Image* capture = nullptr);
+    // The next frames draw every swapchain image whole (its contents are no longer trusted).
+    void forgetPictures();
     // Waits until no frame is in flight (before releasing what frames use, at shutdown).
     Status waitIdle();
 
@@ -62,10 +75,18 @@ private:
         gpu::UniqueImageView view;
         gpu::UniqueFramebuffer framebuffer;
         gpu::UniqueSemaphore renderDone;  // presentation waits on it
+        std::uint64_t holdsFrame = 0;     // the frame whose picture it holds; 0: none
+    };
+    struct Change {
+        std::uint64_t frame;
+        std::vector<ui::PixelArea> areas;  // what differs from the frame before
     };
 
     explicit WindowRenderer(const VulkanContext& context) : context_(context) {}
-    Status createRenderPass();
+    Status createRenderPasses();
+    // What must be drawn into `target` for it to show the next frame's picture.
+    std::vector<ui::PixelArea> areasToDraw(const SwapchainImage& target,
+                                           const FrameRecording& recording) const;
     Status createFrames();
     Status createSwapchain(VkExtent2D size);
     Status recordCapture(VkCommandBuffer commands, std::uint32_t imageIndex);
@@ -74,13 +95,16 @@ private:
     const VulkanContext& context_;
     VkDevice device_ = VK_NULL_HANDLE;
     VkSurfaceFormatKHR surfaceFormat_{};
-    gpu::UniqueRenderPass renderPass_;
+    gpu::UniqueRenderPass renderPass_;  // clears the whole image first
+    gpu::UniqueRenderPass redrawPass_;  // keeps what the image holds (compatible with the above)
     std::array<Frame, kFramesInFlight> frames_;
     std::size_t frameIndex_ = 0;
     UniqueSwapchain swapchain_;
     VkExtent2D extent_{};
     std::uint32_t minImageCount_ = 2;
     bool needsRebuild_ = false;
+    std::uint64_t lastFrame_ = 0;  // frames drawn and presented so far
+    std::deque<Change> changes_;   // of the last frames, newest last
     std::vector<SwapchainImage> images_;  // after the swapchain: released before it
     std::optional<gpu::Buffer> readback_;
 };

@@ -1,12 +1,12 @@
 #include "color/ImageDifference.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <string>
 
 #include "color/Coverage.h"
+#include "color/DeltaEPooling.h"
 #include "color/detail/ColorFormulas.h"
 #include "color/detail/FastFloatMath.h"
 #include "color/detail/ForEachChunk.h"
@@ -20,24 +20,6 @@ namespace {
 constexpr std::size_t kChunkPixels = 16384;
 // Small enough that a sphere's background rows and row ends make whole blocks to skip.
 constexpr std::size_t kBlockPixels = 256;
-
-// Non-negative floats order like their bit patterns, so the top bits (exponent and three
-// mantissa bits: an eighth of an octave) sort ΔE00 values into ordered buckets. The p95 then
-// needs ordering only within one bucket rather than over the whole image.
-constexpr int kBucketShift = 20;
-constexpr std::size_t kBucketCount = std::size_t(1) << (31 - kBucketShift);  // sign bit is 0
-
-std::size_t bucketOf(float deltaE) {
-    return std::min(std::size_t(std::bit_cast<std::uint32_t>(deltaE) >> kBucketShift),
-                    kBucketCount - 1);
-}
-
-struct ChunkSummary {
-    double sum = 0;
-    float max = 0;
-    std::size_t pixels = 0;
-    std::vector<std::uint32_t> histogram = std::vector<std::uint32_t>(kBucketCount, 0);
-};
 
 // Float math through the shared formulas: flattened, this loop has no calls and no branches, so
 // the compiler vectorises it.
@@ -65,13 +47,13 @@ bool anyCoveredInBoth(const float* rgbaA, const float* rgbaB, std::size_t begin,
     return any;
 }
 
-ChunkSummary compareChunk(const Image& a, const Image& b, bool useAlpha, std::size_t begin,
-                          std::size_t end, DeltaEMap& map) {
+DeltaEPooling compareChunk(const Image& a, const Image& b, bool useAlpha, std::size_t begin,
+                           std::size_t end, DeltaEMap& map) {
     const float* rgbaA = a.rgba.data();
     const float* rgbaB = b.rgba.data();
     float* deltaE = map.deltaE.data();
     std::uint8_t* covered = map.covered.data();
-    ChunkSummary summary;
+    DeltaEPooling pooling;
     // In blocks small enough that the coverage pass finds the block's alpha still in cache.
     for (std::size_t block = begin; block < end; block += kBlockPixels) {
         const std::size_t blockEnd = std::min(block + kBlockPixels, end);
@@ -86,42 +68,13 @@ ChunkSummary compareChunk(const Image& a, const Image& b, bool useAlpha, std::si
             const bool bothCover =
                 isCovered(rgbaA[4 * i + 3]) & isCovered(rgbaB[4 * i + 3]);
             const bool inBoth = !useAlpha || bothCover;
-            // Branch-free: coverage along a sphere's rim is hard to predict. Adding 0 for an
-            // uncovered pixel leaves every sum as it was.
-            const float value = inBoth ? deltaE[i] : 0.0f;
-            deltaE[i] = value;
+            // Branch-free: coverage along a sphere's rim is hard to predict.
+            deltaE[i] = inBoth ? deltaE[i] : 0.0f;
             covered[i] = inBoth ? 1 : 0;
-            summary.sum += value;
-            summary.max = std::max(summary.max, value);
-            summary.histogram[bucketOf(value)] += inBoth ? 1 : 0;
-            summary.pixels += inBoth ? 1 : 0;
+            pooling.add(deltaE[i], inBoth);
         }
     }
-    return summary;
-}
-
-double nearestRankPercentile95(const DeltaEMap& map, const std::vector<ChunkSummary>& summaries,
-                               std::size_t coveredPixels) {
-    // ceil(0.95 N) computed in integers: the 1-based rank.
-    const std::size_t rank = (95 * coveredPixels + 99) / 100;
-    std::vector<std::size_t> histogram(kBucketCount, 0);
-    for (const ChunkSummary& summary : summaries)
-        for (std::size_t bucket = 0; bucket < kBucketCount; ++bucket)
-            histogram[bucket] += summary.histogram[bucket];
-    std::size_t bucket = 0, below = 0;
-    for (; below + histogram[bucket] < rank; ++bucket) below += histogram[bucket];
-    // Compacted without branches (one spare slot for the writes that do not count): which
-    // pixels fall in the bucket is as unpredictable as the image.
-    std::vector<float> candidates(histogram[bucket] + 1);
-    std::size_t found = 0;
-    for (std::size_t i = 0; i < map.deltaE.size(); ++i) {
-        candidates[found] = map.deltaE[i];
-        found += (map.covered[i] != 0) & (bucketOf(map.deltaE[i]) == bucket);
-    }
-    candidates.pop_back();
-    auto nth = candidates.begin() + std::ptrdiff_t(rank - below - 1);
-    std::nth_element(candidates.begin(), nth, candidates.end());
-    return *nth;
+    return pooling;
 }
 
 }  // namespace
@@ -147,24 +100,17 @@ Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
     resizeOnHugePages(map.deltaE, pixelCount);
     resizeOnHugePages(map.covered, pixelCount);
     const std::size_t chunkCount = (pixelCount + kChunkPixels - 1) / kChunkPixels;
-    std::vector<ChunkSummary> summaries(chunkCount);
+    std::vector<DeltaEPooling> chunks(chunkCount);
     detail::forEachChunk(chunkCount, workerCount, [&](std::size_t chunk) {
         const std::size_t begin = chunk * kChunkPixels;
-        summaries[chunk] =
+        chunks[chunk] =
             compareChunk(a, b, useAlpha, begin, std::min(begin + kChunkPixels, pixelCount), map);
     });
 
     // Pooled in chunk order, whichever thread did which chunk.
-    double sum = 0;
-    for (const ChunkSummary& summary : summaries) {
-        sum += summary.sum;
-        map.stats.max = std::max(map.stats.max, double(summary.max));
-        map.stats.pixels += summary.pixels;
-    }
-    if (map.stats.pixels > 0) {
-        map.stats.mean = sum / double(map.stats.pixels);
-        map.stats.p95 = nearestRankPercentile95(map, summaries, map.stats.pixels);
-    }
+    DeltaEPooling pooling;
+    for (const DeltaEPooling& chunk : chunks) pooling.merge(chunk);
+    map.stats = pooling.finish(map.deltaE, map.covered);
     return map;
 }
 

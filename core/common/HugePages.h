@@ -40,4 +40,13 @@ void resizeOnHugePages(std::vector<T>& values, std::size_t count, const T& fill 
     values.resize(count, fill);
 }
 
+// values.assign(first, first + count) for an empty vector, the new memory advised first and
+// written once (no fill before the copy).
+template <typename T>
+void assignOnHugePages(std::vector<T>& values, const T* first, std::size_t count) {
+    values.reserve(count);
+    adviseHugePages(values.data(), count * sizeof(T));
+    values.assign(first, first + count);
+}
+
 }  // namespace matevo

@@ -1,6 +1,7 @@
 #include "gpu/FlipPass.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -15,7 +16,12 @@ namespace {
 
 constexpr uint32_t kRowGroupSize = 8;             // local_size_x and _y in FlipRowFilter.comp
 constexpr uint32_t kCombineGroupSize = 64;        // local_size_x in FlipCombine.comp
-constexpr uint32_t kRun = 32;                     // kRun in shaders/FlipCommon.glsl
+// Pixels each invocation filters, and how many at a time (kRun and kBlock in
+// shaders/FlipCommon.glsl). Only a block is unrolled, so the blocks set lavapipe's compile time
+// and the runs the loads per output; docs/flip.md has the measured trade-off.
+constexpr uint32_t kRun = 32;
+constexpr uint32_t kRowBlock = 8;
+constexpr uint32_t kCombineBlock = 4;
 constexpr VkDeviceSize kPlaneFloatsPerPixel = 8;  // two vec4 (planeIndex in FlipCommon.glsl)
 constexpr int kMaxFlipFilterRadius = 20;          // kMaxFilterRadius in shaders/FlipCommon.glsl
 // The taps' uniform block (kMaxTapVectors vec4 in shaders/FlipCommon.glsl).
@@ -55,19 +61,23 @@ Result<const FlipPass::Kernels*> FlipPass::kernelsFor(int csfRadius, int feature
     for (const Kernels& kernels : kernels_)
         if (kernels.csfRadius == csfRadius && kernels.featureRadius == featureRadius)
             return &kernels;
-    // constant_id 0 and 1 in shaders/FlipCommon.glsl.
-    const uint32_t radii[] = {uint32_t(csfRadius), uint32_t(featureRadius)};
+    // constant_id 0 to 3 in shaders/FlipCommon.glsl.
+    const auto constants = [&](uint32_t block) {
+        return std::array<uint32_t, 4>{uint32_t(csfRadius), uint32_t(featureRadius), kRun, block};
+    };
+    const auto rowConstants = constants(kRowBlock);
+    const auto combineConstants = constants(kCombineBlock);
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     auto rowFilter =
         ComputeKernel::create(*device_, kFlipRowFilterSpirv, {storage, storage, uniform, storage},
-                              sizeof(PushConstants), radii);
+                              sizeof(PushConstants), rowConstants);
     if (!rowFilter) return rowFilter.error();
     // The combination reads the planes, not the images: bindings 0 and 1 are bound, not read.
     auto combine =
         ComputeKernel::create(*device_, kFlipCombineSpirv,
                               {storage, storage, uniform, storage, storage, storage, storage},
-                              sizeof(PushConstants), radii);
+                              sizeof(PushConstants), combineConstants);
     if (!combine) return combine.error();
     combine->bindBuffer(6, colormap_);
     kernels_.push_back(

@@ -4,9 +4,10 @@
 // like Image::rgba, as the ΔE00 pass takes them. Writes per-pixel ꟻLIP and a magma heatmap.
 // core/color/Flip is the reference these passes follow step by step (tests/gpu compares them).
 // The passes unroll their filters for the viewing condition's radii, and lavapipe's compile
-// time grows steeply with them (uncached, in CPU time: 15 s at the default 67 pixels per degree,
-// 39 s at 200, over 5 minutes at 1000): they take filter radii up to 20 pixels, about 148
-// pixels per degree, and refuse wider ones with an error (the CPU path takes any).
+// time grows with them (uncached, in CPU time at load 10: about 3.5 s at the default 67 pixels
+// per degree, 9 s at 148): they take filter radii up to 20 pixels, about 148 pixels per degree,
+// and refuse wider ones with an error (the CPU path takes any). lavapipe compiles a pipeline
+// at its first dispatch, on the queue that runs it: work on the same queue waits that long.
 #include <cstdint>
 #include <vector>
 
@@ -52,8 +53,8 @@ private:
     };
 
     Status prepare(const FlipBatch& batch, const FlipSettings& settings);
-    // The kernels for the current radii, made on first use and kept: lavapipe takes a second
-    // or two to compile the unrolled filters.
+    // The kernels for the current radii, made on first use and kept: lavapipe takes seconds
+    // to compile the unrolled filters.
     Result<const Kernels*> kernelsFor(int csfRadius, int featureRadius);
 
     const Device* device_ = nullptr;

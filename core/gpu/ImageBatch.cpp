@@ -4,32 +4,10 @@
 #include <bit>
 #include <cstring>
 
+#include "color/DeltaEPooling.h"
+#include "common/HugePages.h"
+
 namespace matevo::gpu {
-namespace {
-
-// Mean, max and nearest-rank 95th percentile over the covered pixels, as compareImages pools.
-DeltaEStats pool(const DeltaEMap& map) {
-    DeltaEStats stats;
-    std::vector<float> covered;
-    covered.reserve(map.deltaE.size());
-    double sum = 0.0;
-    for (std::size_t i = 0; i < map.deltaE.size(); ++i) {
-        if (!map.covered[i]) continue;
-        covered.push_back(map.deltaE[i]);
-        sum += map.deltaE[i];
-        stats.max = std::max(stats.max, double(map.deltaE[i]));
-    }
-    stats.pixels = covered.size();
-    if (covered.empty()) return stats;
-    stats.mean = sum / double(covered.size());
-    const std::size_t rank = (95 * covered.size() + 99) / 100;  // ceil(0.95 N), 1-based
-    auto percentile = covered.begin() + std::ptrdiff_t(rank - 1);
-    std::nth_element(covered.begin(), percentile, covered.end());
-    stats.p95 = *percentile;
-    return stats;
-}
-
-}  // namespace
 
 Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& shape,
                                  int channels, MemoryUse use) {
@@ -79,10 +57,12 @@ void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t ind
 }
 
 Image downloadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index) {
-    Image image(shape.width, shape.height);
-    const std::size_t floats = image.rgba.size();
-    std::memcpy(image.rgba.data(), batch.as<float>().data() + floats * index,
-                floats * sizeof(float));
+    Image image;
+    image.width = shape.width;
+    image.height = shape.height;
+    const std::size_t floats = std::size_t(shape.pixelCount()) * 4;
+    // Copied straight in: filling the image first would write every byte twice.
+    assignOnHugePages(image.rgba, batch.as<float>().data() + floats * index, floats);
     return image;
 }
 
@@ -94,11 +74,13 @@ DeltaEMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, u
     const float* values = batch.as<float>().data() + pixels * index;
     map.deltaE.resize(pixels);
     map.covered.resize(pixels);
+    DeltaEPooling pooling;  // as compareImages pools
     for (std::size_t i = 0; i < pixels; ++i) {
         map.covered[i] = values[i] >= 0.0f;
         map.deltaE[i] = std::max(values[i], 0.0f);
+        pooling.add(map.deltaE[i], map.covered[i] != 0);
     }
-    map.stats = pool(map);
+    map.stats = pooling.finish(map.deltaE, map.covered);
     return map;
 }
 

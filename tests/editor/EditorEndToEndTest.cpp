@@ -1,6 +1,7 @@
 // The real editor under Xvfb (ctest runs this executable through xvfb-run): open a preset, play a
 // script of edits, take screenshots, and read them like a person would. Vulkan validation is on
 // and the editor exits non-zero on any validation message.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -294,6 +295,57 @@ TEST(EditorSceneWindow, ShowsTheCandidatesAsInstancesOfAMesh) {
     const PixelRect image{50, 140, 790, 550};
     const auto instances = shot.litBlobs(image, 40, 170);
     EXPECT_GE(instances.size(), 12u) << "lit instances in the Scene window";
+    fs::remove_all(dir);
+}
+
+// A frame redraws only the windows whose draw lists changed since the swapchain image's picture
+// (and none when nothing changed): after a session of such frames, the picture must equal a
+// whole redraw of the same state. (The status bar differs: it names the first screenshot.)
+TEST(EditorPartialRedraw, ChangedAreasAddUpToTheWholePicture) {
+    const fs::path dir = freshDirectory("partial");
+    fs::create_directories(dir / "config");
+    std::ofstream(dir / "script.txt")
+        << "wait 2\n"
+           "resize " << kWidth << " " << kHeight << "\n"
+           "population 24\n"
+           "wait-evolution\n"
+           "select 1\n"
+           "wait 2\n"
+           "heatmap on\n"
+           "wait 2\n"
+           "select 3\n"
+           "wait 2\n"
+           "heatmap off\n"
+           "wait 4\n"
+           "screenshot " << (dir / "partial.png").string() << "\n"
+           "redraw\n"
+           "screenshot " << (dir / "whole.png").string() << "\n"
+           "quit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+        "/matevo' edit --validate --report-timings --script '" + (dir / "script.txt").string() +
+        "' --frames 100000");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    // Frames that would have drawn the picture on screen again were not drawn.
+    EXPECT_EQ(run.out.find("\"frames_unchanged\":0,"), std::string::npos) << run.out;
+    EXPECT_EQ(run.out.find("\"frames_unchanged\":0}"), std::string::npos) << run.out;
+
+    auto partialFile = readImage(dir / "partial.png");
+    auto wholeFile = readImage(dir / "whole.png");
+    ASSERT_TRUE(partialFile.ok()) << partialFile.error().message;
+    ASSERT_TRUE(wholeFile.ok()) << wholeFile.error().message;
+    const Image& partial = *partialFile;
+    const Image& whole = *wholeFile;
+    ASSERT_EQ(partial.width, kWidth);
+    ASSERT_EQ(partial.height, kHeight);
+    ASSERT_EQ(whole.width, kWidth);
+    ASSERT_EQ(whole.height, kHeight);
+    const std::size_t aboveStatusBar = std::size_t(
+        ui::layoutPanels(ImVec2(kWidth, kHeight)).statusBar.position.y) * kWidth * 4;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < aboveStatusBar; i += 4)
+        differing += !std::equal(&partial.rgba[i], &partial.rgba[i] + 4, &whole.rgba[i]);
+    EXPECT_EQ(differing, 0u) << "pixels differ between the partly and the wholly redrawn picture";
     fs::remove_all(dir);
 }
 

@@ -1,6 +1,7 @@
 // The editor's GA worker renders its tiles on the device it is given (the window's), so the
-// window samples them where they are: no second device, no copy through the host. Run under
-// the validation layer, which reports any use of an image with a device it does not belong to.
+// window samples them where they are: no second device, no copy through the host (FLIP maps
+// excepted: computed on a device of their own, then uploaded). Run under the validation layer,
+// which reports any use of an image with a device it does not belong to.
 #include "EvolutionWorker.h"
 
 #include <algorithm>
@@ -108,6 +109,8 @@ TEST(EvolutionWorker, AFinishedRunDrawsTheWholePopulation) {
 // The FLIP overlay: with a FLIP heatmap the tiles carry FLIP maps, and the inspector's readout of
 // the pixel under the pointer gives what the CPU reference (computeFlip) computes from the same
 // two images, within 2e-4 per pixel (the GPU pass's tolerance against the CPU), mean within 1e-3.
+// The GPU computes them on a device of its own (the window's queue would wait behind lavapipe's
+// compile of the FLIP pipelines), and the tiles are still images on the window's device.
 TEST(EvolutionWorker, AFlipHeatmapReadsAsTheCpuFlipOfTheSameImages) {
     gpu::GpuContext* context = test::validatedContext();
     ASSERT_NE(context, nullptr);
@@ -124,6 +127,8 @@ TEST(EvolutionWorker, AFlipHeatmapReadsAsTheCpuFlipOfTheSameImages) {
             ASSERT_NE(candidate.flipMap, nullptr);
             ASSERT_NE(candidate.picture, nullptr);
             ASSERT_TRUE(candidate.tile->deltaE.has_value()) << "no error map to colour";
+            expectOnDevice(context->device, candidate.tile->render, EvolutionWorker::kTileSize);
+            expectOnDevice(context->device, *candidate.tile->deltaE, EvolutionWorker::kTileSize);
             auto reference = computeFlip(*update->targetPicture, *candidate.picture);
             ASSERT_TRUE(reference.ok()) << reference.error().message;
             ASSERT_EQ(candidate.flipMap->pooled, reference->pooled);

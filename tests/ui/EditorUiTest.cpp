@@ -8,6 +8,7 @@
 
 #include "EditorUiFixture.h"
 #include "GaControls.h"
+#include "HeatmapControls.h"
 #include "MaterialControls.h"
 #include "ViewSettings.h"
 #include "genome/FamilyRules.h"
@@ -120,6 +121,33 @@ TEST_F(EditorUiTest, TheHeatmapShowsDeltaEOrFlipAndTheChoiceIsRemembered) {
     ui::rememberViewSettings(nextUi.state());
     ImGui::LoadIniSettingsFromMemory(ini.c_str());
     EXPECT_EQ(nextUi.state().heatmap.metric, ImageMetric::Flip);
+}
+
+// A changed metric's maps come with the worker's next tiles (ꟻLIP's first take seconds: lavapipe
+// compiles its shaders then); until they arrive the controls say so, then the line goes.
+TEST(HeatmapControls, AChangedMetricSaysItsMapsAreBeingPrepared) {
+    HeadlessImGui imgui;
+    ui::HeatmapView heatmap;
+    heatmap.enabled = true;
+    // The text the controls draw (ImGui logs a window's text until its End).
+    const auto shownText = [&](ImageMetric shown) {
+        std::string text;
+        imgui.frame([&] {
+            ImGui::Begin("heatmap");
+            ImGui::LogToBuffer();
+            ui::drawHeatmapControls(heatmap, shown);
+            text = GImGui->LogBuffer.c_str();
+            ImGui::End();
+        });
+        return text;
+    };
+    EXPECT_NE(shownText(ImageMetric::DeltaE00).find("Opacity"), std::string::npos);
+    EXPECT_EQ(shownText(ImageMetric::DeltaE00).find("Preparing"), std::string::npos);
+    heatmap.metric = ImageMetric::Flip;
+    EXPECT_NE(shownText(ImageMetric::DeltaE00).find("Preparing the FLIP maps"), std::string::npos);
+    EXPECT_EQ(shownText(ImageMetric::Flip).find("Preparing"), std::string::npos);
+    heatmap.metric = ImageMetric::DeltaE00;
+    EXPECT_NE(shownText(ImageMetric::Flip).find("Preparing the ΔE00 maps"), std::string::npos);
 }
 
 TEST_F(EditorUiTest, ClickingATileSelectsItAndPromoteMakesItTheTarget) {

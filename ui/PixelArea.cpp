@@ -1,0 +1,51 @@
+#include "PixelArea.h"
+
+#include <algorithm>
+
+namespace matevo::ui {
+
+PixelArea intersect(const PixelArea& a, const PixelArea& b) {
+    const PixelArea inside{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1),
+                           std::min(a.y1, b.y1)};
+    return inside.empty() ? PixelArea{} : inside;
+}
+
+PixelArea unite(const PixelArea& a, const PixelArea& b) {
+    if (a.empty()) return b;
+    if (b.empty()) return a;
+    return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1),
+            std::max(a.y1, b.y1)};
+}
+
+void addDisjoint(std::vector<PixelArea>& areas, const PixelArea& area) {
+    // What is left of `area` once each held rectangle is taken out: at most four strips (above,
+    // below, left, right of the held one) per piece.
+    std::vector<PixelArea> pieces;
+    if (!area.empty()) pieces.push_back(area);
+    for (const PixelArea& held : areas) {
+        std::vector<PixelArea> left;
+        for (const PixelArea& piece : pieces) {
+            const PixelArea overlap = intersect(piece, held);
+            if (overlap.empty()) {
+                left.push_back(piece);
+                continue;
+            }
+            const PixelArea strips[4] = {
+                {piece.x0, piece.y0, piece.x1, overlap.y0},
+                {piece.x0, overlap.y1, piece.x1, piece.y1},
+                {piece.x0, overlap.y0, overlap.x0, overlap.y1},
+                {overlap.x1, overlap.y0, piece.x1, overlap.y1}};
+            for (const PixelArea& strip : strips)
+                if (!strip.empty()) left.push_back(strip);
+        }
+        pieces = std::move(left);
+    }
+    areas.insert(areas.end(), pieces.begin(), pieces.end());
+    if (areas.size() > kMaxDisjointAreas) {
+        PixelArea all;
+        for (const PixelArea& held : areas) all = unite(all, held);
+        areas.assign(1, all);
+    }
+}
+
+}  // namespace matevo::ui
