@@ -2,8 +2,9 @@
 // Median wall time of repeated runs. Medians, not means: the machines are shared and noisy.
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <vector>
+
+#include "common/ProcessCpuTime.h"
 
 namespace matevo::bench {
 
@@ -27,12 +28,6 @@ struct WallAndCpu {
     double wallMilliseconds = 0;
     double cpuMilliseconds = 0;
 };
-
-inline double processCpuMilliseconds() {
-    timespec now{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) / 1e6;
-}
 
 template <typename Work>
 WallAndCpu medianWallAndCpu(int repetitions, Work&& work) {

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <ctime>
+
+#include "common/ProcessCpuTime.h"
 
 namespace matevo::editor {
 namespace {
@@ -14,24 +15,17 @@ double median(std::vector<double> values) {
     return *middle;
 }
 
-double medianWall(const std::vector<EditorTimings::Span>& spans) {
+// The median of one clock's readings (`clock`: &Span::wallMs or &Span::cpuMs).
+double median(const std::vector<EditorTimings::Span>& spans, double EditorTimings::Span::*clock) {
     std::vector<double> values;
-    for (const auto& span : spans) values.push_back(span.wallMs);
-    return median(std::move(values));
-}
-
-double medianCpu(const std::vector<EditorTimings::Span>& spans) {
-    std::vector<double> values;
-    for (const auto& span : spans) values.push_back(span.cpuMs);
+    for (const auto& span : spans) values.push_back(span.*clock);
     return median(std::move(values));
 }
 
 }  // namespace
 
 EditorTimings::Mark EditorTimings::now() {
-    timespec cpu{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu);
-    return {Clock::now(), double(cpu.tv_sec) * 1e3 + double(cpu.tv_nsec) * 1e-6};
+    return {Clock::now(), processCpuMilliseconds()};
 }
 
 EditorTimings::Span EditorTimings::between(const Mark& from, const Mark& to) {
@@ -68,11 +62,13 @@ std::string EditorTimings::report() const {
                   "\"changes\":%zu,\"frames_while_script_idle\":%d,"
                   "\"frame_idle_cpu_ms\":%.2f,\"frame_evolving_cpu_ms\":%.2f,"
                   "\"change_to_final_grid_cpu_ms\":%.1f,\"frames_unchanged\":%d}",
-                  medianWall(idleFrames_), idleFrames_.size(), medianWall(evolvingFrames_),
-                  evolvingFrames_.size(), medianWall(changeToFirstGrid_),
-                  medianWall(changeToFinalGrid_), changeToFirstGrid_.size(),
-                  framesWhileScriptIdle_, medianCpu(idleFrames_), medianCpu(evolvingFrames_),
-                  medianCpu(changeToFinalGrid_), framesUnchanged_);
+                  median(idleFrames_, &Span::wallMs), idleFrames_.size(),
+                  median(evolvingFrames_, &Span::wallMs), evolvingFrames_.size(),
+                  median(changeToFirstGrid_, &Span::wallMs),
+                  median(changeToFinalGrid_, &Span::wallMs), changeToFirstGrid_.size(),
+                  framesWhileScriptIdle_, median(idleFrames_, &Span::cpuMs),
+                  median(evolvingFrames_, &Span::cpuMs), median(changeToFinalGrid_, &Span::cpuMs),
+                  framesUnchanged_);
     return line;
 }
 
