@@ -118,6 +118,7 @@ Result<Device> DeviceBuilder::build() const {
         device.queueFamily_ = *family;
         device.name_ = properties.deviceName;
         device.isCpu_ = properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+        device.maxTexelBufferElements_ = properties.limits.maxTexelBufferElements;
     }
     if (device.physicalDevice_ == VK_NULL_HANDLE)
         return Error{count == 0 ? "Vulkan: no device found"

@@ -34,6 +34,8 @@ public:
     // shaderInt64 and shaderBufferInt64Atomics, enabled when the device has them (the scene
     // renderer needs them).
     bool int64Atomics() const { return int64Atomics_; }
+    // The most texels a texel buffer view may hold (128 Mi on lavapipe).
+    uint32_t maxTexelBufferElements() const { return maxTexelBufferElements_; }
 
     // Index of a memory type allowed by typeBits that suits the use, or an Error.
     Result<uint32_t> memoryTypeFor(uint32_t typeBits, MemoryUse use) const;
@@ -55,6 +57,7 @@ private:
     std::string name_;
     bool isCpu_ = false;
     bool int64Atomics_ = false;
+    uint32_t maxTexelBufferElements_ = 0;
     std::unique_ptr<std::mutex> queueMutex_ = std::make_unique<std::mutex>();
 };
 

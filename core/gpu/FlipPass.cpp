@@ -69,20 +69,29 @@ Result<const FlipPass::Kernels*> FlipPass::kernelsFor(int csfRadius, int feature
     const auto combineConstants = constants(kCombineBlock);
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    // Images and planes are read as texel buffers (see record); the row pass writes the planes.
     auto rowFilter =
-        ComputeKernel::create(*device_, kFlipRowFilterSpirv, {storage, storage, uniform, storage},
+        ComputeKernel::create(*device_, kFlipRowFilterSpirv, {texels, texels, uniform, storage},
                               sizeof(PushConstants), rowConstants);
     if (!rowFilter) return rowFilter.error();
     // The combination reads the planes, not the images: bindings 0 and 1 are bound, not read.
-    auto combine =
-        ComputeKernel::create(*device_, kFlipCombineSpirv,
-                              {storage, storage, uniform, storage, storage, storage, storage},
-                              sizeof(PushConstants), combineConstants);
+    auto combine = ComputeKernel::create(
+        *device_, kFlipCombineSpirv, {texels, texels, uniform, texels, storage, storage, storage},
+        sizeof(PushConstants), combineConstants);
     if (!combine) return combine.error();
     combine->bindBuffer(6, colormap_);
     kernels_.push_back(
         {csfRadius, featureRadius, std::move(rowFilter).value(), std::move(combine).value()});
     return &kernels_.back();
+}
+
+Result<UniqueBufferView> FlipPass::pixelView(const Buffer& buffer) const {
+    constexpr VkDeviceSize kTexelBytes = 4 * sizeof(float);
+    if (buffer.size() / kTexelBytes > device_->maxTexelBufferElements())
+        return Error{"FLIP on the GPU: a batch of " + std::to_string(buffer.size() >> 20) +
+                     " MiB is more than " + device_->name() + " reads as one texel buffer"};
+    return createTexelView(*device_, buffer, VK_FORMAT_R32G32B32A32_SFLOAT);
 }
 
 Status FlipPass::prepare(const FlipBatch& batch, const FlipSettings& settings) {
@@ -110,11 +119,23 @@ Status FlipPass::prepare(const FlipBatch& batch, const FlipSettings& settings) {
                                     (batch.candidateCount + 1) * kPlaneFloatsPerPixel *
                                     sizeof(float);
     if (!planes_.handle() || planes_.size() < planeBytes) {
-        auto buffer = Buffer::create(*device_, planeBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                     MemoryUse::DeviceLocal);
+        auto buffer = Buffer::create(
+            *device_, planeBytes,
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+            MemoryUse::DeviceLocal);
         if (!buffer) return buffer.error();
+        auto view = pixelView(*buffer);
+        if (!view) return view.error();
+        planesView_ = std::move(view).value();  // before the buffer it viewed goes
         planes_ = std::move(buffer).value();
     }
+    // The images' views: the batch's buffers may be new ones at every call.
+    auto referenceView = pixelView(*batch.reference);
+    if (!referenceView) return referenceView.error();
+    auto candidatesView = pixelView(*batch.candidates);
+    if (!candidatesView) return candidatesView.error();
+    referenceView_ = std::move(referenceView).value();
+    candidatesView_ = std::move(candidatesView).value();
     return Ok{};
 }
 
@@ -129,11 +150,12 @@ Status FlipPass::record(VkCommandBuffer commands, const FlipBatch& batch,
     const PushConstants constants{batch.width, batch.height, batch.referenceImage,
                                   batch.firstCandidate, float(flip::maxColorDistance())};
     for (const ComputeKernel* kernel : {&rowFilter, &combine}) {
-        kernel->bindBuffer(0, *batch.reference);
-        kernel->bindBuffer(1, *batch.candidates);
+        kernel->descriptors().bindTexelBuffer(0, referenceView_.get());
+        kernel->descriptors().bindTexelBuffer(1, candidatesView_.get());
         kernel->bindBuffer(2, taps_);
-        kernel->bindBuffer(3, planes_);
     }
+    rowFilter.bindBuffer(3, planes_);
+    combine.descriptors().bindTexelBuffer(3, planesView_.get());
     combine.bindBuffer(4, *batch.error);
     combine.bindBuffer(5, *batch.heatmaps);
 

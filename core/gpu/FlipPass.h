@@ -19,6 +19,7 @@
 
 namespace matevo::gpu {
 
+// The images' buffers come from createBatchBuffer: the pass reads them as texel buffers.
 struct FlipBatch {
     const Buffer* reference = nullptr;   // holds the reference image at referenceImage
     const Buffer* candidates = nullptr;  // holds the candidates from firstCandidate on
@@ -53,6 +54,9 @@ private:
     };
 
     Status prepare(const FlipBatch& batch, const FlipSettings& settings);
+    // `buffer` as vec4 texels: lavapipe fetches texels for all SIMD lanes in one go, where it
+    // loads a storage buffer at a per-invocation index one lane and component at a time.
+    Result<UniqueBufferView> pixelView(const Buffer& buffer) const;
     // The kernels for the current radii, made on first use and kept: lavapipe takes seconds
     // to compile the unrolled filters.
     Result<const Kernels*> kernelsFor(int csfRadius, int featureRadius);
@@ -65,6 +69,10 @@ private:
     flip::CsfKernels csf_;
     flip::FeatureKernels feature_;
     Buffer planes_;
+    UniqueBufferView planesView_;
+    // The batch's images, made by prepare for each record.
+    UniqueBufferView referenceView_;
+    UniqueBufferView candidatesView_;
 };
 
 }  // namespace matevo::gpu
