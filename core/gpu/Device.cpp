@@ -1,6 +1,7 @@
 #include "gpu/Device.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <optional>
 
@@ -8,6 +9,8 @@
 
 namespace matevo::gpu {
 namespace {
+
+std::atomic<int> devicesCreated{0};
 
 int preference(VkPhysicalDeviceType type) {
     switch (type) {
@@ -156,7 +159,10 @@ Result<Device> DeviceBuilder::build() const {
         return vulkanError("creating the device on " + device.name_, result);
     device.device_ = UniqueDevice(handle);
     vkGetDeviceQueue(handle, device.queueFamily_, 0, &device.queue_);
+    ++devicesCreated;
     return device;
 }
+
+int logicalDevicesCreated() { return devicesCreated.load(); }
 
 }  // namespace matevo::gpu

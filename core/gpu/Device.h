@@ -61,6 +61,10 @@ private:
     std::unique_ptr<std::mutex> queueMutex_ = std::make_unique<std::mutex>();
 };
 
+// How many logical devices this process has made so far (the editor makes one, shared by its
+// window and its workers; tests and `edit --report-timings` check that).
+int logicalDevicesCreated();
+
 class DeviceBuilder {
 public:
     explicit DeviceBuilder(const Instance& instance) : instance_(instance.handle()) {}

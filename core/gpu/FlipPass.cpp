@@ -10,6 +10,7 @@
 #include <shaders/kFlipRowFilterSpirv.h>
 
 #include "gpu/CommandRunner.h"
+#include "gpu/ImageBatch.h"
 
 namespace matevo::gpu {
 namespace {
@@ -43,6 +44,30 @@ std::vector<float> tapsOf(const flip::CsfKernels& csf, const flip::FeatureKernel
           &feature.firstDerivative, &feature.secondDerivative})
         taps.insert(taps.end(), filter->begin(), filter->end());
     return taps;
+}
+
+uint32_t groups(uint32_t items, uint32_t perGroup) { return (items + perGroup - 1) / perGroup; }
+
+PushConstants pushConstantsOf(const FlipBatch& batch) {
+    return {batch.width, batch.height, batch.referenceImage, batch.firstCandidate,
+            float(flip::maxColorDistance())};
+}
+
+// The row pass: runs of a row × rows × images.
+void recordRowPass(VkCommandBuffer commands, const ComputeKernel& rowFilter,
+                   const FlipBatch& batch) {
+    const PushConstants constants = pushConstantsOf(batch);
+    rowFilter.record(commands, &constants,
+                     groups(groups(uint32_t(batch.width), kRun), kRowGroupSize),
+                     groups(uint32_t(batch.height), kRowGroupSize), batch.candidateCount + 1);
+}
+
+// The combination: columns × runs of a column × candidates.
+void recordCombination(VkCommandBuffer commands, const ComputeKernel& combine,
+                       const FlipBatch& batch) {
+    const PushConstants constants = pushConstantsOf(batch);
+    combine.record(commands, &constants, groups(uint32_t(batch.width), kCombineGroupSize),
+                   groups(uint32_t(batch.height), kRun), batch.candidateCount);
 }
 
 }  // namespace
@@ -139,16 +164,13 @@ Status FlipPass::prepare(const FlipBatch& batch, const FlipSettings& settings) {
     return Ok{};
 }
 
-Status FlipPass::record(VkCommandBuffer commands, const FlipBatch& batch,
-                        const FlipSettings& settings) {
-    if (batch.candidateCount == 0 || batch.width <= 0 || batch.height <= 0) return Ok{};
-    if (auto prepared = prepare(batch, settings); !prepared) return prepared;
+Result<const FlipPass::Kernels*> FlipPass::bind(const FlipBatch& batch,
+                                                const FlipSettings& settings) {
+    if (auto prepared = prepare(batch, settings); !prepared) return prepared.error();
     auto kernels = kernelsFor(csf_.radius, feature_.radius);
     if (!kernels) return kernels.error();
     const ComputeKernel& rowFilter = (*kernels)->rowFilter;
     const ComputeKernel& combine = (*kernels)->combine;
-    const PushConstants constants{batch.width, batch.height, batch.referenceImage,
-                                  batch.firstCandidate, float(flip::maxColorDistance())};
     for (const ComputeKernel* kernel : {&rowFilter, &combine}) {
         kernel->descriptors().bindTexelBuffer(0, referenceView_.get());
         kernel->descriptors().bindTexelBuffer(1, candidatesView_.get());
@@ -158,19 +180,50 @@ Status FlipPass::record(VkCommandBuffer commands, const FlipBatch& batch,
     combine.descriptors().bindTexelBuffer(3, planesView_.get());
     combine.bindBuffer(4, *batch.error);
     combine.bindBuffer(5, *batch.heatmaps);
+    return kernels;
+}
 
-    auto groups = [](uint32_t items, uint32_t perGroup) {
-        return (items + perGroup - 1) / perGroup;
-    };
-    // The row pass: runs of a row × rows × images.
-    rowFilter.record(commands, &constants,
-                     groups(groups(uint32_t(batch.width), kRun), kRowGroupSize),
-                     groups(uint32_t(batch.height), kRowGroupSize), batch.candidateCount + 1);
+Status FlipPass::record(VkCommandBuffer commands, const FlipBatch& batch,
+                        const FlipSettings& settings) {
+    if (batch.candidateCount == 0 || batch.width <= 0 || batch.height <= 0) return Ok{};
+    auto kernels = bind(batch, settings);
+    if (!kernels) return kernels.error();
+    recordRowPass(commands, (*kernels)->rowFilter, batch);
     computeWriteToComputeReadBarrier(commands);
-    // The combination: columns × runs of a column × candidates.
-    combine.record(commands, &constants, groups(uint32_t(batch.width), kCombineGroupSize),
-                   groups(uint32_t(batch.height), kRun), batch.candidateCount);
+    recordCombination(commands, (*kernels)->combine, batch);
     return Ok{};
+}
+
+Status FlipPass::compile(CommandRunner& runner, const FlipSettings& settings) {
+    const ImageBatchShape shape{1, 1, 1};
+    auto image = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
+    auto map = createBatchBuffer(*device_, shape, 1, MemoryUse::DeviceLocal);
+    auto heatmap = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
+    for (const auto* buffer : {&image, &map, &heatmap})
+        if (!*buffer) return buffer->error();
+    // One pixel, whatever its value: only the dispatches matter.
+    const FlipBatch batch{&*image, &*image, &*map, &*heatmap, 1, 1, 1, 0, 0};
+    auto kernels = bind(batch, settings);
+    if (!kernels) return kernels.error();
+    Status compiled = Ok{};
+    for (const bool rowPass : {true, false}) {
+        auto commands = runner.begin();
+        if (!commands) {
+            compiled = commands.error();
+            break;
+        }
+        if (rowPass) {
+            recordRowPass(*commands, (*kernels)->rowFilter, batch);
+        } else {
+            computeWriteToComputeReadBarrier(*commands);  // the planes of the last submission
+            recordCombination(*commands, (*kernels)->combine, batch);
+        }
+        if (compiled = runner.submitAndWait(); !compiled) break;
+    }
+    // The views of this pixel go with it; record makes the batch's own.
+    referenceView_ = {};
+    candidatesView_ = {};
+    return compiled;
 }
 
 }  // namespace matevo::gpu

@@ -14,6 +14,7 @@
 #include "color/Flip.h"
 #include "common/Result.h"
 #include "gpu/Buffer.h"
+#include "gpu/CommandRunner.h"
 #include "gpu/ComputeKernel.h"
 #include "gpu/DeltaE00Pass.h"
 
@@ -44,6 +45,12 @@ public:
     // viewing condition, so any earlier submission of this pass must have completed.
     Status record(VkCommandBuffer commands, const FlipBatch& batch, const FlipSettings& settings);
 
+    // Makes the pipelines for the viewing condition and has lavapipe compile them now, each in a
+    // submission of its own on `runner` (one dispatch over one pixel), and waits: work of other
+    // threads on the same queue (the editor's frames) then waits for one compile at a time,
+    // not for both and a batch's passes (seconds with a cold shader cache, docs/flip.md).
+    Status compile(CommandRunner& runner, const FlipSettings& settings = {});
+
 private:
     // The shaders specialised for one pair of filter radii (a viewing condition).
     struct Kernels {
@@ -54,6 +61,8 @@ private:
     };
 
     Status prepare(const FlipBatch& batch, const FlipSettings& settings);
+    // Prepares for the batch and binds its buffers to the viewing condition's kernels.
+    Result<const Kernels*> bind(const FlipBatch& batch, const FlipSettings& settings);
     // `buffer` as vec4 texels: lavapipe fetches texels for all SIMD lanes in one go, where it
     // loads a storage buffer at a per-invocation index one lane and component at a time.
     Result<UniqueBufferView> pixelView(const Buffer& buffer) const;
