@@ -349,6 +349,55 @@ TEST(EditorPartialRedraw, ChangedAreasAddUpToTheWholePicture) {
     fs::remove_all(dir);
 }
 
+// The FLIP overlay: its maps are computed by the worker on the window's device, the only
+// device the editor makes (--report-timings counts them), and the tiles change from the ΔE00
+// colours to FLIP's. (The worker test checks the maps against the CPU reference.)
+TEST(EditorFlipOverlay, ComputesTheMapsOnTheWindowsDeviceAndRecoloursTheTiles) {
+    const fs::path dir = freshDirectory("flip");
+    fs::create_directories(dir / "config");
+    std::ofstream(dir / "script.txt")
+        << "wait 2\n"
+           "resize " << kWidth << " " << kHeight << "\n"
+           "population 12\n"
+           "generations 2\n"
+           "wait-evolution\n"
+           "heatmap de00\n"
+           "wait 4\n"
+           "screenshot " << (dir / "de00.png").string() << "\n"
+           "heatmap flip\n"
+           "wait 2\n"
+           "wait-evolution\n"
+           "wait 4\n"
+           "screenshot " << (dir / "flip.png").string() << "\n"
+           "quit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+        "/matevo' edit --validate --report-timings --script '" + (dir / "script.txt").string() +
+        "' --frames 100000");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("\"vulkan_devices\":1}"), std::string::npos) << run.out;
+
+    auto deltaEFile = readImage(dir / "de00.png");
+    auto flipFile = readImage(dir / "flip.png");
+    ASSERT_TRUE(deltaEFile.ok()) << deltaEFile.error().message;
+    ASSERT_TRUE(flipFile.ok()) << flipFile.error().message;
+    const Screenshot deltaE(*deltaEFile);
+    const Screenshot flip(*flipFile);
+    ASSERT_EQ(deltaE.width(), kWidth);
+    ASSERT_EQ(flip.width(), kWidth);
+    const PixelRect grid = toPixels(ui::layoutPanels(ImVec2(kWidth, kHeight)).grid, 150);
+    int recoloured = 0;
+    for (int y = grid.y0; y < grid.y1; ++y)
+        for (int x = grid.x0; x < grid.x1; ++x) {
+            const std::uint8_t* a = deltaE.pixel(x, y);
+            const std::uint8_t* b = flip.pixel(x, y);
+            recoloured += std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 60;
+        }
+    EXPECT_GT(recoloured, 2000) << "the tiles still show the ΔE00 maps";
+    EXPECT_GT(flip.saturatedPixels(grid), 2000) << "no heatmap over the tiles";
+    fs::remove_all(dir);
+}
+
 TEST(EditorWithoutDisplay, SaysSoNamesTheHeadlessCommandsAndExits2) {
     const CommandOutput run = runCommand(std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") +
                                          MATEVO_BINARY_DIR + "/matevo' edit");
