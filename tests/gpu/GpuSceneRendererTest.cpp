@@ -203,10 +203,10 @@ TEST_P(EitherVisibilityPass, SphereMatchesTheComputeSphereRender) {
             }
         ASSERT_GT(interior, std::size_t(kImageSize * kImageSize / 3));
         EXPECT_LE(interiorSum / double(interior), 0.05) << preset.name;
-        std::printf("%s: raster vs compute sphere, mean dE00 %.3f, p95 %.3f; inside the "
-                    "silhouette %.4f\n",
-                    preset.name.c_str(), difference->stats.mean, difference->stats.p95,
-                    interiorSum / double(interior));
+        std::printf("%s: scene renderer (%s visibility pass) vs compute sphere, mean dE00 "
+                    "%.3f, p95 %.3f; inside the silhouette %.4f\n",
+                    preset.name.c_str(), gpu::describe(visibility), difference->stats.mean,
+                    difference->stats.p95, interiorSum / double(interior));
     }
 }
 
