@@ -36,6 +36,9 @@ public:
     bool int64Atomics() const { return int64Atomics_; }
     // The most texels a texel buffer view may hold (128 Mi on lavapipe).
     uint32_t maxTexelBufferElements() const { return maxTexelBufferElements_; }
+    // geometryShader, enabled when the device has it: fragment shaders may read
+    // gl_PrimitiveID (the scene's fixed-function visibility pass does).
+    bool primitiveIds() const { return primitiveIds_; }
 
     // Index of a memory type allowed by typeBits that suits the use, or an Error.
     Result<uint32_t> memoryTypeFor(uint32_t typeBits, MemoryUse use) const;
@@ -58,6 +61,7 @@ private:
     bool isCpu_ = false;
     bool int64Atomics_ = false;
     uint32_t maxTexelBufferElements_ = 0;
+    bool primitiveIds_ = false;
     std::unique_ptr<std::mutex> queueMutex_ = std::make_unique<std::mutex>();
 };
 
