@@ -95,7 +95,7 @@ Result<const FlipPass::Kernels*> FlipPass::kernelsFor(int csfRadius, int feature
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-    // Images and planes are read as texel buffers (see record); the row pass writes the planes.
+    // Images and planes are read as texel buffers (see bind); the row pass writes the planes.
     auto rowFilter =
         ComputeKernel::create(*device_, kFlipRowFilterSpirv, {texels, texels, uniform, storage},
                               sizeof(PushConstants), rowConstants);

@@ -4,8 +4,8 @@
 // like Image::rgba, as the ΔE00 pass takes them. Writes per-pixel ꟻLIP and a magma heatmap.
 // core/color/Flip is the reference these passes follow step by step (tests/gpu compares them).
 // The passes unroll their filters for the viewing condition's radii, and lavapipe's compile
-// time grows with them (uncached, in CPU time at load 10: about 3.5 s at the default 67 pixels
-// per degree, 9 s at 148): they take filter radii up to 20 pixels, about 148 pixels per degree,
+// time grows with them (uncached, in CPU time at load 9: about 1.8 s at the default 67 pixels
+// per degree, 3.6 s at 148): they take filter radii up to 20 pixels, about 148 pixels per degree,
 // and refuse wider ones with an error (the CPU path takes any). lavapipe compiles a pipeline
 // at its first dispatch, on the queue that runs it: work on the same queue waits that long.
 #include <cstdint>
