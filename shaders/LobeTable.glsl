@@ -1,8 +1,10 @@
 // A material's lobes from its LobeTable (core/material/LobeTable.h), interpolated as
 // LobeTable::lobesAt does; shared by the sphere compute shader and the scene's raster shaders.
 // The including shader declares, before including this file and BelcourBsdf.glsl:
-//   layout(std430, binding = N) readonly buffer LobeTables { vec4 lobeEntries[]; };
-// Three vec4 per entry: coat energy + alpha, base throughput + c(variance), base round trip +
+//   layout(binding = N) uniform samplerBuffer lobeEntries;
+// a texel buffer, not a storage buffer: llvmpipe fetches texels for all SIMD lanes at once but
+// loads a storage buffer at a per-invocation index one lane and one component at a time.
+// Three RGBA32F texels per entry: coat energy + alpha, base throughput + c(variance), base round trip +
 // c(variance + round-trip variance) with c(v) = v / (1 + v); entry (texel t, cosine m) at
 // firstEntry + t * cosineNodes + m.
 
@@ -20,9 +22,10 @@ struct Entry {
 };
 
 void accumulate(inout Entry sum, uint entry, float weight) {
-    sum.coat += weight * lobeEntries[3 * entry];
-    sum.base += weight * lobeEntries[3 * entry + 1];
-    sum.roundTrip += weight * lobeEntries[3 * entry + 2];
+    int texel = int(3u * entry);
+    sum.coat += weight * texelFetch(lobeEntries, texel);
+    sum.base += weight * texelFetch(lobeEntries, texel + 1);
+    sum.roundTrip += weight * texelFetch(lobeEntries, texel + 2);
 }
 
 float expandVariance(float compressed) { return compressed / max(1.0 - compressed, 1e-7); }

@@ -16,7 +16,7 @@
 // leaves as soon as every pixel of a SIMD vector is done.
 layout(constant_id = 0) const bool kTextured = false;
 layout(constant_id = 1) const bool kEnvironmentLit = false;
-layout(std430, binding = 2) readonly buffer LobeTables { vec4 lobeEntries[]; };
+layout(binding = 2) uniform samplerBuffer lobeEntries;  // LobeTable.glsl
 #include "BelcourBsdf.glsl"
 #include "LobeTable.glsl"
 #include "SceneFrame.glsl"

@@ -22,7 +22,7 @@ layout(constant_id = 0) const bool kTextured = false;        // roughness / base
 layout(constant_id = 1) const bool kEnvironmentLit = false;  // the prefiltered environment
 layout(constant_id = 2) const uint kMaxPoints = 1;           // points per pixel in this dispatch
 
-layout(std430, binding = 5) readonly buffer LobeTables { vec4 lobeEntries[]; };
+layout(binding = 5) uniform samplerBuffer lobeEntries;  // LobeTable.glsl
 #include "BelcourBsdf.glsl"
 #include "LobeTable.glsl"
 

@@ -37,13 +37,21 @@ Status GpuMaterialTables::upload(const Device& device, const FgdTables& tables,
     const VkDeviceSize materialBytes = gpuMaterials.size() * sizeof(GpuMaterial);
     const VkDeviceSize tableBytes =
         std::max<VkDeviceSize>(entryCount, 1) * LobeTable::kFloatsPerEntry * sizeof(float);
-    for (auto [buffer, bytes] :
-         {std::pair{&materials_, materialBytes}, std::pair{&lobeEntries_, tableBytes}}) {
-        if (buffer->size() >= bytes) continue;
-        auto grown =
-            Buffer::create(device, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+    if (materials_.size() < materialBytes) {
+        auto grown = Buffer::create(device, materialBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                    MemoryUse::Upload);
         if (!grown) return grown.error();
-        *buffer = std::move(grown).value();
+        materials_ = std::move(grown).value();
+    }
+    if (lobeEntries_.size() < tableBytes) {
+        lobeEntriesView_ = {};  // before the buffer it views
+        auto grown = Buffer::create(device, tableBytes, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                                    MemoryUse::Upload);
+        if (!grown) return grown.error();
+        lobeEntries_ = std::move(grown).value();
+        auto view = createTexelView(device, lobeEntries_, VK_FORMAT_R32G32B32A32_SFLOAT);
+        if (!view) return view.error();
+        lobeEntriesView_ = std::move(view).value();
     }
     std::memcpy(materials_.bytes().data(), gpuMaterials.data(), materialBytes);
     auto entries = lobeEntries_.as<float>().begin();

@@ -8,6 +8,7 @@
 #include "common/Result.h"
 #include "gpu/Buffer.h"
 #include "gpu/Device.h"
+#include "gpu/VulkanHandle.h"
 #include "material/FgdTables.h"
 #include "material/MaterialInstance.h"
 
@@ -21,11 +22,13 @@ public:
                   std::span<const MaterialInstance> materials);
 
     const Buffer& materials() const { return materials_; }
-    const Buffer& lobeEntries() const { return lobeEntries_; }
+    // Every material's lobe-table entries as RGBA32F texels (a uniform texel buffer).
+    VkBufferView lobeEntries() const { return lobeEntriesView_.get(); }
 
 private:
     Buffer materials_;
     Buffer lobeEntries_;
+    UniqueBufferView lobeEntriesView_;
 };
 
 }  // namespace matevo::gpu

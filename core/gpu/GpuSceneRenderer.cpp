@@ -291,7 +291,7 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     auto descriptors = DescriptorSet::create(device,
-                                             {texels, storage, storage, storage, sampled, sampled,
+                                             {texels, storage, texels, storage, sampled, sampled,
                                               sampled, texels, texels, texels, texels},
                                              VK_SHADER_STAGE_FRAGMENT_BIT);
     if (!descriptors) return descriptors.error();
@@ -345,7 +345,7 @@ Status GpuSceneRenderer::setMaterials(std::span<const MaterialInstance> material
         return uploaded.error();
     materialCount_ = uint32_t(materials.size());
     descriptors_.bindBuffer(kMaterials, materials_.materials());
-    descriptors_.bindBuffer(kLobeEntries, materials_.lobeEntries());
+    descriptors_.bindTexelBuffer(kLobeEntries, materials_.lobeEntries());
     return Ok{};
 }
 

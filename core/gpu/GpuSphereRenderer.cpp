@@ -67,8 +67,9 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     for (bool compared : {false, true}) {
+        const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
         std::vector<VkDescriptorType> bindings = {storage, storage, sampled, sampled, storage,
-                                                  storage, sampled, storage, storage};
+                                                  texels,  sampled, storage, storage};
         // The target's L*a*b*, the ΔE00 maps, the heatmaps and the colour map.
         if (compared) bindings.insert(bindings.end(), {storage, storage, storage, storage});
         // One pipeline for the pixels of one point, one for the silhouette's of several.
@@ -120,7 +121,7 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
         const ComputeKernel& kernel = kernels_[comparison != nullptr][silhouettePixels];
         kernel.bindBuffer(0, materials_.materials());
         kernel.bindBuffer(1, renders);
-        kernel.bindBuffer(5, materials_.lobeEntries());
+        kernel.descriptors().bindTexelBuffer(5, materials_.lobeEntries());
         kernel.bindBuffer(7, samples_.pixels());
         kernel.bindBuffer(8, samples_.points());
         PushConstants constants{shape.pixelCount(), first, count, 0.0f, 0.0f};
