@@ -47,9 +47,9 @@ layout(push_constant) uniform Dispatch {
 layout(binding = 6) uniform sampler3D environmentMap;
 
 // Per covered pixel: pixel index, first point, point count, coverage (float bits).
-layout(std430, binding = 7) readonly buffer CoveredPixels { uvec4 coveredPixels[]; };
-// Per point: normal, direction to the viewer, (texture UV, environment UV).
-layout(std430, binding = 8) readonly buffer Points { vec4 pointData[]; };
+layout(binding = 7) uniform usamplerBuffer coveredPixels;
+// Per point, three texels: normal, direction to the viewer, (texture UV, environment UV).
+layout(binding = 8) uniform samplerBuffer pointData;
 
 #include "SceneLighting.glsl"
 
@@ -76,9 +76,10 @@ void compareWithTarget(uint index, uint pixel, vec4 candidate) {
 #endif
 
 vec3 shade(Material material, uint point, Lighting lighting) {
-    vec3 normal = pointData[3u * point].xyz;
-    vec3 toViewer = pointData[3u * point + 1u].xyz;
-    vec4 uvs = pointData[3u * point + 2u];
+    int texel = int(3u * point);
+    vec3 normal = texelFetch(pointData, texel).xyz;
+    vec3 toViewer = texelFetch(pointData, texel + 1).xyz;
+    vec4 uvs = texelFetch(pointData, texel + 2);
     float roughnessTexel = 1.0;
     vec3 baseColor = vec3(1.0);
     if (kTextured) {
@@ -92,7 +93,7 @@ vec3 shade(Material material, uint point, Lighting lighting) {
 
 void main() {
     if (gl_GlobalInvocationID.x >= dispatch.pixelCount) return;
-    uvec4 pixel = coveredPixels[dispatch.firstPixel + gl_GlobalInvocationID.x];
+    uvec4 pixel = texelFetch(coveredPixels, int(dispatch.firstPixel + gl_GlobalInvocationID.x));
     Material material = materials[gl_GlobalInvocationID.y];
     Lighting lighting = Lighting(scene.toLight.xyz, scene.lightRadiance.rgb,
                                  scene.environmentRadiance.rgb,

@@ -69,7 +69,7 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
     for (bool compared : {false, true}) {
         const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
         std::vector<VkDescriptorType> bindings = {storage, storage, sampled, sampled, storage,
-                                                  texels,  sampled, storage, storage};
+                                                  texels,  sampled, texels,  texels};
         // The target's L*a*b*, the ΔE00 maps, the heatmaps and the colour map.
         if (compared) bindings.insert(bindings.end(), {storage, storage, storage, storage});
         // One pipeline for the pixels of one point, one for the silhouette's of several.
@@ -122,8 +122,8 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
         kernel.bindBuffer(0, materials_.materials());
         kernel.bindBuffer(1, renders);
         kernel.descriptors().bindTexelBuffer(5, materials_.lobeEntries());
-        kernel.bindBuffer(7, samples_.pixels());
-        kernel.bindBuffer(8, samples_.points());
+        kernel.descriptors().bindTexelBuffer(7, samples_.pixels());
+        kernel.descriptors().bindTexelBuffer(8, samples_.points());
         PushConstants constants{shape.pixelCount(), first, count, 0.0f, 0.0f};
         if (comparison) {
             kernel.bindBuffer(9, *comparison->targetLab);

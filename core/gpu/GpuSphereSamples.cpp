@@ -14,7 +14,7 @@
 namespace matevo::gpu {
 namespace {
 
-// std430 mirrors of shaders/SphereRender.comp's records.
+// shaders/SphereRender.comp's texels: one RGBA32UI per pixel, three RGBA32F per point.
 struct GpuPixel {
     uint32_t pixel;  // y * size + x
     uint32_t firstPoint;
@@ -30,7 +30,7 @@ struct GpuPoint {
 
 Result<Buffer> uploadRecords(const Device& device, const void* records, std::size_t bytes) {
     auto buffer = Buffer::create(device, std::max<std::size_t>(bytes, 16),
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+                                 VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, MemoryUse::Upload);
     if (!buffer) return buffer.error();
     std::memcpy(buffer->bytes().data(), records, bytes);
     return buffer;
@@ -66,6 +66,12 @@ Status GpuSphereSamples::prepare(const Device& device, const SceneSettings& scen
     if (!pixelBuffer) return pixelBuffer.error();
     auto pointBuffer = uploadRecords(device, points.data(), points.size() * sizeof(GpuPoint));
     if (!pointBuffer) return pointBuffer.error();
+    auto pixelsView = createTexelView(device, *pixelBuffer, VK_FORMAT_R32G32B32A32_UINT);
+    if (!pixelsView) return pixelsView.error();
+    auto pointsView = createTexelView(device, *pointBuffer, VK_FORMAT_R32G32B32A32_SFLOAT);
+    if (!pointsView) return pointsView.error();
+    pixelsView_ = std::move(pixelsView).value();  // the views go before the buffers they view
+    pointsView_ = std::move(pointsView).value();
     pixels_ = std::move(pixelBuffer).value();
     points_ = std::move(pointBuffer).value();
     coveredPixels_ = uint32_t(pixels.size());

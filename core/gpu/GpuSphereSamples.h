@@ -1,6 +1,6 @@
 #pragma once
 // The test sphere's shading points (core/scene/SphereSamples.h) on the GPU, as
-// shaders/SphereRender.comp reads them: one record per covered pixel (pixel index, first point,
+// shaders/SphereRender.comp reads them: one texel per covered pixel (pixel index, first point,
 // point count, coverage) and three vec4 per point (normal, direction to the viewer, texture UV
 // and environment UV of the mirror direction). They depend on the camera and the image size
 // only, so they are traced and uploaded once and shaded for every material of every batch:
@@ -11,6 +11,7 @@
 #include "common/Result.h"
 #include "gpu/Buffer.h"
 #include "gpu/Device.h"
+#include "gpu/VulkanHandle.h"
 #include "scene/SceneSettings.h"
 
 namespace matevo::gpu {
@@ -32,8 +33,10 @@ public:
     // the caller must not prepare while a submission reads them.
     Status prepare(const Device& device, const SceneSettings& scene, int size);
 
-    const Buffer& pixels() const { return pixels_; }
-    const Buffer& points() const { return points_; }
+    // RGBA32UI and RGBA32F texels (uniform texel buffers: llvmpipe gathers them for all SIMD
+    // lanes at once).
+    VkBufferView pixels() const { return pixelsView_.get(); }
+    VkBufferView points() const { return pointsView_.get(); }
     uint32_t coveredPixels() const { return coveredPixels_; }
     // The first ones, shaded at one point each; the silhouette's pixels follow.
     uint32_t singlePointPixels() const { return singlePointPixels_; }
@@ -42,6 +45,8 @@ private:
     std::optional<Key> key_;
     Buffer pixels_;
     Buffer points_;
+    UniqueBufferView pixelsView_;
+    UniqueBufferView pointsView_;
     uint32_t coveredPixels_ = 0;
     uint32_t singlePointPixels_ = 0;
 };
