@@ -55,22 +55,23 @@ layout(binding = 8) uniform samplerBuffer pointData;
 
 #ifdef COMPARE_WITH_TARGET
 // Per pixel of one image: the target's L*a*b* and its alpha.
-layout(std430, binding = 9) readonly buffer TargetLab { vec4 targetLab[]; };
+layout(binding = 9) uniform samplerBuffer targetLab;
 layout(std430, binding = 10) writeonly buffer DeltaE { float deltaE[]; };
 layout(std430, binding = 11) writeonly buffer Heatmap { vec4 heatmapPixels[]; };
-layout(std430, binding = 12) readonly buffer Colormap { vec4 colormap[256]; };
+layout(binding = 12) uniform samplerBuffer colormap;  // 256 entries
 #include "LinearSrgbToLab.glsl"
 #include "Ciede2000.glsl"
 
 // Pixels covered in the target and the candidate (alpha >= 0.5, core/color/Coverage.h) get
 // their ΔE00; the others -1 and a transparent heatmap, as the ΔE00 pass writes them.
 void compareWithTarget(uint index, uint pixel, vec4 candidate) {
-    vec4 target = targetLab[pixel];
+    vec4 target = texelFetch(targetLab, int(pixel));
     bool covered = target.a >= 0.5 && candidate.a >= 0.5;
     float difference = ciede2000(target.xyz, linearSrgbToLab(candidate.rgb));
     deltaE[index] = covered ? difference : -1.0;
     heatmapPixels[index] =
-        covered ? colormap[colormapEntry(difference, dispatch.minDeltaE, dispatch.maxDeltaE)]
+        covered ? texelFetch(colormap,
+                             int(colormapEntry(difference, dispatch.minDeltaE, dispatch.maxDeltaE)))
                 : vec4(0.0);
 }
 #endif

@@ -43,18 +43,13 @@ Status GpuMaterialTables::upload(const Device& device, const FgdTables& tables,
         if (!grown) return grown.error();
         materials_ = std::move(grown).value();
     }
-    if (lobeEntries_.size() < tableBytes) {
-        lobeEntriesView_ = {};  // before the buffer it views
-        auto grown = Buffer::create(device, tableBytes, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
-                                    MemoryUse::Upload);
+    if (lobeEntries_.buffer.size() < tableBytes) {
+        auto grown = createTexelBuffer(device, tableBytes, VK_FORMAT_R32G32B32A32_SFLOAT);
         if (!grown) return grown.error();
         lobeEntries_ = std::move(grown).value();
-        auto view = createTexelView(device, lobeEntries_, VK_FORMAT_R32G32B32A32_SFLOAT);
-        if (!view) return view.error();
-        lobeEntriesView_ = std::move(view).value();
     }
     std::memcpy(materials_.bytes().data(), gpuMaterials.data(), materialBytes);
-    auto entries = lobeEntries_.as<float>().begin();
+    auto entries = lobeEntries_.buffer.as<float>().begin();
     for (const LobeTable& table : lobeTables)
         entries = std::copy(table.data().begin(), table.data().end(), entries);
     return Ok{};

@@ -8,7 +8,6 @@
 #include "common/Result.h"
 #include "gpu/Buffer.h"
 #include "gpu/Device.h"
-#include "gpu/VulkanHandle.h"
 #include "material/FgdTables.h"
 #include "material/MaterialInstance.h"
 
@@ -23,12 +22,11 @@ public:
 
     const Buffer& materials() const { return materials_; }
     // Every material's lobe-table entries as RGBA32F texels (a uniform texel buffer).
-    VkBufferView lobeEntries() const { return lobeEntriesView_.get(); }
+    VkBufferView lobeEntries() const { return lobeEntries_.view.get(); }
 
 private:
     Buffer materials_;
-    Buffer lobeEntries_;
-    UniqueBufferView lobeEntriesView_;
+    TexelBuffer lobeEntries_;
 };
 
 }  // namespace matevo::gpu

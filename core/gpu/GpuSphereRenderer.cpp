@@ -71,7 +71,7 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
         std::vector<VkDescriptorType> bindings = {storage, storage, sampled, sampled, storage,
                                                   texels,  sampled, texels,  texels};
         // The target's L*a*b*, the ΔE00 maps, the heatmaps and the colour map.
-        if (compared) bindings.insert(bindings.end(), {storage, storage, storage, storage});
+        if (compared) bindings.insert(bindings.end(), {texels, storage, storage, texels});
         // One pipeline for the pixels of one point, one for the silhouette's of several.
         for (bool silhouette : {false, true}) {
             const uint32_t specialization[] = {
@@ -126,10 +126,10 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
         kernel.descriptors().bindTexelBuffer(8, samples_.points());
         PushConstants constants{shape.pixelCount(), first, count, 0.0f, 0.0f};
         if (comparison) {
-            kernel.bindBuffer(9, *comparison->targetLab);
+            kernel.descriptors().bindTexelBuffer(9, comparison->targetLab);
             kernel.bindBuffer(10, *comparison->deltaE);
             kernel.bindBuffer(11, *comparison->heatmaps);
-            kernel.bindBuffer(12, *comparison->colormap);
+            kernel.descriptors().bindTexelBuffer(12, comparison->colormap);
             constants.minDeltaE = comparison->minDeltaE;
             constants.maxDeltaE = comparison->maxDeltaE;
         }

@@ -28,11 +28,11 @@ struct GpuPoint {
     float uvs[4];  // texture UV, environment UV
 };
 
-Result<Buffer> uploadRecords(const Device& device, const void* records, std::size_t bytes) {
-    auto buffer = Buffer::create(device, std::max<std::size_t>(bytes, 16),
-                                 VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, MemoryUse::Upload);
+Result<TexelBuffer> uploadRecords(const Device& device, const void* records, std::size_t bytes,
+                                  VkFormat format) {
+    auto buffer = createTexelBuffer(device, std::max<std::size_t>(bytes, 16), format);
     if (!buffer) return buffer.error();
-    std::memcpy(buffer->bytes().data(), records, bytes);
+    std::memcpy(buffer->buffer.bytes().data(), records, bytes);
     return buffer;
 }
 
@@ -62,16 +62,12 @@ Status GpuSphereSamples::prepare(const Device& device, const SceneSettings& scen
                           {float(textureUv[0]), float(textureUv[1]), float(environmentUv.x),
                            float(environmentUv.y)}});
     }
-    auto pixelBuffer = uploadRecords(device, pixels.data(), pixels.size() * sizeof(GpuPixel));
+    auto pixelBuffer = uploadRecords(device, pixels.data(), pixels.size() * sizeof(GpuPixel),
+                                     VK_FORMAT_R32G32B32A32_UINT);
     if (!pixelBuffer) return pixelBuffer.error();
-    auto pointBuffer = uploadRecords(device, points.data(), points.size() * sizeof(GpuPoint));
+    auto pointBuffer = uploadRecords(device, points.data(), points.size() * sizeof(GpuPoint),
+                                     VK_FORMAT_R32G32B32A32_SFLOAT);
     if (!pointBuffer) return pointBuffer.error();
-    auto pixelsView = createTexelView(device, *pixelBuffer, VK_FORMAT_R32G32B32A32_UINT);
-    if (!pixelsView) return pixelsView.error();
-    auto pointsView = createTexelView(device, *pointBuffer, VK_FORMAT_R32G32B32A32_SFLOAT);
-    if (!pointsView) return pointsView.error();
-    pixelsView_ = std::move(pixelsView).value();  // the views go before the buffers they view
-    pointsView_ = std::move(pointsView).value();
     pixels_ = std::move(pixelBuffer).value();
     points_ = std::move(pointBuffer).value();
     coveredPixels_ = uint32_t(pixels.size());

@@ -11,7 +11,6 @@
 #include "common/Result.h"
 #include "gpu/Buffer.h"
 #include "gpu/Device.h"
-#include "gpu/VulkanHandle.h"
 #include "scene/SceneSettings.h"
 
 namespace matevo::gpu {
@@ -35,18 +34,16 @@ public:
 
     // RGBA32UI and RGBA32F texels (uniform texel buffers: llvmpipe gathers them for all SIMD
     // lanes at once).
-    VkBufferView pixels() const { return pixelsView_.get(); }
-    VkBufferView points() const { return pointsView_.get(); }
+    VkBufferView pixels() const { return pixels_.view.get(); }
+    VkBufferView points() const { return points_.view.get(); }
     uint32_t coveredPixels() const { return coveredPixels_; }
     // The first ones, shaded at one point each; the silhouette's pixels follow.
     uint32_t singlePointPixels() const { return singlePointPixels_; }
 
 private:
     std::optional<Key> key_;
-    Buffer pixels_;
-    Buffer points_;
-    UniqueBufferView pixelsView_;
-    UniqueBufferView pointsView_;
+    TexelBuffer pixels_;
+    TexelBuffer points_;
     uint32_t coveredPixels_ = 0;
     uint32_t singlePointPixels_ = 0;
 };
