@@ -31,7 +31,7 @@ layout(std430, binding = 1) writeonly buffer Renders { vec4 renderPixels[]; };
 layout(binding = 2) uniform sampler2D roughnessTexture;  // 1x1 white when absent
 layout(binding = 3) uniform sampler2D baseColorTexture;  // 1x1 white when absent
 
-layout(std430, binding = 4) readonly buffer Scene {
+layout(std140, binding = 4) uniform Scene {
     vec4 toLight;
     vec4 lightRadiance;
     vec4 environmentRadiance;  // w: roughness levels of environmentMap
@@ -93,12 +93,14 @@ vec3 shade(Material material, uint point, Lighting lighting) {
 }
 
 void main() {
-    if (gl_GlobalInvocationID.x >= dispatch.pixelCount) return;
-    uvec4 pixel = texelFetch(coveredPixels, int(dispatch.firstPixel + gl_GlobalInvocationID.x));
-    Material material = materials[gl_GlobalInvocationID.y];
+    // Read before the bounds test: llvmpipe loads a storage buffer at a workgroup-uniform index
+    // once only while every lane is known to be active, lane by lane after a divergent return.
+    Material material = materials[gl_WorkGroupID.y];
     Lighting lighting = Lighting(scene.toLight.xyz, scene.lightRadiance.rgb,
                                  scene.environmentRadiance.rgb,
                                  kEnvironmentLit ? scene.environmentRadiance.w : 0.0);
+    if (gl_GlobalInvocationID.x >= dispatch.pixelCount) return;
+    uvec4 pixel = texelFetch(coveredPixels, int(dispatch.firstPixel + gl_GlobalInvocationID.x));
     vec3 radiance = shade(material, pixel.y, lighting);
     for (uint i = 1u; i < kMaxPoints; ++i) {
         // Lanes with fewer points shade their last one again and drop it.

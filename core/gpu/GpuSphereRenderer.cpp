@@ -17,7 +17,7 @@ namespace {
 
 constexpr uint32_t kWorkgroupSize = 64;  // local_size_x in the shader
 
-// std430 mirror of the shader's Scene block.
+// std140 mirror of the shader's Scene block (three vec4: the same in both layouts).
 struct GpuScene {
     float toLight[4];
     float lightRadiance[4];
@@ -58,7 +58,7 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
     renderer.tables_ = &tables;
     auto uploaded = GpuSceneTextures::create(device, runner, textures);
     if (!uploaded) return uploaded.error();
-    auto sceneBuffer = Buffer::create(device, sizeof(GpuScene), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+    auto sceneBuffer = Buffer::create(device, sizeof(GpuScene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                       MemoryUse::Upload);
     if (!sceneBuffer) return sceneBuffer.error();
 
@@ -68,7 +68,8 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     for (bool compared : {false, true}) {
         const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-        std::vector<VkDescriptorType> bindings = {storage, storage, sampled, sampled, storage,
+        const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        std::vector<VkDescriptorType> bindings = {storage, storage, sampled, sampled, uniform,
                                                   texels,  sampled, texels,  texels};
         // The target's L*a*b*, the ΔE00 maps, the heatmaps and the colour map.
         if (compared) bindings.insert(bindings.end(), {texels, storage, storage, texels});
