@@ -1,6 +1,7 @@
 // A material's lobes from its LobeTable (core/material/LobeTable.h), interpolated as
 // LobeTable::lobesAt does; shared by the sphere compute shader and the scene's raster shaders.
 // The including shader declares, before including this file and BelcourBsdf.glsl:
+//   layout(constant_id = N) const bool kTextured = ...;  // false: every roughness texel is 1
 //   layout(binding = N) uniform samplerBuffer lobeEntries;
 // a texel buffer, not a storage buffer: llvmpipe fetches texels for all SIMD lanes at once but
 // loads a storage buffer at a per-invocation index one lane and one component at a time.
@@ -36,18 +37,26 @@ LobeSet lobesAt(Material material, float cosView, float texel, vec3 tint) {
     float cosinePosition = clamp(cosView, 0.0, 1.0) * float(cosineNodes - 1);
     int m = min(int(cosinePosition), cosineNodes - 2);
     float wm = cosinePosition - float(m);
-    // Without a texel axis the second texel row is the first one again, with weight 0: one
-    // path for both shapes (lavapipe would run both sides of a branch).
-    float texelPosition = clamp(texel, 0.0, 1.0) * float(material.texelNodes - 1u);
-    uint t = min(uint(texelPosition), max(material.texelNodes, 2u) - 2u);
-    float wt = texelPosition - float(t);
-    uint texelStride = material.texelNodes > 1u ? uint(cosineNodes) : 0u;
-    uint row = material.firstEntry + t * uint(cosineNodes) + uint(m);
     Entry sum = Entry(vec4(0.0), vec4(0.0), vec4(0.0));
-    accumulate(sum, row, (1.0 - wt) * (1.0 - wm));
-    accumulate(sum, row + 1u, (1.0 - wt) * wm);
-    accumulate(sum, row + texelStride, wt * (1.0 - wm));
-    accumulate(sum, row + texelStride + 1u, wt * wm);
+    if (kTextured) {
+        // Without a texel axis the second texel row is the first one again, with weight 0:
+        // one path for both shapes (lavapipe would run both sides of a branch).
+        float texelPosition = clamp(texel, 0.0, 1.0) * float(material.texelNodes - 1u);
+        uint t = min(uint(texelPosition), max(material.texelNodes, 2u) - 2u);
+        float wt = texelPosition - float(t);
+        uint texelStride = material.texelNodes > 1u ? uint(cosineNodes) : 0u;
+        uint row = material.firstEntry + t * uint(cosineNodes) + uint(m);
+        accumulate(sum, row, (1.0 - wt) * (1.0 - wm));
+        accumulate(sum, row + 1u, (1.0 - wt) * wm);
+        accumulate(sum, row + texelStride, wt * (1.0 - wm));
+        accumulate(sum, row + texelStride + 1u, wt * wm);
+    } else {
+        // A texel of 1 is the last texel row exactly (weight 1, the other row's weight 0):
+        // half the fetches. The branch is resolved when the pipeline is specialised.
+        uint row = material.firstEntry + (material.texelNodes - 1u) * uint(cosineNodes) + uint(m);
+        accumulate(sum, row, 1.0 - wm);
+        accumulate(sum, row + 1u, wm);
+    }
     float variance = expandVariance(sum.base.a);
     return LobeSet(Lobe(sum.coat.rgb, sum.coat.a),
                    tintedLobe(sum.base.rgb, sum.roundTrip.rgb, variance,
