@@ -2,10 +2,12 @@
 // heatmap's colour-map entry of a difference: shared by the ΔE00 pass and the sphere render,
 // which compares each candidate with the target as it shades it.
 
-// x^7 by multiplication: pow() on lavapipe costs a log and an exp per lane.
-float seventhPower(float x) {
-    float square = x * x;
-    return square * square * square * x;
+// sqrt(C^7 / (C^7 + 25^7)), the chroma weight of G and R_C; x^7 by multiplication (pow() on
+// lavapipe costs a log and an exp per lane).
+float chromaWeight(float chroma) {
+    float square = chroma * chroma;
+    float seventh = square * square * square * chroma;
+    return sqrt(seventh / (seventh + 6103515625.0));  // 25^7
 }
 
 // T = 1 - 0.17 cos(h - 30°) + 0.24 cos 2h + 0.32 cos(3h + 6°) - 0.20 cos(4h - 63°), from
@@ -39,8 +41,7 @@ vec2 hueDirection(vec2 aPrimeB, float chroma) {
 float ciede2000(vec3 lab1, vec3 lab2) {
     float c1 = length(lab1.yz);
     float c2 = length(lab2.yz);
-    float cMean7 = seventhPower(0.5 * (c1 + c2));
-    float g = 0.5 * (1.0 - sqrt(cMean7 / (cMean7 + 6103515625.0)));  // 25^7
+    float g = 0.5 * (1.0 - chromaWeight(0.5 * (c1 + c2)));
     vec2 ab1 = vec2((1.0 + g) * lab1.y, lab1.z);
     vec2 ab2 = vec2((1.0 + g) * lab2.y, lab2.z);
     float cp1 = length(ab1);
@@ -69,8 +70,7 @@ float ciede2000(vec3 lab1, vec3 lab2) {
     float t = hueWeight(meanHue.x, meanHue.y);
     float hueOffset = (hMean - 275.0) / 25.0;
     float dTheta = 30.0 * exp(-hueOffset * hueOffset);
-    float cMeanP7 = seventhPower(cMean);
-    float rC = 2.0 * sqrt(cMeanP7 / (cMeanP7 + 6103515625.0));
+    float rC = 2.0 * chromaWeight(cMean);
     float lShift = (lMean - 50.0) * (lMean - 50.0);
     float sL = 1.0 + 0.015 * lShift / sqrt(20.0 + lShift);
     float sC = 1.0 + 0.045 * cMean;
