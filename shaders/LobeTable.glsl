@@ -3,9 +3,12 @@
 // The including shader declares, before including this file and BelcourBsdf.glsl:
 //   layout(constant_id = N) const bool kTextured = ...;  // false: every roughness texel is 1
 //   layout(binding = N) uniform samplerBuffer lobeEntries;
-// a texel buffer, not a storage buffer: llvmpipe fetches texels for all SIMD lanes at once but
-// loads a storage buffer at a per-invocation index one lane and one component at a time.
-// Three RGBA32F texels per entry: coat energy + alpha, base throughput + c(variance), base round trip +
+//   layout(binding = M) uniform usamplerBuffer materialRecords;
+// texel buffers, not storage buffers: llvmpipe fetches texels for all SIMD lanes at once but
+// loads a storage buffer one lane and one component at a time (even at an index the same for
+// every lane, once some lanes may be inactive).
+// A material record is one RGBA32UI texel (Material below). The lobe table has three RGBA32F
+// texels per entry: coat energy + alpha, base throughput + c(variance), base round trip +
 // c(variance + round-trip variance) with c(v) = v / (1 + v); entry (texel t, cosine m) at
 // firstEntry + t * cosineNodes + m.
 
@@ -13,8 +16,12 @@ struct Material {
     uint firstEntry;   // of its lobe table
     uint texelNodes;   // 1: no textured-roughness axis
     uint cosineNodes;
-    uint unused;
 };
+
+Material materialAt(uint index) {
+    uvec4 record = texelFetch(materialRecords, int(index));
+    return Material(record.x, record.y, record.z);
+}
 
 struct Entry {
     vec4 coat;

@@ -22,11 +22,11 @@ layout(constant_id = 0) const bool kTextured = false;        // roughness / base
 layout(constant_id = 1) const bool kEnvironmentLit = false;  // the prefiltered environment
 layout(constant_id = 2) const uint kMaxPoints = 1;           // points per pixel in this dispatch
 
-layout(binding = 5) uniform samplerBuffer lobeEntries;  // LobeTable.glsl
+layout(binding = 5) uniform samplerBuffer lobeEntries;        // LobeTable.glsl
+layout(binding = 0) uniform usamplerBuffer materialRecords;  // LobeTable.glsl
 #include "BelcourBsdf.glsl"
 #include "LobeTable.glsl"
 
-layout(std430, binding = 0) readonly buffer Materials { Material materials[]; };
 layout(std430, binding = 1) writeonly buffer Renders { vec4 renderPixels[]; };
 layout(binding = 2) uniform sampler2D roughnessTexture;  // 1x1 white when absent
 layout(binding = 3) uniform sampler2D baseColorTexture;  // 1x1 white when absent
@@ -80,7 +80,8 @@ vec3 shade(Material material, uint point, Lighting lighting) {
     int texel = int(3u * point);
     vec3 normal = texelFetch(pointData, texel).xyz;
     vec3 toViewer = texelFetch(pointData, texel + 1).xyz;
-    vec4 uvs = texelFetch(pointData, texel + 2);
+    // Texture and environment UVs, read only when the scene has either.
+    vec4 uvs = kTextured || kEnvironmentLit ? texelFetch(pointData, texel + 2) : vec4(0.0);
     float roughnessTexel = 1.0;
     vec3 baseColor = vec3(1.0);
     if (kTextured) {
@@ -93,9 +94,7 @@ vec3 shade(Material material, uint point, Lighting lighting) {
 }
 
 void main() {
-    // Read before the bounds test: llvmpipe loads a storage buffer at a workgroup-uniform index
-    // once only while every lane is known to be active, lane by lane after a divergent return.
-    Material material = materials[gl_WorkGroupID.y];
+    Material material = materialAt(gl_WorkGroupID.y);
     Lighting lighting = Lighting(scene.toLight.xyz, scene.lightRadiance.rgb,
                                  scene.environmentRadiance.rgb,
                                  kEnvironmentLit ? scene.environmentRadiance.w : 0.0);

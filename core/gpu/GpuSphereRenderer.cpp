@@ -69,8 +69,8 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
     for (bool compared : {false, true}) {
         const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
         const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-        std::vector<VkDescriptorType> bindings = {storage, storage, sampled, sampled, uniform,
-                                                  texels,  sampled, texels,  texels};
+        std::vector<VkDescriptorType> bindings = {texels, storage, sampled, sampled, uniform,
+                                                  texels, sampled, texels,  texels};
         // The target's L*a*b*, the ΔE00 maps, the heatmaps and the colour map.
         if (compared) bindings.insert(bindings.end(), {texels, storage, storage, texels});
         // One pipeline for the pixels of one point, one for the silhouette's of several.
@@ -120,7 +120,7 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
     for (auto [silhouettePixels, first, count] :
          {std::tuple{false, 0u, singlePoint}, std::tuple{true, singlePoint, silhouette}}) {
         const ComputeKernel& kernel = kernels_[comparison != nullptr][silhouettePixels];
-        kernel.bindBuffer(0, materials_.materials());
+        kernel.descriptors().bindTexelBuffer(0, materials_.materials());
         kernel.bindBuffer(1, renders);
         kernel.descriptors().bindTexelBuffer(5, materials_.lobeEntries());
         kernel.descriptors().bindTexelBuffer(7, samples_.pixels());
