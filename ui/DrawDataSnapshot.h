@@ -4,7 +4,7 @@
 // and whatever else the caller says changes the picture (e.g. a heatmap range applied by the
 // renderer). Two equal snapshots draw the same pixels as long as each texture id keeps its
 // contents. On lavapipe every pixel drawn costs: a frame equal to the one on screen need not
-// be drawn at all, and one that differs only in some windows need only redraw their area.
+// be drawn at all, and one that differs only in some triangles need only redraw their area.
 #include <cstddef>
 #include <span>
 #include <vector>
