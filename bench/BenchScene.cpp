@@ -68,39 +68,58 @@ void benchScene(BenchReport& report, int instanceCount) {
          smallCrowdCamera, "the same at 1/16 of the pixels"},
         {"scene_" + count + "x_sphere992_1280x720_ms", &coarseSphere, 1280, 720, instances,
          crowdCamera, count + " spheres of 992 triangles"},
-        {"scene_closeup_shaderball_1280x720_ms", &shaderBall, 1280, 720,
-         std::span(&single, 1), closeUp, "one shader ball filling the view"},
+        {"scene_closeup_shaderball_1280x720_ms", &shaderBall, 1280, 720, std::span(&single, 1),
+         closeUp, "one shader ball filling the view"},
     };
+    // Each case with both visibility passes, the compute one first (its keys name no pass, as
+    // before the raster pass came back), then the fixed-function one and its ratio.
     for (const SceneCase& sceneCase : cases) {
-        auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
-                                                      textures, *sceneCase.mesh);
-        if (!renderer || !renderer->setMaterials(materials)) {
-            std::fprintf(stderr, "matevo bench: the scene renderer failed\n");
-            return;
+        double computeMilliseconds = 0.0;
+        for (const gpu::SceneVisibilityPass pass :
+             {gpu::SceneVisibilityPass::Compute, gpu::SceneVisibilityPass::Raster}) {
+            auto renderer = gpu::GpuSceneRenderer::create(
+                context->device, *runner, defaultFgdTables(), textures, *sceneCase.mesh, pass);
+            if (!renderer || !renderer->setMaterials(materials)) {
+                std::fprintf(stderr, "matevo bench: the scene renderer (%s) failed\n",
+                             gpu::describe(pass));
+                continue;
+            }
+            const gpu::SceneFrame frame{sceneCase.width, sceneCase.height, sceneCase.camera,
+                                        sceneCase.instances};
+            bool failed = false;
+            auto drawFrame = [&] {
+                auto commands = runner->begin();
+                failed |= !commands || !renderer->record(*commands, frame, scene) ||
+                          !runner->submitAndWait();
+            };
+            drawFrame();  // lavapipe compiles the pipeline on first use
+            const WallAndCpu times = medianWallAndCpu(kRepetitions, drawFrame);
+            if (failed) continue;
+            const bool raster = pass == gpu::SceneVisibilityPass::Raster;
+            const std::string stem =
+                sceneCase.key.substr(0, sceneCase.key.size() - 3) + (raster ? "_raster" : "");
+            report.push_back(
+                {stem + "_ms", times.wallMilliseconds,
+                 sceneCase.what + " (" + std::to_string(sceneCase.mesh->triangleCount()) +
+                     " triangles each, " + std::to_string(renderer->trianglesSubmitted()) +
+                     (raster ? " drawn" : " in clusters that may face the camera") + "), " +
+                     std::to_string(sceneCase.instances.size()) +
+                     " materials, studio environment, " + std::to_string(sceneCase.width) + "x" +
+                     std::to_string(sceneCase.height) + " on " + context->device.name() + ", " +
+                     gpu::describe(pass) + " visibility pass: one frame, no read-back"});
+            report.push_back(
+                {stem + "_cpu_ms", times.cpuMilliseconds,
+                 "the same frame's CPU time, every thread of the process (lavapipe's "
+                 "rasteriser threads too): steadier than wall time on a loaded machine"});
+            if (!raster) {
+                computeMilliseconds = times.wallMilliseconds;
+            } else if (computeMilliseconds > 0.0) {
+                report.push_back({stem + "_over_compute",
+                                  times.wallMilliseconds / computeMilliseconds,
+                                  "the raster visibility pass's frame time over the compute "
+                                  "pass's, same run"});
+            }
         }
-        const gpu::SceneFrame frame{sceneCase.width, sceneCase.height, sceneCase.camera,
-                                    sceneCase.instances};
-        bool failed = false;
-        auto drawFrame = [&] {
-            auto commands = runner->begin();
-            failed |=
-                !commands || !renderer->record(*commands, frame, scene) || !runner->submitAndWait();
-        };
-        drawFrame();  // lavapipe compiles the pipeline on first use
-        const WallAndCpu times = medianWallAndCpu(kRepetitions, drawFrame);
-        if (failed) continue;
-        report.push_back({sceneCase.key, times.wallMilliseconds,
-                          sceneCase.what + " (" + std::to_string(sceneCase.mesh->triangleCount()) +
-                              " triangles each, " + std::to_string(renderer->trianglesSubmitted()) +
-                              " in clusters that may face the camera), " +
-                              std::to_string(sceneCase.instances.size()) +
-                              " materials, studio environment, " + std::to_string(sceneCase.width) +
-                              "x" + std::to_string(sceneCase.height) + " on " +
-                              context->device.name() + ": one frame, no read-back"});
-        report.push_back({sceneCase.key.substr(0, sceneCase.key.size() - 3) + "_cpu_ms",
-                          times.cpuMilliseconds,
-                          "the same frame's CPU time, every thread of the process (lavapipe's "
-                          "rasteriser threads too): steadier than wall time on a loaded machine"});
     }
 }
 

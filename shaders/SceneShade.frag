@@ -1,7 +1,13 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The scene view's shading pass. Each pixel has kSamplesPerPixel visibility words
-// (SceneVisibility.glsl); its samples are grouped into surfaces, and each surface is shaded
+#ifdef VISIBILITY_ATTACHMENTS
+#extension GL_EXT_samplerless_texture_functions : require
+#endif
+// The scene view's shading pass. Each pixel has kSamplesPerPixel samples, each with the
+// triangle and depth of its nearest surface, from either visibility pass: the compute one's
+// words (SceneVisibility.glsl) or, built with VISIBILITY_ATTACHMENTS, the fixed-function one's
+// multisampled attachments (SceneSurfaces.frag and its depth buffer). Only readSamples below
+// tells them apart. A pixel's samples are grouped into surfaces, and each surface is shaded
 // once and weighted by its samples: a pixel inside an instance is shaded once, a pixel on a
 // silhouette blends the surfaces (and the background) it holds. Samples are one surface when
 // they belong to the same instance at about the same distance (within kSurfacePixels pixels'
@@ -32,8 +38,15 @@ layout(binding = 0) uniform samplerBuffer instanceTexels;
 layout(binding = 4) uniform sampler2D roughnessTexture;  // 1x1 white when absent
 layout(binding = 5) uniform sampler2D baseColorTexture;  // 1x1 white when absent
 layout(binding = 6) uniform sampler3D environmentMap;
+#ifdef VISIBILITY_ATTACHMENTS
+// The fixed-function pass's attachments, 4 samples each at the same standard positions:
+// the triangle (kNoSurface where none) and its depth.
+layout(binding = 7) uniform utexture2DMS surfaceSamples;
+layout(binding = 11) uniform texture2DMS depthSamples;
+#else
 // Each pixel's visibility word: x the triangle, y the depth's bits.
 layout(binding = 7) uniform usamplerBuffer visibility;
+#endif
 #include "SceneLighting.glsl"
 
 layout(location = 0) out vec4 color;
@@ -106,13 +119,30 @@ vec3 shadeSurface(uint payload, vec2 position) {
     return shadeLobes(lobes, point, lighting);
 }
 
-void main() {
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
+// The pixel's samples: which triangle (kNoSurface where none) and its depth.
+void readSamples(ivec2 pixel, out uvec4 payloads, out vec4 depths) {
+#ifdef VISIBILITY_ATTACHMENTS
+    payloads = uvec4(texelFetch(surfaceSamples, pixel, 0).x,
+                     texelFetch(surfaceSamples, pixel, 1).x,
+                     texelFetch(surfaceSamples, pixel, 2).x,
+                     texelFetch(surfaceSamples, pixel, 3).x);
+    depths = vec4(texelFetch(depthSamples, pixel, 0).x, texelFetch(depthSamples, pixel, 1).x,
+                  texelFetch(depthSamples, pixel, 2).x, texelFetch(depthSamples, pixel, 3).x);
+#else
     // Two samples' words per texel: (triangle, depth bits) twice.
     int firstTexel = (pixel.y * int(frame.viewportSize.x) + pixel.x) * (kSamplesPerPixel / 2);
     uvec4 words01 = texelFetch(visibility, firstTexel);
     uvec4 words23 = texelFetch(visibility, firstTexel + 1);
-    uvec4 payloads = uvec4(words01.xz, words23.xz);
+    payloads = uvec4(words01.xz, words23.xz);
+    depths = uintBitsToFloat(uvec4(words01.yw, words23.yw));
+#endif
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    uvec4 payloads;
+    vec4 depths;
+    readSamples(pixel, payloads, depths);
     bvec4 covered = notEqual(payloads, uvec4(kNoSurface));
     // Background: nothing to shade. A discard, not a depth test: llvmpipe skips the rest of
     // the shader for a SIMD vector whose pixels are all discarded, while it shades depth-
@@ -126,8 +156,7 @@ void main() {
                             texelFetch(visibleClusters, int(clusterEntries.y)).x,
                             texelFetch(visibleClusters, int(clusterEntries.z)).x,
                             texelFetch(visibleClusters, int(clusterEntries.w)).x);
-    vec4 distances = 1.0 / (1.0 - frame.sampling.x * uintBitsToFloat(
-                                                         uvec4(words01.yw, words23.yw)));
+    vec4 distances = 1.0 / (1.0 - frame.sampling.x * depths);
     float tolerance = kSurfacePixels * frame.sampling.y;
     // Each covered sample joins the surface of the first earlier sample of the same instance
     // at about its distance; owner[s] is the sample that stands for its surface.

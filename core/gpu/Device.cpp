@@ -60,6 +60,14 @@ bool supportsInt64Atomics(VkPhysicalDevice device) {
     return features.features.shaderInt64 && features12.shaderBufferInt64Atomics;
 }
 
+// The geometryShader feature: the scene's fixed-function visibility pass reads gl_PrimitiveID
+// in its fragment shader, which SPIR-V allows only with the Geometry capability.
+bool supportsGeometryShader(VkPhysicalDevice device) {
+    VkPhysicalDeviceFeatures features;
+    vkGetPhysicalDeviceFeatures(device, &features);
+    return features.geometryShader == VK_TRUE;
+}
+
 }  // namespace
 
 Result<uint32_t> Device::memoryTypeFor(uint32_t typeBits, MemoryUse use) const {
@@ -141,6 +149,8 @@ Result<Device> DeviceBuilder::build() const {
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &features12;
     features.features.shaderInt64 = device.int64Atomics_;
+    device.primitiveIds_ = supportsGeometryShader(device.physicalDevice_);
+    features.features.geometryShader = device.primitiveIds_;
 
     VkDeviceCreateInfo createInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     createInfo.pNext = &features;

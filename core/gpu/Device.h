@@ -34,6 +34,9 @@ public:
     // shaderInt64 and shaderBufferInt64Atomics, enabled when the device has them (the scene
     // renderer needs them).
     bool int64Atomics() const { return int64Atomics_; }
+    // geometryShader, enabled when the device has it: fragment shaders may read
+    // gl_PrimitiveID (the scene's fixed-function visibility pass does).
+    bool primitiveIds() const { return primitiveIds_; }
 
     // Index of a memory type allowed by typeBits that suits the use, or an Error.
     Result<uint32_t> memoryTypeFor(uint32_t typeBits, MemoryUse use) const;
@@ -55,6 +58,7 @@ private:
     std::string name_;
     bool isCpu_ = false;
     bool int64Atomics_ = false;
+    bool primitiveIds_ = false;
     std::unique_ptr<std::mutex> queueMutex_ = std::make_unique<std::mutex>();
 };
 

@@ -13,6 +13,7 @@
 
 #include <shaders/kSceneDisplaySpirv.h>
 #include <shaders/kSceneRasterizeSpirv.h>
+#include <shaders/kSceneShadeAttachmentsFragmentSpirv.h>
 #include <shaders/kSceneShadeFragmentSpirv.h>
 #include <shaders/kSceneShadeVertexSpirv.h>
 
@@ -25,7 +26,8 @@
 namespace matevo::gpu {
 namespace {
 
-// The shading pass's descriptor set (SceneShade.frag).
+// The shading pass's descriptor set (SceneShade.frag). kVisibility is the compute pass's
+// words or the raster pass's triangle attachment, kDepths (raster pass only) its depth buffer.
 enum Binding : uint32_t {
     kInstances = 0,
     kFrame = 1,
@@ -38,6 +40,7 @@ enum Binding : uint32_t {
     kVertices = 8,
     kTriangles = 9,
     kClusters = 10,
+    kDepths = 11,
 };
 
 // The visibility pass's (SceneRasterize.comp) bindings and push constants.
@@ -173,7 +176,7 @@ Result<Buffer> createFilledBuffer(const Device& device, std::span<const std::byt
 
 // The shading pass: one subpass that shades each covered pixel into the radiance image, which
 // a transfer (or, in the editor, a shader) reads after the pass.
-Result<UniqueRenderPass> createRenderPass(VkDevice device) {
+Result<UniqueRenderPass> createShadingRenderPass(VkDevice device) {
     VkAttachmentDescription radiance{};
     radiance.format = GpuSceneRenderer::kColorFormat;
     radiance.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -208,33 +211,27 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device) {
     radianceOut.dstSubpass = VK_SUBPASS_EXTERNAL;
     radianceOut.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
     radianceOut.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    radianceOut.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    radianceOut.dstStageMask =
+        VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     radianceOut.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
 
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 1;
-    info.pAttachments = &radiance;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 2;
-    info.pDependencies = dependencies;
-    VkRenderPass renderPass = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateRenderPass(device, &info, nullptr, &renderPass);
-        result != VK_SUCCESS)
-        return vulkanError("creating a render pass", result);
-    return UniqueRenderPass(device, renderPass);
+    return createRenderPass(device, std::span(&radiance, 1), subpass, dependencies);
 }
 
-// Specialised for the textures and the environment the scene has.
+// Specialised for the textures and the environment the scene has; reading the samples of the
+// given visibility pass.
 Result<UniquePipeline> createShadingPipeline(VkDevice device, VkRenderPass renderPass,
                                              VkPipelineLayout layout,
-                                             const GpuSceneTextures& textures) {
+                                             const GpuSceneTextures& textures,
+                                             SceneVisibilityPass visibility) {
     const uint32_t specialization[2] = {textures.textured() ? 1u : 0u,
                                         textures.environmentLevels() > 0 ? 1u : 0u};
     const SpecializationConstants constants(specialization);
     GraphicsPipelineSpec spec;
     spec.vertexSpirv = kSceneShadeVertexSpirv;
-    spec.fragmentSpirv = kSceneShadeFragmentSpirv;
+    spec.fragmentSpirv = visibility == SceneVisibilityPass::Raster
+                             ? std::span<const uint32_t>(kSceneShadeAttachmentsFragmentSpirv)
+                             : std::span<const uint32_t>(kSceneShadeFragmentSpirv);
     spec.fragmentSpecialization = constants.info();
     spec.layout = layout;
     spec.renderPass = renderPass;
@@ -242,24 +239,37 @@ Result<UniquePipeline> createShadingPipeline(VkDevice device, VkRenderPass rende
     return createGraphicsPipeline(device, spec);
 }
 
+// Auto: the compute pass on a CPU device (lavapipe runs the fixed-function front end on one
+// thread, the compute pass on all of them) or on a GPU that cannot run the raster pass; the
+// raster pass on a GPU (docs/scene-view.md).
+SceneVisibilityPass resolve(const Device& device, SceneVisibilityPass requested) {
+    if (requested != SceneVisibilityPass::Auto) return requested;
+    return device.isCpu() || !SceneRasterVisibility::supportedOn(device)
+               ? SceneVisibilityPass::Compute
+               : SceneVisibilityPass::Raster;
+}
+
 }  // namespace
 
 Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandRunner& runner,
                                                   const FgdTables& tables,
-                                                  const SceneTextures& textures, const Mesh& mesh) {
+                                                  const SceneTextures& textures, const Mesh& mesh,
+                                                  SceneVisibilityPass visibility) {
     const VkDevice vkDevice = device.handle();
     GpuSceneRenderer renderer;
     renderer.device_ = &device;
     renderer.tables_ = &tables;
+    renderer.visibilityPass_ = resolve(device, visibility);
+    const bool raster = renderer.visibilityPass_ == SceneVisibilityPass::Raster;
+    if (!raster && !device.int64Atomics())
+        return Error{"Vulkan: " + device.name() +
+                     " lacks 64-bit integer atomics on storage buffers, which the scene's "
+                     "compute visibility pass needs"};
     auto uploaded = GpuSceneTextures::create(device, runner, textures);
     if (!uploaded) return uploaded.error();
     renderer.textures_ = std::move(uploaded).value();
 
-    if (!device.int64Atomics())
-        return Error{"Vulkan: " + device.name() +
-                     " lacks 64-bit integer atomics on storage buffers, which the scene needs"};
-
-    // The mesh's triangles in clusters (core/mesh/MeshClusters.h), read by both passes.
+    // The mesh's triangles in clusters (core/mesh/MeshClusters.h), read by every pass.
     ClusteredMesh clustered = clusterTriangles(mesh);
     renderer.triangleCount_ = uint32_t(clustered.mesh.triangleCount());
     renderer.clusters_ = std::move(clustered.clusters);
@@ -268,8 +278,8 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
         triangles[t] = {clustered.mesh.indices[t * 3], clustered.mesh.indices[t * 3 + 1],
                         clustered.mesh.indices[t * 3 + 2], 0u};
     const VkBufferUsageFlags texelUsage = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
-    auto vertices =
-        createFilledBuffer(device, std::as_bytes(std::span(clustered.mesh.vertices)), texelUsage);
+    auto vertices = createFilledBuffer(device, std::as_bytes(std::span(clustered.mesh.vertices)),
+                                       texelUsage | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     if (!vertices) return vertices.error();
     auto triangleBuffer =
         createFilledBuffer(device, std::as_bytes(std::span(triangles)), texelUsage);
@@ -290,10 +300,13 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-    auto descriptors = DescriptorSet::create(device,
-                                             {texels, storage, storage, storage, sampled, sampled,
-                                              sampled, texels, texels, texels, texels},
-                                             VK_SHADER_STAGE_FRAGMENT_BIT);
+    const VkDescriptorType attachment = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    std::vector<VkDescriptorType> shadingBindings = {
+        texels, storage, storage, storage, sampled, sampled, sampled, raster ? attachment : texels,
+        texels, texels,  texels};
+    if (raster) shadingBindings.push_back(attachment);  // kDepths
+    auto descriptors =
+        DescriptorSet::create(device, std::move(shadingBindings), VK_SHADER_STAGE_FRAGMENT_BIT);
     if (!descriptors) return descriptors.error();
     renderer.descriptors_ = std::move(descriptors).value();
     renderer.descriptors_.bindBuffer(kFrame, renderer.frameBuffer_);
@@ -301,29 +314,31 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
     renderer.descriptors_.bindTexelBuffer(kTriangles, renderer.trianglesView_.get());
     renderer.textures_.bind(renderer.descriptors_, kRoughness, kBaseColor, kEnvironment);
 
-    auto rasterizeKernel =
-        ComputeKernel::create(device, kSceneRasterizeSpirv, {texels, texels, texels, storage},
-                              sizeof(RasterizeConstants));
-    if (!rasterizeKernel) return rasterizeKernel.error();
-    renderer.rasterizeKernel_ = std::move(rasterizeKernel).value();
-    const DescriptorSet& rasterizeSet = renderer.rasterizeKernel_.descriptors();
-    rasterizeSet.bindTexelBuffer(kRasterizeVertices, renderer.verticesView_.get());
-    rasterizeSet.bindTexelBuffer(kRasterizeTriangles, renderer.trianglesView_.get());
+    if (raster) {
+        auto rasterVisibility = SceneRasterVisibility::create(device, renderer.vertices_.handle(),
+                                                              clustered.mesh.indices);
+        if (!rasterVisibility) return rasterVisibility.error();
+        renderer.rasterVisibility_ = std::move(rasterVisibility).value();
+    } else {
+        auto rasterizeKernel =
+            ComputeKernel::create(device, kSceneRasterizeSpirv, {texels, texels, texels, storage},
+                                  sizeof(RasterizeConstants));
+        if (!rasterizeKernel) return rasterizeKernel.error();
+        renderer.rasterizeKernel_ = std::move(rasterizeKernel).value();
+        const DescriptorSet& rasterizeSet = renderer.rasterizeKernel_.descriptors();
+        rasterizeSet.bindTexelBuffer(kRasterizeVertices, renderer.verticesView_.get());
+        rasterizeSet.bindTexelBuffer(kRasterizeTriangles, renderer.trianglesView_.get());
+    }
 
-    auto renderPass = createRenderPass(vkDevice);
+    auto renderPass = createShadingRenderPass(vkDevice);
     if (!renderPass) return renderPass.error();
     renderer.renderPass_ = std::move(renderPass).value();
-    const VkDescriptorSetLayout setLayout = renderer.descriptors_.layout();
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout;
-    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    if (VkResult result = vkCreatePipelineLayout(vkDevice, &layoutInfo, nullptr, &pipelineLayout);
-        result != VK_SUCCESS)
-        return vulkanError("creating a pipeline layout", result);
-    renderer.pipelineLayout_ = UniquePipelineLayout(vkDevice, pipelineLayout);
-    auto shadingPipeline = createShadingPipeline(vkDevice, renderer.renderPass_.get(),
-                                                 pipelineLayout, renderer.textures_);
+    auto pipelineLayout = createPipelineLayout(vkDevice, renderer.descriptors_.layout());
+    if (!pipelineLayout) return pipelineLayout.error();
+    renderer.pipelineLayout_ = std::move(pipelineLayout).value();
+    auto shadingPipeline =
+        createShadingPipeline(vkDevice, renderer.renderPass_.get(), renderer.pipelineLayout_.get(),
+                              renderer.textures_, renderer.visibilityPass_);
     if (!shadingPipeline) return shadingPipeline.error();
     renderer.shadingPipeline_ = std::move(shadingPipeline).value();
 
@@ -358,34 +373,33 @@ Status GpuSceneRenderer::prepareTarget(int width, int height) {
                          VK_IMAGE_USAGE_STORAGE_BIT;
     auto radiance = GpuImage::create(*device_, radianceSpec);
     if (!radiance) return radiance.error();
-    // One 64-bit visibility word per sample.
-    auto visibility = Buffer::create(
-        *device_, VkDeviceSize(width) * VkDeviceSize(height) * kSamplesPerPixel * sizeof(uint64_t),
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
-            VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-        MemoryUse::DeviceLocal);
-    if (!visibility) return visibility.error();
-    auto visibilityView = createTexelView(*device_, *visibility, kVisibilityTexel);
-    if (!visibilityView) return visibilityView.error();
+    if (rasterVisibility_) {
+        if (auto ok = rasterVisibility_->prepareTarget(width, height); !ok) return ok.error();
+        descriptors_.bindSampledImage(kVisibility, rasterVisibility_->surfaces(), VK_NULL_HANDLE);
+        descriptors_.bindSampledImage(kDepths, rasterVisibility_->depths(), VK_NULL_HANDLE);
+    } else {
+        // One 64-bit visibility word per sample.
+        auto visibility = Buffer::create(
+            *device_,
+            VkDeviceSize(width) * VkDeviceSize(height) * kSamplesPerPixel * sizeof(uint64_t),
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+                VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+            MemoryUse::DeviceLocal);
+        if (!visibility) return visibility.error();
+        auto visibilityView = createTexelView(*device_, *visibility, kVisibilityTexel);
+        if (!visibilityView) return visibilityView.error();
+        visibility_ = std::move(visibility).value();
+        visibilityView_ = std::move(visibilityView).value();
+        descriptors_.bindTexelBuffer(kVisibility, visibilityView_.get());
+        rasterizeKernel_.bindBuffer(kRasterizeVisibility, visibility_);
+    }
 
     const VkImageView view = radiance->view();
-    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    info.renderPass = renderPass_.get();
-    info.attachmentCount = 1;
-    info.pAttachments = &view;
-    info.width = uint32_t(width);
-    info.height = uint32_t(height);
-    info.layers = 1;
-    VkFramebuffer framebuffer = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateFramebuffer(device_->handle(), &info, nullptr, &framebuffer);
-        result != VK_SUCCESS)
-        return vulkanError("creating a framebuffer", result);
-    framebuffer_ = UniqueFramebuffer(device_->handle(), framebuffer);
+    auto framebuffer = createFramebuffer(device_->handle(), renderPass_.get(), std::span(&view, 1),
+                                         uint32_t(width), uint32_t(height));
+    if (!framebuffer) return framebuffer.error();
+    framebuffer_ = std::move(framebuffer).value();
     radiance_ = std::move(radiance).value();
-    visibility_ = std::move(visibility).value();
-    visibilityView_ = std::move(visibilityView).value();
-    descriptors_.bindTexelBuffer(kVisibility, visibilityView_.get());
-    rasterizeKernel_.bindBuffer(kRasterizeVisibility, visibility_);
     displayKernel_.bindStorageImage(kDisplayRadiance, radiance_.view());
     width_ = width;
     height_ = height;
@@ -398,6 +412,7 @@ Status GpuSceneRenderer::prepareInstances(const SceneFrame& frame) {
     std::vector<GpuInstance> gpuInstances(std::max<std::size_t>(instances.size(), 1));
     std::vector<glm::uvec2> entries;  // (instance, cluster)
     instanceWork_.clear();
+    const bool cullClusters = frame.cullClusters && visibilityPass_ == SceneVisibilityPass::Compute;
     for (std::size_t i = 0; i < instances.size(); ++i) {
         const SceneInstance& instance = instances[i];
         if (instance.material >= materialCount_)
@@ -411,8 +426,10 @@ Status GpuSceneRenderer::prepareInstances(const SceneFrame& frame) {
         const double scale = glm::length(glm::dvec3(instance.transform[0]));
         if (outsideFrustum(viewProjection, glm::dvec3(instance.transform[3]), scale)) continue;
         const std::size_t firstEntry = entries.size();
+        // The raster pass names a triangle by its instance's first entry plus its index in the
+        // mesh (SceneSurfaces.frag), so its instances keep every cluster, in order.
         for (std::size_t c = 0; c < clusters_.size(); ++c)
-            if (!frame.cullClusters ||
+            if (!cullClusters ||
                 !facesAwayFrom(clusters_[c], instance.transform, frame.camera.position))
                 entries.push_back({uint32_t(i), uint32_t(c)});
         if (entries.size() > firstEntry)
@@ -448,7 +465,7 @@ Status GpuSceneRenderer::upload(TexelBuffer& target, std::span<const std::byte> 
         buffer = std::move(grown).value();
         target.view = std::move(view).value();
         descriptors_.bindTexelBuffer(shadingBinding, target.view.get());
-        if (rasterizeBinding)
+        if (rasterizeBinding && !rasterVisibility_)
             rasterizeKernel_.descriptors().bindTexelBuffer(*rasterizeBinding, target.view.get());
     }
     std::memcpy(buffer.bytes().data(), bytes.data(), bytes.size());
@@ -464,7 +481,36 @@ Status GpuSceneRenderer::record(VkCommandBuffer commands, const SceneFrame& fram
     const GpuFrame gpuFrame = toGpu(frame, scene, textures_);
     std::memcpy(frameBuffer_.bytes().data(), &gpuFrame, sizeof gpuFrame);
 
-    // The visibility pass: every word to "no surface" (after the previous frame's shading read
+    if (auto ok = rasterVisibility_ ? recordRasterVisibility(commands)
+                                    : recordComputeVisibility(commands, frame);
+        !ok)
+        return ok.error();
+
+    // The shading pass (its subpass dependency, or the raster pass's, orders it after the
+    // visibility pass).
+    VkClearValue clear{};  // transparent background
+    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    begin.renderPass = renderPass_.get();
+    begin.framebuffer = framebuffer_.get();
+    begin.renderArea = {{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
+    begin.clearValueCount = 1;
+    begin.pClearValues = &clear;
+    vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    const VkViewport viewport{0.0f, 0.0f, float(frame.width), float(frame.height), 0.0f, 1.0f};
+    vkCmdSetViewport(commands, 0, 1, &viewport);
+    vkCmdSetScissor(commands, 0, 1, &begin.renderArea);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, shadingPipeline_.get());
+    const VkDescriptorSet set = descriptors_.handle();
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_.get(), 0, 1,
+                            &set, 0, nullptr);
+    vkCmdDraw(commands, 3, 1, 0, 0);  // the full-screen triangle
+    vkCmdEndRenderPass(commands);
+    return Ok{};
+}
+
+Status GpuSceneRenderer::recordComputeVisibility(VkCommandBuffer commands,
+                                                 const SceneFrame& frame) {
+    // Every word to "no surface" (after the previous frame's shading read
     // them), then the nearest surface of each pixel.
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     barrier.srcAccessMask = 0;
@@ -489,26 +535,16 @@ Status GpuSceneRenderer::record(VkCommandBuffer commands, const SceneFrame& fram
         rasterizeKernel_.record(commands, &constants, groupsX,
                                 (work.entries + groupsX - 1) / groupsX, 1);
     }
-
-    // The shading pass (its subpass dependency orders it after the visibility pass).
-    VkClearValue clear{};  // transparent background
-    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = renderPass_.get();
-    begin.framebuffer = framebuffer_.get();
-    begin.renderArea = {{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
-    begin.clearValueCount = 1;
-    begin.pClearValues = &clear;
-    vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    const VkViewport viewport{0.0f, 0.0f, float(frame.width), float(frame.height), 0.0f, 1.0f};
-    vkCmdSetViewport(commands, 0, 1, &viewport);
-    vkCmdSetScissor(commands, 0, 1, &begin.renderArea);
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, shadingPipeline_.get());
-    const VkDescriptorSet set = descriptors_.handle();
-    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_.get(), 0, 1,
-                            &set, 0, nullptr);
-    vkCmdDraw(commands, 3, 1, 0, 0);  // the full-screen triangle
-    vkCmdEndRenderPass(commands);
     return Ok{};
+}
+
+Status GpuSceneRenderer::recordRasterVisibility(VkCommandBuffer commands) {
+    std::vector<SceneRasterVisibility::DrawnInstance> drawn(instanceWork_.size());
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+        drawn[i].clipFromObject = instanceWork_[i].clipFromObject;
+        drawn[i].firstSurface = instanceWork_[i].firstEntry * kClusterTriangles;
+    }
+    return rasterVisibility_->record(commands, drawn);
 }
 
 Status GpuSceneRenderer::recordDisplay(VkCommandBuffer commands, const GpuImage& target,

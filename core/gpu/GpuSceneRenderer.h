@@ -3,15 +3,20 @@
 // shaded into an RGBA16F image. Materials reach the GPU as the sphere compute shader's lobe
 // tables (GpuMaterialTables) and are shaded by the same GLSL, so the two paths draw one BSDF.
 //
-// Two passes, chosen by measurement on lavapipe (docs/scene-view.md). The visibility pass
-// (shaders/SceneRasterize.comp) is a rasteriser in a compute shader: for each of a pixel's 4
-// samples (the standard 4x multisample positions) it keeps the depth and the triangle of the
-// nearest surface in one 64-bit word. The shading pass (shaders/SceneShade.frag) then shades
+// Two passes. A visibility pass finds, for each of a pixel's 4 samples (the standard 4x
+// multisample positions), the depth and the triangle of the nearest surface. It comes in two
+// kinds that give the same picture (SceneVisibilityPass; docs/scene-view.md says which is
+// faster where, by measurement): a rasteriser in a compute shader
+// (shaders/SceneRasterize.comp, one 64-bit atomicMin word per sample), chosen on CPU devices
+// such as lavapipe, whose fixed-function front end runs on one thread; and the fixed-function
+// rasteriser (SceneRasterVisibility: one instanced draw, depth buffer, 4x MSAA), chosen on
+// GPUs. The shading pass (shaders/SceneShade.frag, one source for both) then shades
 // each surface among a pixel's samples once, interpolating the triangle's normal and texture
 // coordinates where the pixel's ray meets it, and weights it by its samples: silhouettes are
 // blended, and alpha is the share of the samples covered. Every instance is drawn with
-// the whole mesh; what cannot be seen is dropped on the CPU first: instances outside the view
-// and clusters of triangles that all face away from the camera (core/mesh/MeshClusters.h).
+// the whole mesh; instances outside the view are dropped on the CPU first, and, for the
+// compute pass, clusters of triangles that all face away from the camera
+// (core/mesh/MeshClusters.h; the fixed-function pass culls back faces itself).
 #include <optional>
 #include <span>
 #include <vector>
@@ -26,6 +31,8 @@
 #include "gpu/GpuImage.h"
 #include "gpu/GpuMaterialTables.h"
 #include "gpu/GpuSceneTextures.h"
+#include "gpu/SceneRasterVisibility.h"
+#include "gpu/SceneVisibilityPass.h"
 #include "material/FgdTables.h"
 #include "material/MaterialInstance.h"
 #include "mesh/Mesh.h"
@@ -41,8 +48,9 @@ struct SceneFrame {
     int height = 0;
     SceneCamera camera;
     std::span<const SceneInstance> instances;
-    // Drop the clusters that face away from the camera before the visibility pass. It changes
-    // no pixel (the pass drops back faces itself); off only to show that (tests, bench).
+    // Drop the clusters that face away from the camera before the compute visibility pass. It
+    // changes no pixel (the pass drops back faces itself); off only to show that (tests,
+    // bench). The raster pass always draws the whole mesh.
     bool cullClusters = true;
 };
 
@@ -56,18 +64,21 @@ class GpuSceneRenderer {
 public:
     static constexpr VkFormat kColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
-    // `tables` must outlive the renderer (the process-wide defaultFgdTables() does).
-    static Result<GpuSceneRenderer> create(const Device& device, CommandRunner& runner,
-                                           const FgdTables& tables, const SceneTextures& textures,
-                                           const Mesh& mesh);
+    // `tables` must outlive the renderer (the process-wide defaultFgdTables() does). Auto
+    // picks the visibility pass by the device's type; an Error when the device cannot run the
+    // one asked for.
+    static Result<GpuSceneRenderer> create(
+        const Device& device, CommandRunner& runner, const FgdTables& tables,
+        const SceneTextures& textures, const Mesh& mesh,
+        SceneVisibilityPass visibility = SceneVisibilityPass::Auto);
 
     // Builds and uploads the materials' lobe tables; instances name them by index. Not while a
     // submission that draws them is in flight.
     Status setMaterials(std::span<const MaterialInstance> materials);
 
     // Records the frame: clears, draws every instance and shades it into radianceImage(),
-    // which ends in GENERAL, visible to transfers and compute shaders. (Re)creates the attachments when the size changes, so no
-    // submission may be using them.
+    // which ends in GENERAL, visible to transfers and compute shaders. (Re)creates the attachments
+    // when the size changes, so no submission may be using them.
     Status record(VkCommandBuffer commands, const SceneFrame& frame, const SceneSettings& scene);
 
     // Records, after record(): the radiance over the environment's slightly blurred backdrop
@@ -83,16 +94,20 @@ public:
     // premultiplied), alpha the share of a pixel's samples an instance covers, the background
     // transparent. With it: the
     // displayable picture recordDisplay makes.
-    Result<Image> render(CommandRunner& runner, const SceneFrame& frame,
-                         const SceneSettings& scene,
+    Result<Image> render(CommandRunner& runner, const SceneFrame& frame, const SceneSettings& scene,
                          std::optional<SceneDisplay> display = std::nullopt);
 
     const GpuImage& radianceImage() const { return radiance_; }
+    // Raster or Compute: the visibility pass this renderer runs.
+    SceneVisibilityPass visibilityPass() const { return visibilityPass_; }
     // The last recorded frame's triangles sent to the visibility pass, after culling.
     uint64_t trianglesSubmitted() const { return trianglesSubmitted_; }
 
 private:
     Status prepareTarget(int width, int height);
+    // Records the visibility pass over instanceWork_, one kind or the other.
+    Status recordComputeVisibility(VkCommandBuffer commands, const SceneFrame& frame);
+    Status recordRasterVisibility(VkCommandBuffer commands);
     // Uploads the instances and the clusters in view; fills instanceWork_.
     Status prepareInstances(const SceneFrame& frame);
     // A host-visible buffer both passes read as texels of one format.
@@ -107,6 +122,7 @@ private:
 
     const Device* device_ = nullptr;
     const FgdTables* tables_ = nullptr;
+    SceneVisibilityPass visibilityPass_ = SceneVisibilityPass::Compute;
     GpuSceneTextures textures_;
     GpuMaterialTables materials_;
     uint32_t materialCount_ = 0;
@@ -120,7 +136,8 @@ private:
     Buffer frameBuffer_;           // the shaders' Frame block
     TexelBuffer instances_;        // every instance, in the frame's order
     TexelBuffer visibleClusters_;  // (instance, cluster) pairs of this frame
-    // One visibility dispatch per instance with clusters in view.
+    // Per instance with clusters in view: one dispatch of the compute pass, one instance of
+    // the raster pass's draw.
     struct InstanceWork {
         glm::mat4 clipFromObject;
         uint32_t firstEntry = 0;
@@ -128,8 +145,9 @@ private:
     };
     std::vector<InstanceWork> instanceWork_;
     uint64_t trianglesSubmitted_ = 0;
-    ComputeKernel rasterizeKernel_;
-    DescriptorSet descriptors_;  // the shading pass's
+    ComputeKernel rasterizeKernel_;                          // the compute visibility pass
+    std::optional<SceneRasterVisibility> rasterVisibility_;  // or the raster one
+    DescriptorSet descriptors_;                              // the shading pass's
     UniqueRenderPass renderPass_;
     UniquePipelineLayout pipelineLayout_;
     UniquePipeline shadingPipeline_;
@@ -137,7 +155,7 @@ private:
     // Size-dependent: recreated by prepareTarget.
     int width_ = 0;
     int height_ = 0;
-    Buffer visibility_;  // one 64-bit word per sample (shaders/SceneVisibility.glsl)
+    Buffer visibility_;  // the compute pass's 64-bit word per sample (SceneVisibility.glsl)
     UniqueBufferView visibilityView_;
     GpuImage radiance_;
     UniqueFramebuffer framebuffer_;

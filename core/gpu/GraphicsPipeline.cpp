@@ -98,4 +98,50 @@ Result<UniquePipeline> createGraphicsPipeline(VkDevice device, const GraphicsPip
     return UniquePipeline(device, pipeline);
 }
 
+Result<UniqueRenderPass> createRenderPass(VkDevice device,
+                                          std::span<const VkAttachmentDescription> attachments,
+                                          const VkSubpassDescription& subpass,
+                                          std::span<const VkSubpassDependency> dependencies) {
+    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    info.attachmentCount = uint32_t(attachments.size());
+    info.pAttachments = attachments.data();
+    info.subpassCount = 1;
+    info.pSubpasses = &subpass;
+    info.dependencyCount = uint32_t(dependencies.size());
+    info.pDependencies = dependencies.data();
+    VkRenderPass renderPass = VK_NULL_HANDLE;
+    if (VkResult result = vkCreateRenderPass(device, &info, nullptr, &renderPass);
+        result != VK_SUCCESS)
+        return vulkanError("creating a render pass", result);
+    return UniqueRenderPass(device, renderPass);
+}
+
+Result<UniquePipelineLayout> createPipelineLayout(VkDevice device, VkDescriptorSetLayout set) {
+    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    info.setLayoutCount = 1;
+    info.pSetLayouts = &set;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    if (VkResult result = vkCreatePipelineLayout(device, &info, nullptr, &layout);
+        result != VK_SUCCESS)
+        return vulkanError("creating a pipeline layout", result);
+    return UniquePipelineLayout(device, layout);
+}
+
+Result<UniqueFramebuffer> createFramebuffer(VkDevice device, VkRenderPass renderPass,
+                                            std::span<const VkImageView> attachments,
+                                            uint32_t width, uint32_t height) {
+    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    info.renderPass = renderPass;
+    info.attachmentCount = uint32_t(attachments.size());
+    info.pAttachments = attachments.data();
+    info.width = width;
+    info.height = height;
+    info.layers = 1;
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    if (VkResult result = vkCreateFramebuffer(device, &info, nullptr, &framebuffer);
+        result != VK_SUCCESS)
+        return vulkanError("creating a framebuffer", result);
+    return UniqueFramebuffer(device, framebuffer);
+}
+
 }  // namespace matevo::gpu

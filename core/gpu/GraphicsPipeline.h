@@ -21,7 +21,7 @@ struct GraphicsPipelineSpec {
     // Counter-clockwise triangles face forward (core/mesh/Mesh.h; ImGui does not care).
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    bool depthTested = false;  // test LESS and write
+    bool depthTested = false;   // test LESS and write
     bool alphaBlended = false;  // straight-alpha "over", as ImGui blends
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkRenderPass renderPass = VK_NULL_HANDLE;
@@ -30,5 +30,19 @@ struct GraphicsPipelineSpec {
 };
 
 Result<UniquePipeline> createGraphicsPipeline(VkDevice device, const GraphicsPipelineSpec& spec);
+
+// A render pass of one subpass.
+Result<UniqueRenderPass> createRenderPass(VkDevice device,
+                                          std::span<const VkAttachmentDescription> attachments,
+                                          const VkSubpassDescription& subpass,
+                                          std::span<const VkSubpassDependency> dependencies);
+
+// A pipeline layout of one descriptor set and no push constants (the scene's raster passes).
+Result<UniquePipelineLayout> createPipelineLayout(VkDevice device, VkDescriptorSetLayout set);
+
+// A one-layer framebuffer of `attachments` for `renderPass`.
+Result<UniqueFramebuffer> createFramebuffer(VkDevice device, VkRenderPass renderPass,
+                                            std::span<const VkImageView> attachments,
+                                            uint32_t width, uint32_t height);
 
 }  // namespace matevo::gpu

@@ -21,6 +21,10 @@
 #include "scene/StudioEnvironment.h"
 
 namespace matevo {
+namespace gpu {
+// Test names and messages say "raster" or "compute".
+void PrintTo(SceneVisibilityPass pass, std::ostream* out) { *out << describe(pass); }
+}  // namespace gpu
 namespace {
 
 constexpr int kImageSize = 96;
@@ -84,11 +88,13 @@ protected:
                                                     std::span<const MaterialInstance> materials,
                                                     const SceneTextures& textures = {}) {
         auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner,
-                                                      defaultFgdTables(), textures, mesh);
+                                                      defaultFgdTables(), textures, mesh,
+                                                      visibility);
         if (!renderer) {
             ADD_FAILURE() << renderer.error().message;
             return std::nullopt;
         }
+        EXPECT_EQ(renderer->visibilityPass(), visibility);
         if (auto ok = renderer->setMaterials(materials); !ok) {
             ADD_FAILURE() << ok.error().message;
             return std::nullopt;
@@ -112,16 +118,53 @@ protected:
         return std::move(image).value();
     }
 
+    // The three presets' materials under the small studio, with the second preset's
+    // base-colour texture: every part of the shading pass at work.
+    struct StudioLook {
+        SceneTextures textures;
+        SceneSettings scene;
+        std::vector<MaterialInstance> materials;
+    };
+    std::optional<StudioLook> studioLook() const {
+        auto environment = smallStudio();
+        EXPECT_TRUE(environment.ok());
+        if (!environment) return std::nullopt;
+        StudioLook look{presets[1].textures, presets[1].scene, {}};
+        look.textures.environment = *environment;
+        look.scene.mode = SceneMode::Environment;
+        for (const PresetCase& preset : presets) look.materials.push_back(preset.material);
+        return look;
+    }
+
     gpu::GpuContext* context = nullptr;
     std::optional<gpu::CommandRunner> runner;
     std::vector<PresetCase> presets;
+    // The visibility pass of the renderers rendererOf makes.
+    gpu::SceneVisibilityPass visibility = gpu::SceneVisibilityPass::Compute;
 };
+
+// What holds for the picture holds whichever visibility pass found the surfaces.
+class EitherVisibilityPass : public GpuSceneRendererTest,
+                             public ::testing::WithParamInterface<gpu::SceneVisibilityPass> {
+protected:
+    void SetUp() override {
+        GpuSceneRendererTest::SetUp();
+        visibility = GetParam();
+    }
+};
+
+INSTANTIATE_TEST_SUITE_P(GpuSceneRenderer, EitherVisibilityPass,
+                         ::testing::Values(gpu::SceneVisibilityPass::Raster,
+                                           gpu::SceneVisibilityPass::Compute),
+                         [](const auto& testInfo) {
+                             return std::string(gpu::describe(testInfo.param));
+                         });
 
 // The raster path's tessellated sphere against the compute path's analytic one, same camera,
 // same material, same light: they differ by tessellation, by where the silhouette is sampled
 // (4 samples at the standard multisample positions against a 2 x 2 grid) and by interpolated
 // texture coordinates. Inside the silhouette both shade each pixel at its centre.
-TEST_F(GpuSceneRendererTest, SphereMatchesTheComputeSphereRender) {
+TEST_P(EitherVisibilityPass, SphereMatchesTheComputeSphereRender) {
     const Mesh sphere = makeSphereMesh();
     const SceneInstance instance;  // identity: the unit sphere at the origin
     for (const PresetCase& preset : presets) {
@@ -210,7 +253,7 @@ constexpr glm::dvec2 kSamplePositions[4] = {{0.375, 0.125}, {0.875, 0.375}, {0.1
 // sphere (each sample on an edge shared by two triangles belongs to exactly one of them).
 // Samples within the tessellation's reach of the silhouette are not judged. The silhouette's
 // pixels get fractional alpha: they blend the sphere with what lies behind it.
-TEST_F(GpuSceneRendererTest, AlphaIsTheSpheresShareOfEachPixelsSamples) {
+TEST_P(EitherVisibilityPass, AlphaIsTheSpheresShareOfEachPixelsSamples) {
     const int size = 256;
     const SceneCamera camera{{0.3, 0.5, 3.2}, glm::dvec3(0.0), 40.0};
     const std::optional<Image> image = renderOneInstance(makeSphereMesh(), camera, size);
@@ -242,7 +285,7 @@ TEST_F(GpuSceneRendererTest, AlphaIsTheSpheresShareOfEachPixelsSamples) {
 // either. A pixel whose samples' rays all pass well inside the facets' reach (0.95 of the
 // radius: every facet plane of this sphere lies farther than that from its centre) is covered,
 // one whose samples all miss the unit sphere is not.
-TEST_F(GpuSceneRendererTest, LargeTrianglesLeaveNoCrackEither) {
+TEST_P(EitherVisibilityPass, LargeTrianglesLeaveNoCrackEither) {
     const int size = 256;
     const SceneCamera camera{{0.4, 0.6, 2.0}, glm::dvec3(0.0), 60.0};
     const std::optional<Image> image = renderOneInstance(makeSphereMesh(16, 8), camera, size);
@@ -272,7 +315,7 @@ TEST_F(GpuSceneRendererTest, LargeTrianglesLeaveNoCrackEither) {
 // samples: rendering again with the far sphere wearing the near one's material changes
 // exactly the pixels some of whose samples see the far sphere, and none of the pixels whose
 // samples all see the near one.
-TEST_F(GpuSceneRendererTest, AnEdgeOverAnotherInstanceBlendsTheTwoSurfaces) {
+TEST_P(EitherVisibilityPass, AnEdgeOverAnotherInstanceBlendsTheTwoSurfaces) {
     const std::vector<MaterialInstance> materials = {presets[0].material, presets[2].material};
     auto raster = rendererOf(makeSphereMesh(), materials);
     ASSERT_TRUE(raster);
@@ -332,14 +375,9 @@ TEST_F(GpuSceneRendererTest, AnEdgeOverAnotherInstanceBlendsTheTwoSurfaces) {
 // value for value, for a crowd seen from afar and for a camera among the instances (whose
 // nearest triangles cross the near plane).
 TEST_F(GpuSceneRendererTest, ClusterCullingChangesNoPixel) {
-    auto environment = smallStudio();
-    ASSERT_TRUE(environment.ok());
-    SceneTextures textures = presets[1].textures;  // the base-colour texture
-    textures.environment = *environment;
-    SceneSettings scene = presets[1].scene;
-    scene.mode = SceneMode::Environment;
-    std::vector<MaterialInstance> materials;
-    for (const PresetCase& preset : presets) materials.push_back(preset.material);
+    const std::optional<StudioLook> look = studioLook();
+    ASSERT_TRUE(look);
+    const auto& [textures, scene, materials] = *look;
     auto raster = rendererOf(makeShaderBallMesh(), materials, textures);
     ASSERT_TRUE(raster);
     const std::vector<SceneInstance> instances = layoutInstances(12, InstanceLayout::Crowd, 3);
@@ -368,9 +406,84 @@ TEST_F(GpuSceneRendererTest, ClusterCullingChangesNoPixel) {
     }
 }
 
+// The two visibility passes find the same surfaces, so they give the same picture: for a crowd
+// of shader balls seen from afar and from among them (triangles crossing the near plane), and
+// for the sphere close up. A pixel may differ only where one of its samples lies exactly on an
+// edge (each pass gives such a sample to one of the two triangles, by its own rule) or where
+// two surfaces are equally near within rounding (the passes interpolate depth differently).
+TEST_F(GpuSceneRendererTest, RasterAndComputeVisibilityGiveTheSamePicture) {
+    const std::optional<StudioLook> look = studioLook();
+    ASSERT_TRUE(look);
+    const auto& [textures, scene, materials] = *look;
+    const std::vector<SceneInstance> crowd = layoutInstances(12, InstanceLayout::Crowd, 3);
+    const SceneInstance single;
+    struct Case {
+        const char* what;
+        Mesh mesh;
+        std::span<const SceneInstance> instances;
+        SceneCamera camera;
+    };
+    const Case cases[] = {
+        {"a crowd of shader balls", makeShaderBallMesh(), crowd,
+         frameInstances(crowd, 320.0 / 180.0)},
+        {"a camera among them", makeShaderBallMesh(), crowd,
+         orbitCamera(glm::dvec3(crowd[0].transform[3]), 30.0, 10.0, 1.02)},
+        {"the sphere", makeSphereMesh(), std::span(&single, 1),
+         SceneCamera{{0.3, 0.5, 3.2}, glm::dvec3(0.0), 40.0}},
+    };
+    for (const Case& sceneCase : cases) {
+        const gpu::SceneFrame frame{320, 180, sceneCase.camera, sceneCase.instances};
+        std::optional<Image> images[2];
+        int pass = 0;
+        for (gpu::SceneVisibilityPass kind :
+             {gpu::SceneVisibilityPass::Raster, gpu::SceneVisibilityPass::Compute}) {
+            visibility = kind;
+            auto renderer = rendererOf(sceneCase.mesh, materials, textures);
+            ASSERT_TRUE(renderer);
+            auto image = renderer->render(*runner, frame, scene);
+            ASSERT_TRUE(image.ok()) << image.error().message;
+            images[pass++] = std::move(image).value();
+        }
+        const Image& raster = *images[0];
+        const Image& compute = *images[1];
+        auto difference = compareImages(compute, raster);
+        ASSERT_TRUE(difference.ok()) << difference.error().message;
+        std::size_t covered = 0, differing = 0;
+        double alphaDifference = 0.0;
+        for (std::size_t p = 0; p < raster.rgba.size() / 4; ++p) {
+            covered += compute.rgba[4 * p + 3] > 0.0f ? 1 : 0;
+            bool same = true;
+            for (std::size_t c = 0; c < 4; ++c)
+                same = same && raster.rgba[4 * p + c] == compute.rgba[4 * p + c];
+            differing += same ? 0 : 1;
+            alphaDifference += std::abs(raster.rgba[4 * p + 3] - compute.rgba[4 * p + 3]);
+        }
+        const double meanAlphaDifference = alphaDifference / double(covered);
+        std::printf("%s: raster vs compute visibility, %zu covered pixels, %zu differ; mean "
+                    "dE00 %.5f, largest %.3f; mean alpha difference %.6f\n",
+                    sceneCase.what, covered, differing, difference->stats.mean,
+                    difference->stats.max, meanAlphaDifference);
+        EXPECT_GT(covered, std::size_t(3000)) << sceneCase.what;
+        EXPECT_LE(difference->stats.mean, 0.02) << sceneCase.what;
+        EXPECT_LE(meanAlphaDifference, 0.002) << sceneCase.what;
+        EXPECT_LE(double(differing), 0.01 * double(covered)) << sceneCase.what;
+    }
+}
+
+// Unless told otherwise, the renderer runs the compute pass on a CPU device (lavapipe) and the
+// fixed-function one on a GPU.
+TEST_F(GpuSceneRendererTest, AutoPicksTheVisibilityPassByTheDevicesType) {
+    auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
+                                                  {}, makeSphereMesh(16, 8));
+    ASSERT_TRUE(renderer.ok()) << renderer.error().message;
+    EXPECT_EQ(renderer->visibilityPass(), context->device.isCpu()
+                                              ? gpu::SceneVisibilityPass::Compute
+                                              : gpu::SceneVisibilityPass::Raster);
+}
+
 // Instances wear their own materials: rendering the same row of instances with material 1
 // replaced by material 0 changes the middle instance only.
-TEST_F(GpuSceneRendererTest, InstancesWearTheirOwnMaterials) {
+TEST_P(EitherVisibilityPass, InstancesWearTheirOwnMaterials) {
     const std::vector<MaterialInstance> twoMaterials = {presets[0].material, presets[1].material};
     auto raster = rendererOf(makeSphereMesh(64, 32), twoMaterials);
     ASSERT_TRUE(raster);
@@ -437,7 +550,7 @@ TEST_F(GpuSceneRendererTest, StudioLightingMatchesTheCpuReferenceOnTheSphere) {
 // The display pass (backdrop, exposure, tone map on the GPU, what the editor's Scene window
 // samples) against its CPU twin applied to the linear render of the same frame, silhouettes'
 // partly covered pixels included.
-TEST_F(GpuSceneRendererTest, DisplayPassMatchesTheCpuBackdropAndToneMap) {
+TEST_P(EitherVisibilityPass, DisplayPassMatchesTheCpuBackdropAndToneMap) {
     auto environment = smallStudio();
     ASSERT_TRUE(environment.ok());
     SceneTextures textures;

@@ -130,6 +130,27 @@ TEST_F(SceneCommand, EachVariantFileWearsItsOwnKappa) {
     EXPECT_NE(refused.err.find("family"), std::string::npos) << refused.err;
 }
 
+// Either visibility pass, asked for by name, draws the same crowd (headless, validation on).
+TEST_F(SceneCommand, RasterAndComputeVisibilityDrawTheSameCrowd) {
+    Image images[2];
+    int index = 0;
+    for (const std::string pass : {"raster", "compute"}) {
+        const auto file = folder / (pass + ".exr");
+        const auto result = scene("--mesh shaderball --instances 6 --layout crowd --size 192x108 "
+                                  "--env ambient --visibility " + pass + " --out '" + file.string() + "'");
+        ASSERT_EQ(result.exitCode, 0) << result.err;
+        EXPECT_EQ(result.err, "") << "validation and everything else silent";
+        EXPECT_NE(result.out.find(pass + " visibility pass"), std::string::npos) << result.out;
+        auto image = readImage(file);
+        ASSERT_TRUE(image.ok()) << image.error().message;
+        images[index++] = std::move(image).value();
+    }
+    auto difference = compareImages(images[0], images[1]);
+    ASSERT_TRUE(difference.ok()) << difference.error().message;
+    EXPECT_GT(difference->stats.pixels, std::size_t(1000)) << "the crowd is in view";
+    EXPECT_LT(difference->stats.mean, 0.02);
+}
+
 TEST_F(SceneCommand, StudioCrowdIsOpaqueAndToneMapped) {
     const auto result = scene("--mesh knot --instances 5 --layout crowd --size 128x72 --out '" +
                               (folder / "crowd.png").string() + "'");
@@ -154,6 +175,7 @@ TEST_F(SceneCommand, BadInputIsOneLineNamingTheProblem) {
         {"--env '" + (folder / "missing.hdr").string() + "'", "missing.hdr"},
         {"--layout spiral", "--layout: expected grid or crowd"},
         {"--size 100", "--size: expected WxH"},
+        {"--visibility hardware", "--visibility: expected auto, raster or compute, got hardware"},
     };
     for (const auto& [arguments, expected] : cases) {
         const auto result = scene(arguments + " --out '" + (folder / "x.png").string() + "'");
