@@ -174,7 +174,8 @@ bool DrawDataSnapshot::samePrimitive(const List& list, const Primitive& primitiv
         return false;
     for (unsigned corner = 0; corner < 3; ++corner) {
         const ImDrawVert a = vertex(list, command, 3 * primitive.triangle + corner);
-        const ImDrawVert b = other.vertex(otherList, otherCommand, 3 * otherPrimitive.triangle + corner);
+        const ImDrawVert b =
+            other.vertex(otherList, otherCommand, 3 * otherPrimitive.triangle + corner);
         if (std::memcmp(&a, &b, sizeof a) != 0) return false;
     }
     return true;

@@ -338,7 +338,7 @@ int EditorApp::run() {
         const bool firstResult = resultWaiting && display_->shownJob() != submittedJob_;
         const bool progressDue =
             running && (firstResult ||
-                            std::chrono::steady_clock::now() - lastDrawn >= kProgressInterval);
+                        std::chrono::steady_clock::now() - lastDrawn >= kProgressInterval);
         if (!due && !progressDue && framesToSettle == 0) continue;  // draw nothing now
         framesToSettle = std::max(0, framesToSettle - 1);
         if (script_.idling()) timings_.frameWhileScriptIdle();

@@ -74,10 +74,10 @@ TEST(SequenceDiff, BeyondTheWindowTheRestUpToTheCommonTailIsOneHunk) {
 TEST(SequenceDiff, ScatteredChangesRebuildTheNewSequence) {
     // Every hunk list must rebuild the new sequence, whatever it pairs up.
     const std::string before = "the quick brown fox jumps over the lazy dog, twice or thrice";
-    for (const std::string& after : std::vector<std::string>{
-             "the quick red fox jumped over a lazy dog, twice or thrice",
-          "a slow brown fox jumps over the lazy cat, once",
-          "", "the quick brown fox", "x" + before + "y"}) {
+    for (const std::string& after :
+         std::vector<std::string>{"the quick red fox jumped over a lazy dog, twice or thrice",
+                                  "a slow brown fox jumps over the lazy cat, once", "",
+                                  "the quick brown fox", "x" + before + "y"}) {
         EXPECT_EQ(apply(before, after, diff(before, after)), after);
         EXPECT_EQ(apply(before, after, diff(before, after, 2)), after);
     }
