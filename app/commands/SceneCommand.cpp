@@ -43,9 +43,9 @@ constexpr const char* kHelp =
     "                 default) or none\n"
     "  --size WxH     image size (default 1280x720); --seed S the crowd's layout (default 1)\n"
     "  --visibility V which pass finds each sample's nearest surface, the same picture either\n"
-    "                 way: raster (fixed-function, depth buffer, 4x MSAA; fast on a GPU),\n"
-    "                 compute (a compute-shader rasteriser; fast on a CPU device such as\n"
-    "                 lavapipe) or auto, by the device's type (default)\n"
+    "                 way: raster (fixed-function: depth buffer, 4x MSAA; meant for a GPU),\n"
+    "                 compute (a compute-shader rasteriser; measured faster on a CPU device\n"
+    "                 such as lavapipe) or auto, by the device's type (default)\n"
     "PNG is sRGB 8-bit after exposure and tone mapping; EXR is linear, before them.\n";
 
 // The variants as materials of the preset's family, each with its own kappa (hue variety); a

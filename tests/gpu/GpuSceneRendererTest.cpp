@@ -203,10 +203,10 @@ TEST_P(EitherVisibilityPass, SphereMatchesTheComputeSphereRender) {
             }
         ASSERT_GT(interior, std::size_t(kImageSize * kImageSize / 3));
         EXPECT_LE(interiorSum / double(interior), 0.05) << preset.name;
-        std::printf("%s: raster vs compute sphere, mean dE00 %.3f, p95 %.3f; inside the "
-                    "silhouette %.4f\n",
-                    preset.name.c_str(), difference->stats.mean, difference->stats.p95,
-                    interiorSum / double(interior));
+        std::printf("%s: scene renderer (%s visibility pass) vs compute sphere, mean dE00 "
+                    "%.3f, p95 %.3f; inside the silhouette %.4f\n",
+                    preset.name.c_str(), gpu::describe(visibility), difference->stats.mean,
+                    difference->stats.p95, interiorSum / double(interior));
     }
 }
 
@@ -468,6 +468,30 @@ TEST_F(GpuSceneRendererTest, RasterAndComputeVisibilityGiveTheSamePicture) {
         EXPECT_LE(meanAlphaDifference, 0.002) << sceneCase.what;
         EXPECT_LE(double(differing), 0.01 * double(covered)) << sceneCase.what;
     }
+}
+
+// A frame with no instance in view (all behind the camera) is drawn, clear, and the next frame
+// with the instance in view shows it: neither pass leaves a stale surface behind.
+TEST_P(EitherVisibilityPass, AFrameWithNothingInViewIsClear) {
+    auto renderer = rendererOf(makeSphereMesh(32, 16), std::span(&presets[0].material, 1));
+    ASSERT_TRUE(renderer);
+    const SceneInstance instance;
+    const SceneCamera facingIt{{0.0, 0.0, 3.0}, glm::dvec3(0.0), 40.0};
+    const SceneCamera facingAway{{0.0, 0.0, 3.0}, glm::dvec3(0.0, 0.0, 6.0), 40.0};
+    const auto coveredPixels = [&](const SceneCamera& camera) {
+        auto image = renderer->render(*runner, {64, 64, camera, std::span(&instance, 1)},
+                                      paperLight(presets[0].scene));
+        EXPECT_TRUE(image.ok()) << image.error().message;
+        std::size_t covered = 0;
+        if (image.ok())
+            for (std::size_t p = 0; p < image->pixelCount(); ++p)
+                covered += image->rgba[4 * p + 3] > 0.0f ? 1 : 0;
+        return covered;
+    };
+    EXPECT_GT(coveredPixels(facingIt), std::size_t(500));
+    EXPECT_EQ(coveredPixels(facingAway), 0u);
+    EXPECT_EQ(renderer->trianglesSubmitted(), 0u);
+    EXPECT_GT(coveredPixels(facingIt), std::size_t(500));
 }
 
 // Unless told otherwise, the renderer runs the compute pass on a CPU device (lavapipe) and the
