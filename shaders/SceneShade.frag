@@ -22,7 +22,8 @@
 // leaves as soon as every pixel of a SIMD vector is done.
 layout(constant_id = 0) const bool kTextured = false;
 layout(constant_id = 1) const bool kEnvironmentLit = false;
-layout(std430, binding = 2) readonly buffer LobeTables { vec4 lobeEntries[]; };
+layout(binding = 2) uniform samplerBuffer lobeEntries;        // LobeTable.glsl
+layout(binding = 3) uniform usamplerBuffer materialRecords;  // LobeTable.glsl
 #include "BelcourBsdf.glsl"
 #include "LobeTable.glsl"
 #include "SceneFrame.glsl"
@@ -31,7 +32,6 @@ layout(std430, binding = 2) readonly buffer LobeTables { vec4 lobeEntries[]; };
 #define SCENE_CLUSTERS 10
 #include "SceneVisibility.glsl"
 
-layout(std430, binding = 3) readonly buffer Materials { Material materials[]; };
 // Per instance, 5 texels: its transform (object to world: rotation, uniform scale,
 // translation; 4 columns), then x: its material.
 layout(binding = 0) uniform samplerBuffer instanceTexels;
@@ -115,7 +115,7 @@ vec3 shadeSurface(uint payload, vec2 position) {
                                  kEnvironmentLit ? frame.ambient.w : 0.0);
     vec2 environmentUv = kEnvironmentLit ? latLongUv(reflect(-toViewer, normal)) : vec2(0.0);
     ShadingPoint point = shadingPoint(normal, toViewer, lighting.toLight, environmentUv);
-    LobeSet lobes = lobesAt(materials[materialIndex], point.cosView, roughnessTexel, baseColor);
+    LobeSet lobes = lobesAt(materialAt(materialIndex), point.cosView, roughnessTexel, baseColor);
     return shadeLobes(lobes, point, lighting);
 }
 

@@ -1,5 +1,5 @@
 #version 450
-// The scene's fixed-function visibility pass, vertex stage (core/gpu/RasterVisibilityPass.h):
+// The scene's fixed-function visibility pass, vertex stage (core/gpu/SceneRasterVisibility.h):
 // one instanced draw of the mesh, one instance per instance in view.
 layout(location = 0) in vec3 position;
 

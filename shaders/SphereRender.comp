@@ -22,16 +22,16 @@ layout(constant_id = 0) const bool kTextured = false;        // roughness / base
 layout(constant_id = 1) const bool kEnvironmentLit = false;  // the prefiltered environment
 layout(constant_id = 2) const uint kMaxPoints = 1;           // points per pixel in this dispatch
 
-layout(std430, binding = 5) readonly buffer LobeTables { vec4 lobeEntries[]; };
+layout(binding = 5) uniform samplerBuffer lobeEntries;        // LobeTable.glsl
+layout(binding = 0) uniform usamplerBuffer materialRecords;  // LobeTable.glsl
 #include "BelcourBsdf.glsl"
 #include "LobeTable.glsl"
 
-layout(std430, binding = 0) readonly buffer Materials { Material materials[]; };
 layout(std430, binding = 1) writeonly buffer Renders { vec4 renderPixels[]; };
 layout(binding = 2) uniform sampler2D roughnessTexture;  // 1x1 white when absent
 layout(binding = 3) uniform sampler2D baseColorTexture;  // 1x1 white when absent
 
-layout(std430, binding = 4) readonly buffer Scene {
+layout(std140, binding = 4) uniform Scene {
     vec4 toLight;
     vec4 lightRadiance;
     vec4 environmentRadiance;  // w: roughness levels of environmentMap
@@ -47,38 +47,41 @@ layout(push_constant) uniform Dispatch {
 layout(binding = 6) uniform sampler3D environmentMap;
 
 // Per covered pixel: pixel index, first point, point count, coverage (float bits).
-layout(std430, binding = 7) readonly buffer CoveredPixels { uvec4 coveredPixels[]; };
-// Per point: normal, direction to the viewer, (texture UV, environment UV).
-layout(std430, binding = 8) readonly buffer Points { vec4 pointData[]; };
+layout(binding = 7) uniform usamplerBuffer coveredPixels;
+// Per point, three texels: normal, direction to the viewer, (texture UV, environment UV).
+layout(binding = 8) uniform samplerBuffer pointData;
 
 #include "SceneLighting.glsl"
 
 #ifdef COMPARE_WITH_TARGET
 // Per pixel of one image: the target's L*a*b* and its alpha.
-layout(std430, binding = 9) readonly buffer TargetLab { vec4 targetLab[]; };
+layout(binding = 9) uniform samplerBuffer targetLab;
 layout(std430, binding = 10) writeonly buffer DeltaE { float deltaE[]; };
 layout(std430, binding = 11) writeonly buffer Heatmap { vec4 heatmapPixels[]; };
-layout(std430, binding = 12) readonly buffer Colormap { vec4 colormap[256]; };
+layout(binding = 12) uniform samplerBuffer colormap;  // 256 entries
 #include "LinearSrgbToLab.glsl"
 #include "Ciede2000.glsl"
 
 // Pixels covered in the target and the candidate (alpha >= 0.5, core/color/Coverage.h) get
 // their ΔE00; the others -1 and a transparent heatmap, as the ΔE00 pass writes them.
 void compareWithTarget(uint index, uint pixel, vec4 candidate) {
-    vec4 target = targetLab[pixel];
+    vec4 target = texelFetch(targetLab, int(pixel));
     bool covered = target.a >= 0.5 && candidate.a >= 0.5;
     float difference = ciede2000(target.xyz, linearSrgbToLab(candidate.rgb));
     deltaE[index] = covered ? difference : -1.0;
     heatmapPixels[index] =
-        covered ? colormap[colormapEntry(difference, dispatch.minDeltaE, dispatch.maxDeltaE)]
+        covered ? texelFetch(colormap,
+                             int(colormapEntry(difference, dispatch.minDeltaE, dispatch.maxDeltaE)))
                 : vec4(0.0);
 }
 #endif
 
 vec3 shade(Material material, uint point, Lighting lighting) {
-    vec3 normal = pointData[3u * point].xyz;
-    vec3 toViewer = pointData[3u * point + 1u].xyz;
-    vec4 uvs = pointData[3u * point + 2u];
+    int texel = int(3u * point);
+    vec3 normal = texelFetch(pointData, texel).xyz;
+    vec3 toViewer = texelFetch(pointData, texel + 1).xyz;
+    // Texture and environment UVs, read only when the scene has either.
+    vec4 uvs = kTextured || kEnvironmentLit ? texelFetch(pointData, texel + 2) : vec4(0.0);
     float roughnessTexel = 1.0;
     vec3 baseColor = vec3(1.0);
     if (kTextured) {
@@ -91,12 +94,12 @@ vec3 shade(Material material, uint point, Lighting lighting) {
 }
 
 void main() {
-    if (gl_GlobalInvocationID.x >= dispatch.pixelCount) return;
-    uvec4 pixel = coveredPixels[dispatch.firstPixel + gl_GlobalInvocationID.x];
-    Material material = materials[gl_GlobalInvocationID.y];
+    Material material = materialAt(gl_WorkGroupID.y);
     Lighting lighting = Lighting(scene.toLight.xyz, scene.lightRadiance.rgb,
                                  scene.environmentRadiance.rgb,
                                  kEnvironmentLit ? scene.environmentRadiance.w : 0.0);
+    if (gl_GlobalInvocationID.x >= dispatch.pixelCount) return;
+    uvec4 pixel = texelFetch(coveredPixels, int(dispatch.firstPixel + gl_GlobalInvocationID.x));
     vec3 radiance = shade(material, pixel.y, lighting);
     for (uint i = 1u; i < kMaxPoints; ++i) {
         // Lanes with fewer points shade their last one again and drop it.

@@ -57,4 +57,13 @@ Result<UniqueBufferView> createTexelView(const Device& device, const Buffer& buf
     return UniqueBufferView(device.handle(), view);
 }
 
+Result<TexelBuffer> createTexelBuffer(const Device& device, VkDeviceSize size, VkFormat format) {
+    auto buffer = Buffer::create(device, size, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                                 MemoryUse::Upload);
+    if (!buffer) return buffer.error();
+    auto view = createTexelView(device, *buffer, format);
+    if (!view) return view.error();
+    return TexelBuffer{std::move(buffer).value(), std::move(view).value()};
+}
+
 }  // namespace matevo::gpu

@@ -3,6 +3,7 @@
 // buffers are few and large (one per batch), so one allocation each is fine.
 #include <cstddef>
 #include <span>
+#include <utility>
 
 #include "common/Result.h"
 #include "gpu/Device.h"
@@ -40,5 +41,23 @@ private:
 // once, where it loads a storage buffer at a varying index one lane at a time.
 Result<UniqueBufferView> createTexelView(const Device& device, const Buffer& buffer,
                                          VkFormat format);
+
+// A host-written buffer that shaders read as texels of one format, with its view.
+struct TexelBuffer {
+    Buffer buffer;  // declared first so that the view is destroyed before it
+    UniqueBufferView view;
+
+    TexelBuffer() = default;
+    TexelBuffer(Buffer buffer_, UniqueBufferView view_)
+        : buffer(std::move(buffer_)), view(std::move(view_)) {}
+    TexelBuffer(TexelBuffer&&) noexcept = default;
+    // The old view goes before the old buffer, as in destruction.
+    TexelBuffer& operator=(TexelBuffer&& other) noexcept {
+        view = std::move(other.view);
+        buffer = std::move(other.buffer);
+        return *this;
+    }
+};
+Result<TexelBuffer> createTexelBuffer(const Device& device, VkDeviceSize size, VkFormat format);
 
 }  // namespace matevo::gpu

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <optional>
 
+#include "gpu/SubnormalsFlushed.h"
 #include "gpu/VulkanError.h"
 
 namespace matevo::gpu {
@@ -105,6 +106,7 @@ DeviceBuilder& DeviceBuilder::requirePresentTo(VkSurfaceKHR surface) {
 }
 
 Result<Device> DeviceBuilder::build() const {
+    const SubnormalsFlushed subnormalsFlushed;  // for the driver's threads started from here
     uint32_t count = 0;
     if (VkResult result = vkEnumeratePhysicalDevices(instance_, &count, nullptr);
         result != VK_SUCCESS)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <tuple>
 #include <vector>
 
 #include "material/LobeTable.h"
@@ -10,12 +11,12 @@
 namespace matevo::gpu {
 namespace {
 
-// std430 mirror of shaders/LobeTable.glsl's Material.
+// shaders/LobeTable.glsl's Material, one RGBA32UI texel.
 struct GpuMaterial {
     uint32_t firstEntry;  // of its lobe table, in entries
     uint32_t texelNodes;
     uint32_t cosineNodes;
-    uint32_t unused;
+    uint32_t unused;  // the texel's fourth channel
 };
 
 }  // namespace
@@ -37,16 +38,16 @@ Status GpuMaterialTables::upload(const Device& device, const FgdTables& tables,
     const VkDeviceSize materialBytes = gpuMaterials.size() * sizeof(GpuMaterial);
     const VkDeviceSize tableBytes =
         std::max<VkDeviceSize>(entryCount, 1) * LobeTable::kFloatsPerEntry * sizeof(float);
-    for (auto [buffer, bytes] :
-         {std::pair{&materials_, materialBytes}, std::pair{&lobeEntries_, tableBytes}}) {
-        if (buffer->size() >= bytes) continue;
-        auto grown =
-            Buffer::create(device, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+    for (auto [buffer, bytes, format] :
+         {std::tuple{&materials_, materialBytes, VK_FORMAT_R32G32B32A32_UINT},
+          std::tuple{&lobeEntries_, tableBytes, VK_FORMAT_R32G32B32A32_SFLOAT}}) {
+        if (buffer->buffer.size() >= bytes) continue;
+        auto grown = createTexelBuffer(device, bytes, format);
         if (!grown) return grown.error();
         *buffer = std::move(grown).value();
     }
-    std::memcpy(materials_.bytes().data(), gpuMaterials.data(), materialBytes);
-    auto entries = lobeEntries_.as<float>().begin();
+    std::memcpy(materials_.buffer.bytes().data(), gpuMaterials.data(), materialBytes);
+    auto entries = lobeEntries_.buffer.as<float>().begin();
     for (const LobeTable& table : lobeTables)
         entries = std::copy(table.data().begin(), table.data().end(), entries);
     return Ok{};

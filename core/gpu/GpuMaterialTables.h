@@ -20,12 +20,14 @@ public:
     Status upload(const Device& device, const FgdTables& tables,
                   std::span<const MaterialInstance> materials);
 
-    const Buffer& materials() const { return materials_; }
-    const Buffer& lobeEntries() const { return lobeEntries_; }
+    // One RGBA32UI texel per material (a uniform texel buffer).
+    VkBufferView materials() const { return materials_.view.get(); }
+    // Every material's lobe-table entries as RGBA32F texels (a uniform texel buffer).
+    VkBufferView lobeEntries() const { return lobeEntries_.view.get(); }
 
 private:
-    Buffer materials_;
-    Buffer lobeEntries_;
+    TexelBuffer materials_;
+    TexelBuffer lobeEntries_;
 };
 
 }  // namespace matevo::gpu

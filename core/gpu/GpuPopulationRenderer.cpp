@@ -1,5 +1,7 @@
 #include "gpu/GpuPopulationRenderer.h"
 
+#include <cstring>
+
 #include "color/LabImage.h"
 #include "gpu/HeatmapColormap.h"
 #include "material/ParallelFor.h"
@@ -8,12 +10,12 @@ namespace matevo::gpu {
 namespace {
 
 // The image's L*a*b* and alpha per pixel, 4 floats each (the sphere render's TargetLab).
-Result<Buffer> uploadLab(const Device& device, const Image& image) {
+Result<TexelBuffer> uploadLab(const Device& device, const Image& image) {
     const LabImage lab = toLabImage(image);
-    auto buffer = Buffer::create(device, lab.pixelCount() * 4 * sizeof(float),
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+    auto buffer = createTexelBuffer(device, lab.pixelCount() * 4 * sizeof(float),
+                                    VK_FORMAT_R32G32B32A32_SFLOAT);
     if (!buffer) return buffer.error();
-    std::span<float> values = buffer->as<float>();
+    std::span<float> values = buffer->buffer.as<float>();
     for (std::size_t i = 0; i < lab.pixelCount(); ++i) {
         values[4 * i] = lab.lightness[i];
         values[4 * i + 1] = lab.greenRed[i];
@@ -32,8 +34,10 @@ Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
     if (!runner) return runner.error();
     auto renderer = GpuSphereRenderer::create(device, *runner, tables, textures);
     if (!renderer) return renderer.error();
-    auto colormapBuffer = createColormapBuffer(device, colormap);
+    auto colormapBuffer =
+        createTexelBuffer(device, sizeof(colormap), VK_FORMAT_R32G32B32A32_SFLOAT);
     if (!colormapBuffer) return colormapBuffer.error();
+    std::memcpy(colormapBuffer->buffer.bytes().data(), colormap.data(), sizeof(colormap));
     std::unique_ptr<GpuPopulationRenderer> result(new GpuPopulationRenderer);
     result->device_ = &device;
     result->tables_ = &tables;
@@ -144,10 +148,10 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     if (auto ready = ensureBuffers(shape, flip); !ready) return ready.error();
     auto commands = runner_.begin();
     if (!commands) return commands.error();
-    const TargetComparison comparison{&targetLab_,
+    const TargetComparison comparison{targetLab_.view.get(),
                                       &deltaE_,
                                       &heatmaps_,
-                                      &heatmapColormap_,
+                                      heatmapColormap_.view.get(),
                                       float(options.heatmap.minDeltaE),
                                       float(options.heatmap.maxDeltaE)};
     const GpuSphereSamples::Key coverage = GpuSphereSamples::keyOf(scene, size);

@@ -62,12 +62,12 @@ private:
     const FgdTables* tables_ = nullptr;
     CommandRunner runner_;
     GpuSphereRenderer renderer_;
-    Buffer heatmapColormap_;
+    TexelBuffer heatmapColormap_;
     std::optional<FlipPass> flipPass_;  // made when first asked for (lavapipe compiles it then)
     std::optional<TargetKey> targetKey_;
     Image target_;  // the host copy of targetRender_
     Buffer targetRender_;
-    Buffer targetLab_;  // target_ in L*a*b*, with its alpha: what each render compares with
+    TexelBuffer targetLab_;  // target_ in L*a*b*, with its alpha: what each render compares with
     ImageBatchShape bufferShape_;
     // The coverage whose background renders_, deltaE_ and heatmaps_ already hold (the fills
     // are skipped while it stays the same); none after the buffers are made.

@@ -302,7 +302,7 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
     const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     const VkDescriptorType attachment = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
     std::vector<VkDescriptorType> shadingBindings = {
-        texels, storage, storage, storage, sampled, sampled, sampled, raster ? attachment : texels,
+        texels, storage, texels, texels, sampled, sampled, sampled, raster ? attachment : texels,
         texels, texels,  texels};
     if (raster) shadingBindings.push_back(attachment);  // kDepths
     auto descriptors =
@@ -359,8 +359,8 @@ Status GpuSceneRenderer::setMaterials(std::span<const MaterialInstance> material
     if (auto uploaded = materials_.upload(*device_, *tables_, materials); !uploaded)
         return uploaded.error();
     materialCount_ = uint32_t(materials.size());
-    descriptors_.bindBuffer(kMaterials, materials_.materials());
-    descriptors_.bindBuffer(kLobeEntries, materials_.lobeEntries());
+    descriptors_.bindTexelBuffer(kMaterials, materials_.materials());
+    descriptors_.bindTexelBuffer(kLobeEntries, materials_.lobeEntries());
     return Ok{};
 }
 

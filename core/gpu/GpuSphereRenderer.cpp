@@ -17,7 +17,7 @@ namespace {
 
 constexpr uint32_t kWorkgroupSize = 64;  // local_size_x in the shader
 
-// std430 mirror of the shader's Scene block.
+// std140 mirror of the shader's Scene block (three vec4: the same in both layouts).
 struct GpuScene {
     float toLight[4];
     float lightRadiance[4];
@@ -58,7 +58,7 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
     renderer.tables_ = &tables;
     auto uploaded = GpuSceneTextures::create(device, runner, textures);
     if (!uploaded) return uploaded.error();
-    auto sceneBuffer = Buffer::create(device, sizeof(GpuScene), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+    auto sceneBuffer = Buffer::create(device, sizeof(GpuScene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                       MemoryUse::Upload);
     if (!sceneBuffer) return sceneBuffer.error();
 
@@ -67,10 +67,12 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     for (bool compared : {false, true}) {
-        std::vector<VkDescriptorType> bindings = {storage, storage, sampled, sampled, storage,
-                                                  storage, sampled, storage, storage};
+        const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+        const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        std::vector<VkDescriptorType> bindings = {texels, storage, sampled, sampled, uniform,
+                                                  texels, sampled, texels,  texels};
         // The target's L*a*b*, the ΔE00 maps, the heatmaps and the colour map.
-        if (compared) bindings.insert(bindings.end(), {storage, storage, storage, storage});
+        if (compared) bindings.insert(bindings.end(), {texels, storage, storage, texels});
         // One pipeline for the pixels of one point, one for the silhouette's of several.
         for (bool silhouette : {false, true}) {
             const uint32_t specialization[] = {
@@ -118,17 +120,17 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
     for (auto [silhouettePixels, first, count] :
          {std::tuple{false, 0u, singlePoint}, std::tuple{true, singlePoint, silhouette}}) {
         const ComputeKernel& kernel = kernels_[comparison != nullptr][silhouettePixels];
-        kernel.bindBuffer(0, materials_.materials());
+        kernel.descriptors().bindTexelBuffer(0, materials_.materials());
         kernel.bindBuffer(1, renders);
-        kernel.bindBuffer(5, materials_.lobeEntries());
-        kernel.bindBuffer(7, samples_.pixels());
-        kernel.bindBuffer(8, samples_.points());
+        kernel.descriptors().bindTexelBuffer(5, materials_.lobeEntries());
+        kernel.descriptors().bindTexelBuffer(7, samples_.pixels());
+        kernel.descriptors().bindTexelBuffer(8, samples_.points());
         PushConstants constants{shape.pixelCount(), first, count, 0.0f, 0.0f};
         if (comparison) {
-            kernel.bindBuffer(9, *comparison->targetLab);
+            kernel.descriptors().bindTexelBuffer(9, comparison->targetLab);
             kernel.bindBuffer(10, *comparison->deltaE);
             kernel.bindBuffer(11, *comparison->heatmaps);
-            kernel.bindBuffer(12, *comparison->colormap);
+            kernel.descriptors().bindTexelBuffer(12, comparison->colormap);
             constants.minDeltaE = comparison->minDeltaE;
             constants.maxDeltaE = comparison->maxDeltaE;
         }

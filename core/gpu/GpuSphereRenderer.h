@@ -26,10 +26,10 @@ namespace matevo::gpu {
 // What a render compares each candidate with as it shades it (the ΔE00 pass's output, fused
 // into the render): buffers in ImageBatch layout of the render's shape.
 struct TargetComparison {
-    const Buffer* targetLab = nullptr;  // per pixel of one image: L*, a*, b*, alpha (4 floats)
+    VkBufferView targetLab = VK_NULL_HANDLE;  // RGBA32F per pixel of one image: L*, a*, b*, alpha
     const Buffer* deltaE = nullptr;     // 1 float per pixel, -1 where not covered in both
     const Buffer* heatmaps = nullptr;   // RGBA per pixel, transparent where not covered in both
-    const Buffer* colormap = nullptr;   // 256 linear RGBA entries
+    VkBufferView colormap = VK_NULL_HANDLE;   // 256 linear RGBA32F entries
     float minDeltaE = 0.0f;             // maps to the first colormap entry
     float maxDeltaE = 10.0f;            // maps to the last
 };

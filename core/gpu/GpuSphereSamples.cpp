@@ -14,7 +14,7 @@
 namespace matevo::gpu {
 namespace {
 
-// std430 mirrors of shaders/SphereRender.comp's records.
+// shaders/SphereRender.comp's texels: one RGBA32UI per pixel, three RGBA32F per point.
 struct GpuPixel {
     uint32_t pixel;  // y * size + x
     uint32_t firstPoint;
@@ -28,11 +28,11 @@ struct GpuPoint {
     float uvs[4];  // texture UV, environment UV
 };
 
-Result<Buffer> uploadRecords(const Device& device, const void* records, std::size_t bytes) {
-    auto buffer = Buffer::create(device, std::max<std::size_t>(bytes, 16),
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload);
+Result<TexelBuffer> uploadRecords(const Device& device, const void* records, std::size_t bytes,
+                                  VkFormat format) {
+    auto buffer = createTexelBuffer(device, std::max<std::size_t>(bytes, 16), format);
     if (!buffer) return buffer.error();
-    std::memcpy(buffer->bytes().data(), records, bytes);
+    std::memcpy(buffer->buffer.bytes().data(), records, bytes);
     return buffer;
 }
 
@@ -62,9 +62,11 @@ Status GpuSphereSamples::prepare(const Device& device, const SceneSettings& scen
                           {float(textureUv[0]), float(textureUv[1]), float(environmentUv.x),
                            float(environmentUv.y)}});
     }
-    auto pixelBuffer = uploadRecords(device, pixels.data(), pixels.size() * sizeof(GpuPixel));
+    auto pixelBuffer = uploadRecords(device, pixels.data(), pixels.size() * sizeof(GpuPixel),
+                                     VK_FORMAT_R32G32B32A32_UINT);
     if (!pixelBuffer) return pixelBuffer.error();
-    auto pointBuffer = uploadRecords(device, points.data(), points.size() * sizeof(GpuPoint));
+    auto pointBuffer = uploadRecords(device, points.data(), points.size() * sizeof(GpuPoint),
+                                     VK_FORMAT_R32G32B32A32_SFLOAT);
     if (!pointBuffer) return pointBuffer.error();
     pixels_ = std::move(pixelBuffer).value();
     points_ = std::move(pointBuffer).value();

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "gpu/SubnormalsFlushed.h"
 #include "gpu/VulkanError.h"
 
 namespace matevo::gpu {
@@ -83,6 +84,7 @@ InstanceBuilder& InstanceBuilder::printMessages(bool print) {
 }
 
 Result<Instance> InstanceBuilder::build() const {
+    const SubnormalsFlushed subnormalsFlushed;  // for the driver's threads started from here
     uint32_t loaderVersion = 0;
     if (vkEnumerateInstanceVersion(&loaderVersion) != VK_SUCCESS ||
         loaderVersion < VK_API_VERSION_1_2)
