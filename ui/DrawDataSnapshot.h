@@ -4,7 +4,7 @@
 // and whatever else the caller says changes the picture (e.g. a heatmap range applied by the
 // renderer). Two equal snapshots draw the same pixels as long as each texture id keeps its
 // contents. On lavapipe every pixel drawn costs: a frame equal to the one on screen need not
-// be drawn at all, and one that differs only in some windows need only redraw their area.
+// be drawn at all, and one that differs only in some triangles need only redraw their area.
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -26,25 +26,52 @@ public:
         return !bytes_.empty() && bytes_ == other.bytes_;
     }
     // The framebuffer pixels that may differ between `before`'s picture and this one, as
-    // disjoint rectangles (none: nothing changed): the area of every draw list that changed, in
-    // the old and the new frame (where its vertices lie within its commands' scissors); the
-    // whole framebuffer when the display, the extra bytes or the framebuffer scale changed, or
-    // `before` is empty.
+    // disjoint rectangles (none: nothing changed): in each draw list, where the triangles that
+    // differ lie in the old and the new frame (within their commands' scissors; the triangles
+    // both frames draw in the same order need no redraw, wherever they sit in the buffers); a
+    // list that only one frame has, where it draws; the whole framebuffer when the display, the
+    // extra bytes or the framebuffer scale changed, or `before` is empty.
     std::vector<PixelArea> changedSince(const DrawDataSnapshot& before) const;
     PixelArea whole() const { return whole_; }
 
 private:
+    struct Command {
+        ImVec4 clipRect;
+        ImTextureID texture;
+        ImDrawCallback callback;
+        void* callbackData;
+        unsigned vertexOffset, indexOffset, elementCount;
+        PixelArea scissor;
+    };
     struct List {
         std::size_t begin, end;  // its bytes
         PixelArea area;          // where it draws
+        std::size_t firstCommand, commandCount;  // in commands_
+        std::size_t vertices, indices;           // where its buffers start in bytes_
+    };
+    // A triangle of a list (or a callback, which draws nothing itself), in drawing order.
+    struct Primitive {
+        std::size_t command;  // in commands_
+        unsigned triangle;    // within the command
     };
     template <typename T>
     void append(const T& value);
     void appendBytes(const void* data, std::size_t size);
+    std::vector<Primitive> primitives(const List& list) const;
+    ImDrawVert vertex(const List& list, const Command& command, unsigned element) const;
+    bool samePrimitive(const List& list, const Primitive& primitive,
+                       const DrawDataSnapshot& other, const List& otherList,
+                       const Primitive& otherPrimitive) const;
+    PixelArea primitiveArea(const List& list, const Primitive& primitive) const;
+    // Where the triangles of `list` differ from those of `before`'s `beforeList`.
+    std::vector<PixelArea> changedAreas(const List& list, const DrawDataSnapshot& before,
+                                        const List& beforeList) const;
 
     std::vector<std::byte> bytes_;  // reused: a frame's snapshot is some 100 kB
     std::size_t headerEnd_ = 0;     // the display and the extra bytes
     std::vector<List> lists_;
+    std::vector<Command> commands_;
+    ImVec2 origin_;  // the display position
     PixelArea whole_;
     bool unitScale_ = false;  // areas are exact only at one framebuffer pixel per display unit
 };

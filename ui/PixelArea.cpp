@@ -17,6 +17,45 @@ PixelArea unite(const PixelArea& a, const PixelArea& b) {
             std::max(a.y1, b.y1)};
 }
 
+namespace {
+
+long long pixels(const PixelArea& area) {
+    return area.empty() ? 0 : (long long)(area.x1 - area.x0) * (area.y1 - area.y0);
+}
+
+// Replaces the two areas whose enclosing rectangle adds the fewest pixels by that rectangle,
+// grown over any other area it meets (so the set stays disjoint): one area fewer at least.
+void mergeClosestPair(std::vector<PixelArea>& areas) {
+    std::size_t first = 0, second = 1;
+    long long leastAdded = -1;
+    for (std::size_t i = 0; i < areas.size(); ++i)
+        for (std::size_t j = i + 1; j < areas.size(); ++j) {
+            const long long added =
+                pixels(unite(areas[i], areas[j])) - pixels(areas[i]) - pixels(areas[j]);
+            if (leastAdded < 0 || added < leastAdded) {
+                leastAdded = added;
+                first = i;
+                second = j;
+            }
+        }
+    PixelArea merged = unite(areas[first], areas[second]);
+    areas.erase(areas.begin() + std::ptrdiff_t(second));
+    areas.erase(areas.begin() + std::ptrdiff_t(first));
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (std::size_t i = 0; i < areas.size(); ++i) {
+            if (intersect(areas[i], merged).empty()) continue;
+            merged = unite(merged, areas[i]);
+            areas.erase(areas.begin() + std::ptrdiff_t(i));
+            grew = true;
+            break;
+        }
+    }
+    areas.push_back(merged);
+}
+
+}  // namespace
+
 void addDisjoint(std::vector<PixelArea>& areas, const PixelArea& area) {
     // What is left of `area` once each held rectangle is taken out: at most four strips (above,
     // below, left, right of the held one) per piece.
@@ -41,11 +80,7 @@ void addDisjoint(std::vector<PixelArea>& areas, const PixelArea& area) {
         pieces = std::move(left);
     }
     areas.insert(areas.end(), pieces.begin(), pieces.end());
-    if (areas.size() > kMaxDisjointAreas) {
-        PixelArea all;
-        for (const PixelArea& held : areas) all = unite(all, held);
-        areas.assign(1, all);
-    }
+    while (areas.size() > kMaxDisjointAreas) mergeClosestPair(areas);
 }
 
 }  // namespace matevo::ui

@@ -18,7 +18,8 @@ PixelArea intersect(const PixelArea& a, const PixelArea& b);  // empty when they
 PixelArea unite(const PixelArea& a, const PixelArea& b);      // the smallest area holding both
 
 // Adds the pixels of `area` that `areas` (disjoint) does not hold yet, as disjoint rectangles.
-// Past `kMaxDisjointAreas` rectangles the set becomes the one rectangle holding them all.
+// Past `kMaxDisjointAreas` rectangles, the nearest ones are merged into the rectangles holding
+// them (those that add the fewest pixels first), so the set may cover a few more pixels.
 inline constexpr std::size_t kMaxDisjointAreas = 24;
 void addDisjoint(std::vector<PixelArea>& areas, const PixelArea& area);
 

@@ -137,11 +137,14 @@ private:
     void handleVariantsActions(const ui::VariantsActions& actions);
     void showShownVariants();
     void applySceneView();
-    void submitChangesToWorker();
+    // Starts a GA job when the preset changed; `changed`: the start of the frame that showed
+    // the change.
+    void submitChangesToWorker(const EditorTimings::Mark& changed);
     void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
     std::filesystem::path nextSnapshotPath() const;
     bool shouldQuit() const;
-    bool workersBusy() const;
+    // A job is queued or running (an ended one's last result may still wait to be shown).
+    bool jobsRunning() const;
 
     EditorOptions options_;
     std::string iniPath_;
@@ -282,8 +285,8 @@ EditorApp::~EditorApp() {
     (void)renderer_->waitIdle();  // frames in flight use the images released below
 }
 
-bool EditorApp::workersBusy() const {
-    return worker_->busy() || compareWorker_->busy() || variantsWorker_->busy() ||
+bool EditorApp::jobsRunning() const {
+    return worker_->running() || compareWorker_->busy() || variantsWorker_->busy() ||
            exportWorker_->busy();
 }
 
@@ -312,7 +315,7 @@ int EditorApp::run() {
             (script_.waitingForEvolution() ? script_.awaitedWorkSettled(scriptSettled())
                                            : !script_.idling() || script_.idleOver());
         const bool due = screenshotPath || scriptDue || input_->hasPending() || framesToSettle > 0;
-        const bool busy = workersBusy();
+        const bool busy = jobsRunning();
         const auto sinceDrawn = std::chrono::steady_clock::now() - lastDrawn;
         if (due)
             glfwPollEvents();
@@ -328,14 +331,14 @@ int EditorApp::run() {
         if (workerPosted_.exchange(false)) resultWaiting = true;
         if (input_->takeChanged()) framesToSettle = kSettleFrames;
         // While jobs run, their results and progress are drawn every kProgressInterval (the
-        // first result of a new GA job at once); the last result settles like input once they
-        // are done.
-        const bool jobsRunning = workersBusy();
-        if (resultWaiting && !jobsRunning) framesToSettle = std::max(framesToSettle, kSettleFrames);
+        // first result of a new GA job at once); the last result is drawn as soon as its job
+        // ends, and settles like input.
+        const bool running = jobsRunning();
+        if (resultWaiting && !running) framesToSettle = std::max(framesToSettle, kSettleFrames);
         const bool firstResult = resultWaiting && display_->shownJob() != submittedJob_;
         const bool progressDue =
-            jobsRunning && (firstResult ||
-                            std::chrono::steady_clock::now() - lastDrawn >= kProgressInterval);
+            running && (firstResult ||
+                        std::chrono::steady_clock::now() - lastDrawn >= kProgressInterval);
         if (!due && !progressDue && framesToSettle == 0) continue;  // draw nothing now
         framesToSettle = std::max(0, framesToSettle - 1);
         if (script_.idling()) timings_.frameWhileScriptIdle();
@@ -349,6 +352,9 @@ int EditorApp::run() {
         const bool evolving = worker_->busy();
         const EditorTimings::Mark started = EditorTimings::now();
         const FrameOutcome outcome = frame(screenshotPath);
+        // A change starts its job once the frame showing it is on screen: on lavapipe the
+        // frame would otherwise wait behind the job's first renders on the one queue.
+        submitChangesToWorker(started);
         if (outcome == FrameOutcome::Skipped) continue;
         resultWaiting = false;  // the frame applied every result posted so far
         lastDrawn = std::chrono::steady_clock::now();
@@ -400,7 +406,6 @@ EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& s
     handleVariantsActions(requests.variants);
     handleVariantsActions(scriptedVariants);
     if (requests.exportSet) exportWorker_->start(std::move(*requests.exportSet), ui_.state());
-    submitChangesToWorker();
     if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
         glfwSetWindowTitle(window_.get(), title.c_str());
         title_ = std::move(title);
@@ -589,7 +594,7 @@ void EditorApp::applySceneView() {
     sceneWorker_->request(std::move(job));
 }
 
-void EditorApp::submitChangesToWorker() {
+void EditorApp::submitChangesToWorker(const EditorTimings::Mark& changed) {
     const Preset& preset = ui_.state().preset;
     const ImageMetric heatmapMetric = ui_.state().heatmap.metric;
     // During a drag the GA waits for the release (every intermediate value would cancel the
@@ -621,7 +626,7 @@ void EditorApp::submitChangesToWorker() {
         {preset, ui_.state().presetPath, false, imageFitness, heatmapMetric});
     submittedJob_ = jobId;
     ui_.state().evolution.running = true;
-    timings_.changeSubmitted(jobId, EditorTimings::now());
+    timings_.changeSubmitted(jobId, changed);
 }
 
 std::filesystem::path EditorApp::nextSnapshotPath() const {

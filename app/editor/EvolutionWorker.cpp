@@ -115,6 +115,11 @@ bool EvolutionWorker::busy() const {
     return working_ || pending_.has_value() || latest_.has_value();
 }
 
+bool EvolutionWorker::running() const {
+    std::lock_guard lock(mutex_);
+    return working_ || pending_.has_value();
+}
+
 bool EvolutionWorker::cancelled(std::uint64_t jobId) const {
     std::lock_guard lock(mutex_);
     return stopping_ || latestJobId_.load() != jobId;

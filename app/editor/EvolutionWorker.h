@@ -89,8 +89,10 @@ public:
     std::uint64_t submit(EvolutionJob job);
     // The newest update not yet taken, if any.
     std::optional<EvolutionUpdate> takeLatest();
-    // A job is queued or running.
+    // A job is queued or running, or its last update is not taken yet.
     bool busy() const;
+    // A job is queued or running (its last update may still wait to be taken).
+    bool running() const;
 
 private:
     void run(const gpu::Device& device, RenderBackend backend);

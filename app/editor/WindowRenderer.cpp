@@ -55,9 +55,7 @@ WindowRenderer::~WindowRenderer() {
     (void)waitIdle();
 }
 
-void WindowRenderer::forgetPictures() {
-    for (SwapchainImage& image : images_) image.holdsFrame = 0;
-}
+void WindowRenderer::forgetPictures() { pictures_.forget(); }
 
 Status WindowRenderer::waitIdle() {
     const auto queueLock = context_.device().lockQueue();
@@ -214,30 +212,9 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
         if (!renderDone) return renderDone.error();
         target.renderDone = std::move(renderDone).value();
     }
+    pictures_.reset(images_.size(), {0, 0, int(extent_.width), int(extent_.height)});
     needsRebuild_ = false;
     return Ok{};
-}
-
-std::vector<ui::PixelArea> WindowRenderer::areasToDraw(const SwapchainImage& target,
-                                                       const FrameRecording& recording) const {
-    const ui::PixelArea whole{0, 0, int(extent_.width), int(extent_.height)};
-    if (target.holdsFrame == 0 || !recording.changed) return {whole};
-    // The changes of the frames drawn since the image's picture, then this frame's.
-    std::vector<ui::PixelArea> areas;
-    std::uint64_t covered = lastFrame_;
-    for (auto change = changes_.rbegin(); change != changes_.rend(); ++change) {
-        if (change->frame <= target.holdsFrame) break;
-        for (const ui::PixelArea& area : change->areas) ui::addDisjoint(areas, area);
-        covered = change->frame - 1;
-    }
-    if (covered != target.holdsFrame) return {whole};
-    for (const ui::PixelArea& area : *recording.changed) ui::addDisjoint(areas, area);
-    // Within the image, whatever size the caller's picture had.
-    std::vector<ui::PixelArea> inside;
-    for (const ui::PixelArea& area : areas)
-        if (const ui::PixelArea part = ui::intersect(area, whole); !part.empty())
-            inside.push_back(part);
-    return inside;
 }
 
 Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& recording,
@@ -273,7 +250,7 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
         !s)
         return s.error();
     SwapchainImage& target = images_[imageIndex];
-    const std::vector<ui::PixelArea> areas = areasToDraw(target, recording);
+    const std::vector<ui::PixelArea> areas = pictures_.areasToDraw(imageIndex, recording.changed);
     const bool whole = areas.size() == 1 &&
                        areas[0] == ui::PixelArea{0, 0, int(extent_.width), int(extent_.height)};
     VkClearValue clear{};
@@ -330,10 +307,7 @@ Result<bool> WindowRenderer::drawFrame(VkExtent2D size, const FrameRecording& re
             return s.error();
         presented = vkQueuePresentKHR(context_.device().queue(), &present);
     }
-    target.holdsFrame = ++lastFrame_;
-    changes_.push_back({lastFrame_, recording.changed.value_or(std::vector<ui::PixelArea>{
-                                        {0, 0, int(extent_.width), int(extent_.height)}})});
-    while (changes_.size() > images_.size()) changes_.pop_front();
+    pictures_.drawn(imageIndex, recording.changed);
     if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
         acquired == VK_SUBOPTIMAL_KHR)
         needsRebuild_ = true;

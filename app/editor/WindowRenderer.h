@@ -5,7 +5,6 @@
 // handle is owned by a core/gpu RAII type; Vulkan failures come back as errors.
 #include <array>
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -14,6 +13,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "PictureHistory.h"
 #include "PixelArea.h"
 #include "Rgba8Image.h"
 #include "common/Result.h"
@@ -75,18 +75,10 @@ private:
         gpu::UniqueImageView view;
         gpu::UniqueFramebuffer framebuffer;
         gpu::UniqueSemaphore renderDone;  // presentation waits on it
-        std::uint64_t holdsFrame = 0;     // the frame whose picture it holds; 0: none
-    };
-    struct Change {
-        std::uint64_t frame;
-        std::vector<ui::PixelArea> areas;  // what differs from the frame before
     };
 
     explicit WindowRenderer(const VulkanContext& context) : context_(context) {}
     Status createRenderPasses();
-    // What must be drawn into `target` for it to show the next frame's picture.
-    std::vector<ui::PixelArea> areasToDraw(const SwapchainImage& target,
-                                           const FrameRecording& recording) const;
     Status createFrames();
     Status createSwapchain(VkExtent2D size);
     Status recordCapture(VkCommandBuffer commands, std::uint32_t imageIndex);
@@ -103,8 +95,7 @@ private:
     VkExtent2D extent_{};
     std::uint32_t minImageCount_ = 2;
     bool needsRebuild_ = false;
-    std::uint64_t lastFrame_ = 0;  // frames drawn and presented so far
-    std::deque<Change> changes_;   // of the last frames, newest last
+    ui::PictureHistory pictures_;  // what each swapchain image shows
     std::vector<SwapchainImage> images_;  // after the swapchain: released before it
     std::optional<gpu::Buffer> readback_;
 };

@@ -136,6 +136,28 @@ TEST(EvolutionWorker, AFinishedRunDrawsTheWholePopulation) {
     test::expectNoValidationMessages(*context);
 }
 
+// The window draws a job's last update as soon as the job ends, not at the next progress frame:
+// it asks running(), which turns false when the job ends although its last update still waits
+// to be taken (busy() stays true until then).
+TEST(EvolutionWorker, RunningEndsWithTheJobWhileItsLastUpdateWaits) {
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    EvolutionWorker worker([] {}, context->device, RenderBackend::Gpu);
+    worker.submit(metalJob());
+    EXPECT_TRUE(worker.busy());
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (worker.running() && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_FALSE(worker.running()) << "the GA run did not finish in 120 s";
+    EXPECT_TRUE(worker.busy());
+    const auto update = worker.takeLatest();
+    ASSERT_TRUE(update.has_value());
+    EXPECT_TRUE(update->finished);
+    EXPECT_EQ(update->error, "");
+    EXPECT_FALSE(worker.busy());
+    test::expectNoValidationMessages(*context);
+}
+
 // The FLIP overlay: with a FLIP heatmap the tiles carry FLIP maps, and the inspector's readout of
 // the pixel under the pointer gives what the CPU reference (computeFlip) computes from the same
 // two images, within 2e-4 per pixel (the GPU pass's tolerance against the CPU), mean within 1e-3.
