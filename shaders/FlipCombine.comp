@@ -9,7 +9,7 @@
 // are not read again: the planes carry each pixel's alpha.
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 3) readonly buffer Planes { vec4 planes[]; };
+layout(binding = 3) uniform samplerBuffer planes;  // a texel buffer, as the images in the row pass
 layout(std430, binding = 4) writeonly buffer Error { float flipError[]; };
 layout(std430, binding = 5) writeonly buffer Heatmap { vec4 heatmapPixels[]; };
 layout(std430, binding = 6) readonly buffer Colormap { vec4 colormap[256]; };
@@ -38,8 +38,8 @@ void loadRows(uint slot, int x, int top, int first, int end, inout vec4 csfRows[
               inout vec4 featureRows[kWindow]) {
     [[unroll]] for (int j = first; j < end; ++j) {
         uint pixel = uint(clamp(top + j, 0, settings.height - 1) * settings.width + x);
-        csfRows[j] = planes[planeIndex(slot, pixel, 0)];
-        featureRows[j] = planes[planeIndex(slot, pixel, 1)];
+        csfRows[j] = texelFetch(planes, int(planeIndex(slot, pixel, 0)));
+        featureRows[j] = texelFetch(planes, int(planeIndex(slot, pixel, 1)));
     }
 }
 

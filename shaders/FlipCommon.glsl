@@ -13,8 +13,10 @@ layout(push_constant) uniform Settings {
 // one per viewing condition): every filter loop then has a known length and is unrolled, so
 // each tap is read at a constant offset, once for all invocations, and the pixels a pass
 // filters stay in registers. (lavapipe turns every storage-buffer or shared-memory read at an
-// offset that varies per invocation into one load per SIMD lane, and every uniform-buffer read
-// at a loop-dependent offset into a gather: those reads, not the arithmetic, were the cost.)
+// offset that varies per invocation into a loop over the SIMD lanes, one per component, and
+// every uniform-buffer read at a loop-dependent offset into a gather: those reads, not the
+// arithmetic, were the cost. So the passes read images and planes as texel buffers, which it
+// fetches for all lanes at once, one whole texel per lane.)
 layout(constant_id = 0) const int kCsfRadius = 10;     // taps: 2 kCsfRadius + 1 per filter
 layout(constant_id = 1) const int kFeatureRadius = 9;  // taps: 2 kFeatureRadius + 1 per filter
 const int kRadius = kCsfRadius > kFeatureRadius ? kCsfRadius : kFeatureRadius;

@@ -9,8 +9,10 @@
 // radius on either side once, into registers, and filters from there (FlipCommon.glsl).
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = 0) readonly buffer Reference { vec4 referencePixels[]; };
-layout(std430, binding = 1) readonly buffer Candidates { vec4 candidatePixels[]; };
+// Texel buffers, not storage buffers: lavapipe fetches a texel for all SIMD lanes in one go
+// (FlipCommon.glsl).
+layout(binding = 0) uniform samplerBuffer referencePixels;
+layout(binding = 1) uniform samplerBuffer candidatePixels;
 layout(std430, binding = 3) writeonly buffer Planes { vec4 planes[]; };
 
 #include "FlipCommon.glsl"
@@ -18,8 +20,10 @@ layout(std430, binding = 3) writeonly buffer Planes { vec4 planes[]; };
 
 vec4 pixelOf(uint slot, uint pixel) {
     uint pixelCount = uint(settings.width * settings.height);
-    return slot == 0 ? referencePixels[settings.referenceImage * pixelCount + pixel]
-                     : candidatePixels[(settings.firstCandidate + slot - 1) * pixelCount + pixel];
+    return slot == 0
+               ? texelFetch(referencePixels, int(settings.referenceImage * pixelCount + pixel))
+               : texelFetch(candidatePixels,
+                            int((settings.firstCandidate + slot - 1) * pixelCount + pixel));
 }
 
 // YyCxCz (Yy = 116 Y/Yn − 16, Cx = 500 (X/Xn − Y/Yn), Cz = 200 (Y/Yn − Z/Zn)) and, in w,

@@ -23,33 +23,6 @@ constexpr int kConvergingGenerations = 30;
 constexpr int kAdviceMaxGenerations = kSliderMaxGenerations;
 constexpr float kMaxTileSize = 512.0f;
 
-void drawStatusLine(const EvolutionView& evolution, std::size_t shown, bool hideDuplicates) {
-    const int done = evolution.history.empty() ? 0 : evolution.history.back().generation;
-    if (evolution.tableBuildProgress >= 0.0) {
-        ImGui::TextColored(kAccentColor,
-                           "Building the FGD/TIR lookup tables (first launch only, then cached)");
-        ImGui::ProgressBar(float(evolution.tableBuildProgress), ImVec2(-1.0f, 0.0f));
-        return;
-    }
-    if (evolution.running && evolution.history.empty())
-        ImGui::TextColored(kAccentColor, "Evolving: starting…");
-    else if (evolution.running && done < evolution.totalGenerations)
-        ImGui::TextColored(kAccentColor, "Evolving: generation %d of %d", done,
-                           evolution.totalGenerations);
-    else if (evolution.running)  // the run is done; the rest of the population is being drawn
-        ImGui::TextColored(kAccentColor, "Drawing the whole population: %zu of %d distinct",
-                           evolution.candidates.size(), evolution.distinctGenomes);
-    else
-        mutedText(std::to_string(shown) + (hideDuplicates ? "" : " tiles (one per individual)") +
-                  " of " + std::to_string(evolution.candidates.size()) +
-                  " distinct candidates shown, after " + std::to_string(done) + " generations" +
-                  (int(evolution.candidates.size()) < evolution.distinctGenomes
-                       ? " (the best of " + std::to_string(evolution.distinctGenomes) + ")"
-                       : std::string()));
-    if (!evolution.renderBackend.empty())
-        hoverHint(("Drawn on " + evolution.renderBackend).c_str());
-}
-
 std::string bandLabel(int band) {
     if (band < 0) return "all ΔE00";
     const PerceptualBand chosen = kPerceptualBands[std::size_t(band)];
@@ -200,7 +173,7 @@ void scrollToRow(int row, float rowHeight) {
 void drawPopulation(EditorState& state) {
     const EvolutionView& evolution = state.evolution;
     const std::vector<GridTile> shown = visibleTiles(evolution, state.grid);
-    drawStatusLine(evolution, shown.size(), state.grid.hideDuplicates);
+    drawStatusLine(evolution, state.heatmap.metric, shown.size(), state.grid.hideDuplicates);
     drawAdvice(state);
     ImGui::BeginChild("tiles");
     const ImVec2 spacing = ImGui::GetStyle().ItemSpacing;
@@ -254,6 +227,40 @@ void drawPopulation(EditorState& state) {
 }
 
 }  // namespace
+
+void drawStatusLine(const EvolutionView& evolution, ImageMetric chosenMetric, std::size_t shown,
+                    bool hideDuplicates) {
+    const int done = evolution.history.empty() ? 0 : evolution.history.back().generation;
+    if (evolution.tableBuildProgress >= 0.0) {
+        ImGui::TextColored(kAccentColor,
+                           "Building the FGD/TIR lookup tables (first launch only, then cached)");
+        ImGui::ProgressBar(float(evolution.tableBuildProgress), ImVec2(-1.0f, 0.0f));
+        return;
+    }
+    // A changed heatmap metric starts a job whose first update brings tiles with the new maps;
+    // until then everything shown is the last job's (the first ꟻLIP maps take seconds on
+    // lavapipe, which compiles their shaders then).
+    if (evolution.running && chosenMetric != evolution.heatmapMetric)
+        ImGui::TextColored(kAccentColor, "Preparing the %s maps of the tiles…",
+                           chosenMetric == ImageMetric::Flip ? "FLIP" : "ΔE00");
+    else if (evolution.running && evolution.history.empty())
+        ImGui::TextColored(kAccentColor, "Evolving: starting…");
+    else if (evolution.running && done < evolution.totalGenerations)
+        ImGui::TextColored(kAccentColor, "Evolving: generation %d of %d", done,
+                           evolution.totalGenerations);
+    else if (evolution.running)  // the run is done; the rest of the population is being drawn
+        ImGui::TextColored(kAccentColor, "Drawing the whole population: %zu of %d distinct",
+                           evolution.candidates.size(), evolution.distinctGenomes);
+    else
+        mutedText(std::to_string(shown) + (hideDuplicates ? "" : " tiles (one per individual)") +
+                  " of " + std::to_string(evolution.candidates.size()) +
+                  " distinct candidates shown, after " + std::to_string(done) + " generations" +
+                  (int(evolution.candidates.size()) < evolution.distinctGenomes
+                       ? " (the best of " + std::to_string(evolution.distinctGenomes) + ")"
+                       : std::string()));
+    if (!evolution.renderBackend.empty())
+        hoverHint(("Drawn on " + evolution.renderBackend).c_str());
+}
 
 std::optional<FarFromTargetAdvice> adviceForFarCandidates(const EvolutionView& evolution,
                                                           const GaSettings& ga) {

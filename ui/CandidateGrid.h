@@ -27,6 +27,12 @@ struct FarFromTargetAdvice {
 std::optional<FarFromTargetAdvice> adviceForFarCandidates(const EvolutionView& evolution,
                                                           const GaSettings& ga);
 
+// The line above the tiles: what the worker is doing (building tables, evolving, preparing the
+// maps of a newly chosen heatmap metric, drawing the rest of the population) or, when it is
+// done, what the grid shows.
+void drawStatusLine(const EvolutionView& evolution, ImageMetric chosenMetric, std::size_t shown,
+                    bool hideDuplicates);
+
 // True when the kept bin's "Export set…" was clicked.
 bool drawCandidateGrid(EditorState& state);
 

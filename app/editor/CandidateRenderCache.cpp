@@ -44,15 +44,6 @@ Status CandidateRenderCache::createRenderer(const SceneTextures& textures) {
     return Ok{};
 }
 
-Status CandidateRenderCache::prepareFlipRenderer(const SceneTextures& textures) {
-    if (!gpuRenderer_) return Ok{};  // the CPU renderer compiles nothing: it draws them too
-    if (flipRenderer_) return flipRenderer_->setTextures(textures);
-    gpu::RendererRequest headless = request_;
-    headless.device = nullptr;
-    flipRenderer_ = gpu::createPopulationRenderer(headless, textures);
-    return Ok{};
-}
-
 Status CandidateRenderCache::prepare(const Preset& preset, const std::filesystem::path& presetFile,
                                      ImageMetric heatmapMetric) {
     if (drawsTheSame(preset, presetFile, heatmapMetric)) return Ok{};
@@ -63,8 +54,10 @@ Status CandidateRenderCache::prepare(const Preset& preset, const std::filesystem
     } else if (Status set = renderer_->setTextures(*textures); !set) {
         return set;
     }
-    if (heatmapMetric == ImageMetric::Flip || flipRenderer_)
-        if (Status set = prepareFlipRenderer(*textures); !set) return set;
+    // lavapipe compiles the ꟻLIP pipelines at their first dispatch, holding the queue the window
+    // draws on: one at a time, before any tile waits on them (docs/flip.md).
+    if (heatmapMetric == ImageMetric::Flip && gpuRenderer_)
+        if (Status compiled = gpuRenderer_->compileFlip(); !compiled) return compiled;
     entries_.clear();
     heatmapMetric_ = heatmapMetric;
     targetPicture_.reset();
@@ -117,16 +110,16 @@ Status CandidateRenderCache::draw(std::span<const Genome> genomes) {
     options.candidateImages = true;  // the GPU's are copied to the tiles on the device too
     const bool flip = heatmapMetric_ == ImageMetric::Flip;
     options.flip = flip;
+    options.heatmapMetric = heatmapMetric_;  // the error map the tiles hold
     const MaterialInstance target = material(preset_->target);
-    // ΔE00 tiles on the GPU are written in place; anything else goes through the host.
-    const bool inPlace = gpuRenderer_ && !flip;
-    PopulationRenderer& renderer = flip && flipRenderer_ ? *flipRenderer_ : *renderer_;
+    // The GPU renderer writes the tiles in place (its ꟻLIP pipelines are compiled by lavapipe at
+    // their first dispatch, in this worker's submission); the CPU renderer's go through the host.
     auto evaluation =
-        inPlace ? gpuRenderer_->evaluateIntoTiles(target, materials, preset_->scene, tileSize_,
-                                                  options, targets)
-                : renderer.evaluate(target, materials, preset_->scene, tileSize_, options);
+        gpuRenderer_ ? gpuRenderer_->evaluateIntoTiles(target, materials, preset_->scene,
+                                                       tileSize_, options, targets)
+                     : renderer_->evaluate(target, materials, preset_->scene, tileSize_, options);
     if (!evaluation) return evaluation.error();
-    if (!inPlace) {
+    if (!gpuRenderer_) {
         // A ꟻLIP tile's error map holds ꟻLIP where the pixel is pooled (as ΔE00's, "not covered"
         // elsewhere), so the window draws either map the same way.
         std::vector<DeltaEMap> shownMaps;

@@ -5,9 +5,9 @@
 // mostly survive from one generation to the next, and a re-run with the same seed starts from
 // much the same population, so most tiles of an update are already drawn. New tiles are drawn
 // by the render interface; on the GPU straight into the tiles (render + ΔE00 + copies in one
-// submission, nothing read back but the ΔE00 maps for their statistics). When the heatmap shows
-// ꟻLIP, the tiles' error maps hold ꟻLIP instead (computed by a renderer of their own, read back
-// for the pixel readout and uploaded).
+// submission, nothing read back but the error maps for their statistics and the inspector's
+// readout). When the heatmap shows ꟻLIP, the tiles' error maps hold ꟻLIP instead, computed in
+// the same submission on the same device.
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -64,7 +64,6 @@ private:
                       ImageMetric heatmapMetric) const;
     MaterialInstance material(const Genome& genome) const;
     Status createRenderer(const SceneTextures& textures);
-    Status prepareFlipRenderer(const SceneTextures& textures);
     Status drawTarget(const Preset& preset);
     Status draw(std::span<const Genome> genomes);
     Entry* find(const Genome& genome);
@@ -76,14 +75,9 @@ private:
     const gpu::Device& device_;
     gpu::RendererRequest request_;
     std::unique_ptr<PopulationRenderer> renderer_;
-    // The GPU renderer writes ΔE00 tiles on the device itself; the CPU renderer's pictures and
-    // every ꟻLIP tile are uploaded with uploadRunner_. Null with the CPU renderer.
+    // The GPU renderer writes the tiles on the device itself; the CPU renderer's pictures and
+    // maps are uploaded with uploadRunner_. Null with the CPU renderer.
     gpu::GpuPopulationRenderer* gpuRenderer_ = nullptr;
-    // With the GPU renderer, draws the ꟻLIP tiles on a headless device of its own (made at the
-    // first ꟻLIP prepare; null with the CPU renderer, which draws them itself). lavapipe compiles the ꟻLIP pipelines at their first dispatch, on the queue that
-    // runs it, for seconds with a cold shader cache (docs/flip.md); on the window's queue the
-    // window's frames would wait behind that compile, and the window would freeze.
-    std::unique_ptr<PopulationRenderer> flipRenderer_;
     std::optional<gpu::CommandRunner> uploadRunner_;
     ImageMetric heatmapMetric_ = ImageMetric::DeltaE00;
     std::optional<Preset> preset_;  // what the cached pictures were drawn from

@@ -73,8 +73,8 @@ std::string validateText(const ScriptAction& action) {
         return "expected chebyshev, euclidean or manhattan, got '" + shortText(action.text, 40) +
                "'";
     if (action.kind == Kind::Heatmap && action.text != "on" && action.text != "off" &&
-        action.text != "toggle")
-        return "expected on, off or toggle, got '" + shortText(action.text, 40) + "'";
+        action.text != "toggle" && action.text != "de00" && action.text != "flip")
+        return "expected on, off, toggle, de00 or flip, got '" + shortText(action.text, 40) + "'";
     if (action.kind == Kind::VariantsHue && action.text != "on" && action.text != "off")
         return "expected on or off, got '" + shortText(action.text, 40) + "'";
     if (action.kind == Kind::Scene && action.text != "open" && action.text != "close")

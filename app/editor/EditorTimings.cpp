@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "common/ProcessCpuTime.h"
+#include "gpu/Device.h"
 
 namespace matevo::editor {
 namespace {
@@ -61,14 +62,15 @@ std::string EditorTimings::report() const {
                   "\"change_to_first_grid_ms\":%.1f,\"change_to_final_grid_ms\":%.1f,"
                   "\"changes\":%zu,\"frames_while_script_idle\":%d,"
                   "\"frame_idle_cpu_ms\":%.2f,\"frame_evolving_cpu_ms\":%.2f,"
-                  "\"change_to_final_grid_cpu_ms\":%.1f,\"frames_unchanged\":%d}",
+                  "\"change_to_final_grid_cpu_ms\":%.1f,\"frames_unchanged\":%d,"
+                  "\"vulkan_devices\":%d}",
                   median(idleFrames_, &Span::wallMs), idleFrames_.size(),
                   median(evolvingFrames_, &Span::wallMs), evolvingFrames_.size(),
                   median(changeToFirstGrid_, &Span::wallMs),
                   median(changeToFinalGrid_, &Span::wallMs), changeToFirstGrid_.size(),
                   framesWhileScriptIdle_, median(idleFrames_, &Span::cpuMs),
                   median(evolvingFrames_, &Span::cpuMs), median(changeToFinalGrid_, &Span::cpuMs),
-                  framesUnchanged_);
+                  framesUnchanged_, gpu::logicalDevicesCreated());
     return line;
 }
 

@@ -91,8 +91,14 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
             ga.metric = *parseDistanceMetric(action.text);
             return true;
         case Kind::Heatmap:
-            state.heatmap.enabled =
-                action.text == "toggle" ? !state.heatmap.enabled : action.text == "on";
+            if (action.text == "de00" || action.text == "flip") {
+                state.heatmap.enabled = true;
+                state.heatmap.metric = action.text == "flip" ? ImageMetric::Flip
+                                                             : ImageMetric::DeltaE00;
+            } else {
+                state.heatmap.enabled =
+                    action.text == "toggle" ? !state.heatmap.enabled : action.text == "on";
+            }
             return true;
         case Kind::Select:
             if (action.first >= 0 && std::size_t(action.first) < state.evolution.candidates.size())

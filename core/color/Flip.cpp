@@ -302,26 +302,42 @@ FlipStats poolFlip(const std::vector<float>& errors) {
     }
     stats.mean = total / double(errors.size());
     stats.max = largest;
-    // The smallest error at which the running sum, in ascending order, passes fraction · total.
-    auto weightedPercentile = [&](double fraction) {
-        const double threshold = fraction * total;
-        double below = 0;
-        std::size_t bucket = 0;
+    // The smallest error at which the running sum, in ascending order, passes fraction · total:
+    // the quartiles' buckets in one walk over the buckets (the thresholds ascend), their values
+    // in one pass over the errors, then each bucket sorted.
+    constexpr std::array<double, 3> kFractions = {0.25, 0.5, 0.75};
+    std::array<std::size_t, 3> bucketOfQuartile{};
+    std::array<double, 3> belowBucket{};
+    double below = 0;
+    std::size_t bucket = 0;
+    for (std::size_t q = 0; q < kFractions.size(); ++q) {
+        const double threshold = kFractions[q] * total;
         while (bucket + 1 < kBuckets && below + bucketSums[bucket] <= threshold)
             below += bucketSums[bucket++];
-        std::vector<float> inBucket;
-        for (float error : errors)
-            if (bucketOf(error) == bucket) inBucket.push_back(error);
-        std::sort(inBucket.begin(), inBucket.end());
-        for (float error : inBucket) {
-            below += error;
-            if (below > threshold) return double(error);
+        bucketOfQuartile[q] = bucket;
+        belowBucket[q] = below;
+    }
+    std::array<std::vector<float>, 3> inBucket;
+    for (float error : errors) {
+        const std::size_t errorBucket = bucketOf(error);
+        for (std::size_t q = 0; q < kFractions.size(); ++q)
+            if (errorBucket == bucketOfQuartile[q]) inBucket[q].push_back(error);
+    }
+    std::array<double, 3> quartiles{};  // 0 when every error is 0
+    for (std::size_t q = 0; q < kFractions.size(); ++q) {
+        std::sort(inBucket[q].begin(), inBucket[q].end());
+        double running = belowBucket[q];
+        for (float error : inBucket[q]) {
+            running += error;
+            if (running > kFractions[q] * total) {
+                quartiles[q] = error;
+                break;
+            }
         }
-        return 0.0;  // every error is 0
-    };
-    stats.firstWeightedQuartile = weightedPercentile(0.25);
-    stats.weightedMedian = weightedPercentile(0.5);
-    stats.thirdWeightedQuartile = weightedPercentile(0.75);
+    }
+    stats.firstWeightedQuartile = quartiles[0];
+    stats.weightedMedian = quartiles[1];
+    stats.thirdWeightedQuartile = quartiles[2];
     return stats;
 }
 

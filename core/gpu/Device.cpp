@@ -1,6 +1,7 @@
 #include "gpu/Device.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <optional>
 
@@ -9,6 +10,8 @@
 
 namespace matevo::gpu {
 namespace {
+
+std::atomic<int> devicesCreated{0};
 
 int preference(VkPhysicalDeviceType type) {
     switch (type) {
@@ -128,6 +131,7 @@ Result<Device> DeviceBuilder::build() const {
         device.queueFamily_ = *family;
         device.name_ = properties.deviceName;
         device.isCpu_ = properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+        device.maxTexelBufferElements_ = properties.limits.maxTexelBufferElements;
     }
     if (device.physicalDevice_ == VK_NULL_HANDLE)
         return Error{count == 0 ? "Vulkan: no device found"
@@ -167,7 +171,10 @@ Result<Device> DeviceBuilder::build() const {
         return vulkanError("creating the device on " + device.name_, result);
     device.device_ = UniqueDevice(handle);
     vkGetDeviceQueue(handle, device.queueFamily_, 0, &device.queue_);
+    ++devicesCreated;
     return device;
 }
+
+int logicalDevicesCreated() { return devicesCreated.load(); }
 
 }  // namespace matevo::gpu

@@ -34,6 +34,8 @@ public:
     // shaderInt64 and shaderBufferInt64Atomics, enabled when the device has them (the scene
     // renderer needs them).
     bool int64Atomics() const { return int64Atomics_; }
+    // The most texels a texel buffer view may hold (128 Mi on lavapipe).
+    uint32_t maxTexelBufferElements() const { return maxTexelBufferElements_; }
     // geometryShader, enabled when the device has it: fragment shaders may read
     // gl_PrimitiveID (the scene's fixed-function visibility pass does).
     bool primitiveIds() const { return primitiveIds_; }
@@ -58,9 +60,14 @@ private:
     std::string name_;
     bool isCpu_ = false;
     bool int64Atomics_ = false;
+    uint32_t maxTexelBufferElements_ = 0;
     bool primitiveIds_ = false;
     std::unique_ptr<std::mutex> queueMutex_ = std::make_unique<std::mutex>();
 };
+
+// How many logical devices this process has made so far (the editor makes one, shared by its
+// window and its workers; tests and `edit --report-timings` check that).
+int logicalDevicesCreated();
 
 class DeviceBuilder {
 public:

@@ -10,6 +10,7 @@
 #include <shaders/kFlipRowFilterSpirv.h>
 
 #include "gpu/CommandRunner.h"
+#include "gpu/ImageBatch.h"
 
 namespace matevo::gpu {
 namespace {
@@ -45,6 +46,30 @@ std::vector<float> tapsOf(const flip::CsfKernels& csf, const flip::FeatureKernel
     return taps;
 }
 
+uint32_t groups(uint32_t items, uint32_t perGroup) { return (items + perGroup - 1) / perGroup; }
+
+PushConstants pushConstantsOf(const FlipBatch& batch) {
+    return {batch.width, batch.height, batch.referenceImage, batch.firstCandidate,
+            float(flip::maxColorDistance())};
+}
+
+// The row pass: runs of a row × rows × images.
+void recordRowPass(VkCommandBuffer commands, const ComputeKernel& rowFilter,
+                   const FlipBatch& batch) {
+    const PushConstants constants = pushConstantsOf(batch);
+    rowFilter.record(commands, &constants,
+                     groups(groups(uint32_t(batch.width), kRun), kRowGroupSize),
+                     groups(uint32_t(batch.height), kRowGroupSize), batch.candidateCount + 1);
+}
+
+// The combination: columns × runs of a column × candidates.
+void recordCombination(VkCommandBuffer commands, const ComputeKernel& combine,
+                       const FlipBatch& batch) {
+    const PushConstants constants = pushConstantsOf(batch);
+    combine.record(commands, &constants, groups(uint32_t(batch.width), kCombineGroupSize),
+                   groups(uint32_t(batch.height), kRun), batch.candidateCount);
+}
+
 }  // namespace
 
 Result<FlipPass> FlipPass::create(const Device& device, const DeltaE00Pass::Colormap& colormap) {
@@ -69,20 +94,29 @@ Result<const FlipPass::Kernels*> FlipPass::kernelsFor(int csfRadius, int feature
     const auto combineConstants = constants(kCombineBlock);
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    // Images and planes are read as texel buffers (see bind); the row pass writes the planes.
     auto rowFilter =
-        ComputeKernel::create(*device_, kFlipRowFilterSpirv, {storage, storage, uniform, storage},
+        ComputeKernel::create(*device_, kFlipRowFilterSpirv, {texels, texels, uniform, storage},
                               sizeof(PushConstants), rowConstants);
     if (!rowFilter) return rowFilter.error();
     // The combination reads the planes, not the images: bindings 0 and 1 are bound, not read.
-    auto combine =
-        ComputeKernel::create(*device_, kFlipCombineSpirv,
-                              {storage, storage, uniform, storage, storage, storage, storage},
-                              sizeof(PushConstants), combineConstants);
+    auto combine = ComputeKernel::create(
+        *device_, kFlipCombineSpirv, {texels, texels, uniform, texels, storage, storage, storage},
+        sizeof(PushConstants), combineConstants);
     if (!combine) return combine.error();
     combine->bindBuffer(6, colormap_);
     kernels_.push_back(
         {csfRadius, featureRadius, std::move(rowFilter).value(), std::move(combine).value()});
     return &kernels_.back();
+}
+
+Result<UniqueBufferView> FlipPass::pixelView(const Buffer& buffer) const {
+    constexpr VkDeviceSize kTexelBytes = 4 * sizeof(float);
+    if (buffer.size() / kTexelBytes > device_->maxTexelBufferElements())
+        return Error{"FLIP on the GPU: a batch of " + std::to_string(buffer.size() >> 20) +
+                     " MiB is more than " + device_->name() + " reads as one texel buffer"};
+    return createTexelView(*device_, buffer, VK_FORMAT_R32G32B32A32_SFLOAT);
 }
 
 Status FlipPass::prepare(const FlipBatch& batch, const FlipSettings& settings) {
@@ -110,45 +144,86 @@ Status FlipPass::prepare(const FlipBatch& batch, const FlipSettings& settings) {
                                     (batch.candidateCount + 1) * kPlaneFloatsPerPixel *
                                     sizeof(float);
     if (!planes_.handle() || planes_.size() < planeBytes) {
-        auto buffer = Buffer::create(*device_, planeBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                     MemoryUse::DeviceLocal);
+        auto buffer = Buffer::create(
+            *device_, planeBytes,
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+            MemoryUse::DeviceLocal);
         if (!buffer) return buffer.error();
+        auto view = pixelView(*buffer);
+        if (!view) return view.error();
+        planesView_ = std::move(view).value();  // before the buffer it viewed goes
         planes_ = std::move(buffer).value();
     }
+    // The images' views: the batch's buffers may be new ones at every call.
+    auto referenceView = pixelView(*batch.reference);
+    if (!referenceView) return referenceView.error();
+    auto candidatesView = pixelView(*batch.candidates);
+    if (!candidatesView) return candidatesView.error();
+    referenceView_ = std::move(referenceView).value();
+    candidatesView_ = std::move(candidatesView).value();
     return Ok{};
+}
+
+Result<const FlipPass::Kernels*> FlipPass::bind(const FlipBatch& batch,
+                                                const FlipSettings& settings) {
+    if (auto prepared = prepare(batch, settings); !prepared) return prepared.error();
+    auto kernels = kernelsFor(csf_.radius, feature_.radius);
+    if (!kernels) return kernels.error();
+    const ComputeKernel& rowFilter = (*kernels)->rowFilter;
+    const ComputeKernel& combine = (*kernels)->combine;
+    for (const ComputeKernel* kernel : {&rowFilter, &combine}) {
+        kernel->descriptors().bindTexelBuffer(0, referenceView_.get());
+        kernel->descriptors().bindTexelBuffer(1, candidatesView_.get());
+        kernel->bindBuffer(2, taps_);
+    }
+    rowFilter.bindBuffer(3, planes_);
+    combine.descriptors().bindTexelBuffer(3, planesView_.get());
+    combine.bindBuffer(4, *batch.error);
+    combine.bindBuffer(5, *batch.heatmaps);
+    return kernels;
 }
 
 Status FlipPass::record(VkCommandBuffer commands, const FlipBatch& batch,
                         const FlipSettings& settings) {
     if (batch.candidateCount == 0 || batch.width <= 0 || batch.height <= 0) return Ok{};
-    if (auto prepared = prepare(batch, settings); !prepared) return prepared;
-    auto kernels = kernelsFor(csf_.radius, feature_.radius);
+    auto kernels = bind(batch, settings);
     if (!kernels) return kernels.error();
-    const ComputeKernel& rowFilter = (*kernels)->rowFilter;
-    const ComputeKernel& combine = (*kernels)->combine;
-    const PushConstants constants{batch.width, batch.height, batch.referenceImage,
-                                  batch.firstCandidate, float(flip::maxColorDistance())};
-    for (const ComputeKernel* kernel : {&rowFilter, &combine}) {
-        kernel->bindBuffer(0, *batch.reference);
-        kernel->bindBuffer(1, *batch.candidates);
-        kernel->bindBuffer(2, taps_);
-        kernel->bindBuffer(3, planes_);
-    }
-    combine.bindBuffer(4, *batch.error);
-    combine.bindBuffer(5, *batch.heatmaps);
-
-    auto groups = [](uint32_t items, uint32_t perGroup) {
-        return (items + perGroup - 1) / perGroup;
-    };
-    // The row pass: runs of a row × rows × images.
-    rowFilter.record(commands, &constants,
-                     groups(groups(uint32_t(batch.width), kRun), kRowGroupSize),
-                     groups(uint32_t(batch.height), kRowGroupSize), batch.candidateCount + 1);
+    recordRowPass(commands, (*kernels)->rowFilter, batch);
     computeWriteToComputeReadBarrier(commands);
-    // The combination: columns × runs of a column × candidates.
-    combine.record(commands, &constants, groups(uint32_t(batch.width), kCombineGroupSize),
-                   groups(uint32_t(batch.height), kRun), batch.candidateCount);
+    recordCombination(commands, (*kernels)->combine, batch);
     return Ok{};
+}
+
+Status FlipPass::compile(CommandRunner& runner, const FlipSettings& settings) {
+    const ImageBatchShape shape{1, 1, 1};
+    auto image = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
+    auto map = createBatchBuffer(*device_, shape, 1, MemoryUse::DeviceLocal);
+    auto heatmap = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
+    for (const auto* buffer : {&image, &map, &heatmap})
+        if (!*buffer) return buffer->error();
+    // One pixel, whatever its value: only the dispatches matter.
+    const FlipBatch batch{&*image, &*image, &*map, &*heatmap, 1, 1, 1, 0, 0};
+    auto kernels = bind(batch, settings);
+    if (!kernels) return kernels.error();
+    Status compiled = Ok{};
+    for (const bool rowPass : {true, false}) {
+        auto commands = runner.begin();
+        if (!commands) {
+            compiled = commands.error();
+            break;
+        }
+        if (rowPass) {
+            recordRowPass(*commands, (*kernels)->rowFilter, batch);
+        } else {
+            computeWriteToComputeReadBarrier(*commands);  // the planes of the last submission
+            recordCombination(*commands, (*kernels)->combine, batch);
+        }
+        if (compiled = runner.submitAndWait(); !compiled) break;
+    }
+    // The views of this pixel go with it; record makes the batch's own.
+    referenceView_ = {};
+    candidatesView_ = {};
+    return compiled;
 }
 
 }  // namespace matevo::gpu

@@ -4,8 +4,8 @@
 // like Image::rgba, as the ΔE00 pass takes them. Writes per-pixel ꟻLIP and a magma heatmap.
 // core/color/Flip is the reference these passes follow step by step (tests/gpu compares them).
 // The passes unroll their filters for the viewing condition's radii, and lavapipe's compile
-// time grows with them (uncached, in CPU time at load 10: about 3.5 s at the default 67 pixels
-// per degree, 9 s at 148): they take filter radii up to 20 pixels, about 148 pixels per degree,
+// time grows with them (uncached, in CPU time at load 9: about 1.8 s at the default 67 pixels
+// per degree, 3.6 s at 148): they take filter radii up to 20 pixels, about 148 pixels per degree,
 // and refuse wider ones with an error (the CPU path takes any). lavapipe compiles a pipeline
 // at its first dispatch, on the queue that runs it: work on the same queue waits that long.
 #include <cstdint>
@@ -14,11 +14,13 @@
 #include "color/Flip.h"
 #include "common/Result.h"
 #include "gpu/Buffer.h"
+#include "gpu/CommandRunner.h"
 #include "gpu/ComputeKernel.h"
 #include "gpu/DeltaE00Pass.h"
 
 namespace matevo::gpu {
 
+// The images' buffers come from createBatchBuffer: the pass reads them as texel buffers.
 struct FlipBatch {
     const Buffer* reference = nullptr;   // holds the reference image at referenceImage
     const Buffer* candidates = nullptr;  // holds the candidates from firstCandidate on
@@ -43,6 +45,12 @@ public:
     // viewing condition, so any earlier submission of this pass must have completed.
     Status record(VkCommandBuffer commands, const FlipBatch& batch, const FlipSettings& settings);
 
+    // Makes the pipelines for the viewing condition and has lavapipe compile them now, each in a
+    // submission of its own on `runner` (one dispatch over one pixel), and waits: work of other
+    // threads on the same queue (the editor's frames) then waits for one compile at a time,
+    // not for both and a batch's passes (seconds with a cold shader cache, docs/flip.md).
+    Status compile(CommandRunner& runner, const FlipSettings& settings = {});
+
 private:
     // The shaders specialised for one pair of filter radii (a viewing condition).
     struct Kernels {
@@ -53,6 +61,11 @@ private:
     };
 
     Status prepare(const FlipBatch& batch, const FlipSettings& settings);
+    // Prepares for the batch and binds its buffers to the viewing condition's kernels.
+    Result<const Kernels*> bind(const FlipBatch& batch, const FlipSettings& settings);
+    // `buffer` as vec4 texels: lavapipe fetches texels for all SIMD lanes in one go, where it
+    // loads a storage buffer at a per-invocation index one lane and component at a time.
+    Result<UniqueBufferView> pixelView(const Buffer& buffer) const;
     // The kernels for the current radii, made on first use and kept: lavapipe takes seconds
     // to compile the unrolled filters.
     Result<const Kernels*> kernelsFor(int csfRadius, int featureRadius);
@@ -65,6 +78,10 @@ private:
     flip::CsfKernels csf_;
     flip::FeatureKernels feature_;
     Buffer planes_;
+    UniqueBufferView planesView_;
+    // The batch's images, made by prepare for each record.
+    UniqueBufferView referenceView_;
+    UniqueBufferView candidatesView_;
 };
 
 }  // namespace matevo::gpu

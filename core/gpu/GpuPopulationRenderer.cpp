@@ -87,11 +87,7 @@ Status GpuPopulationRenderer::ensureBuffers(const ImageBatchShape& shape, bool f
         bufferShape_ = shape;
     }
     if (flip && !flip_.handle()) {
-        if (!flipPass_) {
-            auto pass = FlipPass::create(*device_, flipColormap());
-            if (!pass) return pass.error();
-            flipPass_ = std::move(pass).value();
-        }
+        if (Status made = ensureFlipPass(); !made) return made;
         auto errors = createBatchBuffer(*device_, shape, 1, MemoryUse::Readback);
         auto heatmaps = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
         for (const auto* buffer : {&errors, &heatmaps})
@@ -100,6 +96,19 @@ Status GpuPopulationRenderer::ensureBuffers(const ImageBatchShape& shape, bool f
         flipHeatmaps_ = std::move(heatmaps).value();
     }
     return Ok{};
+}
+
+Status GpuPopulationRenderer::ensureFlipPass() {
+    if (flipPass_) return Ok{};
+    auto pass = FlipPass::create(*device_, flipColormap());
+    if (!pass) return pass.error();
+    flipPass_ = std::move(pass).value();
+    return Ok{};
+}
+
+Status GpuPopulationRenderer::compileFlip(const FlipSettings& settings) {
+    if (Status made = ensureFlipPass(); !made) return made;
+    return flipPass_->compile(runner_, settings);
 }
 
 Status GpuPopulationRenderer::renderTarget(const TargetKey& key) {
@@ -168,7 +177,9 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
                 options.flipSettings);
             !recorded)
             return recorded.error();
-    if (!tiles.empty()) recordCopiesToTiles(*commands, renders_, &deltaE_, shape, tiles);
+    const Buffer& tileMaps =
+        flip && options.heatmapMetric == ImageMetric::Flip ? flip_ : deltaE_;
+    if (!tiles.empty()) recordCopiesToTiles(*commands, renders_, &tileMaps, shape, tiles);
     computeWriteToHostReadBarrier(*commands);
     backgroundFilledFor_.reset();  // unknown until the submission is done
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();

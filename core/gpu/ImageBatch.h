@@ -20,7 +20,8 @@ struct ImageBatchShape {
     uint32_t pixelCount() const { return uint32_t(width) * uint32_t(height); }
 };
 
-// A buffer for `shape.count` RGBA float images (channels = 4) or float maps (channels = 1).
+// A buffer for `shape.count` RGBA float images (channels = 4) or float maps (channels = 1):
+// a storage buffer, also usable as a uniform texel buffer (the ꟻLIP pass reads images so).
 Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& shape,
                                  int channels, MemoryUse use);
 

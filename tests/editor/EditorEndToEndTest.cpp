@@ -169,30 +169,38 @@ INSTANTIATE_TEST_SUITE_P(WindowSizes, EditorEndToEnd,
                                     std::to_string(suiteParam.param.height);
                          });
 
+// Plays `actions` in the real editor after "wait 2" and a resize to kWidth × kHeight, then quits:
+// settings in dir/config, the validation layer on, --report-timings; `preset` opens that file
+// instead of the default preset.
+CommandOutput playSession(const fs::path& dir, const std::string& actions,
+                          const std::string& preset = {}) {
+    fs::create_directories(dir / "config");
+    std::ofstream(dir / "script.txt")
+        << "wait 2\nresize " << kWidth << " " << kHeight << "\n" << actions << "quit\n";
+    return runCommand("XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+                      "/matevo' edit " + (preset.empty() ? "" : "'" + preset + "' ") +
+                      "--validate --report-timings --script '" + (dir / "script.txt").string() +
+                      "' --frames 100000");
+}
+
 // The Variants mode end to end: find a set, discard one, refill with hue variety on (the kept
 // grey variants stay, the new one may take its own kappa), save, and check the saved set as
 // `matevo variants --out` would have written it; the screenshot shows the set's tiles.
 TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     const fs::path dir = freshDirectory("variants");
-    fs::create_directories(dir / "config");
-    std::ofstream(dir / "script.txt")
-        << "wait 2\n"
-           "resize " << kWidth << " " << kHeight << "\n"
-           "variants 4\n"
-           "wait-variants\n"
-           "discard-variant 0\n"
-           "variants-hue on\n"
-           "refill-variants\n"
-           "wait-variants\n"
-           "wait 2\n"
-           "screenshot " << (dir / "variants.png").string() << "\n"
-           "save-variants " << (dir / "set").string() << "\n"
-           "wait 2\n"
-           "quit\n";
-    const CommandOutput run = runCommand(
-        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
-        "/matevo' edit '" + MATEVO_SOURCE_DIR + "/presets/validation_metal_depth.json' "
-        "--validate --script '" + (dir / "script.txt").string() + "' --frames 100000");
+    const CommandOutput run =
+        playSession(dir,
+                    "variants 4\n"
+                    "wait-variants\n"
+                    "discard-variant 0\n"
+                    "variants-hue on\n"
+                    "refill-variants\n"
+                    "wait-variants\n"
+                    "wait 2\n"
+                    "screenshot " + (dir / "variants.png").string() + "\n"
+                    "save-variants " + (dir / "set").string() + "\n"
+                    "wait 2\n",
+                    std::string(MATEVO_SOURCE_DIR) + "/presets/validation_metal_depth.json");
     ASSERT_EQ(run.exitCode, 0) << run.err;
 
     std::ifstream reportFile(dir / "set/report.json");
@@ -303,11 +311,8 @@ TEST(EditorSceneWindow, ShowsTheCandidatesAsInstancesOfAMesh) {
 // whole redraw of the same state. (The status bar differs: it names the first screenshot.)
 TEST(EditorPartialRedraw, ChangedAreasAddUpToTheWholePicture) {
     const fs::path dir = freshDirectory("partial");
-    fs::create_directories(dir / "config");
-    std::ofstream(dir / "script.txt")
-        << "wait 2\n"
-           "resize " << kWidth << " " << kHeight << "\n"
-           "population 24\n"
+    const CommandOutput run = playSession(
+        dir, "population 24\n"
            "wait-evolution\n"
            "select 1\n"
            "wait 2\n"
@@ -317,14 +322,9 @@ TEST(EditorPartialRedraw, ChangedAreasAddUpToTheWholePicture) {
            "wait 2\n"
            "heatmap off\n"
            "wait 4\n"
-           "screenshot " << (dir / "partial.png").string() << "\n"
+           "screenshot " + (dir / "partial.png").string() + "\n"
            "redraw\n"
-           "screenshot " << (dir / "whole.png").string() << "\n"
-           "quit\n";
-    const CommandOutput run = runCommand(
-        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
-        "/matevo' edit --validate --report-timings --script '" + (dir / "script.txt").string() +
-        "' --frames 100000");
+           "screenshot " + (dir / "whole.png").string() + "\n");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     // Frames that would have drawn the picture on screen again were not drawn.
     EXPECT_EQ(run.out.find("\"frames_unchanged\":0,"), std::string::npos) << run.out;
@@ -346,6 +346,47 @@ TEST(EditorPartialRedraw, ChangedAreasAddUpToTheWholePicture) {
     for (std::size_t i = 0; i < aboveStatusBar; i += 4)
         differing += !std::equal(&partial.rgba[i], &partial.rgba[i] + 4, &whole.rgba[i]);
     EXPECT_EQ(differing, 0u) << "pixels differ between the partly and the wholly redrawn picture";
+    fs::remove_all(dir);
+}
+
+// The FLIP overlay: its maps are computed by the worker on the window's device, the only
+// device the editor makes (--report-timings counts them), and the tiles change from the ΔE00
+// colours to FLIP's. (The worker test checks the maps against the CPU reference.)
+TEST(EditorFlipOverlay, ComputesTheMapsOnTheWindowsDeviceAndRecoloursTheTiles) {
+    const fs::path dir = freshDirectory("flip");
+    const CommandOutput run = playSession(
+        dir, "population 12\n"
+           "generations 2\n"
+           "wait-evolution\n"
+           "heatmap de00\n"
+           "wait 4\n"
+           "screenshot " + (dir / "de00.png").string() + "\n"
+           "heatmap flip\n"
+           "wait 2\n"
+           "wait-evolution\n"
+           "wait 4\n"
+           "screenshot " + (dir / "flip.png").string() + "\n");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("\"vulkan_devices\":1}"), std::string::npos) << run.out;
+
+    auto deltaEFile = readImage(dir / "de00.png");
+    auto flipFile = readImage(dir / "flip.png");
+    ASSERT_TRUE(deltaEFile.ok()) << deltaEFile.error().message;
+    ASSERT_TRUE(flipFile.ok()) << flipFile.error().message;
+    const Screenshot deltaE(*deltaEFile);
+    const Screenshot flip(*flipFile);
+    ASSERT_EQ(deltaE.width(), kWidth);
+    ASSERT_EQ(flip.width(), kWidth);
+    const PixelRect grid = toPixels(ui::layoutPanels(ImVec2(kWidth, kHeight)).grid, 150);
+    int recoloured = 0;
+    for (int y = grid.y0; y < grid.y1; ++y)
+        for (int x = grid.x0; x < grid.x1; ++x) {
+            const std::uint8_t* a = deltaE.pixel(x, y);
+            const std::uint8_t* b = flip.pixel(x, y);
+            recoloured += std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 60;
+        }
+    EXPECT_GT(recoloured, 2000) << "the tiles still show the ΔE00 maps";
+    EXPECT_GT(flip.saturatedPixels(grid), 2000) << "no heatmap over the tiles";
     fs::remove_all(dir);
 }
 

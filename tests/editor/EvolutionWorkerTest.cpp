@@ -1,7 +1,7 @@
 // The editor's GA worker renders its tiles on the device it is given (the window's), so the
-// window samples them where they are: no second device, no copy through the host (FLIP maps
-// excepted: computed on a device of their own, then uploaded). Run under the validation layer,
-// which reports any use of an image with a device it does not belong to.
+// window samples them where they are: no second device, no copy through the host, ΔE00 or FLIP
+// maps alike. Run under the validation layer, which reports any use of an image with a device
+// it does not belong to.
 #include "EvolutionWorker.h"
 
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include "../gpu/GpuTestContext.h"
 #include "PixelReadout.h"
 #include "color/Flip.h"
+#include "gpu/ImageBatch.h"
 
 namespace matevo::editor {
 namespace {
@@ -39,6 +40,35 @@ std::optional<EvolutionUpdate> finalUpdate(const gpu::Device& device, RenderBack
     }
     ADD_FAILURE() << "the GA run did not finish in 120 s";
     return std::nullopt;
+}
+
+// The float texels of a tile's error map, copied back from the device.
+std::vector<float> errorTexels(const gpu::Device& device, const gpu::GpuImage& map) {
+    const VkExtent3D extent = map.spec().extent;
+    const gpu::ImageBatchShape shape{int(extent.width), int(extent.height), 1};
+    auto buffer = gpu::createBatchBuffer(device, shape, 1, gpu::MemoryUse::Readback);
+    auto runner = gpu::CommandRunner::create(device);
+    EXPECT_TRUE(buffer.ok() && runner.ok());
+    if (!buffer || !runner) return {};
+    auto commands = runner->begin();
+    if (!commands) return {};
+    gpu::transitionImage(*commands, map.handle(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                         VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = extent;
+    vkCmdCopyImageToBuffer(*commands, map.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           buffer->handle(), 1, &region);
+    gpu::transitionImage(*commands, map.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                         VK_ACCESS_SHADER_READ_BIT);
+    gpu::computeWriteToHostReadBarrier(*commands);
+    EXPECT_TRUE(runner->submitAndWait().ok());
+    const auto texels = buffer->as<float>();
+    return {texels.begin(), texels.begin() + shape.pixelCount()};
 }
 
 // Asks the device about the image: the validation layer reports an image of another device.
@@ -131,15 +161,17 @@ TEST(EvolutionWorker, RunningEndsWithTheJobWhileItsLastUpdateWaits) {
 // The FLIP overlay: with a FLIP heatmap the tiles carry FLIP maps, and the inspector's readout of
 // the pixel under the pointer gives what the CPU reference (computeFlip) computes from the same
 // two images, within 2e-4 per pixel (the GPU pass's tolerance against the CPU), mean within 1e-3.
-// The GPU computes them on a device of its own (the window's queue would wait behind lavapipe's
-// compile of the FLIP pipelines), and the tiles are still images on the window's device.
+// The maps are computed on the window's device, where the tiles are, by the worker: no other
+// device is made, and the map each tile shows is the one the readout reads.
 TEST(EvolutionWorker, AFlipHeatmapReadsAsTheCpuFlipOfTheSameImages) {
     gpu::GpuContext* context = test::validatedContext();
     ASSERT_NE(context, nullptr);
     for (RenderBackend backend : {RenderBackend::Gpu, RenderBackend::Cpu}) {
         EvolutionJob job = metalJob();
         job.heatmapMetric = ImageMetric::Flip;
+        const int devicesBefore = gpu::logicalDevicesCreated();
         const auto update = finalUpdate(context->device, backend, job);
+        EXPECT_EQ(gpu::logicalDevicesCreated(), devicesBefore) << "the worker made a device";
         ASSERT_TRUE(update.has_value());
         EXPECT_EQ(update->error, "");
         EXPECT_EQ(update->heatmapMetric, ImageMetric::Flip);
@@ -162,6 +194,14 @@ TEST(EvolutionWorker, AFlipHeatmapReadsAsTheCpuFlipOfTheSameImages) {
             EXPECT_LE(largest, 2e-4f);
             EXPECT_NEAR(candidate.flipMap->stats.mean, reference->stats.mean, 1e-3);
             EXPECT_GT(reference->stats.mean, 0.0) << "a candidate identical to the target";
+            // What the tile shows: the same map, pooled pixels as e, the others negative.
+            const std::vector<float> shown = errorTexels(context->device, *candidate.tile->deltaE);
+            ASSERT_EQ(shown.size(), reference->error.size());
+            for (std::size_t p = 0; p < shown.size(); ++p) {
+                ASSERT_EQ(shown[p] >= 0.0f, bool(candidate.flipMap->pooled[p])) << p;
+                if (candidate.flipMap->pooled[p])
+                    ASSERT_EQ(shown[p], candidate.flipMap->error[p]) << p;
+            }
             // The readout, at pointer positions over the image.
             int read = 0;
             for (float v = 0.05f; v < 1.0f; v += 0.1f)

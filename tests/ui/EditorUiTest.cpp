@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "CandidateGrid.h"
 #include "EditorUiFixture.h"
 #include "GaControls.h"
 #include "HeatmapControls.h"
@@ -148,6 +149,39 @@ TEST(HeatmapControls, AChangedMetricSaysItsMapsAreBeingPrepared) {
     EXPECT_EQ(shownText(ImageMetric::Flip).find("Preparing"), std::string::npos);
     heatmap.metric = ImageMetric::DeltaE00;
     EXPECT_NE(shownText(ImageMetric::Flip).find("Preparing the ΔE00 maps"), std::string::npos);
+}
+
+// Between a change of heatmap metric and the worker's first tiles with the new maps, the status
+// line says so, not what the last job was doing when it ended.
+TEST(CandidateGrid, StatusLineSaysTheNewMapsAreBeingPrepared) {
+    HeadlessImGui imgui;
+    EvolutionView evolution;
+    evolution.running = true;
+    evolution.totalGenerations = 5;
+    evolution.history = {{5, 0.1, 0.2, 3.0, 0.5}};  // the last job's, finished
+    evolution.distinctGenomes = 40;
+    evolution.heatmapMetric = ImageMetric::DeltaE00;
+    const auto shownText = [&](ImageMetric chosen) {
+        std::string text;
+        imgui.frame([&] {
+            ImGui::Begin("status");
+            ImGui::LogToBuffer();
+            ui::drawStatusLine(evolution, chosen, 0, true);
+            text = GImGui->LogBuffer.c_str();
+            ImGui::End();
+        });
+        return text;
+    };
+    EXPECT_NE(shownText(ImageMetric::DeltaE00).find("Drawing the whole population"),
+              std::string::npos);
+    const std::string preparing = shownText(ImageMetric::Flip);
+    EXPECT_NE(preparing.find("Preparing the FLIP maps"), std::string::npos) << preparing;
+    EXPECT_EQ(preparing.find("Drawing"), std::string::npos) << preparing;
+    evolution.heatmapMetric = ImageMetric::Flip;  // the job's first update has come
+    EXPECT_EQ(shownText(ImageMetric::Flip).find("Preparing"), std::string::npos);
+    evolution.running = false;
+    evolution.heatmapMetric = ImageMetric::DeltaE00;  // a finished run says what it shows
+    EXPECT_NE(shownText(ImageMetric::DeltaE00).find("generations"), std::string::npos);
 }
 
 TEST_F(EditorUiTest, ClickingATileSelectsItAndPromoteMakesItTheTarget) {
