@@ -174,7 +174,8 @@ Status SceneRasterVisibility::record(VkCommandBuffer commands,
         drawn_ = std::move(grown).value();
         descriptors_.bindBuffer(0, drawn_);
     }
-    std::memcpy(drawn_.bytes().data(), drawn.data(), drawn.size_bytes());
+    // An empty frame's span may hold no pointer at all, which memcpy must not be handed.
+    if (!drawn.empty()) std::memcpy(drawn_.bytes().data(), drawn.data(), drawn.size_bytes());
 
     VkClearValue clears[2]{};
     clears[0].color.uint32[0] = kNoSurface;
