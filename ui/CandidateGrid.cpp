@@ -238,11 +238,14 @@ void drawStatusLine(const EvolutionView& evolution, ImageMetric chosenMetric, st
         return;
     }
     // A changed heatmap metric starts a job whose first update brings tiles with the new maps;
-    // until then everything shown is the last job's (the first ꟻLIP maps take seconds on
-    // lavapipe, which compiles their shaders then).
-    if (evolution.running && chosenMetric != evolution.heatmapMetric)
-        ImGui::TextColored(kAccentColor, "Preparing the %s maps of the tiles…",
-                           chosenMetric == ImageMetric::Flip ? "FLIP" : "ΔE00");
+    // until then the tiles shown are the last job's (the first ꟻLIP maps take seconds on
+    // lavapipe, which compiles their shaders then). The one place that says so: right above
+    // the tiles it is about, where the worker's progress is read.
+    const bool flipChosen = chosenMetric == ImageMetric::Flip;
+    if (evolution.running && chosenMetric != evolution.heatmapMetric &&
+        !evolution.candidates.empty())
+        ImGui::TextColored(kAccentColor, "Preparing the %s maps… the tiles show %s until then",
+                           flipChosen ? "FLIP" : "ΔE00", flipChosen ? "ΔE00" : "FLIP");
     else if (evolution.running && evolution.history.empty())
         ImGui::TextColored(kAccentColor, "Evolving: starting…");
     else if (evolution.running && done < evolution.totalGenerations)
@@ -323,7 +326,7 @@ bool drawCandidateGrid(EditorState& state) {
     sameLineIfFits(buttonWidth("Keep"));
     if (ImGui::Button("Keep")) keepPicked(state);
     hoverHint("Put the selected tiles (Ctrl+click for several) in the kept bin: K");
-    if (state.heatmap.enabled) drawHeatmapControls(state.heatmap, state.evolution.heatmapMetric);
+    if (state.heatmap.enabled) drawHeatmapControls(state.heatmap);
     if (!ImGui::BeginTabBar("grid tabs")) return false;
     if (ImGui::BeginTabItem("Population")) {
         drawPopulation(state);

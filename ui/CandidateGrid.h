@@ -28,8 +28,8 @@ std::optional<FarFromTargetAdvice> adviceForFarCandidates(const EvolutionView& e
                                                           const GaSettings& ga);
 
 // The line above the tiles: what the worker is doing (building tables, evolving, preparing the
-// maps of a newly chosen heatmap metric, drawing the rest of the population) or, when it is
-// done, what the grid shows.
+// maps of a newly chosen heatmap metric while the tiles still show the old one's, drawing the
+// rest of the population) or, when it is done, what the grid shows.
 void drawStatusLine(const EvolutionView& evolution, ImageMetric chosenMetric, std::size_t shown,
                     bool hideDuplicates);
 

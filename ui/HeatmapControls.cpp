@@ -118,18 +118,9 @@ void drawBandNames(const HeatmapView& heatmap) {
     ImGui::PopStyleColor();
 }
 
-// A changed metric's maps come with the worker's next tiles: ꟻLIP's first take seconds on
-// lavapipe (its shaders are compiled then), and the old maps stay until they arrive.
-void drawPreparingNotice(ImageMetric chosen, ImageMetric shown) {
-    if (chosen == shown) return;
-    const bool flip = chosen == ImageMetric::Flip;
-    ImGui::TextColored(kAccentColor, "Preparing the %s maps… the tiles show %s until then",
-                       flip ? "FLIP" : "ΔE00", flip ? "ΔE00" : "FLIP");
-}
-
 }  // namespace
 
-void drawHeatmapControls(HeatmapView& heatmap, ImageMetric shown) {
+void drawHeatmapControls(HeatmapView& heatmap) {
     int metric = int(heatmap.metric);
     ImGui::RadioButton("ΔE00", &metric, int(ImageMetric::DeltaE00));
     hoverHint("Per-pixel CIEDE2000 between target and candidate (the paper's measure).");
@@ -144,7 +135,6 @@ void drawHeatmapControls(HeatmapView& heatmap, ImageMetric shown) {
         ImGui::SetNextItemWidth(90.0f);
         sliderFloat("Opacity", &heatmap.opacity, 0.0f, 1.0f, "%.2f");
         drawFlipLegend();
-        drawPreparingNotice(heatmap.metric, shown);
         return;
     }
     sameLineIfFits(labelledWidth(150.0f, "ΔE00 range"));
@@ -158,7 +148,6 @@ void drawHeatmapControls(HeatmapView& heatmap, ImageMetric shown) {
     sliderFloat("Opacity", &heatmap.opacity, 0.0f, 1.0f, "%.2f");
     drawLegend(heatmap);
     drawBandNames(heatmap);
-    drawPreparingNotice(heatmap.metric, shown);
 }
 
 }  // namespace matevo::ui

@@ -2,6 +2,7 @@
 #include "EditorUi.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -9,7 +10,6 @@
 #include "CandidateGrid.h"
 #include "EditorUiFixture.h"
 #include "GaControls.h"
-#include "HeatmapControls.h"
 #include "MaterialControls.h"
 #include "ViewSettings.h"
 #include "genome/FamilyRules.h"
@@ -124,31 +124,47 @@ TEST_F(EditorUiTest, TheHeatmapShowsDeltaEOrFlipAndTheChoiceIsRemembered) {
     EXPECT_EQ(nextUi.state().heatmap.metric, ImageMetric::Flip);
 }
 
+// The text ImGui draws for `draw` in a window of its own (ImGui logs a window's text until its
+// End).
+std::string drawnText(HeadlessImGui& imgui, const std::function<void()>& draw) {
+    std::string text;
+    imgui.frame([&] {
+        ImGui::Begin("drawn");
+        ImGui::LogToBuffer();
+        draw();
+        text = GImGui->LogBuffer.c_str();
+        ImGui::End();
+    });
+    return text;
+}
+
+std::size_t occurrences(const std::string& text, const std::string& part) {
+    std::size_t count = 0;
+    for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1))
+        ++count;
+    return count;
+}
+
 // A changed metric's maps come with the worker's next tiles (ꟻLIP's first take seconds: lavapipe
-// compiles its shaders then); until they arrive the controls say so, then the line goes.
-TEST(HeatmapControls, AChangedMetricSaysItsMapsAreBeingPrepared) {
-    HeadlessImGui imgui;
-    ui::HeatmapView heatmap;
-    heatmap.enabled = true;
-    // The text the controls draw (ImGui logs a window's text until its End).
-    const auto shownText = [&](ImageMetric shown) {
-        std::string text;
-        imgui.frame([&] {
-            ImGui::Begin("heatmap");
-            ImGui::LogToBuffer();
-            ui::drawHeatmapControls(heatmap, shown);
-            text = GImGui->LogBuffer.c_str();
-            ImGui::End();
-        });
-        return text;
-    };
-    EXPECT_NE(shownText(ImageMetric::DeltaE00).find("Opacity"), std::string::npos);
-    EXPECT_EQ(shownText(ImageMetric::DeltaE00).find("Preparing"), std::string::npos);
-    heatmap.metric = ImageMetric::Flip;
-    EXPECT_NE(shownText(ImageMetric::DeltaE00).find("Preparing the FLIP maps"), std::string::npos);
-    EXPECT_EQ(shownText(ImageMetric::Flip).find("Preparing"), std::string::npos);
-    heatmap.metric = ImageMetric::DeltaE00;
-    EXPECT_NE(shownText(ImageMetric::Flip).find("Preparing the ΔE00 maps"), std::string::npos);
+// compiles its shaders then). Until they arrive the Candidates window says so once, above the
+// tiles, with what the tiles show meanwhile; then the line goes.
+TEST_F(EditorUiTest, TheCandidatesWindowSaysOnceThatTheNewMapsAreBeingPrepared) {
+    EditorState& state = ui.state();
+    state.heatmap.enabled = true;
+    state.heatmap.metric = ImageMetric::Flip;
+    EvolutionView& evolution = state.evolution;
+    evolution.running = true;
+    evolution.heatmapMetric = ImageMetric::DeltaE00;
+    evolution.candidates = {{1, 0.1, 2.0, state.preset.target, nullptr, nullptr}};
+    const auto windowText = [&] { return drawnText(imgui, [&] { drawCandidateGrid(state); }); };
+    const std::string preparing = windowText();
+    EXPECT_EQ(occurrences(preparing, "Preparing"), 1u) << preparing;
+    EXPECT_EQ(occurrences(preparing, "Preparing the FLIP maps… the tiles show ΔE00 until then"),
+              1u)
+        << preparing;
+    EXPECT_NE(preparing.find("Opacity"), std::string::npos) << "the FLIP controls are shown";
+    evolution.heatmapMetric = ImageMetric::Flip;  // the job's first update has come
+    EXPECT_EQ(windowText().find("Preparing"), std::string::npos);
 }
 
 // Between a change of heatmap metric and the worker's first tiles with the new maps, the status
@@ -158,27 +174,31 @@ TEST(CandidateGrid, StatusLineSaysTheNewMapsAreBeingPrepared) {
     EvolutionView evolution;
     evolution.running = true;
     evolution.totalGenerations = 5;
-    evolution.history = {{5, 0.1, 0.2, 3.0, 0.5}};  // the last job's, finished
-    evolution.distinctGenomes = 40;
     evolution.heatmapMetric = ImageMetric::DeltaE00;
     const auto shownText = [&](ImageMetric chosen) {
-        std::string text;
-        imgui.frame([&] {
-            ImGui::Begin("status");
-            ImGui::LogToBuffer();
-            ui::drawStatusLine(evolution, chosen, 0, true);
-            text = GImGui->LogBuffer.c_str();
-            ImGui::End();
-        });
-        return text;
+        return drawnText(imgui, [&] { ui::drawStatusLine(evolution, chosen, 1, true); });
     };
+    // The first job of a session that remembers FLIP: no tiles yet, so none show ΔE00.
+    const std::string starting = shownText(ImageMetric::Flip);
+    EXPECT_NE(starting.find("Evolving: starting"), std::string::npos) << starting;
+    EXPECT_EQ(starting.find("Preparing"), std::string::npos) << starting;
+
+    evolution.history = {{5, 0.1, 0.2, 3.0, 0.5}};  // the last job's, finished
+    evolution.distinctGenomes = 40;
+    evolution.candidates = {{1, 0.1, 2.0, Genome{}, nullptr, nullptr}};
     EXPECT_NE(shownText(ImageMetric::DeltaE00).find("Drawing the whole population"),
               std::string::npos);
     const std::string preparing = shownText(ImageMetric::Flip);
-    EXPECT_NE(preparing.find("Preparing the FLIP maps"), std::string::npos) << preparing;
+    EXPECT_NE(preparing.find("Preparing the FLIP maps… the tiles show ΔE00 until then"),
+              std::string::npos)
+        << preparing;
     EXPECT_EQ(preparing.find("Drawing"), std::string::npos) << preparing;
     evolution.heatmapMetric = ImageMetric::Flip;  // the job's first update has come
     EXPECT_EQ(shownText(ImageMetric::Flip).find("Preparing"), std::string::npos);
+    const std::string back = shownText(ImageMetric::DeltaE00);
+    EXPECT_NE(back.find("Preparing the ΔE00 maps… the tiles show FLIP until then"),
+              std::string::npos)
+        << back;
     evolution.running = false;
     evolution.heatmapMetric = ImageMetric::DeltaE00;  // a finished run says what it shows
     EXPECT_NE(shownText(ImageMetric::DeltaE00).find("generations"), std::string::npos);
