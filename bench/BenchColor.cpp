@@ -68,11 +68,17 @@ double measure(BenchReport& report, int size, int repetitions, int flipRepetitio
     return rate;
 }
 
+// How long the GPU comparisons of one size are timed at least (ΔE00 and LDR-FLIP in turn): a
+// call at 256² takes a few milliseconds, so 31 of each, one kind after the other, were a
+// fraction of a second of a shared machine.
+constexpr double kMinimumComparisonMilliseconds = 3000;
+
 // The same pair on the GPU (lavapipe on our machines): upload, the compute pass, read-back and
-// the statistics, for ΔE00 and for LDR-FLIP, after one warm-up call each. lavapipe compiles a
-// pipeline at its first dispatch, so the first call of a comparer is reported apart, in CPU
-// time of the whole process: the compile, from Mesa's shader cache when it holds the pipeline
-// (MESA_SHADER_CACHE_DISABLE=true measures the uncached compile).
+// the statistics, for ΔE00 and for LDR-FLIP, after one warm-up call each, then timed in turn
+// (bench/Timing.h). lavapipe compiles a pipeline at its first dispatch, so the first call of a
+// comparer is reported apart, in CPU time of the whole process: the compile, from Mesa's
+// shader cache when it holds the pipeline (MESA_SHADER_CACHE_DISABLE=true measures the
+// uncached compile).
 void measureGpu(BenchReport& report, gpu::GpuImageComparer& comparer, const std::string& device,
                 int size, int repetitions, bool reportFirstCall) {
     const Image a = benchImage(size, 0);
@@ -92,8 +98,10 @@ void measureGpu(BenchReport& report, gpu::GpuImageComparer& comparer, const std:
         report.push_back({"gpu_flip_first_call_cpu_ms", flipFirstCall,
                           "GPU LDR-FLIP first comparison, the same (process CPU ms)"});
     }
-    const WallAndCpu deltaETimes = medianWallAndCpu(repetitions, deltaE);
-    const WallAndCpu flipTimes = medianWallAndCpu(repetitions, flip);
+    const AlternatingTimes times =
+        alternatingMedians(repetitions, kMinimumComparisonMilliseconds, deltaE, flip);
+    const WallAndCpu& deltaETimes = times.first;
+    const WallAndCpu& flipTimes = times.second;
     const double deltaEMilliseconds = deltaETimes.wallMilliseconds;
     const double flipMilliseconds = flipTimes.wallMilliseconds;
     if (failed) {

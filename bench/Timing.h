@@ -8,6 +8,11 @@
 
 namespace matevo::bench {
 
+inline double median(std::vector<double> values) {
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+}
+
 template <typename Work>
 double medianMilliseconds(int repetitions, Work&& work) {
     std::vector<double> times;
@@ -18,8 +23,7 @@ double medianMilliseconds(int repetitions, Work&& work) {
         auto stop = std::chrono::steady_clock::now();
         times.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
     }
-    std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-    return times[times.size() / 2];
+    return median(std::move(times));
 }
 
 // Median wall time and median CPU time of the whole process (every thread, lavapipe's too):
@@ -37,8 +41,45 @@ WallAndCpu medianWallAndCpu(int repetitions, Work&& work) {
         work();
         cpuTimes.push_back(processCpuMilliseconds() - start);
     });
-    std::nth_element(cpuTimes.begin(), cpuTimes.begin() + cpuTimes.size() / 2, cpuTimes.end());
-    return {wall, cpuTimes[cpuTimes.size() / 2]};
+    return {wall, median(std::move(cpuTimes))};
+}
+
+// Two kinds of work timed in turn (first second, second first, first second, ...), each at
+// least `repetitions` times and until all of them together took `minimumMilliseconds`: for a
+// ratio of the two in the same run. A change in the load of the shared machine then falls on
+// both alike, neither always runs right after the other, and a call of a few milliseconds gets
+// enough repetitions for a steady median.
+struct AlternatingTimes {
+    WallAndCpu first;
+    WallAndCpu second;
+};
+
+template <typename First, typename Second>
+AlternatingTimes alternatingMedians(int repetitions, double minimumMilliseconds, First&& first,
+                                    Second&& second) {
+    std::vector<double> wall[2], cpu[2];
+    const auto time = [&](int which) {
+        const double cpuStart = processCpuMilliseconds();
+        const auto wallStart = std::chrono::steady_clock::now();
+        if (which == 0)
+            first();
+        else
+            second();
+        wall[which].push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wallStart)
+                .count());
+        cpu[which].push_back(processCpuMilliseconds() - cpuStart);
+    };
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+    };
+    for (int pair = 0; pair < repetitions || elapsed() < minimumMilliseconds; ++pair) {
+        time(pair % 2);
+        time(1 - pair % 2);
+    }
+    return {{median(wall[0]), median(cpu[0])}, {median(wall[1]), median(cpu[1])}};
 }
 
 }  // namespace matevo::bench

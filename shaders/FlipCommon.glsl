@@ -65,8 +65,10 @@ const int kWindow = kBlock + 2 * kRadius;
 // two vec4 filtered along x only. The first: the opponent channels through their
 // contrast-sensitivity filters (achromatic, red-green, the two blue-yellow terms); the
 // second: the normalised achromatic channel through the feature detectors (first and second
-// derivative, Gaussian) and, in w, the pixel's own alpha (the pooling needs it).
-uint planeIndex(uint slot, uint pixel, uint which) {
-    uint pixelCount = uint(settings.width * settings.height);
-    return 2 * (slot * pixelCount + pixel) + which;
+// derivative, Gaussian) and, in w, the pixel's own alpha (the pooling needs it). The row pass
+// writes both vec4 of a pixel as one u64vec4 at planePixel, the combination reads vec4 texels
+// at planeIndex.
+uint planePixel(uint slot, uint pixel) {
+    return slot * uint(settings.width * settings.height) + pixel;
 }
+uint planeIndex(uint slot, uint pixel, uint which) { return 2 * planePixel(slot, pixel) + which; }

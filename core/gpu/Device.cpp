@@ -53,15 +53,22 @@ std::optional<uint32_t> findQueueFamily(VkPhysicalDevice device, VkSurfaceKHR su
     return std::nullopt;
 }
 
-// 64-bit integers and 64-bit atomics on storage buffers: the scene's visibility pass keeps
-// depth and triangle of each pixel's nearest surface in one 64-bit word (atomicMin).
-bool supportsInt64Atomics(VkPhysicalDevice device) {
+// 64-bit integers in shaders (the ꟻLIP passes store 64-bit words), and 64-bit atomics on
+// storage buffers: the scene's visibility pass keeps depth and triangle of each pixel's
+// nearest surface in one 64-bit word (atomicMin).
+struct Int64Support {
+    bool integers = false;
+    bool bufferAtomics = false;
+};
+
+Int64Support int64SupportOf(VkPhysicalDevice device) {
     VkPhysicalDeviceVulkan12Features features12{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &features12;
     vkGetPhysicalDeviceFeatures2(device, &features);
-    return features.features.shaderInt64 && features12.shaderBufferInt64Atomics;
+    const bool integers = features.features.shaderInt64 == VK_TRUE;
+    return {integers, integers && features12.shaderBufferInt64Atomics == VK_TRUE};
 }
 
 // The geometryShader feature: the scene's fixed-function visibility pass reads gl_PrimitiveID
@@ -148,13 +155,15 @@ Result<Device> DeviceBuilder::build() const {
     std::vector<const char*> extensionNames;
     for (const auto& name : extensions_) extensionNames.push_back(name.c_str());
 
-    device.int64Atomics_ = supportsInt64Atomics(device.physicalDevice_);
+    const Int64Support int64 = int64SupportOf(device.physicalDevice_);
+    device.int64_ = int64.integers;
+    device.int64Atomics_ = int64.bufferAtomics;
     VkPhysicalDeviceVulkan12Features features12{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     features12.shaderBufferInt64Atomics = device.int64Atomics_;
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &features12;
-    features.features.shaderInt64 = device.int64Atomics_;
+    features.features.shaderInt64 = device.int64_;
     device.primitiveIds_ = supportsGeometryShader(device.physicalDevice_);
     features.features.geometryShader = device.primitiveIds_;
 

@@ -31,6 +31,8 @@ public:
     uint32_t queueFamily() const { return queueFamily_; }
     const std::string& name() const { return name_; }
     bool isCpu() const { return isCpu_; }
+    // shaderInt64, enabled when the device has it: the ꟻLIP passes store 64-bit words.
+    bool int64() const { return int64_; }
     // shaderInt64 and shaderBufferInt64Atomics, enabled when the device has them (the scene
     // renderer needs them).
     bool int64Atomics() const { return int64Atomics_; }
@@ -59,6 +61,7 @@ private:
     uint32_t queueFamily_ = 0;
     std::string name_;
     bool isCpu_ = false;
+    bool int64_ = false;
     bool int64Atomics_ = false;
     uint32_t maxTexelBufferElements_ = 0;
     bool primitiveIds_ = false;

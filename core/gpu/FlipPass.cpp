@@ -73,6 +73,9 @@ void recordCombination(VkCommandBuffer commands, const ComputeKernel& combine,
 }  // namespace
 
 Result<FlipPass> FlipPass::create(const Device& device, const DeltaE00Pass::Colormap& colormap) {
+    if (!device.int64())
+        return Error{"FLIP on the GPU needs 64-bit integers in shaders (shaderInt64), which " +
+                     device.name() + " does not have"};
     auto colormapBuffer = createColormapBuffer(device, colormap);
     if (!colormapBuffer) return colormapBuffer.error();
     FlipPass pass;

@@ -8,6 +8,8 @@
 // per degree, 3.6 s at 148): they take filter radii up to 20 pixels, about 148 pixels per degree,
 // and refuse wider ones with an error (the CPU path takes any). lavapipe compiles a pipeline
 // at its first dispatch, on the queue that runs it: work on the same queue waits that long.
+// The passes store 64-bit words (fewer stores, which lavapipe makes lane by lane), so they need
+// a device with shaderInt64 (lavapipe and desktop GPUs have it; create refuses others).
 #include <cstdint>
 #include <vector>
 

@@ -21,26 +21,41 @@ Result<GpuImageComparer> GpuImageComparer::create(const Device& device,
     return comparer;
 }
 
-Result<GpuImageComparer::Uploaded> GpuImageComparer::upload(
-    const Image& reference, std::span<const Image> candidates) const {
+namespace {
+
+// Keeps `buffer` when it holds the batch, else replaces it with one that does.
+Status holdBatch(const Device& device, Buffer& buffer, const ImageBatchShape& shape, int channels,
+                 MemoryUse use) {
+    const VkDeviceSize needed =
+        VkDeviceSize(shape.pixelCount()) * shape.count * VkDeviceSize(channels) * sizeof(float);
+    if (buffer.handle() && buffer.size() >= needed) return Ok{};
+    auto made = createBatchBuffer(device, shape, channels, use);
+    if (!made) return made.error();
+    buffer = std::move(made).value();
+    return Ok{};
+}
+
+}  // namespace
+
+Result<ImageBatchShape> GpuImageComparer::upload(const Image& reference,
+                                                 std::span<const Image> candidates) {
     const ImageBatchShape shape{reference.width, reference.height, uint32_t(candidates.size())};
     for (const Image& candidate : candidates)
         if (candidate.width != shape.width || candidate.height != shape.height)
             return Error{"GPU image comparison: candidate size differs from the reference's"};
-    auto referenceBuffer = createBatchBuffer(*device_, {shape.width, shape.height, 1}, 4,
-                                             MemoryUse::Upload);
-    auto candidateBuffer = createBatchBuffer(*device_, shape, 4, MemoryUse::Upload);
-    auto mapBuffer = createBatchBuffer(*device_, shape, 1, MemoryUse::Readback);
-    auto heatmapBuffer = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
-    for (const auto* buffer : {&referenceBuffer, &candidateBuffer, &mapBuffer, &heatmapBuffer})
-        if (!*buffer) return buffer->error();
+    const ImageBatchShape referenceShape{shape.width, shape.height, 1};
+    for (const Status& held :
+         {holdBatch(*device_, buffers_.reference, referenceShape, 4, MemoryUse::Upload),
+          holdBatch(*device_, buffers_.candidates, shape, 4, MemoryUse::Upload),
+          holdBatch(*device_, buffers_.maps, shape, 1, MemoryUse::Readback),
+          holdBatch(*device_, buffers_.heatmaps, shape, 4, MemoryUse::Readback)})
+        if (!held) return held.error();
     if (shape.pixelCount() > 0) {
-        uploadImage(*referenceBuffer, shape, 0, reference);
+        uploadImage(buffers_.reference, shape, 0, reference);
         for (uint32_t i = 0; i < shape.count; ++i)
-            uploadImage(*candidateBuffer, shape, i, candidates[i]);
+            uploadImage(buffers_.candidates, shape, i, candidates[i]);
     }
-    return Uploaded{shape, std::move(referenceBuffer).value(), std::move(candidateBuffer).value(),
-                    std::move(mapBuffer).value(), std::move(heatmapBuffer).value()};
+    return shape;
 }
 
 Result<GpuComparison> GpuImageComparer::compare(const Image& reference,
@@ -48,21 +63,21 @@ Result<GpuComparison> GpuImageComparer::compare(const Image& reference,
                                                 const HeatmapRange& range) {
     auto uploaded = upload(reference, candidates);
     if (!uploaded) return uploaded.error();
-    const ImageBatchShape& shape = uploaded->shape;
+    const ImageBatchShape& shape = *uploaded;
     if (shape.count == 0 || shape.pixelCount() == 0) return GpuComparison{};
 
     auto commands = runner_.begin();
     if (!commands) return commands.error();
-    deltaEPass_.record(*commands, {&uploaded->reference, &uploaded->candidates, &uploaded->maps,
-                                   &uploaded->heatmaps, shape.pixelCount(), shape.count, 0, 0,
+    deltaEPass_.record(*commands, {&buffers_.reference, &buffers_.candidates, &buffers_.maps,
+                                   &buffers_.heatmaps, shape.pixelCount(), shape.count, 0, 0,
                                    range.minDeltaE, range.maxDeltaE});
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
 
     GpuComparison comparison;
     for (uint32_t i = 0; i < shape.count; ++i) {
-        comparison.maps.push_back(downloadDeltaEMap(uploaded->maps, shape, i));
-        comparison.heatmaps.push_back(downloadImage(uploaded->heatmaps, shape, i));
+        comparison.maps.push_back(downloadDeltaEMap(buffers_.maps, shape, i));
+        comparison.heatmaps.push_back(downloadImage(buffers_.heatmaps, shape, i));
     }
     return comparison;
 }
@@ -72,15 +87,15 @@ Result<GpuFlipComparison> GpuImageComparer::compareFlip(const Image& reference,
                                                         const FlipSettings& settings) {
     auto uploaded = upload(reference, candidates);
     if (!uploaded) return uploaded.error();
-    const ImageBatchShape& shape = uploaded->shape;
+    const ImageBatchShape& shape = *uploaded;
     if (shape.count == 0 || shape.pixelCount() == 0) return GpuFlipComparison{};
 
     auto commands = runner_.begin();
     if (!commands) return commands.error();
     if (auto recorded =
             flipPass_.record(*commands,
-                             {&uploaded->reference, &uploaded->candidates, &uploaded->maps,
-                              &uploaded->heatmaps, shape.width, shape.height, shape.count, 0, 0},
+                             {&buffers_.reference, &buffers_.candidates, &buffers_.maps,
+                              &buffers_.heatmaps, shape.width, shape.height, shape.count, 0, 0},
                              settings);
         !recorded)
         return recorded.error();
@@ -89,8 +104,8 @@ Result<GpuFlipComparison> GpuImageComparer::compareFlip(const Image& reference,
 
     GpuFlipComparison comparison;
     for (uint32_t i = 0; i < shape.count; ++i) {
-        comparison.maps.push_back(downloadFlipMap(uploaded->maps, shape, i));
-        comparison.heatmaps.push_back(downloadImage(uploaded->heatmaps, shape, i));
+        comparison.maps.push_back(downloadFlipMap(buffers_.maps, shape, i));
+        comparison.heatmaps.push_back(downloadImage(buffers_.heatmaps, shape, i));
     }
     return comparison;
 }

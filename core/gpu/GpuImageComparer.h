@@ -45,17 +45,20 @@ public:
 
 private:
     // The images in upload buffers, and read-back buffers for one map and one heatmap per
-    // candidate.
-    struct Uploaded {
-        ImageBatchShape shape;
+    // candidate: kept from call to call, made anew only for a larger batch. (Fresh buffers at
+    // every call cost a page fault per 4 KiB touched, or not, as the C library's allocator
+    // happened to hand out memory: at 256² that was up to four times the ΔE00 pass's time.)
+    struct Buffers {
         Buffer reference, candidates, maps, heatmaps;
     };
-    Result<Uploaded> upload(const Image& reference, std::span<const Image> candidates) const;
+    // Copies the images into buffers_ (made or grown first when needed).
+    Result<ImageBatchShape> upload(const Image& reference, std::span<const Image> candidates);
 
     const Device* device_ = nullptr;
     DeltaE00Pass deltaEPass_;
     FlipPass flipPass_;
     CommandRunner runner_;
+    Buffers buffers_;
 };
 
 }  // namespace matevo::gpu

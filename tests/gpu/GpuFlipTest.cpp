@@ -187,6 +187,46 @@ TEST_F(GpuFlip, IdenticalImagesGiveZero) {
     EXPECT_EQ(result->maps[0].stats.pixels, image.pixelCount());
 }
 
+// The comparer keeps its buffers from call to call and grows them for a larger batch: each
+// call must give what a new comparer gives, for either metric, whatever came before.
+TEST_F(GpuFlip, AComparerKeptAcrossBatchesOfOtherSizesGivesWhatANewOneGives) {
+    struct Batch {
+        Image reference;
+        std::vector<Image> candidates;
+    };
+    std::vector<Batch> batches;
+    batches.push_back({noiseImage(24, 16, 1, 1.0f), {noiseImage(24, 16, 2, 1.0f)}});
+    batches.push_back({noiseImage(48, 40, 3, 1.0f),
+                       {noiseImage(48, 40, 4, 1.0f), noiseImage(48, 40, 5, 0.5f),
+                        noiseImage(48, 40, 6, 0.1f)}});
+    batches.push_back({noiseImage(24, 16, 7, 1.0f), {}});
+    batches.push_back({noiseImage(24, 16, 8, 1.0f), {noiseImage(24, 16, 9, 0.3f)}});
+    for (std::size_t b = 0; b < batches.size(); ++b) {
+        SCOPED_TRACE("batch " + std::to_string(b));
+        const Batch& batch = batches[b];
+        auto fresh = gpu::GpuImageComparer::create(context_->device, test::rampColormap());
+        ASSERT_TRUE(fresh.ok()) << fresh.error().message;
+
+        auto keptFlip = comparer_->compareFlip(batch.reference, batch.candidates);
+        auto freshFlip = fresh->compareFlip(batch.reference, batch.candidates);
+        ASSERT_TRUE(keptFlip.ok() && freshFlip.ok());
+        ASSERT_EQ(keptFlip->maps.size(), batch.candidates.size());
+        for (std::size_t i = 0; i < batch.candidates.size(); ++i) {
+            EXPECT_EQ(keptFlip->maps[i].error, freshFlip->maps[i].error);
+            EXPECT_EQ(keptFlip->heatmaps[i].rgba, freshFlip->heatmaps[i].rgba);
+        }
+
+        auto keptDeltaE = comparer_->compare(batch.reference, batch.candidates);
+        auto freshDeltaE = fresh->compare(batch.reference, batch.candidates);
+        ASSERT_TRUE(keptDeltaE.ok() && freshDeltaE.ok());
+        ASSERT_EQ(keptDeltaE->maps.size(), batch.candidates.size());
+        for (std::size_t i = 0; i < batch.candidates.size(); ++i) {
+            EXPECT_EQ(keptDeltaE->maps[i].deltaE, freshDeltaE->maps[i].deltaE);
+            EXPECT_EQ(keptDeltaE->heatmaps[i].rgba, freshDeltaE->heatmaps[i].rgba);
+        }
+    }
+}
+
 TEST_F(GpuFlip, RefusesBadInput) {
     const std::vector<Image> otherSize{Image(8, 8)};
     EXPECT_FALSE(comparer_->compareFlip(Image(16, 16), otherSize).ok());
