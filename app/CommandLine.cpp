@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "OutputNeeds.h"
 #include "Suggestion.h"
 #include "common/ByteSize.h"
 #include "common/ShortText.h"
@@ -160,6 +161,7 @@ std::string imageOutputPath(CommandLine& args) {
     if (!out) throw UsageError("--out FILE.png|FILE.exr is required");
     if (!isWritableImageType(*out))
         throw UsageError("--out: " + *out + ": the extension must be .png or .exr");
+    requireImageEncoder(*out, "--out");
     return *out;
 }
 

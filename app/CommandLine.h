@@ -66,7 +66,8 @@ std::vector<double> parseNumberList(const std::string& text, const std::string& 
 // "LO,HI": a band of mean ΔE00 (0 <= LO <= HI).
 DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what);
 
-// The required `--out FILE.png|FILE.exr` of the commands that write one image.
+// The required `--out FILE.png|FILE.exr` of the commands that write one image; its encoder is
+// looked for before the work (OutputNeeds.h).
 std::string imageOutputPath(CommandLine& args);
 
 // Claims an output folder before the work starts (io/OutputFolder.h: a folder holding other

@@ -9,6 +9,7 @@
 #include "EvolveImages.h"
 #include "EvolveReport.h"
 #include "Messages.h"
+#include "OutputNeeds.h"
 #include "PresetOption.h"
 #include "StopSignals.h"
 #include "WorkEstimate.h"
@@ -176,9 +177,13 @@ int runEvolve(CommandLine& args) {
     args.finish();
 
     installStopSignalHandlers();
-    // Everything that can be refused is refused before the work starts.
+    // Everything that can be refused is refused before the work starts: the output folder, the
+    // encoder of its images, work past the memory limit.
     std::optional<OutputFolder> output;
-    if (outDir) output.emplace(claimOutputFolder(*outDir, replaceOutput));
+    if (outDir) {
+        output.emplace(claimOutputFolder(*outDir, replaceOutput));
+        requireImageEncoder(output->target() / ("target." + format), "--format " + format);
+    }
     checkWorkEstimate(evolveEstimate(choice.preset.ga.population, choice.preset.ga.generations,
                                      outDir ? imageSize : 0));
 

@@ -10,6 +10,7 @@
 
 #include "ExperimentRenderer.h"
 #include "Messages.h"
+#include "OutputNeeds.h"
 #include "PresetOption.h"
 #include "ProgressBar.h"
 #include "StopSignals.h"
@@ -237,12 +238,9 @@ void printSummaries(std::span<const RunRecord> records, std::FILE* out) {
     }
 }
 
-// Runs the experiment into the claimed folder and commits it.
-int runInto(const Request& request, OutputFolder& output) {
+// Runs the experiment into the claimed folder, its charts in `font`, and commits it.
+int runInto(const Request& request, OutputFolder& output, const Font& font) {
     const std::filesystem::path& outDir = output.staging();
-    // The charts' font, before any run: a missing font is found out at once (exit 2).
-    auto font = Font::dejaVuSans();
-    if (!font) throw UsageError(font.error().message);
 
     const auto started = std::chrono::steady_clock::now();
     std::vector<RunRecord> allRecords;
@@ -275,7 +273,7 @@ int runInto(const Request& request, OutputFolder& output) {
                 allRecords.insert(allRecords.end(), records->begin(), records->end());
                 writeOrThrow(writeFileAtomically(outDir / "results.csv", resultsCsv(allRecords)));
                 if (!records->empty())
-                    writeHistograms(*records, choice.file.stem().string(), outDir, *font);
+                    writeHistograms(*records, choice.file.stem().string(), outDir, font);
             }
         }
     }
@@ -313,12 +311,13 @@ int runExperiment(CommandLine& args) {
     }
     const Request request = parseRequest(args);
     installStopSignalHandlers();
-    // Refused before any run: a folder with other files, or one we cannot write beside, and
-    // work past the memory limit.
+    // Refused before any run: a folder with other files, or one we cannot write beside, no
+    // font for the charts, and work past the memory limit.
     OutputFolder output = claimOutputFolder(request.outDir, request.replaceOutput);
+    const Font font = requireChartFont();
     checkWorkEstimate(estimateWork(request));
     try {
-        return runInto(request, output);
+        return runInto(request, output, font);
     } catch (const UsageError& error) {
         throw UsageError(output.userFacing(error.what()));
     }

@@ -1,4 +1,3 @@
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -12,6 +11,7 @@
 #include "export/ExportSet.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/ImageFile.h"
+#include "io/VariantFolder.h"
 
 namespace matevo::cli {
 
@@ -32,8 +32,9 @@ constexpr const char* kHelp =
     "  --genome FILE     one material: any material JSON matevo writes (a variant file, an\n"
     "                    evolve report's best, the editor's copy, or a bare genome, which takes\n"
     "                    family, kappa, textures and scene from --preset)\n"
-    "  --variants DIR    every variant_NNN.json of a `matevo variants --out DIR` set (in\n"
-    "                    DIR/variants or DIR itself), in name order\n"
+    "  --variants DIR    a set: every material .json in DIR/variants, as `matevo variants\n"
+    "                    --out DIR` writes it, or in DIR itself, in name order (as\n"
+    "                    `scene --variants` reads it)\n"
     "  --format F        gltf (PATH.gltf + PATH.bin), glb (one binary file) or mtlx (MaterialX\n"
     "                    1.39 gltf_pbr materials; textures as PNGs beside it); default: from\n"
     "                    the extension of --out\n"
@@ -51,22 +52,11 @@ constexpr const char* kHelp =
     "                    (their per-pixel dE00, 0-10 through viridis) at the report size\n"
     "Each material's glTF sphere sits on a grid, so any glTF viewer shows the whole set.\n";
 
+// The set's material files, as every command reads a set (io/VariantFolder.h).
 std::vector<fs::path> variantFiles(const fs::path& folder) {
-    const fs::path inner = folder / "variants";
-    const fs::path searched = fs::is_directory(inner) ? inner : folder;
-    if (!fs::is_directory(searched))
-        throw UsageError("--variants: " + folder.string() + ": no such folder");
-    std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(searched)) {
-        const std::string name = entry.path().filename().string();
-        if (entry.is_regular_file() && name.rfind("variant_", 0) == 0 &&
-            entry.path().extension() == ".json")
-            files.push_back(entry.path());
-    }
-    std::sort(files.begin(), files.end());
-    if (files.empty())
-        throw UsageError("--variants: no variant_NNN.json in " + searched.string());
-    return files;
+    auto files = variantFolderFiles(folder);
+    if (!files) throw UsageError("--variants: " + files.error().message);
+    return std::move(files).value();
 }
 
 ExportFormat chooseFormat(const std::optional<std::string>& option, const fs::path& out) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "Messages.h"
+#include "OutputNeeds.h"
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "StopSignals.h"
@@ -96,6 +97,7 @@ struct VariantsJob {
     RenderGenomes fitnessRender;
     RenderGenomes outputRender;
     std::optional<OutputFolder>& output;
+    const std::optional<Font>& font;  // the contact sheets', loaded with the output folder
     ImageMetric heatmapMetric = ImageMetric::DeltaE00;
     bool asJson = false;
     std::chrono::steady_clock::time_point started;
@@ -169,7 +171,7 @@ int runOneSet(const VariantsJob& job) {
     const int signal = markPartial(report);
     if (job.output) {
         if (auto written = writeVariantFiles(job.output->staging(), job.target, found.set, report,
-                                             job.heatmapMetric);
+                                             *job.font, job.heatmapMetric);
             !written)
             throw UsageError("--out: " + job.output->userFacing(written.error().message));
         commit(job.output);
@@ -196,7 +198,7 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
         addBlock(parts, job.preset, found.run, found.set, plan, block);
         if (job.output) {
             if (auto written = writeVariantBlock(job.output->staging(), job.target, found.set, plan,
-                                                 block, job.heatmapMetric);
+                                                 block, job.heatmapMetric, *job.font);
                 !written)
                 throw UsageError("--out: " + job.output->userFacing(written.error().message));
         }
@@ -273,10 +275,14 @@ int runVariants(CommandLine& args) {
         throw UsageError("--hue: the preset's base is a dielectric; hue variety evolves a "
                          "conductor's kappa");
     installStopSignalHandlers();
-    // Refused before the search: a folder with other files, or one we cannot write beside,
-    // and work past the memory limit.
+    // Refused before the search: a folder with other files, or one we cannot write beside, no
+    // font for the contact sheets, and work past the memory limit.
     std::optional<OutputFolder> output;
-    if (outDir) output.emplace(claimOutputFolder(*outDir, replaceOutput));
+    std::optional<Font> font;
+    if (outDir) {
+        output.emplace(claimOutputFolder(*outDir, replaceOutput));
+        font = requireChartFont();
+    }
     checkWorkEstimate(variantsEstimate(std::min(request.count, plan.blockSize), size, fitnessSize,
                                        settings.maxEvaluations, settings.population,
                                        int(blocks.size())));
@@ -303,6 +309,7 @@ int runVariants(CommandLine& args) {
                           renderAt(fitnessSize),
                           renderAt(size),
                           output,
+                          font,
                           *heatmapMetric,
                           asJson,
                           started};

@@ -546,11 +546,13 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
         auto saveSet = [&]() -> Status {
             auto output = OutputFolder::claim(view.savePath, true);
             if (!output) return output.error();
+            auto font = Font::dejaVuSans();  // the contact sheet's
+            if (!font) return font.error();
             if (auto written = writeVariantFiles(
                     output->staging(),
                     materialFromPreset(shown.preset, shown.presetFile, shown.preset.target,
                                        shown.preset.name),
-                    set, variantReport(shown.preset, shown.run, set));
+                    set, variantReport(shown.preset, shown.run, set), *font);
                 !written)
                 return Error{output->userFacing(written.error().message)};
             return output->commit();

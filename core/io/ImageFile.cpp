@@ -145,6 +145,13 @@ bool isWritableImageType(const std::filesystem::path& file) {
     return extension == ".png" || extension == ".exr";
 }
 
+Status checkImageEncoder(const std::filesystem::path& file) {
+    if (!isWritableImageType(file))
+        return fileError(file, "unsupported image type to write (expected .png or .exr)");
+    if (lowerCaseExtension(file) == ".png") return Ok{};
+    return imageLibraryAvailable();
+}
+
 Result<std::vector<unsigned char>> encodePng(const Image& image, PngValues values) {
     if (image.width <= 0 || image.height <= 0 || image.rgba.size() != image.pixelCount() * 4)
         return Error{"cannot encode an empty or malformed image as PNG"};

@@ -35,6 +35,10 @@ Result<Image> readImage(const std::filesystem::path& file);
 
 // Whether writeImage can write this file's type: .png or .exr, in any case.
 bool isWritableImageType(const std::filesystem::path& file);
+// Whether writeImage can encode that type here: .png always, .exr when matevo's OpenImageIO
+// module loads (the error says where it was looked for). Asked before the work whose result
+// is written, so that a long run does not fail at its end.
+Status checkImageEncoder(const std::filesystem::path& file);
 
 // Writes RGBA to .png (sRGB-encoded 8 bit, values clamped to [0, 1]) or .exr (32-bit float).
 // Atomic: written to a temporary file beside the target, then renamed over it.

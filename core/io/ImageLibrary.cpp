@@ -47,6 +47,11 @@ Result<const ImageLibraryFunctions*> imageLibrary() {
 
 }  // namespace
 
+Status imageLibraryAvailable() {
+    if (auto library = imageLibrary(); !library) return library.error();
+    return Ok{};
+}
+
 Result<DecodedImage> decodeWithImageLibrary(std::string_view bytes,
                                             const std::filesystem::path& file,
                                             const DecodedSizeCheck& checkSize) {

@@ -12,6 +12,9 @@
 
 namespace matevo {
 
+// Whether the module loads; the error says where it was looked for, or why it would not load.
+Status imageLibraryAvailable();
+
 // The functions of io/ImageLibraryAbi.h; errors say why the module could not be loaded.
 Result<DecodedImage> decodeWithImageLibrary(std::string_view bytes,
                                             const std::filesystem::path& file,

@@ -4,8 +4,7 @@
 
 namespace matevo {
 
-Result<std::vector<VariantFile>> loadVariantFolder(const std::filesystem::path& folder,
-                                                   const MaterialFile& context) {
+Result<std::vector<std::filesystem::path>> variantFolderFiles(const std::filesystem::path& folder) {
     std::error_code error;
     if (!std::filesystem::is_directory(folder, error))
         return Error{folder.string() + ": not a folder of variants"};
@@ -18,9 +17,16 @@ Result<std::vector<VariantFile>> loadVariantFolder(const std::filesystem::path& 
             files.push_back(entry.path());
     if (error) return Error{variants.string() + ": cannot list: " + error.message()};
     std::sort(files.begin(), files.end());
-    if (files.empty()) return Error{variants.string() + ": no genome .json files"};
+    if (files.empty()) return Error{variants.string() + ": no material .json files"};
+    return files;
+}
+
+Result<std::vector<VariantFile>> loadVariantFolder(const std::filesystem::path& folder,
+                                                   const MaterialFile& context) {
+    auto files = variantFolderFiles(folder);
+    if (!files) return files.error();
     std::vector<VariantFile> loaded;
-    for (const auto& file : files) {
+    for (const auto& file : *files) {
         auto material = loadMaterial(file, context);
         if (!material) return material.error();
         loaded.push_back({file, std::move(material->file), std::move(material->warnings)});

@@ -2,8 +2,9 @@
 // A set of variants on disk, as `matevo variants --out DIR` writes it (DIR/variants/
 // variant_NNN.json) or any folder of material JSON files (what `render --genome` reads): every
 // *.json file, in name order, read as a material (io/MaterialFile.h), so that each keeps its own
-// kappa (hue variety); a bare genome takes `context`'s family, kappa, textures and scene.
-// Errors name the file and field.
+// kappa (hue variety); a bare genome takes `context`'s family, kappa, textures and scene. Other
+// files are passed over. The one way a set is enumerated: `scene --variants` and
+// `export --variants` read the same members. Errors name the file and field.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -19,6 +20,11 @@ struct VariantFile {
     std::vector<std::string> warnings;  // each naming the file and field
 };
 
+// The set's material files in name order: DIR/variants/*.json when DIR has a variants folder,
+// else DIR/*.json; an error when there is none.
+Result<std::vector<std::filesystem::path>> variantFolderFiles(const std::filesystem::path& folder);
+
+// Those files read as materials.
 Result<std::vector<VariantFile>> loadVariantFolder(const std::filesystem::path& folder,
                                                    const MaterialFile& context);
 

@@ -129,7 +129,7 @@ std::string blockContactSheet(int block) {
 
 Status writeVariantBlock(const std::filesystem::path& dir, const MaterialFile& target,
                          const VariantSet& set, const VariantBlocks& plan, int block,
-                         ImageMetric heatmapMetric) {
+                         ImageMetric heatmapMetric, const Font& font) {
     const std::size_t first = std::size_t(plan.firstIndex(block));
     const std::size_t count = std::size_t(plan.count);
     if (auto written = writeVariantMembers(dir, target, set, first, count, heatmapMetric); !written)
@@ -140,9 +140,7 @@ Status writeVariantBlock(const std::filesystem::path& dir, const MaterialFile& t
     if (error)
         return Error{"cannot create folder '" + sheet.parent_path().string() + "' (" +
                      error.message() + ")"};
-    auto image = contactSheet(set, first, count);
-    if (!image) return image.error();
-    return writeImage(*image, sheet);
+    return writeImage(contactSheet(set, font, first, count), sheet);
 }
 
 }  // namespace matevo

@@ -49,9 +49,9 @@ nlohmann::ordered_json assembleBlockReport(BlockReport report, const std::option
 std::string blockContactSheet(int block);
 
 // Writes block `block`'s variants (VariantFiles.h's writeVariantMembers) and its contact sheet
-// into DIR.
+// (in `font`) into DIR.
 Status writeVariantBlock(const std::filesystem::path& dir, const MaterialFile& target,
                          const VariantSet& set, const VariantBlocks& plan, int block,
-                         ImageMetric heatmapMetric);
+                         ImageMetric heatmapMetric, const Font& font);
 
 }  // namespace matevo

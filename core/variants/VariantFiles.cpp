@@ -134,9 +134,8 @@ std::string variantSummary(const VariantRun& run, const VariantSet& set) {
     return text;
 }
 
-Result<Image> contactSheet(const VariantSet& set, std::size_t firstIndex, std::size_t count) {
-    auto font = Font::dejaVuSans();
-    if (!font) return font.error();
+Image contactSheet(const VariantSet& set, const Font& font, std::size_t firstIndex,
+                   std::size_t count) {
     const int tile = std::max(set.target.width, 1);
     const int labelHeight = 2 * kLabelLineHeight + kSheetGap / 2;
     const int cells = int(set.variants.size()) + 1;
@@ -152,14 +151,14 @@ Result<Image> contactSheet(const VariantSet& set, std::size_t firstIndex, std::s
     // Baselines of the two label lines under a tile whose top is at y.
     auto firstBaseline = [&](int y) { return double(y + tile + kLabelLineHeight); };
     auto [targetX, targetY] = origin(0);
-    canvas.drawText(*font, targetX, firstBaseline(targetY), "target", kLabelSize, kLabelColour);
+    canvas.drawText(font, targetX, firstBaseline(targetY), "target", kLabelSize, kLabelColour);
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         auto [x, y] = origin(int(i) + 1);
-        canvas.drawText(*font, x, firstBaseline(y),
+        canvas.drawText(font, x, firstBaseline(y),
                         variantStem(firstIndex + i, count).substr(8) + "  ΔE00 " +
                             format("%.2f", set.variants[i].deltaEToTarget),
                         kLabelSize, kLabelColour);
-        canvas.drawText(*font, x, firstBaseline(y) + kLabelLineHeight,
+        canvas.drawText(font, x, firstBaseline(y) + kLabelLineHeight,
                         "nearest " + format("%.2f", nearest[i]), kLabelSize, kLabelColour);
     }
     Image sheet = std::move(canvas).release();
@@ -207,13 +206,12 @@ Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile&
 
 Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
                          const VariantSet& set, const nlohmann::ordered_json& report,
-                         ImageMetric heatmapMetric) {
+                         const Font& font, ImageMetric heatmapMetric) {
     if (auto written = writeVariantMembers(dir, target, set, 0, 0, heatmapMetric); !written)
         return written;
     if (auto written = writeImage(set.target, dir / "target.png"); !written) return written;
-    auto sheet = contactSheet(set);
-    if (!sheet) return sheet.error();
-    if (auto written = writeImage(*sheet, dir / "contact_sheet.png"); !written) return written;
+    if (auto written = writeImage(contactSheet(set, font), dir / "contact_sheet.png"); !written)
+        return written;
     return writeFileAtomically(dir / "report.json", report.dump(2) + "\n");
 }
 

@@ -18,6 +18,7 @@
 #include "common/Image.h"
 #include "common/Result.h"
 #include "evolve/RenderGenomes.h"
+#include "experiment/Font.h"
 #include "io/MaterialFile.h"
 #include "io/Preset.h"
 #include "variants/VariantSearch.h"
@@ -67,9 +68,11 @@ std::string variantSummary(const VariantRun& run, const VariantSet& set);
 
 // The target (top left) and the variants in rows, each labelled with its index (the set's
 // members are the variants firstIndex, firstIndex + 1, … of a whole of `count`), its ΔE00 to
-// the target and to its nearest sibling, on a dark background, in DejaVu Sans (experiment/Font.h:
-// the error says where the font was looked for).
-Result<Image> contactSheet(const VariantSet& set, std::size_t firstIndex = 0, std::size_t count = 0);
+// the target and to its nearest sibling, on a dark background, in `font` (DejaVu Sans,
+// experiment/Font.h: loaded by the caller before the search, so that a missing font is found
+// out before the work rather than when the files are written).
+Image contactSheet(const VariantSet& set, const Font& font, std::size_t firstIndex = 0,
+                   std::size_t count = 0);
 
 // The material file of variant `index` of a whole of `count`: `target` (the preset's target as a
 // material file, io/MaterialFile.h: family, kappa, textures, scene) with the variant's genome
@@ -84,9 +87,10 @@ Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile&
                            ImageMetric heatmapMetric);
 
 // Writes every file listed above (atomically, each one), creating the folders; an Error names
-// the file that could not be written. Heatmaps of `heatmapMetric`. `target` as for variantMaterial.
+// the file that could not be written. Heatmaps of `heatmapMetric`. `target` as for
+// variantMaterial, `font` as for contactSheet.
 Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
                          const VariantSet& set, const nlohmann::ordered_json& report,
-                         ImageMetric heatmapMetric = ImageMetric::DeltaE00);
+                         const Font& font, ImageMetric heatmapMetric = ImageMetric::DeltaE00);
 
 }  // namespace matevo

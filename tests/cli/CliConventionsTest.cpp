@@ -62,6 +62,64 @@ TEST(CliConventions, AnUnwritableOutputIsBadInputNotAnInternalFailure) {
     EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << run.err;
 }
 
+// What an output needs besides its folder is looked for before the work starts: without the
+// font of contact sheets and charts, `variants --out` and `experiment` stop at once with one
+// line saying where the font was looked for (before even the estimate of a long run), rather
+// than fail when they write, after the work. `timeout` only bounds the test should the work
+// start: a million evaluations or a thousand runs take hours.
+TEST(CliConventions, AMissingChartFontIsRefusedBeforeTheWork) {
+    testing::ScratchFolder scratch("matevo_no_font");
+    const std::string noFont = "XDG_DATA_HOME=" + shellQuoted(scratch / "home") +
+                               " XDG_DATA_DIRS=" + shellQuoted(scratch / "share") +
+                               " timeout 120 '" + MATEVO_BINARY_DIR + "/matevo' ";
+    const std::string looked =
+        ": cannot find the DejaVu Sans font (Debian: fonts-dejavu-core); looked in " +
+        (scratch / "home" / "fonts/truetype/dejavu/DejaVuSans.ttf").string() + ", " +
+        (scratch / "share" / "fonts/truetype/dejavu/DejaVuSans.ttf").string();
+    const auto variants =
+        runCommand(noFont + "variants --count 2 --band 2,10 --max-evaluations 1000000 --out " +
+                   shellQuoted(scratch / "set"));
+    expectUsageLine(variants, "matevo variants" + looked);
+    EXPECT_FALSE(std::filesystem::exists(scratch / "set"));
+    const auto experiment = runCommand(noFont + "experiment --runs 1000 --backend cpu --out " +
+                                       shellQuoted(scratch / "runs"));
+    expectUsageLine(experiment, "matevo experiment" + looked);
+    EXPECT_FALSE(std::filesystem::exists(scratch / "runs"));
+    // Without --out nothing is drawn, so nothing needs the font.
+    const auto noOut = runCommand(noFont + "variants --count 1 --band 2,10 --size 16 "
+                                           "--fitness-size 8 --max-evaluations 40 --backend cpu");
+    EXPECT_TRUE(noOut.exitCode == 0 || noOut.exitCode == 3) << noOut.err;
+    EXPECT_EQ(noOut.err.find("DejaVu"), std::string::npos) << noOut.err;
+}
+
+// The executable alone (an install that lost matevo's OpenImageIO module, which it looks for
+// beside itself): an OpenEXR output is refused before the work, saying where the module was
+// looked for, rather than after the run when it writes; PNG needs no module.
+TEST(CliConventions, AnExrOutputWithoutTheImageModuleIsRefusedBeforeTheWork) {
+    testing::ScratchFolder scratch("matevo_no_module");
+    std::filesystem::create_directories(scratch / "bin");
+    std::filesystem::copy_file(std::string(MATEVO_BINARY_DIR) + "/matevo", scratch / "bin/matevo");
+    const std::string alone = "timeout 120 " + shellQuoted(scratch / "bin/matevo") + " ";
+    const std::string preset =
+        " --preset " + shellQuoted(std::string(MATEVO_SOURCE_DIR) + "/presets/validation_metal.json");
+    const std::string missing = ": matevo's OpenImageIO module is not installed (looked in " +
+                                (scratch / "bin/lib/matevo/matevo_image_library.so").string();
+    const auto evolve =
+        runCommand(alone + "evolve" + preset + " --population 2000 --generations 100000 "
+                           "--format exr --out " + shellQuoted(scratch / "run"));
+    EXPECT_EQ(evolve.exitCode, 2) << evolve.err;
+    EXPECT_EQ(evolve.err.rfind("matevo evolve: --format exr" + missing, 0), 0u) << evolve.err;
+    EXPECT_EQ(evolve.err.find('\n'), evolve.err.size() - 1) << evolve.err;
+    EXPECT_FALSE(std::filesystem::exists(scratch / "run"));
+    const auto render = runCommand(alone + "render" + preset + " --backend cpu --size 8 --out " +
+                                   shellQuoted(scratch / "x.exr"));
+    EXPECT_EQ(render.exitCode, 2) << render.err;
+    EXPECT_EQ(render.err.rfind("matevo render: --out" + missing, 0), 0u) << render.err;
+    const auto png = runCommand(alone + "render" + preset + " --backend cpu --size 8 --out " +
+                                shellQuoted(scratch / "x.png"));
+    EXPECT_EQ(png.exitCode, 0) << png.err;
+}
+
 TEST(CliConventions, VersionAndHelp) {
     const auto version = runMatevo("--version");
     EXPECT_EQ(version.exitCode, 0);

@@ -184,11 +184,50 @@ TEST(ExportCommand, AVariantsSetExportsToGltfAndMaterialX) {
     }
 }
 
+// A set is read the one way every command reads it (io/VariantFolder.h): every material .json
+// in DIR/variants, in name order, whatever its name (a material the user added is exported, as
+// `scene --variants` draws it); other files are passed over; a .json that is not a material
+// is refused with one line naming it, and nothing is written.
+TEST(ExportCommand, ASetIsEveryMaterialFileInItsFolder) {
+    testing::ScratchFolder folder("export_cli");
+    const auto set = folder / "set";
+    const auto made = testing::runMatevo(
+        "variants --count 2 --band 2,10 --min-apart 1 --size 16 --fitness-size 8"
+        " --max-evaluations 200 --backend cpu --out " + shellQuoted(set));
+    ASSERT_EQ(made.exitCode, 0) << made.err;
+    // A material the user put in the set: a copy of the first variant under a name of its own.
+    auto added = nlohmann::json::parse(contentsOf(set / "variants" / "variant_000.json"));
+    added["name"] = "added";
+    std::ofstream(set / "variants" / "added.json") << added.dump();
+    std::ofstream(set / "variants" / "notes.txt") << "picked on Tuesday\n";
+    const auto out = folder / "set.glb";
+    const std::string exportSet = "export --variants " + shellQuoted(set) + " --out " +
+                                  shellQuoted(out) +
+                                  " --backend cpu --fit-size 16 --fit-renders 20 --report-size 16"
+                                  " --json";
+    const auto exported = testing::runMatevo(exportSet);
+    ASSERT_EQ(exported.exitCode, 0) << exported.err;
+    const auto report = nlohmann::json::parse(exported.out);
+    ASSERT_EQ(report["variants"].size(), 3u) << exported.out;
+    EXPECT_EQ(report["variants"][0]["name"], "added");  // name order
+
+    fs::remove(out);
+    std::ofstream(set / "variants" / "variant_001.json") << R"({"eta1": 1.3, "eta2": )";
+    const auto broken = testing::runMatevo(exportSet);
+    EXPECT_EQ(broken.exitCode, 2) << broken.err;
+    EXPECT_EQ(std::count(broken.err.begin(), broken.err.end(), '\n'), 1) << broken.err;
+    EXPECT_NE(broken.err.find((set / "variants" / "variant_001.json").string()),
+              std::string::npos)
+        << broken.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(ExportCommand, MistakesExitTwoWithOneLine) {
     testing::ScratchFolder folder("export_cli");
     const auto genome = folder / "g.json";
     std::ofstream(genome) << R"({"eta1": 1.2, "eta2": 0.8, "alpha1": 0.03, "alpha2": 0.1})";
     const auto out = folder / "x.glb";
+    fs::create_directories(folder / "empty");
     for (const std::string& arguments :
          {"export --genome " + shellQuoted(genome) + " --variants " + shellQuoted(folder.path()) + " --out " +
               shellQuoted(out),
@@ -196,7 +235,8 @@ TEST(ExportCommand, MistakesExitTwoWithOneLine) {
           "export --genome " + shellQuoted(genome) + " --format fbx --out " + shellQuoted(out),
           "export --genome " + shellQuoted(genome) + " --format gltf --out " + shellQuoted(out),
           "export --genome " + shellQuoted(genome) + " --out " + shellQuoted(folder / "missing/x.glb"),
-          "export --variants " + shellQuoted(folder.path()) + " --out " + shellQuoted(out)}) {
+          "export --variants " + shellQuoted(folder / "empty") + " --out " + shellQuoted(out),
+          "export --variants " + shellQuoted(folder / "missing") + " --out " + shellQuoted(out)}) {
         const auto result = testing::runMatevo(arguments);
         EXPECT_EQ(result.exitCode, 2) << arguments;
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;

@@ -171,7 +171,7 @@ TEST_F(SceneCommand, BadInputIsOneLineNamingTheProblem) {
     const std::pair<std::string, std::string> cases[] = {
         {"--mesh '" + (folder / "broken.obj").string() + "'", "broken.obj:2: position index 2"},
         {"--mesh teapot", "teapot: not a mesh"},
-        {"--variants '" + (folder / "empty").string() + "'", "no genome .json files"},
+        {"--variants '" + (folder / "empty").string() + "'", "no material .json files"},
         {"--env '" + (folder / "missing.hdr").string() + "'", "missing.hdr"},
         {"--layout spiral", "--layout: expected grid or crowd"},
         {"--size 100", "--size: expected WxH"},
