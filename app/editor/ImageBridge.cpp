@@ -95,18 +95,9 @@ Status ImageBridge::createLayouts() {
     const VkPushConstantRange ranges[2] = {
         {VK_SHADER_STAGE_VERTEX_BIT, 0, kTransformBytes},
         {VK_SHADER_STAGE_FRAGMENT_BIT, kTransformBytes, sizeof(FragmentSettings)}};
-    VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout.setLayoutCount = 1;
-    layout.pSetLayouts = &set;
-    layout.pushConstantRangeCount = 2;
-    layout.pPushConstantRanges = ranges;
-    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    if (Status s =
-            gpu::checkVulkan(vkCreatePipelineLayout(device_, &layout, nullptr, &pipelineLayout),
-                             "creating a pipeline layout");
-        !s)
-        return s;
-    pipelineLayout_ = gpu::UniquePipelineLayout(device_, pipelineLayout);
+    auto pipelineLayout = gpu::createPipelineLayout(device_, set, ranges);
+    if (!pipelineLayout) return pipelineLayout.error();
+    pipelineLayout_ = std::move(pipelineLayout).value();
     return Ok{};
 }
 

@@ -5,6 +5,7 @@
 
 #include "VulkanContext.h"
 #include "gpu/GpuImage.h"
+#include "gpu/GraphicsPipeline.h"
 #include "gpu/VulkanError.h"
 
 namespace matevo::editor {
@@ -87,19 +88,10 @@ Status WindowRenderer::createRenderPasses() {
         dependency.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
         dependency.dstAccessMask =
             VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-        VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-        info.attachmentCount = 1;
-        info.pAttachments = &color;
-        info.subpassCount = 1;
-        info.pSubpasses = &subpass;
-        info.dependencyCount = 1;
-        info.pDependencies = &dependency;
-        VkRenderPass renderPass = VK_NULL_HANDLE;
-        if (Status s = gpu::checkVulkan(vkCreateRenderPass(device_, &info, nullptr, &renderPass),
-                                        "creating the window's render pass");
-            !s)
-            return s;
-        (keep ? redrawPass_ : renderPass_) = gpu::UniqueRenderPass(device_, renderPass);
+        auto renderPass = gpu::createRenderPass(device_, std::span(&color, 1), subpass,
+                                                std::span(&dependency, 1));
+        if (!renderPass) return renderPass.error();
+        (keep ? redrawPass_ : renderPass_) = std::move(renderPass).value();
     }
     return Ok{};
 }
@@ -194,20 +186,11 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
             !s)
             return s;
         target.view = gpu::UniqueImageView(device_, imageView);
-        VkFramebufferCreateInfo framebuffer{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        framebuffer.renderPass = renderPass_.get();
-        framebuffer.attachmentCount = 1;
-        framebuffer.pAttachments = &imageView;
-        framebuffer.width = extent_.width;
-        framebuffer.height = extent_.height;
-        framebuffer.layers = 1;
-        VkFramebuffer handle = VK_NULL_HANDLE;
-        if (Status s =
-                gpu::checkVulkan(vkCreateFramebuffer(device_, &framebuffer, nullptr, &handle),
-                                 "creating a framebuffer");
-            !s)
-            return s;
-        target.framebuffer = gpu::UniqueFramebuffer(device_, handle);
+        auto framebuffer = gpu::createFramebuffer(device_, renderPass_.get(),
+                                                  std::span(&imageView, 1), extent_.width,
+                                                  extent_.height);
+        if (!framebuffer) return framebuffer.error();
+        target.framebuffer = std::move(framebuffer).value();
         auto renderDone = createSemaphore(device_);
         if (!renderDone) return renderDone.error();
         target.renderDone = std::move(renderDone).value();

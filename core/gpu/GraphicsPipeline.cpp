@@ -116,10 +116,14 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device,
     return UniqueRenderPass(device, renderPass);
 }
 
-Result<UniquePipelineLayout> createPipelineLayout(VkDevice device, VkDescriptorSetLayout set) {
+Result<UniquePipelineLayout> createPipelineLayout(
+    VkDevice device, VkDescriptorSetLayout set,
+    std::span<const VkPushConstantRange> pushConstants) {
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     info.setLayoutCount = 1;
     info.pSetLayouts = &set;
+    info.pushConstantRangeCount = uint32_t(pushConstants.size());
+    info.pPushConstantRanges = pushConstants.data();
     VkPipelineLayout layout = VK_NULL_HANDLE;
     if (VkResult result = vkCreatePipelineLayout(device, &info, nullptr, &layout);
         result != VK_SUCCESS)

@@ -37,8 +37,11 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device,
                                           const VkSubpassDescription& subpass,
                                           std::span<const VkSubpassDependency> dependencies);
 
-// A pipeline layout of one descriptor set and no push constants (the scene's raster passes).
-Result<UniquePipelineLayout> createPipelineLayout(VkDevice device, VkDescriptorSetLayout set);
+// A pipeline layout of one descriptor set and `pushConstants` (the scene's raster passes have
+// none; the editor's image quads push their transform and heatmap settings).
+Result<UniquePipelineLayout> createPipelineLayout(
+    VkDevice device, VkDescriptorSetLayout set,
+    std::span<const VkPushConstantRange> pushConstants = {});
 
 // A one-layer framebuffer of `attachments` for `renderPass`.
 Result<UniqueFramebuffer> createFramebuffer(VkDevice device, VkRenderPass renderPass,
