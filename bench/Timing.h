@@ -1,5 +1,6 @@
 #pragma once
-// Median wall time of repeated runs. Medians, not means: the machines are shared and noisy.
+// Median wall (and process CPU) times of repeated runs. Medians, not means: the machines are
+// shared and noisy.
 #include <algorithm>
 #include <chrono>
 #include <vector>
@@ -7,6 +8,11 @@
 #include "common/ProcessCpuTime.h"
 
 namespace matevo::bench {
+
+inline double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
 
 inline double median(std::vector<double> values) {
     std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
@@ -18,10 +24,9 @@ double medianMilliseconds(int repetitions, Work&& work) {
     std::vector<double> times;
     times.reserve(repetitions);
     for (int i = 0; i < repetitions; ++i) {
-        auto start = std::chrono::steady_clock::now();
+        const auto start = std::chrono::steady_clock::now();
         work();
-        auto stop = std::chrono::steady_clock::now();
-        times.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+        times.push_back(millisecondsSince(start));
     }
     return median(std::move(times));
 }
@@ -65,17 +70,12 @@ AlternatingTimes alternatingMedians(int repetitions, double minimumMilliseconds,
             first();
         else
             second();
-        wall[which].push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wallStart)
-                .count());
+        wall[which].push_back(millisecondsSince(wallStart));
         cpu[which].push_back(processCpuMilliseconds() - cpuStart);
     };
     const auto start = std::chrono::steady_clock::now();
-    const auto elapsed = [&] {
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count();
-    };
-    for (int pair = 0; pair < repetitions || elapsed() < minimumMilliseconds; ++pair) {
+    for (int pair = 0; pair < repetitions || millisecondsSince(start) < minimumMilliseconds;
+         ++pair) {
         time(pair % 2);
         time(1 - pair % 2);
     }

@@ -198,7 +198,7 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
         addBlock(parts, job.preset, found.run, found.set, plan, block);
         if (job.output) {
             if (auto written = writeVariantBlock(job.output->staging(), job.target, found.set, plan,
-                                                 block, job.heatmapMetric, *job.font);
+                                                 block, *job.font, job.heatmapMetric);
                 !written)
                 throw UsageError("--out: " + job.output->userFacing(written.error().message));
         }

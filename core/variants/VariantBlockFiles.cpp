@@ -129,7 +129,7 @@ std::string blockContactSheet(int block) {
 
 Status writeVariantBlock(const std::filesystem::path& dir, const MaterialFile& target,
                          const VariantSet& set, const VariantBlocks& plan, int block,
-                         ImageMetric heatmapMetric, const Font& font) {
+                         const Font& font, ImageMetric heatmapMetric) {
     const std::size_t first = std::size_t(plan.firstIndex(block));
     const std::size_t count = std::size_t(plan.count);
     if (auto written = writeVariantMembers(dir, target, set, first, count, heatmapMetric); !written)

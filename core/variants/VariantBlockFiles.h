@@ -49,9 +49,9 @@ nlohmann::ordered_json assembleBlockReport(BlockReport report, const std::option
 std::string blockContactSheet(int block);
 
 // Writes block `block`'s variants (VariantFiles.h's writeVariantMembers) and its contact sheet
-// (in `font`) into DIR.
+// (in `font`) into DIR; heatmaps of `heatmapMetric`.
 Status writeVariantBlock(const std::filesystem::path& dir, const MaterialFile& target,
                          const VariantSet& set, const VariantBlocks& plan, int block,
-                         ImageMetric heatmapMetric, const Font& font);
+                         const Font& font, ImageMetric heatmapMetric);
 
 }  // namespace matevo
