@@ -18,10 +18,12 @@
 namespace matevo {
 namespace {
 
-// Rows per band of work. A band filters the rows it needs along x (its own plus the filter
-// radius above and below) into band-local buffers, then along y: more rows per band repeat
-// less of the row pass, fewer keep the buffers in cache.
-constexpr int kBandRows = 64;
+// A tile of work: its pixels' rows and columns plus the filter radius around them are filtered
+// along x into tile-local planes, then along y. Taller tiles repeat less of the row pass;
+// narrower ones keep the fourteen planes (seven per image) in the core's cache between the two
+// passes (whole 2048-pixel rows were megabytes per worker).
+constexpr int kTileRows = 64;
+constexpr int kTileColumns = 128;
 
 // A filter's taps right of and at its centre, and whether its left half mirrors them (even)
 // or their negatives (odd): our filters are Gaussians and their derivatives, so each mirrored
@@ -72,7 +74,7 @@ template <int Count, int Vectors>
 }
 
 // out[f][x] = Σ_k taps[f][k] lines[k][x] for `Count` filters of one radius over the same
-// 2r + 1 lines (the shifts of one padded row, or rows of a band): each pair of mirrored lines
+// 2r + 1 lines (the shifts of one padded row, or rows of a tile): each pair of mirrored lines
 // is loaded, added and subtracted once for all the filters. Every pixel is summed in the same
 // order (the centre, then the pairs from the outermost in), whichever path below takes it.
 template <int Count>
@@ -114,13 +116,13 @@ MATEVO_VECTORISED_KERNEL void filterLines(std::initializer_list<const Taps*> tap
     }
 }
 
-// One image row in YyCxCz, a line per channel, and the achromatic channel normalised to [0, 1]
-// for the feature detectors, each line with `padding` copies of its edge pixels on both sides
-// for the row filters. Rows are converted as a band's row passes need them rather than kept
-// as whole-image planes, which at 2048² were 128 MB written and read again.
+// One row of a tile in YyCxCz, a line per channel, and the achromatic channel normalised to
+// [0, 1] for the feature detectors; each line holds the tile's columns and `padding` more on
+// both sides for the row filters, edge pixels repeated past the image's edges.
 struct OpponentRow {
     int padding = 0;
     std::vector<float> achromatic, redGreen, blueYellow, lightness;
+    // Where the tile's column x (0 at its first) is.
     const float* at(const std::vector<float>& line, int x) const {
         return line.data() + padding + x;
     }
@@ -140,29 +142,34 @@ MATEVO_VECTORISED_KERNEL void opponentRange(const float* rgba, std::size_t count
     }
 }
 
-void convertRow(const Image& image, int y, int padding, OpponentRow& row) {
-    const int width = image.width;
+// Columns [firstColumn − padding, endColumn + padding) of image row y.
+void convertRow(const Image& image, int y, int firstColumn, int endColumn, int padding,
+                OpponentRow& row) {
+    const int lineStart = firstColumn - padding, lineEnd = endColumn + padding;
+    const int inside = std::max(lineStart, 0), insideEnd = std::min(lineEnd, image.width);
     row.padding = padding;
     for (auto* line : {&row.achromatic, &row.redGreen, &row.blueYellow, &row.lightness})
-        line->resize(std::size_t(width + 2 * padding));
-    opponentRange(&image.rgba[4 * std::size_t(y) * std::size_t(width)], std::size_t(width),
-                  row.achromatic.data() + padding, row.redGreen.data() + padding,
-                  row.blueYellow.data() + padding, row.lightness.data() + padding);
+        line->resize(std::size_t(lineEnd - lineStart));
+    const int offset = inside - lineStart;
+    opponentRange(&image.rgba[4 * (std::size_t(y) * std::size_t(image.width) + inside)],
+                  std::size_t(insideEnd - inside), row.achromatic.data() + offset,
+                  row.redGreen.data() + offset, row.blueYellow.data() + offset,
+                  row.lightness.data() + offset);
     for (auto* line : {&row.achromatic, &row.redGreen, &row.blueYellow, &row.lightness}) {
         float* values = line->data();
-        std::fill(values, values + padding, values[padding]);
-        std::fill(values + padding + width, values + width + 2 * padding,
-                  values[padding + width - 1]);
+        std::fill(values, values + offset, values[offset]);
+        const int last = insideEnd - lineStart - 1;
+        std::fill(values + last + 1, values + (lineEnd - lineStart), values[last]);
     }
 }
 
-// The row pass of one band for one plane: image rows [first, first + count) (clamped at the
-// image's edges) filtered along x, stored consecutively.
+// The row pass of one tile for one plane: image rows [first, first + count) (clamped at the
+// image's edges) filtered along x over the tile's columns, stored consecutively.
 class RowFiltered {
 public:
-    // Keeps its buffer's memory from band to band. Rows are a cache line longer than a whole
+    // Keeps its buffer's memory from tile to tile. Rows are a cache line longer than a whole
     // number of lines: the column passes load the same column of 2r + 1 rows, which at a
-    // stride of a multiple of 4 KiB (a 2048-pixel row) all fall in one set of the L1 cache.
+    // stride of a multiple of 4 KiB (1024 pixels) all fall in one set of the L1 cache.
     // Not zeroed: the row passes write every value the column passes read.
     void resize(int width, int first, int count) {
         stride_ = (std::size_t(width) + 15) / 16 * 16 + 16;
@@ -198,7 +205,7 @@ Kernels makeKernels(double pixelsPerDegree) {
             halfOf(feature.secondDerivative), float(flip::maxColorDistance())};
 }
 
-// The planes a band's row passes fill for one image, each filtered along x.
+// The planes a tile's row passes fill for one image, each filtered along x.
 enum Plane {
     kAchromatic, kRedGreen, kBlueYellow0, kBlueYellow1,  // contrast sensitivity, step 2
     kSlope, kCurvature, kBlurred,                        // first, second derivative, Gaussian
@@ -230,18 +237,24 @@ MATEVO_VECTORISED_KERNEL void combineRow(const float* const* derivatives, int wi
     }
 }
 
-// One worker's buffers, reused from band to band (a band's are megabytes, which the allocator
-// would map and unmap each time): a converted row, the row passes of both images, the line
-// pointers of a filter and the column sums of one row.
-struct BandScratch {
+// Where one chunk of work lies in the image: rows [firstRow, endRow), columns
+// [firstColumn, endColumn).
+struct Tile {
+    int firstRow, endRow, firstColumn, endColumn;
+    int width() const { return endColumn - firstColumn; }
+};
+
+// One worker's buffers, reused from tile to tile: a converted row, the row passes of both
+// images, the line pointers of a filter and the column sums of one row.
+struct TileScratch {
     OpponentRow opponent;
     std::array<std::array<RowFiltered, kPlaneCount>, 2> rows;  // [image][plane]
     std::vector<const float*> lines;
     std::vector<float> sums;
-    FlipPooling pooling;  // of the bands this worker computed
+    FlipPooling pooling;  // of the tiles this worker computed
 };
 
-// The 2r + 1 shifts of a padded line around x = 0, for a filter of radius r.
+// The 2r + 1 shifts of a padded line around the tile's first column, for a filter of radius r.
 const float* const* shiftsOf(const OpponentRow& row, const std::vector<float>& line, int radius,
                              std::vector<const float*>& lines) {
     lines.resize(std::size_t(2 * radius + 1));
@@ -249,28 +262,29 @@ const float* const* shiftsOf(const OpponentRow& row, const std::vector<float>& l
     return lines.data();
 }
 
-// The 2r + 1 stored rows around image row y from column x on, for a filter of radius r.
-const float* const* rowsAround(const RowFiltered& plane, int y, int x, int radius,
+// The 2r + 1 stored rows around image row y, for a filter of radius r.
+const float* const* rowsAround(const RowFiltered& plane, int y, int radius,
                                std::vector<const float*>& lines) {
     lines.resize(std::size_t(2 * radius + 1));
-    for (int k = -radius; k <= radius; ++k) lines[std::size_t(k + radius)] = plane.row(y + k) + x;
+    for (int k = -radius; k <= radius; ++k) lines[std::size_t(k + radius)] = plane.row(y + k);
     return lines.data();
 }
 
-// The row passes of both images over the band's rows and `halo` more above and below, each
+// The row passes of both images over the tile and `halo` more rows above and below, each
 // image row converted once for all seven filters.
-void rowPasses(const Image& reference, const Image& test, int firstRow, int endRow, int halo,
-               const Kernels& kernels, BandScratch& scratch) {
+void rowPasses(const Image& reference, const Image& test, const Tile& tile, int halo,
+               const Kernels& kernels, TileScratch& scratch) {
     const Image* images[2] = {&reference, &test};
-    const int width = reference.width, height = reference.height;
+    const int width = tile.width();
     const int csfRadius = kernels.achromatic.radius(), featureRadius = kernels.gaussian.radius();
     const OpponentRow& row = scratch.opponent;
     for (std::size_t image = 0; image < 2; ++image) {
         auto& planes = scratch.rows[image];
         for (RowFiltered& plane : planes)
-            plane.resize(width, firstRow - halo, endRow - firstRow + 2 * halo);
-        for (int y = firstRow - halo; y < endRow + halo; ++y) {
-            convertRow(*images[image], std::clamp(y, 0, height - 1), halo, scratch.opponent);
+            plane.resize(width, tile.firstRow - halo, tile.endRow - tile.firstRow + 2 * halo);
+        for (int y = tile.firstRow - halo; y < tile.endRow + halo; ++y) {
+            convertRow(*images[image], std::clamp(y, 0, reference.height - 1), tile.firstColumn,
+                       tile.endColumn, halo, scratch.opponent);
             filterLines({&kernels.achromatic}, width,
                         shiftsOf(row, row.achromatic, csfRadius, scratch.lines),
                         {planes[kAchromatic].row(y)});
@@ -287,66 +301,59 @@ void rowPasses(const Image& reference, const Image& test, int firstRow, int endR
     }
 }
 
-// Columns of a band filtered together: the column passes of all fourteen planes read 2r + 1
-// stored rows each, which for a strip this wide stay in the core's cache from one output row
-// to the next (over a 2048-pixel row they did not).
-constexpr int kStripWidth = 256;
-
-// ꟻLIP of one band's rows: the row passes, then strip by strip and row by row the column
-// passes, the colour error (step 3), the feature error (step 4) and their combination (step 5).
-void flipOfBand(const Image& reference, const Image& test, int firstRow, int endRow,
-                const Kernels& kernels, BandScratch& scratch, float* error) {
-    const int width = reference.width;
+// ꟻLIP of one tile: the row passes, then row by row the column passes, the colour error
+// (step 3), the feature error (step 4) and their combination (step 5).
+void flipOfTile(const Image& reference, const Image& test, const Tile& tile,
+                const Kernels& kernels, TileScratch& scratch, float* error) {
+    const int width = tile.width();
     const int csfRadius = kernels.achromatic.radius(), featureRadius = kernels.gaussian.radius();
-    // Columns, clamped at the image's edges: a band's stored rows already repeat them.
-    rowPasses(reference, test, firstRow, endRow, std::max(csfRadius, featureRadius), kernels,
-              scratch);
+    // Columns, clamped at the image's edges: a tile's stored rows already repeat them.
+    rowPasses(reference, test, tile, std::max(csfRadius, featureRadius), kernels, scratch);
     constexpr int kOutputs = 16;  // per image: four colour and four derivative sums
-    scratch.sums.resize(std::size_t(kStripWidth) * kOutputs);
+    scratch.sums.resize(std::size_t(width) * kOutputs);
     float* out[kOutputs];
-    for (int c = 0; c < kOutputs; ++c) out[c] = &scratch.sums[std::size_t(c) * kStripWidth];
+    for (int c = 0; c < kOutputs; ++c) out[c] = &scratch.sums[std::size_t(c) * width];
     float* const* colorSums = out;           // [4 image + channel]
     float* const* derivativeSums = out + 8;  // [4 image + ∂x, ∂y, ∂xx, ∂yy]
     const std::pair<Plane, const Taps*> csf[] = {{kAchromatic, &kernels.achromatic},
                                                  {kRedGreen, &kernels.redGreen},
                                                  {kBlueYellow0, &kernels.blueYellow0},
                                                  {kBlueYellow1, &kernels.blueYellow1}};
-    for (int x0 = 0; x0 < width; x0 += kStripWidth) {
-        const int stripWidth = std::min(kStripWidth, width - x0);
-        for (int y = firstRow; y < endRow; ++y) {
-            for (std::size_t image = 0; image < 2; ++image) {
-                const auto& planes = scratch.rows[image];
-                auto around = [&](Plane plane, int radius) {
-                    return rowsAround(planes[plane], y, x0, radius, scratch.lines);
-                };
-                float* const* color = colorSums + 4 * image;
-                float* const* derivative = derivativeSums + 4 * image;
-                for (int c = 0; c < 4; ++c)
-                    filterLines({csf[c].second}, stripWidth, around(csf[c].first, csfRadius),
-                                {color[c]});
-                filterLines({&kernels.gaussian}, stripWidth, around(kSlope, featureRadius),
-                            {derivative[0]});
-                filterLines({&kernels.firstDerivative, &kernels.secondDerivative}, stripWidth,
-                            around(kBlurred, featureRadius), {derivative[1], derivative[3]});
-                filterLines({&kernels.gaussian}, stripWidth, around(kCurvature, featureRadius),
-                            {derivative[2]});
-            }
-            float* stripError = error + std::size_t(y) * width + x0;
-            colorErrorRow(colorSums, stripWidth, kernels.maxColorDistance, stripError);
-            combineRow(derivativeSums, stripWidth, stripError);
+    for (int y = tile.firstRow; y < tile.endRow; ++y) {
+        for (std::size_t image = 0; image < 2; ++image) {
+            const auto& planes = scratch.rows[image];
+            auto around = [&](Plane plane, int radius) {
+                return rowsAround(planes[plane], y, radius, scratch.lines);
+            };
+            float* const* color = colorSums + 4 * image;
+            float* const* derivative = derivativeSums + 4 * image;
+            for (int c = 0; c < 4; ++c)
+                filterLines({csf[c].second}, width, around(csf[c].first, csfRadius), {color[c]});
+            filterLines({&kernels.gaussian}, width, around(kSlope, featureRadius),
+                        {derivative[0]});
+            filterLines({&kernels.firstDerivative, &kernels.secondDerivative}, width,
+                        around(kBlurred, featureRadius), {derivative[1], derivative[3]});
+            filterLines({&kernels.gaussian}, width, around(kCurvature, featureRadius),
+                        {derivative[2]});
         }
+        float* rowError = error + std::size_t(y) * std::size_t(reference.width) + tile.firstColumn;
+        colorErrorRow(colorSums, width, kernels.maxColorDistance, rowError);
+        combineRow(derivativeSums, width, rowError);
     }
 }
 
-// Which of the rows' pixels count in the statistics, and their errors added to the pooling.
-void poolRows(const Image& reference, const Image& test, bool useAlpha, int firstRow, int endRow,
+// Which of the tile's pixels count in the statistics, and their errors added to the pooling.
+void poolTile(const Image& reference, const Image& test, bool useAlpha, const Tile& tile,
               FlipMap& map, FlipPooling& pooling) {
-    const std::size_t end = std::size_t(endRow) * std::size_t(map.width);
-    for (std::size_t i = std::size_t(firstRow) * std::size_t(map.width); i < end; ++i) {
-        const bool counts = !useAlpha || (isCovered(reference.rgba[4 * i + 3]) &&
-                                          isCovered(test.rgba[4 * i + 3]));
-        map.pooled[i] = counts ? 1 : 0;
-        pooling.add(map.error[i], counts);
+    for (int y = tile.firstRow; y < tile.endRow; ++y) {
+        const std::size_t rowStart = std::size_t(y) * std::size_t(map.width);
+        for (std::size_t i = rowStart + std::size_t(tile.firstColumn);
+             i < rowStart + std::size_t(tile.endColumn); ++i) {
+            const bool counts = !useAlpha || (isCovered(reference.rgba[4 * i + 3]) &&
+                                              isCovered(test.rgba[4 * i + 3]));
+            map.pooled[i] = counts ? 1 : 0;
+            pooling.add(map.error[i], counts);
+        }
     }
 }
 
@@ -368,18 +375,22 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
     if (pixelCount == 0) return map;
 
     const Kernels kernels = makeKernels(settings.pixelsPerDegree);
-    const std::size_t bands = std::size_t((map.height + kBandRows - 1) / kBandRows);
+    const int tileRows = (map.height + kTileRows - 1) / kTileRows;
+    const int tileColumns = (map.width + kTileColumns - 1) / kTileColumns;
     const auto scratches = detail::forEachChunkWithScratch(
-        bands, workerCount, [] { return BandScratch{}; },
-        [&](BandScratch& scratch, std::size_t band) {
-            const int firstRow = int(band) * kBandRows;
-            const int endRow = std::min(map.height, firstRow + kBandRows);
-            flipOfBand(reference, test, firstRow, endRow, kernels, scratch, map.error.data());
-            poolRows(reference, test, useAlpha, firstRow, endRow, map, scratch.pooling);
+        std::size_t(tileRows) * std::size_t(tileColumns), workerCount,
+        [] { return TileScratch{}; },
+        [&](TileScratch& scratch, std::size_t chunk) {
+            const int row = int(chunk) / tileColumns, column = int(chunk) % tileColumns;
+            const Tile tile{row * kTileRows, std::min(map.height, (row + 1) * kTileRows),
+                            column * kTileColumns,
+                            std::min(map.width, (column + 1) * kTileColumns)};
+            flipOfTile(reference, test, tile, kernels, scratch, map.error.data());
+            poolTile(reference, test, useAlpha, tile, map, scratch.pooling);
         });
     FlipPooling pooling;
-    for (const BandScratch& scratch : scratches) pooling.merge(scratch.pooling);
-    map.stats = pooling.finish(map.error, map.pooled);
+    for (const TileScratch& scratch : scratches) pooling.merge(scratch.pooling);
+    map.stats = pooling.finish(map.error, map.pooled, workerCount);
     return map;
 }
 

@@ -5,10 +5,14 @@
 #include <bit>
 #include <cmath>
 
+#include "color/detail/ForEachChunk.h"
+
 namespace matevo {
 namespace {
 
 constexpr int kMantissaBits = 23;
+// Pixels per chunk of the search for the errors in the percentiles' buckets.
+constexpr std::size_t kChunkPixels = std::size_t(1) << 16;
 
 }  // namespace
 
@@ -44,8 +48,8 @@ double FlipPooling::bucketSum(std::size_t bucket) const {
     return std::ldexp(double(sum), std::max(exponent, 1) - 150);
 }
 
-FlipStats FlipPooling::finish(std::span<const float> errors,
-                              std::span<const std::uint8_t> pooled) const {
+FlipStats FlipPooling::finish(std::span<const float> errors, std::span<const std::uint8_t> pooled,
+                              unsigned workerCount) const {
     FlipStats stats;
     stats.pixels = pixels_;
     if (pixels_ == 0) return stats;
@@ -68,14 +72,23 @@ FlipStats FlipPooling::finish(std::span<const float> errors,
         bucketOfQuartile[q] = bucket;
         belowBucket[q] = below;
     }
-    std::array<std::vector<float>, 3> inBucket;
-    for (std::size_t i = 0; i < errors.size(); ++i) {
-        if (pooled[i] == 0) continue;
-        const float error = std::clamp(errors[i], 0.0f, 1.0f);
-        const std::size_t errorBucket = bucketOf(error);
+    using InBucket = std::array<std::vector<float>, 3>;
+    const std::size_t chunkCount = (errors.size() + kChunkPixels - 1) / kChunkPixels;
+    std::vector<InBucket> chunks(chunkCount);
+    detail::forEachChunk(chunkCount, workerCount, [&](std::size_t chunk) {
+        const std::size_t end = std::min(errors.size(), (chunk + 1) * kChunkPixels);
+        for (std::size_t i = chunk * kChunkPixels; i < end; ++i) {
+            if (pooled[i] == 0) continue;
+            const float error = std::clamp(errors[i], 0.0f, 1.0f);
+            const std::size_t errorBucket = bucketOf(error);
+            for (std::size_t q = 0; q < kFractions.size(); ++q)
+                if (errorBucket == bucketOfQuartile[q]) chunks[chunk][q].push_back(error);
+        }
+    });
+    InBucket inBucket;
+    for (const InBucket& chunk : chunks)
         for (std::size_t q = 0; q < kFractions.size(); ++q)
-            if (errorBucket == bucketOfQuartile[q]) inBucket[q].push_back(error);
-    }
+            inBucket[q].insert(inBucket[q].end(), chunk[q].begin(), chunk[q].end());
     std::array<double, 3> quartiles{};  // 0 when every error is 0
     for (std::size_t q = 0; q < kFractions.size(); ++q) {
         std::sort(inBucket[q].begin(), inBucket[q].end());

@@ -29,8 +29,9 @@ public:
     void add(float error, bool pooled);
     void merge(const FlipPooling& other);
     // The statistics of the pixels added; the percentiles read the errors of their buckets
-    // back from the whole map they came from.
-    FlipStats finish(std::span<const float> errors, std::span<const std::uint8_t> pooled) const;
+    // back from the whole map they came from, on up to workerCount threads (0: all).
+    FlipStats finish(std::span<const float> errors, std::span<const std::uint8_t> pooled,
+                     unsigned workerCount = 1) const;
 
 private:
     // Non-negative floats order like their bit patterns: the top bits (exponent and seven

@@ -237,6 +237,7 @@ TEST(FlipPooling, SumsExactlyWhateverTheOrderOfItsChunks) {
     EXPECT_EQ(a.mean, b.mean);
     EXPECT_EQ(a.weightedMedian, b.weightedMedian);
     EXPECT_EQ(a, poolFlip(errors, pooled));
+    EXPECT_EQ(a, forwards.finish(errors, pooled, 2));
     long double exact = 0;
     for (float error : errors) exact += error;
     EXPECT_NEAR(a.mean, double(exact / errors.size()), 1e-15);
