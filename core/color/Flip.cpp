@@ -12,6 +12,7 @@
 #include "color/ImageDifference.h"
 #include "color/detail/FlipFormulas.h"
 #include "color/detail/ForEachChunk.h"
+#include "color/detail/ScratchShelf.h"
 #include "color/detail/VectorisedKernel.h"
 #include "common/HugePages.h"
 
@@ -244,8 +245,9 @@ struct Tile {
     int width() const { return endColumn - firstColumn; }
 };
 
-// One worker's buffers, reused from tile to tile: a converted row, the row passes of both
-// images, the line pointers of a filter and the column sums of one row.
+// One worker's buffers, reused from tile to tile and kept from call to call (ScratchShelf.h):
+// a converted row, the row passes of both images, the line pointers of a filter and the column
+// sums of one row.
 struct TileScratch {
     OpponentRow opponent;
     std::array<std::array<RowFiltered, kPlaneCount>, 2> rows;  // [image][plane]
@@ -377,19 +379,24 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
     const Kernels kernels = makeKernels(settings.pixelsPerDegree);
     const int tileRows = (map.height + kTileRows - 1) / kTileRows;
     const int tileColumns = (map.width + kTileColumns - 1) / kTileColumns;
-    const auto scratches = detail::forEachChunkWithScratch(
+    static detail::ScratchShelf<TileScratch> shelf;
+    auto scratches = detail::forEachChunkWithScratch(
         std::size_t(tileRows) * std::size_t(tileColumns), workerCount,
-        [] { return TileScratch{}; },
-        [&](TileScratch& scratch, std::size_t chunk) {
+        [] {
+            auto scratch = shelf.take();
+            scratch->pooling.clear();
+            return scratch;
+        },
+        [&](detail::ScratchShelf<TileScratch>::Shelved& scratch, std::size_t chunk) {
             const int row = int(chunk) / tileColumns, column = int(chunk) % tileColumns;
             const Tile tile{row * kTileRows, std::min(map.height, (row + 1) * kTileRows),
                             column * kTileColumns,
                             std::min(map.width, (column + 1) * kTileColumns)};
-            flipOfTile(reference, test, tile, kernels, scratch, map.error.data());
-            poolTile(reference, test, useAlpha, tile, map, scratch.pooling);
+            flipOfTile(reference, test, tile, kernels, *scratch, map.error.data());
+            poolTile(reference, test, useAlpha, tile, map, scratch->pooling);
         });
-    FlipPooling pooling;
-    for (const TileScratch& scratch : scratches) pooling.merge(scratch.pooling);
+    FlipPooling& pooling = scratches.front()->pooling;
+    for (std::size_t i = 1; i < scratches.size(); ++i) pooling.merge(scratches[i]->pooling);
     map.stats = pooling.finish(map.error, map.pooled, workerCount);
     return map;
 }

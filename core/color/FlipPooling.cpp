@@ -39,6 +39,12 @@ void FlipPooling::merge(const FlipPooling& other) {
     max_ = std::max(max_, other.max_);
 }
 
+void FlipPooling::clear() {
+    std::fill(significandSums_.begin(), significandSums_.end(), 0);
+    pixels_ = 0;
+    max_ = 0;
+}
+
 double FlipPooling::bucketSum(std::size_t bucket) const {
     // A float is significand × 2^(exponent − 150), the exponent of subnormals counting as 1.
     // Most buckets are empty, and ldexp is slow enough that a walk over all of them showed.

@@ -28,6 +28,8 @@ public:
     // nothing. `error` is clamped to [0, 1], ꟻLIP's range.
     void add(float error, bool pooled);
     void merge(const FlipPooling& other);
+    // As new, without allocating.
+    void clear();
     // The statistics of the pixels added; the percentiles read the errors of their buckets
     // back from the whole map they came from, on up to workerCount threads (0: all).
     FlipStats finish(std::span<const float> errors, std::span<const std::uint8_t> pooled,

@@ -82,6 +82,25 @@ TEST(FlipFeatures, DetectorKernelsAreNormalisedGaussianDerivatives) {
     EXPECT_NEAR(negative, -1.0, 1e-6);
 }
 
+// The CPU filters fold mirrored taps (computeFlip reads the taps right of the centre and
+// whether the filter is even or odd), so every filter must be exactly one or the other.
+TEST(FlipFilters, EveryFilterIsExactlyEvenOrOddAtAnyViewingCondition) {
+    auto mirrored = [](const std::vector<float>& taps, float sign) {
+        for (std::size_t k = 0; k < taps.size(); ++k)
+            if (taps[k] != sign * taps[taps.size() - 1 - k]) return false;
+        return true;
+    };
+    for (double pixelsPerDegree : {1.0, 5.5, 20.0, 30.0, 45.3, kDefaultPixelsPerDegree, 120.0,
+                                   333.3, 1000.0}) {
+        const CsfKernels csf = makeCsfKernels(pixelsPerDegree);
+        const FeatureKernels feature = makeFeatureKernels(pixelsPerDegree);
+        for (const auto* even : {&csf.achromatic, &csf.redGreen, &csf.blueYellow[0],
+                                 &csf.blueYellow[1], &feature.gaussian, &feature.secondDerivative})
+            EXPECT_TRUE(mirrored(*even, 1.0f)) << pixelsPerDegree;
+        EXPECT_TRUE(mirrored(feature.firstDerivative, -1.0f)) << pixelsPerDegree;
+    }
+}
+
 TEST(FlipColorDifference, WorkedValuesFromHuntHyabAndTheRemapping) {
     // c_max: pure green against pure blue after the Hunt adjustment, raised to 0.7.
     EXPECT_NEAR(maxColorDistance(), 41.27657, 1e-3);
