@@ -19,7 +19,7 @@
 
 #include "gpu/GraphicsPipeline.h"
 #include "gpu/ShaderModule.h"
-#include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 #include "mesh/MeshClusters.h"
 #include "scene/EnvironmentBackdrop.h"
 

@@ -7,7 +7,7 @@
 #include <shaders/kSceneSurfacesVertexSpirv.h>
 
 #include "gpu/GraphicsPipeline.h"
-#include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 #include "mesh/Mesh.h"
 
 namespace matevo::gpu {
