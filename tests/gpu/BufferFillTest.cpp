@@ -1,7 +1,6 @@
 #include "gpu/Buffer.h"
 
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -34,22 +33,7 @@ std::vector<uint32_t> readOnTheGpu(const gpu::Device& device, gpu::CommandRunner
     return {words.begin(), words.end()};
 }
 
-class BufferFill : public ::testing::Test {
-protected:
-    void SetUp() override {
-        context = test::validatedContext();
-        ASSERT_NE(context, nullptr);
-        auto created = gpu::CommandRunner::create(context->device);
-        ASSERT_TRUE(created.ok()) << created.error().message;
-        runner.emplace(std::move(created).value());
-    }
-    void TearDown() override {
-        if (context) test::expectNoValidationMessages(*context);
-    }
-
-    gpu::GpuContext* context = nullptr;
-    std::optional<gpu::CommandRunner> runner;
-};
+using BufferFill = test::ValidatedGpuTest;
 
 // Either path leaves the GPU reading exactly the bytes given. Auto writes them from the host
 // where upload memory is device-local (lavapipe's one memory type is); Staged always leaves

@@ -67,20 +67,13 @@ std::vector<PresetCase> validationPresets() {
 
 // Every test: the process's validated context, a command runner and the three validation
 // presets, and not one validation message by its end.
-class GpuSceneRendererTest : public ::testing::Test {
+class GpuSceneRendererTest : public test::ValidatedGpuTest {
 protected:
     void SetUp() override {
-        context = test::validatedContext();
-        ASSERT_NE(context, nullptr);
-        auto created = gpu::CommandRunner::create(context->device);
-        ASSERT_TRUE(created.ok()) << created.error().message;
-        runner.emplace(std::move(created).value());
+        ValidatedGpuTest::SetUp();
+        if (HasFatalFailure()) return;
         presets = validationPresets();
         ASSERT_EQ(presets.size(), 3u);
-    }
-
-    void TearDown() override {
-        if (context) test::expectNoValidationMessages(*context);
     }
 
     // A scene renderer of `mesh` wearing `materials`; nullopt (and a failure) if it fails.
@@ -136,8 +129,6 @@ protected:
         return look;
     }
 
-    gpu::GpuContext* context = nullptr;
-    std::optional<gpu::CommandRunner> runner;
     std::vector<PresetCase> presets;
     // The visibility pass of the renderers rendererOf makes, and how they fill their mesh.
     gpu::SceneVisibilityPass visibility = gpu::SceneVisibilityPass::Compute;
