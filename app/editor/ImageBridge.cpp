@@ -8,7 +8,7 @@
 #include "color/Srgb.h"
 #include "gpu/GraphicsPipeline.h"
 #include "gpu/HeatmapColormap.h"
-#include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 // SPIR-V generated at build time (app/editor/CMakeLists.txt); the arrays need <cstdint> first.
 #include "shaders/image.frag.h"
 #include "shaders/image.vert.h"
@@ -26,22 +26,6 @@ struct FragmentSettings {
     std::uint32_t colormapBase;  // 0: viridis (ΔE00), 256: magma (ꟻLIP)
 };
 constexpr std::uint32_t kTransformBytes = 4 * sizeof(float);
-
-Result<gpu::UniqueSampler> createSampler(VkDevice device, VkFilter filter) {
-    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    info.magFilter = filter;
-    info.minFilter = filter;
-    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    info.addressModeU = info.addressModeV = info.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.maxLod = 0.0f;
-    VkSampler sampler = VK_NULL_HANDLE;
-    if (Status s = gpu::checkVulkan(vkCreateSampler(device, &info, nullptr, &sampler),
-                                    "creating a sampler");
-        !s)
-        return s.error();
-    return gpu::UniqueSampler(device, sampler);
-}
 
 }  // namespace
 
@@ -66,10 +50,10 @@ Result<std::unique_ptr<ImageBridge>> ImageBridge::create(VulkanContext& context,
 }
 
 Status ImageBridge::createLayouts() {
-    auto renderSampler = createSampler(device_, VK_FILTER_LINEAR);
+    auto renderSampler = gpu::createSampler(device_, VK_FILTER_LINEAR);
     if (!renderSampler) return renderSampler.error();
     renderSampler_ = std::move(renderSampler).value();
-    auto deltaESampler = createSampler(device_, VK_FILTER_NEAREST);
+    auto deltaESampler = gpu::createSampler(device_, VK_FILTER_NEAREST);
     if (!deltaESampler) return deltaESampler.error();
     deltaESampler_ = std::move(deltaESampler).value();
 
@@ -82,20 +66,14 @@ Status ImageBridge::createLayouts() {
         bindings[binding].descriptorCount = 1;
         bindings[binding].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
     }
-    VkDescriptorSetLayoutCreateInfo setLayout{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setLayout.bindingCount = 3;
-    setLayout.pBindings = bindings;
-    VkDescriptorSetLayout set = VK_NULL_HANDLE;
-    if (Status s = gpu::checkVulkan(vkCreateDescriptorSetLayout(device_, &setLayout, nullptr, &set),
-                                    "creating a descriptor set layout");
-        !s)
-        return s;
-    setLayout_ = gpu::UniqueDescriptorSetLayout(device_, set);
+    auto setLayout = gpu::createDescriptorSetLayout(device_, bindings);
+    if (!setLayout) return setLayout.error();
+    setLayout_ = std::move(setLayout).value();
 
     const VkPushConstantRange ranges[2] = {
         {VK_SHADER_STAGE_VERTEX_BIT, 0, kTransformBytes},
         {VK_SHADER_STAGE_FRAGMENT_BIT, kTransformBytes, sizeof(FragmentSettings)}};
-    auto pipelineLayout = gpu::createPipelineLayout(device_, set, ranges);
+    auto pipelineLayout = gpu::createPipelineLayout(device_, setLayout_.get(), ranges);
     if (!pipelineLayout) return pipelineLayout.error();
     pipelineLayout_ = std::move(pipelineLayout).value();
     return Ok{};
@@ -152,16 +130,10 @@ Status ImageBridge::createSharedResources() {
 
 Result<std::shared_ptr<ShownImage>> ImageBridge::show(
     std::shared_ptr<const gpu::DisplayTile> tile) {
-    const VkDescriptorSetLayout layout = setLayout_.get();
-    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocate.descriptorPool = context_.descriptorPool();
-    allocate.descriptorSetCount = 1;
-    allocate.pSetLayouts = &layout;
-    VkDescriptorSet set = VK_NULL_HANDLE;
-    if (Status s = gpu::checkVulkan(vkAllocateDescriptorSets(device_, &allocate, &set),
-                                    "allocating a descriptor set for an image");
-        !s)
-        return s.error();
+    auto allocated =
+        gpu::allocateDescriptorSet(device_, context_.descriptorPool(), setLayout_.get());
+    if (!allocated) return allocated.error();
+    const VkDescriptorSet set = *allocated;
     const gpu::GpuImage& deltaE = tile->deltaE ? *tile->deltaE : *noDeltaE_->deltaE;
     const VkDescriptorImageInfo images[2] = {
         {renderSampler_.get(), tile->render.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},

@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 
 #include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 
 namespace matevo::editor {
 namespace {
@@ -46,17 +47,12 @@ Result<std::unique_ptr<VulkanContext>> VulkanContext::create(GLFWwindow* window,
     const VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2 * kDescriptorSets},
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kDescriptorSets}};
-    VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
-    pool.maxSets = kDescriptorSets;
-    pool.poolSizeCount = 2;
-    pool.pPoolSizes = sizes;
-    const VkDevice handle = context->device_.handle();
-    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateDescriptorPool(handle, &pool, nullptr, &descriptorPool);
-        result != VK_SUCCESS)
-        return gpu::vulkanError("creating the descriptor pool", result);
-    context->descriptorPool_ = gpu::UniqueDescriptorPool(handle, descriptorPool);
+    // Each shown image frees its own set when it goes (ShownImage).
+    auto descriptorPool =
+        gpu::createDescriptorPool(context->device_.handle(), kDescriptorSets, sizes,
+                                  VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT);
+    if (!descriptorPool) return descriptorPool.error();
+    context->descriptorPool_ = std::move(descriptorPool).value();
 
     auto runner = gpu::CommandRunner::create(context->device_);
     if (!runner) return runner.error();

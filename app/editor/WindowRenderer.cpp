@@ -5,8 +5,8 @@
 
 #include "VulkanContext.h"
 #include "gpu/GpuImage.h"
-#include "gpu/GraphicsPipeline.h"
 #include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 
 namespace matevo::editor {
 namespace {
@@ -24,16 +24,6 @@ VkSurfaceFormatKHR chooseSurfaceFormat(const VulkanContext& context) {
             format.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR)
             return format;
     return formats.empty() ? VkSurfaceFormatKHR{} : formats.front();
-}
-
-Result<gpu::UniqueSemaphore> createSemaphore(VkDevice device) {
-    VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    VkSemaphore semaphore = VK_NULL_HANDLE;
-    if (Status s = gpu::checkVulkan(vkCreateSemaphore(device, &info, nullptr, &semaphore),
-                                    "creating a semaphore");
-        !s)
-        return s.error();
-    return gpu::UniqueSemaphore(device, semaphore);
 }
 
 }  // namespace
@@ -98,32 +88,17 @@ Status WindowRenderer::createRenderPasses() {
 
 Status WindowRenderer::createFrames() {
     for (Frame& frame : frames_) {
-        VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-        pool.queueFamilyIndex = context_.device().queueFamily();
-        VkCommandPool commandPool = VK_NULL_HANDLE;
-        if (Status s = gpu::checkVulkan(vkCreateCommandPool(device_, &pool, nullptr, &commandPool),
-                                        "creating a command pool");
-            !s)
-            return s;
-        frame.commandPool = gpu::UniqueCommandPool(device_, commandPool);
-        VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-        allocate.commandPool = commandPool;
-        allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        allocate.commandBufferCount = 1;
-        if (Status s =
-                gpu::checkVulkan(vkAllocateCommandBuffers(device_, &allocate, &frame.commands),
-                                 "allocating a command buffer");
-            !s)
-            return s;
-        VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-        fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;
-        VkFence done = VK_NULL_HANDLE;
-        if (Status s = gpu::checkVulkan(vkCreateFence(device_, &fence, nullptr, &done),
-                                        "creating a fence");
-            !s)
-            return s;
-        frame.done = gpu::UniqueFence(device_, done);
-        auto acquired = createSemaphore(device_);
+        auto commandPool = gpu::createCommandPool(device_, context_.device().queueFamily());
+        if (!commandPool) return commandPool.error();
+        frame.commandPool = std::move(commandPool).value();
+        auto commands = gpu::allocateCommandBuffer(device_, frame.commandPool.get());
+        if (!commands) return commands.error();
+        frame.commands = *commands;
+        // Signalled: the first wait for a frame slot has no earlier frame to wait for.
+        auto done = gpu::createFence(device_, true);
+        if (!done) return done.error();
+        frame.done = std::move(done).value();
+        auto acquired = gpu::createSemaphore(device_);
         if (!acquired) return acquired.error();
         frame.imageAcquired = std::move(acquired).value();
     }
@@ -175,23 +150,17 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
     for (VkImage image : images) {
         SwapchainImage& target = images_.emplace_back();
         target.image = image;
-        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-        view.image = image;
-        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-        view.format = surfaceFormat_.format;
-        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        VkImageView imageView = VK_NULL_HANDLE;
-        if (Status s = gpu::checkVulkan(vkCreateImageView(device_, &view, nullptr, &imageView),
-                                        "creating a swapchain image view");
-            !s)
-            return s;
-        target.view = gpu::UniqueImageView(device_, imageView);
+        auto view =
+            gpu::createImageView(device_, image, VK_IMAGE_VIEW_TYPE_2D, surfaceFormat_.format);
+        if (!view) return view.error();
+        target.view = std::move(view).value();
+        const VkImageView imageView = target.view.get();
         auto framebuffer = gpu::createFramebuffer(device_, renderPass_.get(),
                                                   std::span(&imageView, 1), extent_.width,
                                                   extent_.height);
         if (!framebuffer) return framebuffer.error();
         target.framebuffer = std::move(framebuffer).value();
-        auto renderDone = createSemaphore(device_);
+        auto renderDone = gpu::createSemaphore(device_);
         if (!renderDone) return renderDone.error();
         target.renderDone = std::move(renderDone).value();
     }

@@ -6,15 +6,31 @@
 #include <utility>
 
 #include "common/Result.h"
+#include "gpu/CommandRunner.h"
 #include "gpu/Device.h"
 #include "gpu/VulkanHandle.h"
 
 namespace matevo::gpu {
 
+// How Buffer::createFilled gets its contents into memory that shaders read at full speed.
+enum class FillPath {
+    Auto,    // written by the host where Device::uploadsAreDeviceLocal, else Staged
+    Staged,  // copied from a staging buffer by a transfer (tests force it on lavapipe)
+};
+
 class Buffer {
 public:
     static Result<Buffer> create(const Device& device, VkDeviceSize size,
                                  VkBufferUsageFlags usage, MemoryUse use);
+    // A buffer of `usage` holding `bytes`, for data written once and then read by the GPU
+    // (the scene's mesh). Where upload memory is device-local (lavapipe, integrated GPUs) the
+    // host writes it. Otherwise it is device-local, filled from a host-visible staging buffer
+    // by a copy submitted on `runner` and waited for, behind a barrier that makes the copy
+    // visible to every read that `usage` allows (vertex, index and shader reads, transfers).
+    // At least 16 bytes: Vulkan has no empty buffers.
+    static Result<Buffer> createFilled(const Device& device, CommandRunner& runner,
+                                       std::span<const std::byte> bytes,
+                                       VkBufferUsageFlags usage, FillPath path = FillPath::Auto);
 
     VkBuffer handle() const { return buffer_.get(); }
     VkDeviceSize size() const { return size_; }

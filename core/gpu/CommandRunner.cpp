@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 
 namespace matevo::gpu {
 namespace {
@@ -22,30 +23,16 @@ Result<CommandRunner> CommandRunner::create(const Device& device) {
     CommandRunner runner;
     runner.device_ = &device;
 
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = device.queueFamily();
-    VkCommandPool pool = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateCommandPool(device.handle(), &poolInfo, nullptr, &pool);
-        result != VK_SUCCESS)
-        return vulkanError("creating a command pool", result);
-    runner.pool_ = UniqueCommandPool(device.handle(), pool);
-
-    VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    allocateInfo.commandPool = pool;
-    allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocateInfo.commandBufferCount = 1;
-    if (VkResult result =
-            vkAllocateCommandBuffers(device.handle(), &allocateInfo, &runner.commands_);
-        result != VK_SUCCESS)
-        return vulkanError("allocating a command buffer", result);
-
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VkFence fence = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateFence(device.handle(), &fenceInfo, nullptr, &fence);
-        result != VK_SUCCESS)
-        return vulkanError("creating a fence", result);
-    runner.fence_ = UniqueFence(device.handle(), fence);
+    auto pool = createCommandPool(device.handle(), device.queueFamily(),
+                                  VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT);
+    if (!pool) return pool.error();
+    runner.pool_ = std::move(pool).value();
+    auto commands = allocateCommandBuffer(device.handle(), runner.pool_.get());
+    if (!commands) return commands.error();
+    runner.commands_ = *commands;
+    auto fence = createFence(device.handle());
+    if (!fence) return fence.error();
+    runner.fence_ = std::move(fence).value();
     return runner;
 }
 

@@ -2,6 +2,7 @@
 
 #include "gpu/ShaderModule.h"
 #include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 
 namespace matevo::gpu {
 
@@ -21,20 +22,13 @@ Result<ComputeKernel> ComputeKernel::create(const Device& device,
     auto set = DescriptorSet::create(device, std::move(bindings), VK_SHADER_STAGE_COMPUTE_BIT);
     if (!set) return set.error();
     kernel.set_ = std::move(set).value();
-    const VkDescriptorSetLayout setLayout = kernel.set_.layout();
 
     const VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
-    VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    pipelineLayoutInfo.setLayoutCount = 1;
-    pipelineLayoutInfo.pSetLayouts = &setLayout;
-    pipelineLayoutInfo.pushConstantRangeCount = pushConstantBytes > 0 ? 1 : 0;
-    pipelineLayoutInfo.pPushConstantRanges = &pushRange;
-    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    if (VkResult result =
-            vkCreatePipelineLayout(vkDevice, &pipelineLayoutInfo, nullptr, &pipelineLayout);
-        result != VK_SUCCESS)
-        return vulkanError("creating a pipeline layout", result);
-    kernel.pipelineLayout_ = UniquePipelineLayout(vkDevice, pipelineLayout);
+    auto pipelineLayout =
+        createPipelineLayout(vkDevice, kernel.set_.layout(),
+                             std::span(&pushRange, pushConstantBytes > 0 ? 1 : 0));
+    if (!pipelineLayout) return pipelineLayout.error();
+    kernel.pipelineLayout_ = std::move(pipelineLayout).value();
 
     VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
@@ -43,7 +37,7 @@ Result<ComputeKernel> ComputeKernel::create(const Device& device,
     pipelineInfo.stage.pName = "main";
     const SpecializationConstants constants(specialization);
     pipelineInfo.stage.pSpecializationInfo = constants.info();
-    pipelineInfo.layout = pipelineLayout;
+    pipelineInfo.layout = kernel.pipelineLayout_.get();
     VkPipeline pipeline = VK_NULL_HANDLE;
     if (VkResult result = vkCreateComputePipelines(vkDevice, VK_NULL_HANDLE, 1, &pipelineInfo,
                                                    nullptr, &pipeline);

@@ -1,6 +1,6 @@
 #include "gpu/DescriptorSet.h"
 
-#include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 
 namespace matevo::gpu {
 
@@ -18,32 +18,16 @@ Result<DescriptorSet> DescriptorSet::create(const Device& device,
         layoutBindings.push_back({index, set.bindings_[index], 1, stages, nullptr});
         poolSizes.push_back({set.bindings_[index], 1});
     }
-    VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    layoutInfo.bindingCount = uint32_t(layoutBindings.size());
-    layoutInfo.pBindings = layoutBindings.data();
-    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateDescriptorSetLayout(vkDevice, &layoutInfo, nullptr, &layout);
-        result != VK_SUCCESS)
-        return vulkanError("creating a descriptor set layout", result);
-    set.layout_ = UniqueDescriptorSetLayout(vkDevice, layout);
+    auto layout = createDescriptorSetLayout(vkDevice, layoutBindings);
+    if (!layout) return layout.error();
+    set.layout_ = std::move(layout).value();
+    auto pool = createDescriptorPool(vkDevice, 1, poolSizes);
+    if (!pool) return pool.error();
+    set.pool_ = std::move(pool).value();
 
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = uint32_t(poolSizes.size());
-    poolInfo.pPoolSizes = poolSizes.data();
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateDescriptorPool(vkDevice, &poolInfo, nullptr, &pool);
-        result != VK_SUCCESS)
-        return vulkanError("creating a descriptor pool", result);
-    set.pool_ = UniqueDescriptorPool(vkDevice, pool);
-
-    VkDescriptorSetAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocateInfo.descriptorPool = pool;
-    allocateInfo.descriptorSetCount = 1;
-    allocateInfo.pSetLayouts = &layout;
-    if (VkResult result = vkAllocateDescriptorSets(vkDevice, &allocateInfo, &set.set_);
-        result != VK_SUCCESS)
-        return vulkanError("allocating a descriptor set", result);
+    auto allocated = allocateDescriptorSet(vkDevice, set.pool_.get(), set.layout_.get());
+    if (!allocated) return allocated.error();
+    set.set_ = *allocated;
     return set;
 }
 

@@ -145,6 +145,10 @@ Result<Device> DeviceBuilder::build() const {
                                 : "Vulkan: no device supports Vulkan 1.2 with a graphics and "
                                   "compute queue and the needed extensions"};
     vkGetPhysicalDeviceMemoryProperties(device.physicalDevice_, &device.memory_);
+    const auto uploadType = device.memoryTypeFor(~0u, MemoryUse::Upload);
+    device.uploadsAreDeviceLocal_ =
+        uploadType && (device.memory_.memoryTypes[*uploadType].propertyFlags &
+                       VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) != 0;
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

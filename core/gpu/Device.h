@@ -42,6 +42,11 @@ public:
     // gl_PrimitiveID (the scene's fixed-function visibility pass does).
     bool primitiveIds() const { return primitiveIds_; }
 
+    // The host-visible memory that MemoryUse::Upload gives is device-local too, as on lavapipe
+    // and integrated GPUs: shaders read it at full speed. On a discrete GPU it is host memory,
+    // and every shader read of it crosses the bus (Buffer::createFilled stages instead).
+    bool uploadsAreDeviceLocal() const { return uploadsAreDeviceLocal_; }
+
     // Index of a memory type allowed by typeBits that suits the use, or an Error.
     Result<uint32_t> memoryTypeFor(uint32_t typeBits, MemoryUse use) const;
 
@@ -65,6 +70,7 @@ private:
     bool int64Atomics_ = false;
     uint32_t maxTexelBufferElements_ = 0;
     bool primitiveIds_ = false;
+    bool uploadsAreDeviceLocal_ = false;
     std::unique_ptr<std::mutex> queueMutex_ = std::make_unique<std::mutex>();
 };
 

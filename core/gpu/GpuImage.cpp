@@ -4,6 +4,7 @@
 
 #include "gpu/Buffer.h"
 #include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 
 namespace matevo::gpu {
 
@@ -44,17 +45,12 @@ Result<GpuImage> GpuImage::create(const Device& device, const GpuImageSpec& spec
     if (VkResult result = vkBindImageMemory(vkDevice, handle, memory, 0); result != VK_SUCCESS)
         return vulkanError("binding image memory", result);
 
-    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    viewInfo.image = handle;
-    viewInfo.viewType = spec.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D
-                                                      : VK_IMAGE_VIEW_TYPE_2D;
-    viewInfo.format = spec.format;
-    viewInfo.subresourceRange = {spec.aspect, 0, 1, 0, 1};
-    VkImageView view = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateImageView(vkDevice, &viewInfo, nullptr, &view);
-        result != VK_SUCCESS)
-        return vulkanError("creating an image view", result);
-    image.view_ = UniqueImageView(vkDevice, view);
+    auto view = createImageView(
+        vkDevice, handle,
+        spec.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D,
+        spec.format, spec.aspect);
+    if (!view) return view.error();
+    image.view_ = std::move(view).value();
     return image;
 }
 

@@ -19,7 +19,7 @@
 
 #include "gpu/GraphicsPipeline.h"
 #include "gpu/ShaderModule.h"
-#include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 #include "mesh/MeshClusters.h"
 #include "scene/EnvironmentBackdrop.h"
 
@@ -165,15 +165,6 @@ GpuFrame toGpu(const SceneFrame& frame, const SceneSettings& scene,
     return gpu;
 }
 
-Result<Buffer> createFilledBuffer(const Device& device, std::span<const std::byte> bytes,
-                                  VkBufferUsageFlags usage) {
-    auto buffer =
-        Buffer::create(device, std::max<VkDeviceSize>(bytes.size(), 16), usage, MemoryUse::Upload);
-    if (!buffer) return buffer;
-    std::memcpy(buffer->bytes().data(), bytes.data(), bytes.size());
-    return buffer;
-}
-
 // The shading pass: one subpass that shades each covered pixel into the radiance image, which
 // a transfer (or, in the editor, a shader) reads after the pass.
 Result<UniqueRenderPass> createShadingRenderPass(VkDevice device) {
@@ -254,7 +245,8 @@ SceneVisibilityPass resolve(const Device& device, SceneVisibilityPass requested)
 Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandRunner& runner,
                                                   const FgdTables& tables,
                                                   const SceneTextures& textures, const Mesh& mesh,
-                                                  SceneVisibilityPass visibility) {
+                                                  SceneVisibilityPass visibility,
+                                                  FillPath meshFill) {
     const VkDevice vkDevice = device.handle();
     GpuSceneRenderer renderer;
     renderer.device_ = &device;
@@ -278,11 +270,12 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
         triangles[t] = {clustered.mesh.indices[t * 3], clustered.mesh.indices[t * 3 + 1],
                         clustered.mesh.indices[t * 3 + 2], 0u};
     const VkBufferUsageFlags texelUsage = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
-    auto vertices = createFilledBuffer(device, std::as_bytes(std::span(clustered.mesh.vertices)),
-                                       texelUsage | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    auto vertices = Buffer::createFilled(device, runner,
+                                         std::as_bytes(std::span(clustered.mesh.vertices)),
+                                         texelUsage | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, meshFill);
     if (!vertices) return vertices.error();
-    auto triangleBuffer =
-        createFilledBuffer(device, std::as_bytes(std::span(triangles)), texelUsage);
+    auto triangleBuffer = Buffer::createFilled(device, runner, std::as_bytes(std::span(triangles)),
+                                               texelUsage, meshFill);
     if (!triangleBuffer) return triangleBuffer.error();
     auto verticesView = createTexelView(device, *vertices, kVertexTexel);
     if (!verticesView) return verticesView.error();
@@ -315,8 +308,8 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
     renderer.textures_.bind(renderer.descriptors_, kRoughness, kBaseColor, kEnvironment);
 
     if (raster) {
-        auto rasterVisibility = SceneRasterVisibility::create(device, renderer.vertices_.handle(),
-                                                              clustered.mesh.indices);
+        auto rasterVisibility = SceneRasterVisibility::create(
+            device, runner, renderer.vertices_.handle(), clustered.mesh.indices, meshFill);
         if (!rasterVisibility) return rasterVisibility.error();
         renderer.rasterVisibility_ = std::move(rasterVisibility).value();
     } else {

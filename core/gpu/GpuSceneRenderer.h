@@ -66,11 +66,13 @@ public:
 
     // `tables` must outlive the renderer (the process-wide defaultFgdTables() does). Auto
     // picks the visibility pass by the device's type; an Error when the device cannot run the
-    // one asked for.
+    // one asked for. The mesh's buffers are filled once, in device-local memory, the way
+    // `meshFill` says (Buffer::createFilled; Staged only to test that path on lavapipe).
     static Result<GpuSceneRenderer> create(
         const Device& device, CommandRunner& runner, const FgdTables& tables,
         const SceneTextures& textures, const Mesh& mesh,
-        SceneVisibilityPass visibility = SceneVisibilityPass::Auto);
+        SceneVisibilityPass visibility = SceneVisibilityPass::Auto,
+        FillPath meshFill = FillPath::Auto);
 
     // Builds and uploads the materials' lobe tables; instances name them by index. Not while a
     // submission that draws them is in flight.

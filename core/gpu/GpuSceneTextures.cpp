@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 
 namespace matevo::gpu {
 namespace {
@@ -18,22 +18,6 @@ Status requireLinearSampling(const Device& device) {
         return Error{"Vulkan: " + device.name() +
                      " cannot filter R32G32B32A32_SFLOAT textures linearly"};
     return Ok{};
-}
-
-Result<UniqueSampler> createSampler(const Device& device) {
-    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    info.magFilter = VK_FILTER_LINEAR;
-    info.minFilter = VK_FILTER_LINEAR;
-    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.maxLod = 0.0f;
-    VkSampler sampler = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateSampler(device.handle(), &info, nullptr, &sampler);
-        result != VK_SUCCESS)
-        return vulkanError("creating a sampler", result);
-    return UniqueSampler(device.handle(), sampler);
 }
 
 // An RGBA float texture from an image; the 1x1 `fill` texel for an empty image.
@@ -81,7 +65,8 @@ Result<GpuSceneTextures> GpuSceneTextures::create(const Device& device, CommandR
     if (!baseColor) return baseColor.error();
     auto environment = uploadEnvironment(device, runner, textures.environment);
     if (!environment) return environment.error();
-    auto sampler = createSampler(device);
+    // Bilinear, wrapping in u and clamping in v, as sphereUv addresses them.
+    auto sampler = createSampler(device.handle(), VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT);
     if (!sampler) return sampler.error();
     uploaded.roughness_ = std::move(roughness).value();
     uploaded.baseColor_ = std::move(baseColor).value();

@@ -31,21 +31,4 @@ struct GraphicsPipelineSpec {
 
 Result<UniquePipeline> createGraphicsPipeline(VkDevice device, const GraphicsPipelineSpec& spec);
 
-// A render pass of one subpass.
-Result<UniqueRenderPass> createRenderPass(VkDevice device,
-                                          std::span<const VkAttachmentDescription> attachments,
-                                          const VkSubpassDescription& subpass,
-                                          std::span<const VkSubpassDependency> dependencies);
-
-// A pipeline layout of one descriptor set and `pushConstants` (the scene's raster passes have
-// none; the editor's image quads push their transform and heatmap settings).
-Result<UniquePipelineLayout> createPipelineLayout(
-    VkDevice device, VkDescriptorSetLayout set,
-    std::span<const VkPushConstantRange> pushConstants = {});
-
-// A one-layer framebuffer of `attachments` for `renderPass`.
-Result<UniqueFramebuffer> createFramebuffer(VkDevice device, VkRenderPass renderPass,
-                                            std::span<const VkImageView> attachments,
-                                            uint32_t width, uint32_t height);
-
 }  // namespace matevo::gpu

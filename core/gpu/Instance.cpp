@@ -12,6 +12,13 @@ namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
+// Said when the loader finds no driver, most often because the environment hides the
+// manifests (XDG_DATA_DIRS set for something else, a stale VK_DRIVER_FILES).
+constexpr const char* kNoDriverHint =
+    "; the loader finds drivers through VK_DRIVER_FILES or VK_ICD_FILENAMES, else through "
+    "vulkan/icd.d under each of $XDG_DATA_DIRS (default /usr/local/share:/usr/share); "
+    "`vulkaninfo --summary` lists what it finds";
+
 bool hasInstanceExtension(const char* name) {
     uint32_t count = 0;
     vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
@@ -145,8 +152,11 @@ Result<Instance> InstanceBuilder::build() const {
     createInfo.ppEnabledExtensionNames = extensions.data();
 
     VkInstance handle = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateInstance(&createInfo, nullptr, &handle); result != VK_SUCCESS)
-        return vulkanError("creating the instance", result);
+    if (VkResult result = vkCreateInstance(&createInfo, nullptr, &handle); result != VK_SUCCESS) {
+        Error error = vulkanError("creating the instance", result);
+        if (result == VK_ERROR_INCOMPATIBLE_DRIVER) error.message += kNoDriverHint;
+        return error;
+    }
     instance.instance_ = UniqueInstance(handle);
 
     if (debugUtils) {

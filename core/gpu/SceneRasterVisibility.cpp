@@ -7,7 +7,7 @@
 #include <shaders/kSceneSurfacesVertexSpirv.h>
 
 #include "gpu/GraphicsPipeline.h"
-#include "gpu/VulkanError.h"
+#include "gpu/VulkanObjects.h"
 #include "mesh/Mesh.h"
 
 namespace matevo::gpu {
@@ -92,18 +92,20 @@ Status SceneRasterVisibility::supportedOn(const Device& device) {
     return Ok{};
 }
 
-Result<SceneRasterVisibility> SceneRasterVisibility::create(const Device& device, VkBuffer vertices,
-                                                            std::span<const uint32_t> indices) {
+Result<SceneRasterVisibility> SceneRasterVisibility::create(const Device& device,
+                                                            CommandRunner& runner,
+                                                            VkBuffer vertices,
+                                                            std::span<const uint32_t> indices,
+                                                            FillPath indexFill) {
     if (auto supported = supportedOn(device); !supported) return supported.error();
     const VkDevice vkDevice = device.handle();
     SceneRasterVisibility pass;
     pass.device_ = &device;
     pass.vertices_ = vertices;
     pass.indexCount_ = uint32_t(indices.size());
-    auto indexBuffer = Buffer::create(device, std::max<VkDeviceSize>(indices.size_bytes(), 4),
-                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::Upload);
+    auto indexBuffer = Buffer::createFilled(device, runner, std::as_bytes(indices),
+                                            VK_BUFFER_USAGE_INDEX_BUFFER_BIT, indexFill);
     if (!indexBuffer) return indexBuffer.error();
-    std::memcpy(indexBuffer->bytes().data(), indices.data(), indices.size_bytes());
     pass.indices_ = std::move(indexBuffer).value();
 
     auto descriptors = DescriptorSet::create(device, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},

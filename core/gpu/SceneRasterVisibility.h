@@ -33,9 +33,12 @@ public:
 
     // `vertices` holds the mesh's MeshVertex array (with vertex-buffer usage) and must outlive
     // the pass; `indices` are its triangles, three per triangle, in the order gl_PrimitiveID
-    // counts them.
-    static Result<SceneRasterVisibility> create(const Device& device, VkBuffer vertices,
-                                                std::span<const uint32_t> indices);
+    // counts them, filled into the pass's index buffer the way `indexFill` says
+    // (Buffer::createFilled).
+    static Result<SceneRasterVisibility> create(const Device& device, CommandRunner& runner,
+                                                VkBuffer vertices,
+                                                std::span<const uint32_t> indices,
+                                                FillPath indexFill);
 
     // (Re)creates the attachments when the size changes, so no submission may be using them.
     Status prepareTarget(int width, int height);

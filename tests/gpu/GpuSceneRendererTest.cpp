@@ -67,20 +67,13 @@ std::vector<PresetCase> validationPresets() {
 
 // Every test: the process's validated context, a command runner and the three validation
 // presets, and not one validation message by its end.
-class GpuSceneRendererTest : public ::testing::Test {
+class GpuSceneRendererTest : public test::ValidatedGpuTest {
 protected:
     void SetUp() override {
-        context = test::validatedContext();
-        ASSERT_NE(context, nullptr);
-        auto created = gpu::CommandRunner::create(context->device);
-        ASSERT_TRUE(created.ok()) << created.error().message;
-        runner.emplace(std::move(created).value());
+        ValidatedGpuTest::SetUp();
+        if (HasFatalFailure()) return;
         presets = validationPresets();
         ASSERT_EQ(presets.size(), 3u);
-    }
-
-    void TearDown() override {
-        if (context) test::expectNoValidationMessages(*context);
     }
 
     // A scene renderer of `mesh` wearing `materials`; nullopt (and a failure) if it fails.
@@ -89,7 +82,7 @@ protected:
                                                     const SceneTextures& textures = {}) {
         auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner,
                                                       defaultFgdTables(), textures, mesh,
-                                                      visibility);
+                                                      visibility, meshFill);
         if (!renderer) {
             ADD_FAILURE() << renderer.error().message;
             return std::nullopt;
@@ -136,11 +129,10 @@ protected:
         return look;
     }
 
-    gpu::GpuContext* context = nullptr;
-    std::optional<gpu::CommandRunner> runner;
     std::vector<PresetCase> presets;
-    // The visibility pass of the renderers rendererOf makes.
+    // The visibility pass of the renderers rendererOf makes, and how they fill their mesh.
     gpu::SceneVisibilityPass visibility = gpu::SceneVisibilityPass::Compute;
+    gpu::FillPath meshFill = gpu::FillPath::Auto;
 };
 
 // What holds for the picture holds whichever visibility pass found the surfaces.
@@ -468,6 +460,35 @@ TEST_F(GpuSceneRendererTest, RasterAndComputeVisibilityGiveTheSamePicture) {
         EXPECT_LE(meanAlphaDifference, 0.002) << sceneCase.what;
         EXPECT_LE(double(differing), 0.01 * double(covered)) << sceneCase.what;
     }
+}
+
+// The mesh staged into device-local memory by a transfer, as on a discrete GPU, gives the
+// picture of the mesh the host wrote (lavapipe's own path), pixel for pixel.
+TEST_P(EitherVisibilityPass, AStagedMeshGivesTheSamePicture) {
+    const std::optional<StudioLook> look = studioLook();
+    ASSERT_TRUE(look);
+    const auto& [textures, scene, materials] = *look;
+    const std::vector<SceneInstance> crowd = layoutInstances(12, InstanceLayout::Crowd, 3);
+    const gpu::SceneFrame frame{320, 180, frameInstances(crowd, 320.0 / 180.0), crowd};
+    std::vector<Image> images;
+    for (gpu::FillPath path : {gpu::FillPath::Auto, gpu::FillPath::Staged}) {
+        meshFill = path;
+        auto renderer = rendererOf(makeShaderBallMesh(), materials, textures);
+        ASSERT_TRUE(renderer);
+        auto image = renderer->render(*runner, frame, scene);
+        ASSERT_TRUE(image.ok()) << image.error().message;
+        images.push_back(std::move(image).value());
+    }
+    const Image& written = images[0];
+    const Image& staged = images[1];
+    ASSERT_EQ(written.rgba.size(), staged.rgba.size());
+    std::size_t covered = 0, differing = 0;
+    for (std::size_t i = 0; i < written.rgba.size(); ++i) {
+        if (i % 4 == 3 && written.rgba[i] > 0.0f) ++covered;
+        if (written.rgba[i] != staged.rgba[i]) ++differing;
+    }
+    EXPECT_GT(covered, std::size_t(3000)) << "the crowd is in view";
+    EXPECT_EQ(differing, 0u);
 }
 
 // A frame with no instance in view (all behind the camera) is drawn, clear, and the next frame

@@ -21,6 +21,18 @@ void expectNoValidationMessages(const gpu::GpuContext& context) {
     EXPECT_EQ(log.warningCount(), 0) << messages;
 }
 
+void ValidatedGpuTest::SetUp() {
+    context = validatedContext();
+    ASSERT_NE(context, nullptr);
+    auto created = gpu::CommandRunner::create(context->device);
+    ASSERT_TRUE(created.ok()) << created.error().message;
+    runner.emplace(std::move(created).value());
+}
+
+void ValidatedGpuTest::TearDown() {
+    if (context) expectNoValidationMessages(*context);
+}
+
 gpu::DeltaE00Pass::Colormap rampColormap() {
     gpu::DeltaE00Pass::Colormap colormap{};
     for (std::size_t i = 0; i < colormap.size(); ++i)

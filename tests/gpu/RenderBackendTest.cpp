@@ -43,6 +43,27 @@ TEST(RenderBackend, FallsBackToCpuWithoutVulkanDevice) {
     EXPECT_EQ(fallbackImage.rgba, cpuImage.rgba) << "the fallback is the CPU reference renderer";
 }
 
+// When the loader finds no driver, the one-line notice says where the loader looks and how to
+// list what it finds, whether XDG_DATA_DIRS hides the manifests or VK_DRIVER_FILES names a
+// missing one.
+TEST(RenderBackend, TheNoDriverNoticeSaysWhereTheLoaderLooks) {
+    const auto out = scratchFile("no_driver.png");
+    for (const char* environment :
+         {"XDG_DATA_DIRS=/nonexistent", "VK_DRIVER_FILES=/nonexistent/matevo_icd.json"}) {
+        const auto result = testing::runCommand(
+            std::string("env -u VK_DRIVER_FILES -u VK_ICD_FILENAMES ") + environment +
+            " '" MATEVO_BINARY_DIR "/matevo' render --size 24 --out '" + out.string() + "'");
+        ASSERT_EQ(result.exitCode, 0) << environment << "\n" << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        for (const char* part : {"no compatible Vulkan driver", "VK_DRIVER_FILES",
+                                 "VK_ICD_FILENAMES", "$XDG_DATA_DIRS", "vulkaninfo --summary",
+                                 "rendering on the CPU instead"})
+            EXPECT_NE(result.err.find(part), std::string::npos)
+                << environment << ": " << part << "\n" << result.err;
+    }
+    std::filesystem::remove(out);
+}
+
 TEST(RenderBackend, GpuIsTheDefaultAndMatchesCpu) {
     const auto gpuFile = scratchFile("gpu.exr");
     const auto cpuFile = scratchFile("cpu_default.exr");
