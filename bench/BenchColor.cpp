@@ -41,17 +41,27 @@ Image benchImage(int size, std::uint32_t which) {
     return image;
 }
 
+// How long the comparisons of one size are timed at least (ΔE00 and LDR-FLIP in turn, on the
+// CPU and on the GPU): a call at 256² takes a few milliseconds, so 31 of each, one kind after
+// the other, were a fraction of a second of a shared machine.
+constexpr double kMinimumComparisonMilliseconds = 3000;
+
 // Median Mpixel/s of compareImages on all cores, map and statistics included; also reports the
-// mean ΔE00 so it can be checked against the peer's. Then LDR-FLIP on the same pair in the same
-// run, and the ratio of the two per-pixel costs.
-double measure(BenchReport& report, int size, int repetitions, int flipRepetitions) {
+// mean ΔE00 so it can be checked against the peer's. LDR-FLIP on the same pair is timed in turn
+// with it (bench/Timing.h), for the ratio of the two per-pixel costs.
+double measure(BenchReport& report, int size, int repetitions) {
     const Image a = benchImage(size, 0);
     const Image b = benchImage(size, 1);
     double meanDeltaE = 0;
-    const double milliseconds = medianMilliseconds(repetitions, [&] {
-        auto map = compareImages(a, b);
-        meanDeltaE = map ? map->stats.mean : -1;
-    });
+    const AlternatingTimes times = alternatingMedians(
+        repetitions, kMinimumComparisonMilliseconds,
+        [&] {
+            auto map = compareImages(a, b);
+            meanDeltaE = map ? map->stats.mean : -1;
+        },
+        [&] { (void)computeFlip(a, b); });
+    const double milliseconds = times.first.wallMilliseconds;
+    const double flipMilliseconds = times.second.wallMilliseconds;
     const std::string side = std::to_string(size);
     report.push_back({"de00_mean_" + side, meanDeltaE,
                       "mean dE00 of the " + side + "^2 benchmark pair (check against peer)"});
@@ -59,19 +69,12 @@ double measure(BenchReport& report, int size, int repetitions, int flipRepetitio
     const double rate = megapixels / (milliseconds / 1000.0);
     report.push_back({"de00_mpix_s_" + side, rate,
                       "CPU dE00 image comparison " + side + "^2, all cores (Mpixel/s)"});
-    const double flipMilliseconds =
-        medianMilliseconds(flipRepetitions, [&] { (void)computeFlip(a, b); });
     report.push_back({"flip_mpix_s_" + side, megapixels / (flipMilliseconds / 1000.0),
                       "CPU LDR-FLIP image comparison " + side + "^2, all cores (Mpixel/s)"});
     report.push_back({"flip_over_de00_" + side, flipMilliseconds / milliseconds,
                       "FLIP / dE00 time per pixel at " + side + "^2, same run (goal <= 3)"});
     return rate;
 }
-
-// How long the GPU comparisons of one size are timed at least (ΔE00 and LDR-FLIP in turn): a
-// call at 256² takes a few milliseconds, so 31 of each, one kind after the other, were a
-// fraction of a second of a shared machine.
-constexpr double kMinimumComparisonMilliseconds = 3000;
 
 // The same pair on the GPU (lavapipe on our machines): upload, the compute pass, read-back and
 // the statistics, for ΔE00 and for LDR-FLIP, after one warm-up call each, then timed in turn
@@ -141,8 +144,8 @@ void benchGpuComparison(BenchReport& report) {
 }  // namespace
 
 void benchDeltaE00(BenchReport& report) {
-    measure(report, 256, 201, 31);
-    const double large = measure(report, 2048, 15, 5);
+    measure(report, 256, 101);
+    const double large = measure(report, 2048, 5);
     report.push_back({"de00_mpix_s", large, "CPU dE00 image comparison, 2048^2 (Mpixel/s)"});
     benchGpuComparison(report);
 }

@@ -3,30 +3,130 @@
 #include <algorithm>
 #include <array>
 #include <initializer_list>
-#include <bit>
+#include <memory>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "color/Coverage.h"
 #include "color/ImageDifference.h"
 #include "color/detail/FlipFormulas.h"
 #include "color/detail/ForEachChunk.h"
+#include "color/detail/ScratchShelf.h"
 #include "color/detail/VectorisedKernel.h"
 #include "common/HugePages.h"
 
 namespace matevo {
 namespace {
 
-// Rows per band of work. A band filters the rows it needs along x (its own plus the filter
-// radius above and below) into band-local buffers, then along y: more rows per band repeat
-// less of the row pass, fewer keep the buffers in cache.
-constexpr int kBandRows = 64;
+// A tile of work: its pixels' rows and columns plus the filter radius around them are filtered
+// along x into tile-local planes, then along y. Taller tiles repeat less of the row pass;
+// narrower ones keep the fourteen planes (seven per image) in the core's cache between the two
+// passes (whole 2048-pixel rows were megabytes per worker).
+constexpr int kTileRows = 64;
+constexpr int kTileColumns = 128;
 
-// One image row in YyCxCz, a line per channel, and the achromatic channel normalised to [0, 1]
-// for the feature detectors. Rows are converted as a band's row passes need them rather than
-// kept as whole-image planes, which at 2048² were 128 MB written and read again.
+// A filter's taps right of and at its centre, and whether its left half mirrors them (even)
+// or their negatives (odd): our filters are Gaussians and their derivatives, so each mirrored
+// pair of lines is added (or subtracted) before one multiply, which halves the work.
+struct Taps {
+    std::vector<float> halfFromCentre;  // taps[r], taps[r + 1], ..., taps[2r]
+    bool odd = false;
+    int radius() const { return int(halfFromCentre.size()) - 1; }
+};
+
+Taps halfOf(const std::vector<float>& values) {
+    const std::size_t centre = values.size() / 2;
+    return {std::vector<float>(values.begin() + std::ptrdiff_t(centre), values.end()),
+            values[centre] == 0.0f && values.front() == -values.back()};
+}
+
+// Sixteen pixels as one value: GCC and Clang compile its arithmetic to the widest registers
+// the kernel's clone targets (one AVX-512, two AVX2 or four SSE registers).
+constexpr int kVectorWidth = 16;
+typedef float FloatVector __attribute__((vector_size(kVectorWidth * sizeof(float))));
+
+// Filters `Vectors` × 16 pixels from x0 on (see filterLinesOf), their sums kept in registers
+// across all taps: each tap costs two loads and no store, and the vectors are independent
+// chains of additions, so one waits less on the latency of another.
+template <int Count, int Vectors>
+[[gnu::always_inline]] inline void filterBlock(const Taps* const* taps, const float* const* lines,
+                                               float* const* out, int x0) {
+    const int r = taps[0]->radius();
+    FloatVector sums[Count][Vectors];
+    for (int v = 0; v < Vectors; ++v) {
+        FloatVector centre;
+        std::memcpy(&centre, lines[r] + x0 + v * kVectorWidth, sizeof centre);
+        for (int f = 0; f < Count; ++f) sums[f][v] = taps[f]->halfFromCentre[0] * centre;
+    }
+    for (int k = r; k >= 1; --k) {
+        for (int v = 0; v < Vectors; ++v) {
+            FloatVector low, high;
+            std::memcpy(&low, lines[r - k] + x0 + v * kVectorWidth, sizeof low);
+            std::memcpy(&high, lines[r + k] + x0 + v * kVectorWidth, sizeof high);
+            const FloatVector pairSum = low + high, pairDifference = high - low;
+            for (int f = 0; f < Count; ++f)
+                sums[f][v] += taps[f]->halfFromCentre[std::size_t(k)] *
+                              (taps[f]->odd ? pairDifference : pairSum);
+        }
+    }
+    for (int f = 0; f < Count; ++f)
+        std::memcpy(out[f] + x0, &sums[f][0], sizeof sums[f]);
+}
+
+// out[f][x] = Σ_k taps[f][k] lines[k][x] for `Count` filters of one radius over the same
+// 2r + 1 lines (the shifts of one padded row, or rows of a tile): each pair of mirrored lines
+// is loaded, added and subtracted once for all the filters. Every pixel is summed in the same
+// order (the centre, then the pairs from the outermost in), whichever path below takes it.
+template <int Count>
+[[gnu::always_inline]] inline void filterLinesOf(const Taps* const* taps, int width,
+                                                 const float* const* lines, float* const* out) {
+    constexpr int kWide = 4;  // vectors per block where the line is long enough
+    int x0 = 0;
+    for (; x0 + kWide * kVectorWidth <= width; x0 += kWide * kVectorWidth)
+        filterBlock<Count, kWide>(taps, lines, out, x0);
+    for (; x0 + kVectorWidth <= width; x0 += kVectorWidth)
+        filterBlock<Count, 1>(taps, lines, out, x0);
+    if (x0 == width) return;
+    if (width >= kVectorWidth) {
+        // One last vector that ends at the line's end, overlapping its predecessor: it writes
+        // the same values again.
+        filterBlock<Count, 1>(taps, lines, out, width - kVectorWidth);
+        return;
+    }
+    const int r = taps[0]->radius();
+    for (int x = 0; x < width; ++x)
+        for (int f = 0; f < Count; ++f) {
+            const std::vector<float>& half = taps[f]->halfFromCentre;
+            float sum = half[0] * lines[r][x];
+            for (int k = r; k >= 1; --k) {
+                const float low = lines[r - k][x], high = lines[r + k][x];
+                sum += half[std::size_t(k)] * (taps[f]->odd ? high - low : low + high);
+            }
+            out[f][x] = sum;
+        }
+}
+
+MATEVO_VECTORISED_KERNEL void filterLines(std::initializer_list<const Taps*> taps, int width,
+                                          const float* const* lines,
+                                          std::initializer_list<float*> out) {
+    switch (taps.size()) {
+    case 1: filterLinesOf<1>(taps.begin(), width, lines, out.begin()); break;
+    case 2: filterLinesOf<2>(taps.begin(), width, lines, out.begin()); break;
+    default: filterLinesOf<3>(taps.begin(), width, lines, out.begin()); break;
+    }
+}
+
+// One row of a tile in YyCxCz, a line per channel, and the achromatic channel normalised to
+// [0, 1] for the feature detectors; each line holds the tile's columns and `padding` more on
+// both sides for the row filters, edge pixels repeated past the image's edges.
 struct OpponentRow {
+    int padding = 0;
     std::vector<float> achromatic, redGreen, blueYellow, lightness;
+    // Where the tile's column x (0 at its first) is.
+    const float* at(const std::vector<float>& line, int x) const {
+        return line.data() + padding + x;
+    }
 };
 
 MATEVO_VECTORISED_KERNEL void opponentRange(const float* rgba, std::size_t count, float* achromatic,
@@ -43,106 +143,53 @@ MATEVO_VECTORISED_KERNEL void opponentRange(const float* rgba, std::size_t count
     }
 }
 
-void convertRow(const Image& image, int y, OpponentRow& row) {
-    const std::size_t width = std::size_t(image.width);
+// Columns [firstColumn − padding, endColumn + padding) of image row y.
+void convertRow(const Image& image, int y, int firstColumn, int endColumn, int padding,
+                OpponentRow& row) {
+    const int lineStart = firstColumn - padding, lineEnd = endColumn + padding;
+    const int inside = std::max(lineStart, 0), insideEnd = std::min(lineEnd, image.width);
+    row.padding = padding;
     for (auto* line : {&row.achromatic, &row.redGreen, &row.blueYellow, &row.lightness})
-        line->resize(width);
-    opponentRange(&image.rgba[4 * std::size_t(y) * width], width, row.achromatic.data(),
-                  row.redGreen.data(), row.blueYellow.data(), row.lightness.data());
-}
-
-// A filter's taps and their mirror symmetry. Our filters are Gaussians and their derivatives:
-// even (taps[r + k] = taps[r − k]) or odd (= −taps[r − k]), so each mirrored pair is added
-// (or subtracted) before one multiply, which halves the work.
-struct Taps {
-    std::vector<float> values;
-    int radius = 0;
-    enum class Symmetry { Even, Odd, None } symmetry = Symmetry::None;
-};
-
-Taps withSymmetry(const std::vector<float>& values) {
-    Taps taps{values, int(values.size() / 2), Taps::Symmetry::Even};
-    bool even = true, odd = values[std::size_t(taps.radius)] == 0.0f;
-    for (std::size_t k = 0; k < values.size(); ++k) {
-        even &= values[k] == values[values.size() - 1 - k];
-        odd &= values[k] == -values[values.size() - 1 - k];
-    }
-    taps.symmetry = even ? Taps::Symmetry::Even : odd ? Taps::Symmetry::Odd : Taps::Symmetry::None;
-    return taps;
-}
-
-// out[x] += Σ_k taps[k] lines[k][x] over the 2r + 1 lines around x: shifts of one padded row
-// (filtering along x) or rows of a band (along y).
-MATEVO_VECTORISED_KERNEL void accumulateFiltered(const Taps& taps, int width,
-                                                 const float* const* lines, float* out) {
-    const float* values = taps.values.data();
-    const int r = taps.radius;
-    if (taps.symmetry == Taps::Symmetry::None) {
-        for (int k = 0; k <= 2 * r; ++k)
-            for (int x = 0; x < width; ++x) out[x] += values[k] * lines[k][x];
-        return;
-    }
-    const float* centre = lines[r];
-    for (int x = 0; x < width; ++x) out[x] += values[r] * centre[x];
-    // Mirrored pairs: added for an even filter, subtracted for an odd one.
-    for (int k = 0; k < r; ++k) {
-        const float* low = lines[k];
-        const float* high = lines[2 * r - k];
-        const float tap = values[k];
-        if (taps.symmetry == Taps::Symmetry::Even)
-            for (int x = 0; x < width; ++x) out[x] += tap * (low[x] + high[x]);
-        else
-            for (int x = 0; x < width; ++x) out[x] += tap * (low[x] - high[x]);
+        line->resize(std::size_t(lineEnd - lineStart));
+    const int offset = inside - lineStart;
+    opponentRange(&image.rgba[4 * (std::size_t(y) * std::size_t(image.width) + inside)],
+                  std::size_t(insideEnd - inside), row.achromatic.data() + offset,
+                  row.redGreen.data() + offset, row.blueYellow.data() + offset,
+                  row.lightness.data() + offset);
+    for (auto* line : {&row.achromatic, &row.redGreen, &row.blueYellow, &row.lightness}) {
+        float* values = line->data();
+        std::fill(values, values + offset, values[offset]);
+        const int last = insideEnd - lineStart - 1;
+        std::fill(values + last + 1, values + (lineEnd - lineStart), values[last]);
     }
 }
 
-// Scratch space of one band's worker: a padded row and the line pointers.
-struct FilterScratch {
-    std::vector<float> padded;
-    std::vector<const float*> lines;
-};
-
-// out = the row `in` filtered along x, edge pixels repeated.
-void filterRow(const float* in, int width, const Taps& taps, FilterScratch& scratch, float* out) {
-    const int radius = taps.radius;
-    scratch.padded.resize(std::size_t(width + 2 * radius));
-    float* padded = scratch.padded.data();
-    std::fill(padded, padded + radius, in[0]);
-    std::copy(in, in + width, padded + radius);
-    std::fill(padded + radius + width, padded + width + 2 * radius, in[width - 1]);
-    scratch.lines.resize(std::size_t(2 * radius + 1));
-    for (int k = 0; k <= 2 * radius; ++k) scratch.lines[std::size_t(k)] = scratch.padded.data() + k;
-    std::fill(out, out + width, 0.0f);
-    accumulateFiltered(taps, width, scratch.lines.data(), out);
-}
-
-// The row pass of one band for one plane: image rows [first, first + count) (clamped at the
-// image's edges) filtered along x, stored consecutively.
+// The row pass of one tile for one plane: image rows [first, first + count) (clamped at the
+// image's edges) filtered along x over the tile's columns, stored consecutively.
 class RowFiltered {
 public:
-    // Keeps its buffer's memory from band to band.
+    // Keeps its buffer's memory from tile to tile. Rows are a cache line longer than a whole
+    // number of lines: the column passes load the same column of 2r + 1 rows, which at a
+    // stride of a multiple of 4 KiB (1024 pixels) all fall in one set of the L1 cache.
+    // Not zeroed: the row passes write every value the column passes read.
     void resize(int width, int first, int count) {
-        width_ = width;
+        stride_ = (std::size_t(width) + 15) / 16 * 16 + 16;
         first_ = first;
-        rows_.resize(std::size_t(width) * std::size_t(count));
+        const std::size_t size = stride_ * std::size_t(count);
+        if (size > capacity_) {
+            rows_ = std::make_unique_for_overwrite<float[]>(size);
+            capacity_ = size;
+        }
     }
     // The stored row for image row y (first_ ≤ y < first_ + count).
-    const float* row(int y) const { return &rows_[std::size_t(y - first_) * width_]; }
-    float* row(int y) { return &rows_[std::size_t(y - first_) * width_]; }
+    const float* row(int y) const { return &rows_[std::size_t(y - first_) * stride_]; }
+    float* row(int y) { return &rows_[std::size_t(y - first_) * stride_]; }
 
 private:
-    int width_ = 0, first_ = 0;
-    std::vector<float> rows_;
+    std::size_t stride_ = 0, capacity_ = 0;
+    int first_ = 0;
+    std::unique_ptr<float[]> rows_;
 };
-
-// out[x] += Σ_k taps[k] rows.row(y + k − radius)[x].
-void filterColumns(const RowFiltered& rows, int y, const Taps& taps, int width,
-                   FilterScratch& scratch, float* out) {
-    scratch.lines.resize(taps.values.size());
-    for (int k = 0; k <= 2 * taps.radius; ++k)
-        scratch.lines[std::size_t(k)] = rows.row(y + k - taps.radius);
-    accumulateFiltered(taps, width, scratch.lines.data(), out);
-}
 
 struct Kernels {
     Taps achromatic, redGreen, blueYellow0, blueYellow1;  // contrast sensitivity
@@ -153,19 +200,27 @@ struct Kernels {
 Kernels makeKernels(double pixelsPerDegree) {
     const flip::CsfKernels csf = flip::makeCsfKernels(pixelsPerDegree);
     const flip::FeatureKernels feature = flip::makeFeatureKernels(pixelsPerDegree);
-    return {withSymmetry(csf.achromatic),       withSymmetry(csf.redGreen),
-            withSymmetry(csf.blueYellow[0]),    withSymmetry(csf.blueYellow[1]),
-            withSymmetry(feature.gaussian),     withSymmetry(feature.firstDerivative),
-            withSymmetry(feature.secondDerivative), float(flip::maxColorDistance())};
+    return {halfOf(csf.achromatic),      halfOf(csf.redGreen),
+            halfOf(csf.blueYellow[0]),   halfOf(csf.blueYellow[1]),
+            halfOf(feature.gaussian),    halfOf(feature.firstDerivative),
+            halfOf(feature.secondDerivative), float(flip::maxColorDistance())};
 }
 
-// Step 3 along one row from the filtered opponent channels of both images.
+// The planes a tile's row passes fill for one image, each filtered along x.
+enum Plane {
+    kAchromatic, kRedGreen, kBlueYellow0, kBlueYellow1,  // contrast sensitivity, step 2
+    kSlope, kCurvature, kBlurred,                        // first, second derivative, Gaussian
+    kPlaneCount
+};
+
+// Step 3 along one row from the column-filtered opponent planes of both images (the
+// blue-yellow channel is the sum of its two terms).
 MATEVO_VECTORISED_KERNEL void colorErrorRow(const float* const* filtered, int width,
                                             float maxColorDistance, float* colorError) {
     for (int x = 0; x < width; ++x)
         colorError[x] = flip::formulas::colorDifference(
-            {filtered[0][x], filtered[1][x], filtered[2][x]},
-            {filtered[3][x], filtered[4][x], filtered[5][x]}, maxColorDistance);
+            {filtered[0][x], filtered[1][x], filtered[2][x] + filtered[3][x]},
+            {filtered[4][x], filtered[5][x], filtered[6][x] + filtered[7][x]}, maxColorDistance);
 }
 
 // Steps 4 and 5 along one row from both images' ∂x, ∂y, ∂xx, ∂yy; error holds the colour error
@@ -183,163 +238,128 @@ MATEVO_VECTORISED_KERNEL void combineRow(const float* const* derivatives, int wi
     }
 }
 
-// One worker's buffers, reused from band to band (a band's are hundreds of kilobytes, which
-// the allocator would map and unmap each time): the row passes of both images and the column
+// Where one chunk of work lies in the image: rows [firstRow, endRow), columns
+// [firstColumn, endColumn).
+struct Tile {
+    int firstRow, endRow, firstColumn, endColumn;
+    int width() const { return endColumn - firstColumn; }
+};
+
+// One worker's buffers, reused from tile to tile and kept from call to call (ScratchShelf.h):
+// a converted row, the row passes of both images, the line pointers of a filter and the column
 // sums of one row.
-struct BandScratch {
-    FilterScratch filter;
+struct TileScratch {
     OpponentRow opponent;
-    std::array<std::array<RowFiltered, 4>, 2> rows;  // [image][plane]
+    std::array<std::array<RowFiltered, kPlaneCount>, 2> rows;  // [image][plane]
+    std::vector<const float*> lines;
     std::vector<float> sums;
+    FlipPooling pooling;  // of the tiles this worker computed
 };
 
-// Which line of a converted row a row pass filters, with which taps.
-struct PlaneFilter {
-    std::vector<float> OpponentRow::*line;
-    const Taps* taps;
-};
+// The 2r + 1 shifts of a padded line around the tile's first column, for a filter of radius r.
+const float* const* shiftsOf(const OpponentRow& row, const std::vector<float>& line, int radius,
+                             std::vector<const float*>& lines) {
+    lines.resize(std::size_t(2 * radius + 1));
+    for (int k = -radius; k <= radius; ++k) lines[std::size_t(k + radius)] = row.at(line, k);
+    return lines.data();
+}
 
-// The row passes of both images (rows[image][i] through filters[i]) over the band's rows and
-// `radius` more above and below, each image row converted once for all the filters.
-void rowPasses(const Image& reference, const Image& test,
-               std::initializer_list<PlaneFilter> filters, int firstRow, int endRow, int radius,
-               BandScratch& scratch) {
+// The 2r + 1 stored rows around image row y, for a filter of radius r.
+const float* const* rowsAround(const RowFiltered& plane, int y, int radius,
+                               std::vector<const float*>& lines) {
+    lines.resize(std::size_t(2 * radius + 1));
+    for (int k = -radius; k <= radius; ++k) lines[std::size_t(k + radius)] = plane.row(y + k);
+    return lines.data();
+}
+
+// The row passes of both images over the tile and `halo` more rows above and below, each
+// image row converted once for all seven filters.
+void rowPasses(const Image& reference, const Image& test, const Tile& tile, int halo,
+               const Kernels& kernels, TileScratch& scratch) {
     const Image* images[2] = {&reference, &test};
-    const int width = reference.width, height = reference.height;
+    const int width = tile.width();
+    const int csfRadius = kernels.achromatic.radius(), featureRadius = kernels.gaussian.radius();
+    const OpponentRow& row = scratch.opponent;
     for (std::size_t image = 0; image < 2; ++image) {
-        for (std::size_t i = 0; i < filters.size(); ++i)
-            scratch.rows[image][i].resize(width, firstRow - radius,
-                                          endRow - firstRow + 2 * radius);
-        for (int y = firstRow - radius; y < endRow + radius; ++y) {
-            convertRow(*images[image], std::clamp(y, 0, height - 1), scratch.opponent);
-            std::size_t i = 0;
-            for (const PlaneFilter& filter : filters)
-                filterRow((scratch.opponent.*filter.line).data(), width, *filter.taps,
-                          scratch.filter, scratch.rows[image][i++].row(y));
+        auto& planes = scratch.rows[image];
+        for (RowFiltered& plane : planes)
+            plane.resize(width, tile.firstRow - halo, tile.endRow - tile.firstRow + 2 * halo);
+        for (int y = tile.firstRow - halo; y < tile.endRow + halo; ++y) {
+            convertRow(*images[image], std::clamp(y, 0, reference.height - 1), tile.firstColumn,
+                       tile.endColumn, halo, scratch.opponent);
+            filterLines({&kernels.achromatic}, width,
+                        shiftsOf(row, row.achromatic, csfRadius, scratch.lines),
+                        {planes[kAchromatic].row(y)});
+            filterLines({&kernels.redGreen}, width,
+                        shiftsOf(row, row.redGreen, csfRadius, scratch.lines),
+                        {planes[kRedGreen].row(y)});
+            filterLines({&kernels.blueYellow0, &kernels.blueYellow1}, width,
+                        shiftsOf(row, row.blueYellow, csfRadius, scratch.lines),
+                        {planes[kBlueYellow0].row(y), planes[kBlueYellow1].row(y)});
+            filterLines({&kernels.firstDerivative, &kernels.secondDerivative, &kernels.gaussian},
+                        width, shiftsOf(row, row.lightness, featureRadius, scratch.lines),
+                        {planes[kSlope].row(y), planes[kCurvature].row(y), planes[kBlurred].row(y)});
         }
     }
 }
 
-// The colour error (step 3) of one band's rows.
-void colorErrorOfBand(const Image& reference, const Image& test, int firstRow, int endRow,
-                      const Kernels& kernels, BandScratch& scratch, float* colorError) {
-    const int width = reference.width;
-    rowPasses(reference, test,
-              {{&OpponentRow::achromatic, &kernels.achromatic},
-               {&OpponentRow::redGreen, &kernels.redGreen},
-               {&OpponentRow::blueYellow, &kernels.blueYellow0},
-               {&OpponentRow::blueYellow, &kernels.blueYellow1}},
-              firstRow, endRow, kernels.achromatic.radius, scratch);
-    // Columns, clamped at the image's edges: a band's stored rows already repeat them.
-    scratch.sums.resize(std::size_t(width) * 6);
-    float* out[6];
-    for (int c = 0; c < 6; ++c) out[c] = &scratch.sums[std::size_t(c) * width];
-    for (int y = firstRow; y < endRow; ++y) {
-        std::fill(scratch.sums.begin(), scratch.sums.end(), 0.0f);
+// ꟻLIP of one tile: the row passes, then row by row the column passes, the colour error
+// (step 3), the feature error (step 4) and their combination (step 5).
+void flipOfTile(const Image& reference, const Image& test, const Tile& tile,
+                const Kernels& kernels, TileScratch& scratch, float* error) {
+    const int width = tile.width();
+    const int csfRadius = kernels.achromatic.radius(), featureRadius = kernels.gaussian.radius();
+    // Columns, clamped at the image's edges: a tile's stored rows already repeat them.
+    rowPasses(reference, test, tile, std::max(csfRadius, featureRadius), kernels, scratch);
+    constexpr int kOutputs = 16;  // per image: four colour and four derivative sums
+    scratch.sums.resize(std::size_t(width) * kOutputs);
+    float* out[kOutputs];
+    for (int c = 0; c < kOutputs; ++c) out[c] = &scratch.sums[std::size_t(c) * width];
+    float* const* colorSums = out;           // [4 image + channel]
+    float* const* derivativeSums = out + 8;  // [4 image + ∂x, ∂y, ∂xx, ∂yy]
+    const std::pair<Plane, const Taps*> csf[] = {{kAchromatic, &kernels.achromatic},
+                                                 {kRedGreen, &kernels.redGreen},
+                                                 {kBlueYellow0, &kernels.blueYellow0},
+                                                 {kBlueYellow1, &kernels.blueYellow1}};
+    for (int y = tile.firstRow; y < tile.endRow; ++y) {
         for (std::size_t image = 0; image < 2; ++image) {
-            const auto& rows = scratch.rows[image];
-            float* const* o = out + 3 * image;
-            filterColumns(rows[0], y, kernels.achromatic, width, scratch.filter, o[0]);
-            filterColumns(rows[1], y, kernels.redGreen, width, scratch.filter, o[1]);
-            filterColumns(rows[2], y, kernels.blueYellow0, width, scratch.filter, o[2]);
-            filterColumns(rows[3], y, kernels.blueYellow1, width, scratch.filter, o[2]);
+            const auto& planes = scratch.rows[image];
+            auto around = [&](Plane plane, int radius) {
+                return rowsAround(planes[plane], y, radius, scratch.lines);
+            };
+            float* const* color = colorSums + 4 * image;
+            float* const* derivative = derivativeSums + 4 * image;
+            for (int c = 0; c < 4; ++c)
+                filterLines({csf[c].second}, width, around(csf[c].first, csfRadius), {color[c]});
+            filterLines({&kernels.gaussian}, width, around(kSlope, featureRadius),
+                        {derivative[0]});
+            filterLines({&kernels.firstDerivative, &kernels.secondDerivative}, width,
+                        around(kBlurred, featureRadius), {derivative[1], derivative[3]});
+            filterLines({&kernels.gaussian}, width, around(kCurvature, featureRadius),
+                        {derivative[2]});
         }
-        colorErrorRow(out, width, kernels.maxColorDistance, colorError + std::size_t(y) * width);
+        float* rowError = error + std::size_t(y) * std::size_t(reference.width) + tile.firstColumn;
+        colorErrorRow(colorSums, width, kernels.maxColorDistance, rowError);
+        combineRow(derivativeSums, width, rowError);
     }
 }
 
-// The feature error (step 4) of one band's rows, combined with its colour error (step 5).
-void flipOfBand(const Image& reference, const Image& test, int firstRow, int endRow,
-                const Kernels& kernels, BandScratch& scratch, float* error) {
-    const int width = reference.width;
-    // Along x: the first and second derivative and the Gaussian of the normalised achromatic.
-    rowPasses(reference, test,
-              {{&OpponentRow::lightness, &kernels.firstDerivative},
-               {&OpponentRow::lightness, &kernels.secondDerivative},
-               {&OpponentRow::lightness, &kernels.gaussian}},
-              firstRow, endRow, kernels.gaussian.radius, scratch);
-    scratch.sums.resize(std::size_t(width) * 8);
-    float* out[8];
-    for (int c = 0; c < 8; ++c) out[c] = &scratch.sums[std::size_t(c) * width];
-    for (int y = firstRow; y < endRow; ++y) {
-        std::fill(scratch.sums.begin(), scratch.sums.end(), 0.0f);
-        for (std::size_t image = 0; image < 2; ++image) {
-            const auto& rows = scratch.rows[image];
-            const RowFiltered &slope = rows[0], &curvature = rows[1], &blurred = rows[2];
-            float* const* o = out + 4 * image;
-            filterColumns(slope, y, kernels.gaussian, width, scratch.filter, o[0]);           // ∂x
-            filterColumns(blurred, y, kernels.firstDerivative, width, scratch.filter, o[1]);  // ∂y
-            filterColumns(curvature, y, kernels.gaussian, width, scratch.filter, o[2]);       // ∂xx
-            filterColumns(blurred, y, kernels.secondDerivative, width, scratch.filter, o[3]); // ∂yy
+// Which of the tile's pixels count in the statistics, and their errors added to the pooling.
+void poolTile(const Image& reference, const Image& test, bool useAlpha, const Tile& tile,
+              FlipMap& map, FlipPooling& pooling) {
+    for (int y = tile.firstRow; y < tile.endRow; ++y) {
+        const std::size_t rowStart = std::size_t(y) * std::size_t(map.width);
+        for (std::size_t i = rowStart + std::size_t(tile.firstColumn);
+             i < rowStart + std::size_t(tile.endColumn); ++i) {
+            const bool counts = !useAlpha || (isCovered(reference.rgba[4 * i + 3]) &&
+                                              isCovered(test.rgba[4 * i + 3]));
+            map.pooled[i] = counts ? 1 : 0;
+            pooling.add(map.error[i], counts);
         }
-        combineRow(out, width, error + std::size_t(y) * width);
     }
 }
 
 }  // namespace
-
-FlipStats poolFlip(const std::vector<float>& errors) {
-    FlipStats stats;
-    stats.pixels = errors.size();
-    if (errors.empty()) return stats;
-    // Non-negative floats order like their bit patterns: the top bits (exponent and seven
-    // mantissa bits) sort errors into ordered buckets, so a weighted percentile needs sorting
-    // only within the one (small) bucket where the running sum passes it.
-    constexpr int kBucketShift = 16;
-    constexpr std::size_t kBuckets = std::size_t(1) << (31 - kBucketShift);
-    auto bucketOf = [](float error) {
-        return std::min(std::size_t(std::bit_cast<std::uint32_t>(std::max(error, 0.0f)) >>
-                                    kBucketShift),
-                        kBuckets - 1);
-    };
-    std::vector<double> bucketSums(kBuckets, 0.0);
-    double total = 0;
-    float largest = 0;
-    for (float error : errors) {
-        bucketSums[bucketOf(error)] += error;
-        total += error;
-        largest = std::max(largest, error);
-    }
-    stats.mean = total / double(errors.size());
-    stats.max = largest;
-    // The smallest error at which the running sum, in ascending order, passes fraction · total:
-    // the quartiles' buckets in one walk over the buckets (the thresholds ascend), their values
-    // in one pass over the errors, then each bucket sorted.
-    constexpr std::array<double, 3> kFractions = {0.25, 0.5, 0.75};
-    std::array<std::size_t, 3> bucketOfQuartile{};
-    std::array<double, 3> belowBucket{};
-    double below = 0;
-    std::size_t bucket = 0;
-    for (std::size_t q = 0; q < kFractions.size(); ++q) {
-        const double threshold = kFractions[q] * total;
-        while (bucket + 1 < kBuckets && below + bucketSums[bucket] <= threshold)
-            below += bucketSums[bucket++];
-        bucketOfQuartile[q] = bucket;
-        belowBucket[q] = below;
-    }
-    std::array<std::vector<float>, 3> inBucket;
-    for (float error : errors) {
-        const std::size_t errorBucket = bucketOf(error);
-        for (std::size_t q = 0; q < kFractions.size(); ++q)
-            if (errorBucket == bucketOfQuartile[q]) inBucket[q].push_back(error);
-    }
-    std::array<double, 3> quartiles{};  // 0 when every error is 0
-    for (std::size_t q = 0; q < kFractions.size(); ++q) {
-        std::sort(inBucket[q].begin(), inBucket[q].end());
-        double running = belowBucket[q];
-        for (float error : inBucket[q]) {
-            running += error;
-            if (running > kFractions[q] * total) {
-                quartiles[q] = error;
-                break;
-            }
-        }
-    }
-    stats.firstWeightedQuartile = quartiles[0];
-    stats.weightedMedian = quartiles[1];
-    stats.thirdWeightedQuartile = quartiles[2];
-    return stats;
-}
 
 Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useAlpha,
                             const FlipSettings& settings, unsigned workerCount) {
@@ -357,26 +377,27 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
     if (pixelCount == 0) return map;
 
     const Kernels kernels = makeKernels(settings.pixelsPerDegree);
-    const std::size_t bands = std::size_t((map.height + kBandRows - 1) / kBandRows);
-    detail::forEachChunkWithScratch(
-        bands, workerCount, [] { return BandScratch{}; },
-        [&](BandScratch& scratch, std::size_t band) {
-            const int firstRow = int(band) * kBandRows;
-            const int endRow = std::min(map.height, firstRow + kBandRows);
-            colorErrorOfBand(reference, test, firstRow, endRow, kernels, scratch,
-                             map.error.data());
-            flipOfBand(reference, test, firstRow, endRow, kernels, scratch, map.error.data());
+    const int tileRows = (map.height + kTileRows - 1) / kTileRows;
+    const int tileColumns = (map.width + kTileColumns - 1) / kTileColumns;
+    static detail::ScratchShelf<TileScratch> shelf;
+    auto scratches = detail::forEachChunkWithScratch(
+        std::size_t(tileRows) * std::size_t(tileColumns), workerCount,
+        [] {
+            auto scratch = shelf.take();
+            scratch->pooling.clear();
+            return scratch;
+        },
+        [&](detail::ScratchShelf<TileScratch>::Shelved& scratch, std::size_t chunk) {
+            const int row = int(chunk) / tileColumns, column = int(chunk) % tileColumns;
+            const Tile tile{row * kTileRows, std::min(map.height, (row + 1) * kTileRows),
+                            column * kTileColumns,
+                            std::min(map.width, (column + 1) * kTileColumns)};
+            flipOfTile(reference, test, tile, kernels, *scratch, map.error.data());
+            poolTile(reference, test, useAlpha, tile, map, scratch->pooling);
         });
-
-    std::vector<float> pooledErrors;
-    pooledErrors.reserve(pixelCount);
-    for (std::size_t i = 0; i < pixelCount; ++i) {
-        const bool counts = !useAlpha || (isCovered(reference.rgba[4 * i + 3]) &&
-                                          isCovered(test.rgba[4 * i + 3]));
-        map.pooled[i] = counts ? 1 : 0;
-        if (counts) pooledErrors.push_back(map.error[i]);
-    }
-    map.stats = poolFlip(pooledErrors);
+    FlipPooling& pooling = scratches.front()->pooling;
+    for (std::size_t i = 1; i < scratches.size(); ++i) pooling.merge(scratches[i]->pooling);
+    map.stats = pooling.finish(map.error, map.pooled, workerCount);
     return map;
 }
 

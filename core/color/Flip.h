@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "color/FlipPooling.h"
 #include "color/FlipStages.h"
 #include "common/Image.h"
 #include "common/Result.h"
@@ -21,18 +22,6 @@ namespace matevo {
 struct FlipSettings {
     // The viewing condition: how many pixels one degree of visual angle spans.
     double pixelsPerDegree = flip::kDefaultPixelsPerDegree;
-};
-
-// Over the pooled pixels; all zero when there are none (check `pixels`). Weighted percentiles
-// weight each pixel by its own error, as the ꟻLIP authors pool: the weighted median is the
-// smallest error e such that pixels with error ≤ e carry more than half of the summed error.
-struct FlipStats {
-    double mean = 0;
-    double weightedMedian = 0;
-    double firstWeightedQuartile = 0;
-    double thirdWeightedQuartile = 0;
-    double max = 0;
-    std::size_t pixels = 0;
 };
 
 struct FlipMap {
@@ -47,8 +36,5 @@ struct FlipMap {
 // depend on the thread count (0: all hardware threads).
 Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useAlpha = true,
                             const FlipSettings& settings = {}, unsigned workerCount = 0);
-
-// The statistics of the given errors (any order).
-FlipStats poolFlip(const std::vector<float>& errors);
 
 }  // namespace matevo

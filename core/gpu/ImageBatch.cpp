@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "color/DeltaEPooling.h"
+#include "color/FlipPooling.h"
 #include "common/HugePages.h"
 
 namespace matevo::gpu {
@@ -93,14 +94,13 @@ FlipMap downloadFlipMap(const Buffer& batch, const ImageBatchShape& shape, uint3
     const float* values = batch.as<float>().data() + pixels * index;
     map.error.resize(pixels);
     map.pooled.resize(pixels);
-    std::vector<float> pooledErrors;
-    pooledErrors.reserve(pixels);
+    FlipPooling pooling;  // as computeFlip pools
     for (std::size_t i = 0; i < pixels; ++i) {
         map.pooled[i] = values[i] >= 0.0f;
         map.error[i] = map.pooled[i] ? values[i] : -1.0f - values[i];
-        if (map.pooled[i]) pooledErrors.push_back(map.error[i]);
+        pooling.add(map.error[i], map.pooled[i] != 0);
     }
-    map.stats = poolFlip(pooledErrors);
+    map.stats = pooling.finish(map.error, map.pooled);
     return map;
 }
 

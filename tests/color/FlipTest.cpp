@@ -82,6 +82,25 @@ TEST(FlipFeatures, DetectorKernelsAreNormalisedGaussianDerivatives) {
     EXPECT_NEAR(negative, -1.0, 1e-6);
 }
 
+// The CPU filters fold mirrored taps (computeFlip reads the taps right of the centre and
+// whether the filter is even or odd), so every filter must be exactly one or the other.
+TEST(FlipFilters, EveryFilterIsExactlyEvenOrOddAtAnyViewingCondition) {
+    auto mirrored = [](const std::vector<float>& taps, float sign) {
+        for (std::size_t k = 0; k < taps.size(); ++k)
+            if (taps[k] != sign * taps[taps.size() - 1 - k]) return false;
+        return true;
+    };
+    for (double pixelsPerDegree : {1.0, 5.5, 20.0, 30.0, 45.3, kDefaultPixelsPerDegree, 120.0,
+                                   333.3, 1000.0}) {
+        const CsfKernels csf = makeCsfKernels(pixelsPerDegree);
+        const FeatureKernels feature = makeFeatureKernels(pixelsPerDegree);
+        for (const auto* even : {&csf.achromatic, &csf.redGreen, &csf.blueYellow[0],
+                                 &csf.blueYellow[1], &feature.gaussian, &feature.secondDerivative})
+            EXPECT_TRUE(mirrored(*even, 1.0f)) << pixelsPerDegree;
+        EXPECT_TRUE(mirrored(feature.firstDerivative, -1.0f)) << pixelsPerDegree;
+    }
+}
+
 TEST(FlipColorDifference, WorkedValuesFromHuntHyabAndTheRemapping) {
     // c_max: pure green against pure blue after the Hunt adjustment, raised to 0.7.
     EXPECT_NEAR(maxColorDistance(), 41.27657, 1e-3);
@@ -208,14 +227,39 @@ TEST(Flip, RejectsDifferentSizesAndBadViewingConditions) {
 
 TEST(FlipPooling, WeightedPercentilesWeightEachPixelByItsError) {
     // Total 1.0: the running sums 0.1, 0.3, 0.6, 1.0 pass 0.25 at 0.2, 0.5 at 0.3, 0.75 at 0.4.
-    const FlipStats stats = poolFlip({0.4f, 0.1f, 0.3f, 0.2f});
+    // The 0.9 is not pooled.
+    const std::vector<float> errors = {0.4f, 0.9f, 0.1f, 0.3f, 0.2f};
+    const std::vector<std::uint8_t> pooled = {1, 0, 1, 1, 1};
+    const FlipStats stats = poolFlip(errors, pooled);
     EXPECT_NEAR(stats.mean, 0.25, 1e-7);
     EXPECT_NEAR(stats.firstWeightedQuartile, 0.2, 1e-7);
     EXPECT_NEAR(stats.weightedMedian, 0.3, 1e-7);
     EXPECT_NEAR(stats.thirdWeightedQuartile, 0.4, 1e-7);
     EXPECT_NEAR(stats.max, 0.4, 1e-7);
     EXPECT_EQ(stats.pixels, 4u);
-    EXPECT_EQ(poolFlip({}).pixels, 0u);
+    EXPECT_EQ(poolFlip({}, {}).pixels, 0u);
+}
+
+TEST(FlipPooling, SumsExactlyWhateverTheOrderOfItsChunks) {
+    // Errors spread over many octaves, subnormals included: a float sum of them would depend
+    // on the order, the pooling's sum must not, and must equal the sum in long double.
+    std::vector<float> errors;
+    for (int i = 0; i < 3000; ++i)
+        errors.push_back(std::ldexp(float(i % 97 + 1) / 97.0f, -(i % 140)));
+    const std::vector<std::uint8_t> pooled(errors.size(), 1);
+    FlipPooling forwards, backwards;
+    std::vector<FlipPooling> chunks(3);
+    for (std::size_t i = 0; i < errors.size(); ++i) chunks[i % 3].add(errors[i], true);
+    for (const FlipPooling& chunk : chunks) forwards.merge(chunk);
+    for (auto chunk = chunks.rbegin(); chunk != chunks.rend(); ++chunk) backwards.merge(*chunk);
+    const FlipStats a = forwards.finish(errors, pooled), b = backwards.finish(errors, pooled);
+    EXPECT_EQ(a.mean, b.mean);
+    EXPECT_EQ(a.weightedMedian, b.weightedMedian);
+    EXPECT_EQ(a, poolFlip(errors, pooled));
+    EXPECT_EQ(a, forwards.finish(errors, pooled, 2));
+    long double exact = 0;
+    for (float error : errors) exact += error;
+    EXPECT_NEAR(a.mean, double(exact / errors.size()), 1e-15);
 }
 
 TEST(FlipHeatmap, MagmaOverTheFixedUnitRange) {
