@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <initializer_list>
-#include <memory>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
+#include <memory>
 #include <string>
 
 #include "color/Coverage.h"

@@ -94,13 +94,11 @@ FlipMap downloadFlipMap(const Buffer& batch, const ImageBatchShape& shape, uint3
     const float* values = batch.as<float>().data() + pixels * index;
     map.error.resize(pixels);
     map.pooled.resize(pixels);
-    FlipPooling pooling;  // as computeFlip pools
     for (std::size_t i = 0; i < pixels; ++i) {
         map.pooled[i] = values[i] >= 0.0f;
         map.error[i] = map.pooled[i] ? values[i] : -1.0f - values[i];
-        pooling.add(map.error[i], map.pooled[i] != 0);
     }
-    map.stats = pooling.finish(map.error, map.pooled);
+    map.stats = poolFlip(map.error, map.pooled);  // as computeFlip pools
     return map;
 }
 
