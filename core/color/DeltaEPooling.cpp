@@ -27,7 +27,8 @@ DeltaEStats DeltaEPooling::finish(std::span<const float> deltaE,
     std::size_t found = 0;
     for (std::size_t i = 0; i < deltaE.size(); ++i) {
         candidates[found] = deltaE[i];
-        found += (covered[i] != 0) & (bucketOf(deltaE[i]) == bucket);
+        const bool inBucket = bucketOf(deltaE[i]) == bucket;
+        found += (covered[i] != 0) & inBucket;
     }
     candidates.pop_back();
     auto nth = candidates.begin() + std::ptrdiff_t(rank - below - 1);

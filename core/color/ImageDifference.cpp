@@ -42,8 +42,11 @@ MATEVO_VECTORISED_KERNEL void deltaERange(
 bool anyCoveredInBoth(const float* rgbaA, const float* rgbaB, std::size_t begin,
                       std::size_t end) {
     bool any = false;
-    for (std::size_t i = begin; i < end; ++i)
-        any |= isCovered(rgbaA[4 * i + 3]) & isCovered(rgbaB[4 * i + 3]);
+    for (std::size_t i = begin; i < end; ++i) {
+        const bool coveredA = isCovered(rgbaA[4 * i + 3]);
+        const bool coveredB = isCovered(rgbaB[4 * i + 3]);
+        any |= coveredA & coveredB;  // `&`, not `&&`: no branch per pixel
+    }
     return any;
 }
 
@@ -65,8 +68,9 @@ DeltaEPooling compareChunk(const Image& a, const Image& b, bool useAlpha, std::s
         }
         deltaERange(rgbaA + 4 * block, rgbaB + 4 * block, deltaE + block, blockEnd - block);
         for (std::size_t i = block; i < blockEnd; ++i) {
-            const bool bothCover =
-                isCovered(rgbaA[4 * i + 3]) & isCovered(rgbaB[4 * i + 3]);
+            const bool coveredA = isCovered(rgbaA[4 * i + 3]);
+            const bool coveredB = isCovered(rgbaB[4 * i + 3]);
+            const bool bothCover = coveredA & coveredB;
             const bool inBoth = !useAlpha || bothCover;
             // Branch-free: coverage along a sphere's rim is hard to predict.
             deltaE[i] = inBoth ? deltaE[i] : 0.0f;

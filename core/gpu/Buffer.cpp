@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "gpu/CreateOwned.h"
 #include "gpu/VulkanError.h"
 
 namespace matevo::gpu {
@@ -45,13 +46,13 @@ Result<Buffer> Buffer::create(const Device& device, VkDeviceSize size, VkBufferU
     createInfo.size = size;
     createInfo.usage = usage;
     createInfo.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    auto created =
+        createOwned<UniqueBuffer, vkCreateBuffer>(device.handle(), createInfo, "a buffer");
+    if (!created) return created.error();
     Buffer buffer;
     buffer.size_ = size;
-    VkBuffer handle = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateBuffer(device.handle(), &createInfo, nullptr, &handle);
-        result != VK_SUCCESS)
-        return vulkanError("creating a buffer", result);
-    buffer.buffer_ = UniqueBuffer(device.handle(), handle);
+    buffer.buffer_ = std::move(created).value();
+    const VkBuffer handle = buffer.buffer_.get();
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device.handle(), handle, &requirements);
@@ -122,11 +123,8 @@ Result<UniqueBufferView> createTexelView(const Device& device, const Buffer& buf
     info.buffer = buffer.handle();
     info.format = format;
     info.range = VK_WHOLE_SIZE;
-    VkBufferView view = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateBufferView(device.handle(), &info, nullptr, &view);
-        result != VK_SUCCESS)
-        return vulkanError("creating a texel buffer view", result);
-    return UniqueBufferView(device.handle(), view);
+    return createOwned<UniqueBufferView, vkCreateBufferView>(device.handle(), info,
+                                                             "a texel buffer view");
 }
 
 Result<TexelBuffer> createTexelBuffer(const Device& device, VkDeviceSize size, VkFormat format) {

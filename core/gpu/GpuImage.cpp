@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "gpu/Buffer.h"
+#include "gpu/CreateOwned.h"
 #include "gpu/VulkanError.h"
 #include "gpu/VulkanObjects.h"
 
@@ -24,11 +25,10 @@ Result<GpuImage> GpuImage::create(const Device& device, const GpuImageSpec& spec
     imageInfo.usage = spec.usage;
     imageInfo.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     imageInfo.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VkImage handle = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateImage(vkDevice, &imageInfo, nullptr, &handle);
-        result != VK_SUCCESS)
-        return vulkanError("creating an image", result);
-    image.image_ = UniqueImage(vkDevice, handle);  // owned from here, whatever fails next
+    auto created = createOwned<UniqueImage, vkCreateImage>(vkDevice, imageInfo, "an image");
+    if (!created) return created.error();
+    image.image_ = std::move(created).value();  // owned from here, whatever fails next
+    const VkImage handle = image.image_.get();
 
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(vkDevice, handle, &requirements);

@@ -1,6 +1,6 @@
 #include "gpu/ShaderModule.h"
 
-#include "gpu/VulkanError.h"
+#include "gpu/CreateOwned.h"
 
 namespace matevo::gpu {
 
@@ -8,11 +8,7 @@ Result<UniqueShaderModule> createShaderModule(VkDevice device, std::span<const u
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = spirv.size_bytes();
     info.pCode = spirv.data();
-    VkShaderModule module = VK_NULL_HANDLE;
-    if (VkResult result = vkCreateShaderModule(device, &info, nullptr, &module);
-        result != VK_SUCCESS)
-        return vulkanError("creating a shader module", result);
-    return UniqueShaderModule(device, module);
+    return createOwned<UniqueShaderModule, vkCreateShaderModule>(device, info, "a shader module");
 }
 
 SpecializationConstants::SpecializationConstants(std::span<const uint32_t> values)

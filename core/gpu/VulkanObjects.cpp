@@ -1,23 +1,9 @@
 #include "gpu/VulkanObjects.h"
 
-#include <string>
-
+#include "gpu/CreateOwned.h"
 #include "gpu/VulkanError.h"
 
 namespace matevo::gpu {
-namespace {
-
-// One vkCreate* call of the common shape (device, info, no allocator, the new handle), its
-// handle handed to its owner; `what` names the object in the error.
-template <typename Owner, auto Create, typename Info>
-Result<Owner> create(VkDevice device, const Info& info, const char* what) {
-    decltype(Owner().get()) handle = VK_NULL_HANDLE;
-    if (VkResult result = Create(device, &info, nullptr, &handle); result != VK_SUCCESS)
-        return vulkanError(std::string("creating ") + what, result);
-    return Owner(device, handle);
-}
-
-}  // namespace
 
 Result<UniqueRenderPass> createRenderPass(VkDevice device,
                                           std::span<const VkAttachmentDescription> attachments,
@@ -30,7 +16,7 @@ Result<UniqueRenderPass> createRenderPass(VkDevice device,
     info.pSubpasses = &subpass;
     info.dependencyCount = uint32_t(dependencies.size());
     info.pDependencies = dependencies.data();
-    return create<UniqueRenderPass, vkCreateRenderPass>(device, info, "a render pass");
+    return createOwned<UniqueRenderPass, vkCreateRenderPass>(device, info, "a render pass");
 }
 
 Result<UniqueFramebuffer> createFramebuffer(VkDevice device, VkRenderPass renderPass,
@@ -43,7 +29,7 @@ Result<UniqueFramebuffer> createFramebuffer(VkDevice device, VkRenderPass render
     info.width = width;
     info.height = height;
     info.layers = 1;
-    return create<UniqueFramebuffer, vkCreateFramebuffer>(device, info, "a framebuffer");
+    return createOwned<UniqueFramebuffer, vkCreateFramebuffer>(device, info, "a framebuffer");
 }
 
 Result<UniqueImageView> createImageView(VkDevice device, VkImage image, VkImageViewType type,
@@ -53,7 +39,7 @@ Result<UniqueImageView> createImageView(VkDevice device, VkImage image, VkImageV
     info.viewType = type;
     info.format = format;
     info.subresourceRange = {aspect, 0, 1, 0, 1};
-    return create<UniqueImageView, vkCreateImageView>(device, info, "an image view");
+    return createOwned<UniqueImageView, vkCreateImageView>(device, info, "an image view");
 }
 
 Result<UniquePipelineLayout> createPipelineLayout(
@@ -64,8 +50,8 @@ Result<UniquePipelineLayout> createPipelineLayout(
     info.pSetLayouts = &set;
     info.pushConstantRangeCount = uint32_t(pushConstants.size());
     info.pPushConstantRanges = pushConstants.data();
-    return create<UniquePipelineLayout, vkCreatePipelineLayout>(device, info,
-                                                                "a pipeline layout");
+    return createOwned<UniquePipelineLayout, vkCreatePipelineLayout>(device, info,
+                                                                     "a pipeline layout");
 }
 
 Result<UniqueDescriptorSetLayout> createDescriptorSetLayout(
@@ -73,7 +59,7 @@ Result<UniqueDescriptorSetLayout> createDescriptorSetLayout(
     VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     info.bindingCount = uint32_t(bindings.size());
     info.pBindings = bindings.data();
-    return create<UniqueDescriptorSetLayout, vkCreateDescriptorSetLayout>(
+    return createOwned<UniqueDescriptorSetLayout, vkCreateDescriptorSetLayout>(
         device, info, "a descriptor set layout");
 }
 
@@ -85,8 +71,8 @@ Result<UniqueDescriptorPool> createDescriptorPool(VkDevice device, uint32_t maxS
     info.maxSets = maxSets;
     info.poolSizeCount = uint32_t(sizes.size());
     info.pPoolSizes = sizes.data();
-    return create<UniqueDescriptorPool, vkCreateDescriptorPool>(device, info,
-                                                                "a descriptor pool");
+    return createOwned<UniqueDescriptorPool, vkCreateDescriptorPool>(device, info,
+                                                                     "a descriptor pool");
 }
 
 Result<VkDescriptorSet> allocateDescriptorSet(VkDevice device, VkDescriptorPool pool,
@@ -111,7 +97,7 @@ Result<UniqueSampler> createSampler(VkDevice device, VkFilter filter,
     info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     info.maxLod = 0.0f;
-    return create<UniqueSampler, vkCreateSampler>(device, info, "a sampler");
+    return createOwned<UniqueSampler, vkCreateSampler>(device, info, "a sampler");
 }
 
 Result<UniqueCommandPool> createCommandPool(VkDevice device, uint32_t queueFamily,
@@ -119,7 +105,7 @@ Result<UniqueCommandPool> createCommandPool(VkDevice device, uint32_t queueFamil
     VkCommandPoolCreateInfo info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     info.flags = flags;
     info.queueFamilyIndex = queueFamily;
-    return create<UniqueCommandPool, vkCreateCommandPool>(device, info, "a command pool");
+    return createOwned<UniqueCommandPool, vkCreateCommandPool>(device, info, "a command pool");
 }
 
 Result<VkCommandBuffer> allocateCommandBuffer(VkDevice device, VkCommandPool pool) {
@@ -137,12 +123,12 @@ Result<VkCommandBuffer> allocateCommandBuffer(VkDevice device, VkCommandPool poo
 Result<UniqueFence> createFence(VkDevice device, bool signaled) {
     VkFenceCreateInfo info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     info.flags = signaled ? VK_FENCE_CREATE_SIGNALED_BIT : 0;
-    return create<UniqueFence, vkCreateFence>(device, info, "a fence");
+    return createOwned<UniqueFence, vkCreateFence>(device, info, "a fence");
 }
 
 Result<UniqueSemaphore> createSemaphore(VkDevice device) {
     const VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    return create<UniqueSemaphore, vkCreateSemaphore>(device, info, "a semaphore");
+    return createOwned<UniqueSemaphore, vkCreateSemaphore>(device, info, "a semaphore");
 }
 
 }  // namespace matevo::gpu

@@ -99,7 +99,7 @@ Result<ImageFileContents> readImageFile(const std::filesystem::path& file) {
 Result<ImageFileContents> decodeImageFile(std::string_view bytes,
                                           const std::filesystem::path& file) {
     // The decoded samples plus the RGBA image: checked before anything is allocated.
-    const DecodedSizeCheck checkSize = [&file](int width, int height, int channels) -> Status {
+    const DecodedSizeCheck checkSize = [](int width, int height, int channels) -> Status {
         if (channels < 1 || channels > 4)
             return Error{"unsupported channel count " + std::to_string(channels)};
         if (width <= 0 || height <= 0) return Error{"empty image"};

@@ -37,7 +37,8 @@ Result<SceneTextures> loadTextures(const std::string& source,
     if (!roughness) return roughness.error();
     auto baseColor = loadTexture(source, "textures.base_color", baseColorFile);
     if (!baseColor) return baseColor.error();
-    return SceneTextures{std::move(roughness).value(), std::move(baseColor).value()};
+    // No environment: loadSceneTextures adds it in the environment scene mode.
+    return SceneTextures{std::move(roughness).value(), std::move(baseColor).value(), {}};
 }
 
 // The environment mode's lighting: "studio", or a file (relative to `folder` unless absolute).

@@ -199,8 +199,9 @@ TEST(EvolutionWorker, AFlipHeatmapReadsAsTheCpuFlipOfTheSameImages) {
             ASSERT_EQ(shown.size(), reference->error.size());
             for (std::size_t p = 0; p < shown.size(); ++p) {
                 ASSERT_EQ(shown[p] >= 0.0f, bool(candidate.flipMap->pooled[p])) << p;
-                if (candidate.flipMap->pooled[p])
+                if (candidate.flipMap->pooled[p]) {
                     ASSERT_EQ(shown[p], candidate.flipMap->error[p]) << p;
+                }
             }
             // The readout, at pointer positions over the image.
             int read = 0;
