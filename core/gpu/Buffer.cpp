@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "gpu/CreateOwned.h"
+#include "gpu/DeviceMemory.h"
 #include "gpu/VulkanError.h"
 
 namespace matevo::gpu {
@@ -56,17 +57,10 @@ Result<Buffer> Buffer::create(const Device& device, VkDeviceSize size, VkBufferU
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device.handle(), handle, &requirements);
-    auto memoryType = device.memoryTypeFor(requirements.memoryTypeBits, use);
-    if (!memoryType) return memoryType.error();
-
-    VkMemoryAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    allocateInfo.allocationSize = requirements.size;
-    allocateInfo.memoryTypeIndex = *memoryType;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    if (VkResult result = vkAllocateMemory(device.handle(), &allocateInfo, nullptr, &memory);
-        result != VK_SUCCESS)
-        return vulkanError("allocating " + std::to_string(requirements.size) + " bytes", result);
-    buffer.memory_ = UniqueMemory(device.handle(), memory);
+    auto allocated = allocateMemory(device, requirements, use, "buffer memory");
+    if (!allocated) return allocated.error();
+    buffer.memory_ = std::move(allocated).value();
+    const VkDeviceMemory memory = buffer.memory_.get();
     if (VkResult result = vkBindBufferMemory(device.handle(), handle, memory, 0);
         result != VK_SUCCESS)
         return vulkanError("binding buffer memory", result);

@@ -4,6 +4,7 @@
 
 #include "gpu/Buffer.h"
 #include "gpu/CreateOwned.h"
+#include "gpu/DeviceMemory.h"
 #include "gpu/VulkanError.h"
 #include "gpu/VulkanObjects.h"
 
@@ -32,17 +33,11 @@ Result<GpuImage> GpuImage::create(const Device& device, const GpuImageSpec& spec
 
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(vkDevice, handle, &requirements);
-    auto memoryType = device.memoryTypeFor(requirements.memoryTypeBits, MemoryUse::DeviceLocal);
-    if (!memoryType) return memoryType.error();
-    VkMemoryAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    allocateInfo.allocationSize = requirements.size;
-    allocateInfo.memoryTypeIndex = *memoryType;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    if (VkResult result = vkAllocateMemory(vkDevice, &allocateInfo, nullptr, &memory);
+    auto memory = allocateMemory(device, requirements, MemoryUse::DeviceLocal, "image memory");
+    if (!memory) return memory.error();
+    image.memory_ = std::move(memory).value();
+    if (VkResult result = vkBindImageMemory(vkDevice, handle, image.memory_.get(), 0);
         result != VK_SUCCESS)
-        return vulkanError("allocating image memory", result);
-    image.memory_ = UniqueMemory(vkDevice, memory);
-    if (VkResult result = vkBindImageMemory(vkDevice, handle, memory, 0); result != VK_SUCCESS)
         return vulkanError("binding image memory", result);
 
     auto view = createImageView(
