@@ -283,11 +283,12 @@ TEST_F(EditorUiTest, OpeningABadFileKeepsTheStateAndSaysWhy) {
 
 TEST_F(EditorUiTest, CtrlQAsksToQuit) {
     ImGuiIO& io = ImGui::GetIO();
+    const int quitKey = ShortcutKeys{}.quit;
     io.KeyCtrl = true;
-    io.KeysDown['Q'] = true;
+    io.KeysDown[quitKey] = true;
     imgui.frame(draw);
     EXPECT_TRUE(lastRequests.quit);
-    io.KeysDown['Q'] = false;
+    io.KeysDown[quitKey] = false;
     io.KeyCtrl = false;
 }
 
