@@ -3,8 +3,6 @@
 // a replaced folder keeps.
 #include "io/OutputFolder.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -14,6 +12,7 @@
 
 #include "io/TemporaryFiles.h"
 #include "support/ScratchFolder.h"
+#include "support/StaleTemporary.h"
 
 namespace matevo {
 namespace {
@@ -29,29 +28,20 @@ void write(const fs::path& file, const std::string& text) {
     std::ofstream(file, std::ios::binary) << text;
 }
 
-// `name` with its first "-PID-" (this process's) replaced by `replacement`.
-std::string withOwner(std::string name, const std::string& pid, const std::string& replacement) {
-    const std::string own = "-" + pid + "-";
-    const auto at = name.find(own);
-    EXPECT_NE(at, std::string::npos) << name;
-    return name.replace(at, own.size(), replacement);
-}
-
 TEST(TemporaryFiles, OnlyThoseOfDeadProcessesOfThisHostBootAndNamespaceAreReaped) {
     testing::ScratchFolder folder("temporary");
     const std::string ours = temporaryPathBeside(folder / "doc.json").filename().string();
-    const std::string pid = std::to_string(::getpid());
-    // PID 2^22 + 1 is above Linux's pid_max limit, so no process has it.
-    const std::string deadHere = withOwner(ours, pid, "-4194305-");
+    const std::string deadHere =
+        testing::temporaryPathOf(folder / "doc.json", testing::kDeadPid).filename().string();
     const auto host = ours.find("matevo-tmp-") + std::string("matevo-tmp-").size();
     std::string otherHost = deadHere;
     otherHost.replace(host, 16, "0123456789abcdef");
-    const std::string olderVersion = ".doc.json.matevo-tmp-4194305-0";
+    const std::string olderVersion = ".doc.json.matevo-tmp-" + testing::kDeadPid + "-0";
     const std::string unparseable = ".doc.json.matevo-tmp-" + ours.substr(host, 16) + "-x-1";
 
     write(folder / ours, "in progress");
     write(folder / deadHere, "left by a kill -9");
-    fs::create_directories(folder / withOwner(ours, pid, "-4194306-") / "candidates");
+    fs::create_directories(testing::temporaryPathOf(folder / "out", "4194306") / "candidates");
     for (const auto& name : {otherHost, olderVersion, unparseable}) write(folder / name, name);
     write(folder / "doc.json", "kept");
 
@@ -62,6 +52,23 @@ TEST(TemporaryFiles, OnlyThoseOfDeadProcessesOfThisHostBootAndNamespaceAreReaped
     for (const auto& name : {otherHost, olderVersion, unparseable})
         EXPECT_EQ(contentsOf(folder / name), name);
     EXPECT_EQ(contentsOf(folder / "doc.json"), "kept");
+}
+
+TEST(TemporaryFiles, ASignalRemovesOnlyTheFilesBeingWritten) {
+    testing::ScratchFolder folder("in_flight");
+    const fs::path writing = temporaryPathBeside(folder / "a.png");
+    const fs::path done = temporaryPathBeside(folder / "b.png");
+    write(writing, "half an image");
+    write(done, "another process's, say");
+    {
+        const TemporaryFileInFlight inFlight(writing);
+        removeTemporaryFilesInFlight();  // what the SIGINT/SIGTERM handlers call
+        EXPECT_FALSE(fs::exists(writing));
+    }
+    write(writing, "the same name, no longer in flight");
+    removeTemporaryFilesInFlight();
+    EXPECT_TRUE(fs::exists(writing));
+    EXPECT_TRUE(fs::exists(done));
 }
 
 TEST(OutputFolderSharing, ASecondWriterIsRefusedUntilTheFirstCommits) {
