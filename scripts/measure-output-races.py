@@ -51,7 +51,7 @@ def cross_host(matevo, work, rounds):
     reference = work / "reference"
     subprocess.run(evolve(matevo, reference, 60), check=True, capture_output=True)
     expected = files_under(reference)
-    lost = 0
+    lost = overlapped = damaged = 0
     for round in range(rounds):
         shared = work / f"shared_{round}"
         shared.mkdir()
@@ -60,14 +60,18 @@ def cross_host(matevo, work, rounds):
         wait_for_staging(shared / "share_1", victim)
         time.sleep(random.uniform(0, 0.5))
         subprocess.run(NAMESPACE + evolve(matevo, shared / "share_2", 6), capture_output=True)
+        overlapped += victim.poll() is None
         victim.wait()
         have = set(files_under(shared / "share_1")) if victim.returncode == 0 else set()
-        lost += sum(1 for f in expected if f not in have)
-    return f"cross-host race: {rounds} rounds, {lost} files lost", lost
+        missing = sum(1 for f in expected if f not in have)
+        lost += missing
+        damaged += missing > 0
+    return (f"cross-host race: {rounds} rounds ({overlapped} with the first run still going "
+            f"when the other ended), {damaged} runs damaged, {lost} files lost", lost)
 
 
 def foreign(matevo, work, rounds):
-    lost = 0
+    lost = during = 0
     for round in range(rounds):
         out = work / f"foreign_{round}"
         subprocess.run(evolve(matevo, out, 6), check=True, capture_output=True)
@@ -76,10 +80,13 @@ def foreign(matevo, work, rounds):
         wait_for_staging(out, run)
         time.sleep(random.uniform(0, 1.5))
         (out / "notes.txt").write_text("mine")
+        during += run.poll() is None
         run.wait()
-        if run.returncode != 0 or (out / "notes.txt").read_text() != "mine":
+        notes = out / "notes.txt"
+        if run.returncode != 0 or not notes.is_file() or notes.read_text() != "mine":
             lost += 1
-    return f"foreign-file race: {rounds} rounds, {lost} files lost", lost
+    return (f"foreign-file race: {rounds} rounds ({during} with the file added while the run "
+            f"went on), {lost} files lost", lost)
 
 
 def referenced(main):
@@ -109,9 +116,9 @@ def export(matevo, work, rounds):
             main = folder / ("out." + extension)
             runs = [subprocess.Popen(command(p, main), stdout=subprocess.DEVNULL,
                                      stderr=subprocess.DEVNULL) for p in presets]
-            ok = all(r.wait() == 0 for r in runs)
-            solo = next((s for s in solos if s.read_bytes() == main.read_bytes()), None)
-            whole = ok and solo is not None and all(
+            ok = all(r.wait() == 0 for r in runs) and main.is_file()
+            solo = ok and next((s for s in solos if s.read_bytes() == main.read_bytes()), None)
+            whole = bool(solo) and all(
                 (folder / n).is_file() and (folder / n).read_bytes() == (solo.parent / n).read_bytes()
                 for n in referenced(main))
             broken += 0 if whole else 1
