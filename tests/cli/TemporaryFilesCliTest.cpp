@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/FileContents.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 #include "support/StaleTemporary.h"
@@ -15,17 +16,11 @@
 namespace matevo {
 namespace {
 
+using testing::namesIn;
 using testing::runCommand;
 using testing::runMatevo;
 using testing::shellQuoted;
 namespace fs = std::filesystem;
-
-std::set<std::string> namesIn(const fs::path& folder) {
-    std::set<std::string> names;
-    for (const auto& entry : fs::directory_iterator(folder))
-        names.insert(entry.path().filename().string());
-    return names;
-}
 
 TEST(TemporaryFilesCli, RenderSceneAndCheckpointsLeaveNoneAndRemoveThoseAKillLeft) {
     testing::ScratchFolder folder("temporaries");

@@ -3,7 +3,6 @@
 // Afterwards the main file must be one export's whole result and every file it names must be
 // there, holding what that export wrote.
 #include <filesystem>
-#include <fstream>
 #include <iterator>
 #include <regex>
 #include <string>
@@ -13,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "support/FileContents.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 
@@ -20,6 +20,7 @@ namespace matevo {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::contentsOf;
 using testing::shellQuoted;
 
 // Two materials whose companions differ: a roughness texture, and a base-colour texture.
@@ -28,11 +29,6 @@ const std::vector<std::string> kPresets = {"validation_painted_metal", "validati
 std::string exportCommand(const std::string& preset, const fs::path& out) {
     return "'" MATEVO_BINARY_DIR "/matevo' export --preset " + preset + " --out " +
            shellQuoted(out) + " --backend cpu --fit-size 16 --fit-renders 30 --report-size 16";
-}
-
-std::string contentsOf(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // The files a .gltf or .mtlx names, relative to its folder.
@@ -78,17 +74,23 @@ void expectWholeExport(const fs::path& mainFile, const std::vector<fs::path>& so
     }
 }
 
+// Each material exported alone to FOLDER/PRESET/NAME: what a whole export of it is.
+std::vector<fs::path> exportsAlone(const testing::ScratchFolder& folder, const std::string& name) {
+    std::vector<fs::path> solos;
+    for (const auto& preset : kPresets) {
+        fs::create_directories(folder / preset);
+        solos.push_back(folder / preset / name);
+        EXPECT_EQ(testing::runCommand(exportCommand(preset, solos.back())).exitCode, 0);
+    }
+    return solos;
+}
+
 class ConcurrentExport : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ConcurrentExport, ParallelExportsToOneFileLeaveOneWholeResult) {
     testing::ScratchFolder folder("concurrent_export");
     const std::string name = "out." + GetParam();
-    std::vector<fs::path> solos;
-    for (const auto& preset : kPresets) {
-        fs::create_directories(folder / preset);
-        solos.push_back(folder / preset / name);
-        ASSERT_EQ(testing::runCommand(exportCommand(preset, solos.back())).exitCode, 0);
-    }
+    const std::vector<fs::path> solos = exportsAlone(folder, name);
     ASSERT_NE(contentsOf(solos[0]), contentsOf(solos[1]));
 
     const fs::path shared = folder / name;
@@ -108,12 +110,7 @@ TEST_P(ConcurrentExport, ParallelExportsToOneFileLeaveOneWholeResult) {
 TEST_P(ConcurrentExport, AnExportThroughASymlinkWritesBesideTheFileItLeadsTo) {
     testing::ScratchFolder folder("symlink_export");
     const std::string name = "out." + GetParam();
-    std::vector<fs::path> solos;
-    for (const auto& preset : kPresets) {
-        fs::create_directories(folder / preset);
-        solos.push_back(folder / preset / name);
-        ASSERT_EQ(testing::runCommand(exportCommand(preset, solos.back())).exitCode, 0);
-    }
+    const std::vector<fs::path> solos = exportsAlone(folder, name);
     fs::create_directories(folder / "assets");
     fs::create_directories(folder / "links");
     const fs::path real = folder / "assets" / name, link = folder / "links" / name;

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "io/TemporaryFiles.h"
+#include "support/FileContents.h"
 #include "support/ScratchFolder.h"
 #include "support/StaleTemporary.h"
 
@@ -18,11 +19,7 @@ namespace matevo {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string contentsOf(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using testing::contentsOf;
 
 void write(const fs::path& file, const std::string& text) {
     std::ofstream(file, std::ios::binary) << text;
