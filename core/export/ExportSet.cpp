@@ -90,7 +90,7 @@ Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
     for (const auto& variant : set.variants)
         materials.push_back({variant.name, variant.fit.material});
     // Temporary files of an export killed earlier (io/AtomicFile.h).
-    removeStaleTemporaryFiles(file.has_parent_path() ? file.parent_path() : ".");
+    removeStaleTemporaryFilesBeside(file);
     const Status written = format == ExportFormat::MaterialX
                                ? writeMaterialX(materials, set.textures, file)
                                : writeGltf(materials, set.textures, file);
