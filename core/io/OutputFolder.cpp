@@ -12,6 +12,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/InputFile.h"
+#include "io/RenameWithoutReplacing.h"
 
 namespace matevo {
 
@@ -58,10 +59,6 @@ std::optional<std::string> whyNotReplaceable(const std::filesystem::path& folder
         return "belongs to another user in a folder with the sticky bit, so matevo cannot "
                "replace it; choose another folder";
     return std::nullopt;
-}
-
-bool renameWithoutReplacing(const std::filesystem::path& from, const std::filesystem::path& to) {
-    return ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0;
 }
 
 }  // namespace

@@ -1,7 +1,5 @@
 #include "io/PreviousRunFiles.h"
 
-#include <fcntl.h>
-#include <stdio.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -12,6 +10,7 @@
 #include <vector>
 
 #include "io/InputFile.h"
+#include "io/RenameWithoutReplacing.h"
 
 namespace matevo {
 
@@ -27,10 +26,6 @@ std::string keptName(const std::filesystem::path& file, int attempt) {
         name += std::to_string(attempt);
     }
     return name;
-}
-
-bool renameWithoutReplacing(const std::filesystem::path& from, const std::filesystem::path& to) {
-    return ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0;
 }
 
 // Moves `from` beside `to` as "NAME.kept", "NAME.kept-2", … whichever is free.
