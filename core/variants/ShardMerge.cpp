@@ -187,11 +187,16 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
         if (auto copied = copyShare(*share, plan, dir, joined); !copied) return copied.error();
     if (auto written = writeFileAtomically(dir / "target.png", *target); !written)
         return written.error();
-    if (fs::exists(targetMaterialFile(first.folder)))  // shares written before sets carried it
-        if (auto copied = copyMaterial(targetMaterialFile(first.folder), dir,
-                                       targetMaterialFile(dir));
+    // The target's material file, from a share that holds a block (a share without one wrote
+    // no material).
+    for (const ShareReport* share : byIndex) {
+        if (!fs::exists(targetMaterialFile(share->folder))) continue;
+        if (auto copied =
+                copyMaterial(targetMaterialFile(share->folder), dir, targetMaterialFile(dir));
             !copied)
             return copied.error();
+        break;
+    }
     nlohmann::ordered_json report = assembleBlockReport(std::move(joined), std::nullopt);
     if (auto written = writeFileAtomically(dir / "report.json", report.dump(2) + "\n"); !written)
         return written.error();
