@@ -92,7 +92,8 @@ Start dielectricStart(GltfMaterial material, double maxIor) {
 GltfMaterial withParameters(const Start& start, const std::vector<double>& variables) {
     GltfMaterial material = start.material;
     for (std::size_t i = 0; i < start.free.size(); ++i)
-        valueOf(material, start.free[i]) = toRange(variables[i], rangeOf(start.free[i], start.maxIor));
+        valueOf(material, start.free[i]) =
+            toRange(variables[i], rangeOf(start.free[i], start.maxIor));
     return material;
 }
 
@@ -100,7 +101,8 @@ std::vector<double> variablesOf(const Start& start) {
     GltfMaterial material = start.material;
     std::vector<double> variables;
     for (Parameter parameter : start.free)
-        variables.push_back(toVariable(valueOf(material, parameter), rangeOf(parameter, start.maxIor)));
+        variables.push_back(
+            toVariable(valueOf(material, parameter), rangeOf(parameter, start.maxIor)));
     return variables;
 }
 

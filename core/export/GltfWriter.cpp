@@ -287,7 +287,8 @@ Result<tinygltf::Model> buildModel(const std::vector<NamedGltfMaterial>& materia
         if (!texture) return texture.error();
         shared.roughness = *texture;
     }
-    for (const auto& material : materials) model.materials.push_back(toGltf(material, shared, model));
+    for (const auto& material : materials)
+        model.materials.push_back(toGltf(material, shared, model));
 
     tinygltf::Scene scene;
     scene.name = "matevo variants";

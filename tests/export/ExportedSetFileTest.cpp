@@ -71,8 +71,8 @@ TEST(ExportedSetFiles, AMovedSetRendersAndExportsWhereNoPresetIsFound) {
     fs::copy_file(fs::path(MATEVO_BINARY_DIR) / "matevo", folder / "bin/matevo");
     std::string matevo = "MATEVO_DATA_DIR= ";  // appended: GCC 12 warns falsely (-Wrestrict)
     matevo += shellQuoted(folder / "bin/matevo");
-    const auto noPreset =
-        testing::runCommand(matevo + " render --backend cpu --out " + shellQuoted(folder / "p.png"));
+    const auto noPreset = testing::runCommand(matevo + " render --backend cpu --out " +
+                                              shellQuoted(folder / "p.png"));
     ASSERT_EQ(noPreset.exitCode, 2) << "the shipped presets are still reachable";
 
     // Rendered from the moved set: the very image `variants` wrote.
