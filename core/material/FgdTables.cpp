@@ -57,10 +57,6 @@ double interpolate(const std::vector<float>& data, const std::array<const TableA
     return sum;
 }
 
-}  // namespace
-
-namespace {
-
 // The variable in which an axis is uniform, and back.
 double toAxisVariable(AxisSpacing spacing, double x) {
     if (spacing == AxisSpacing::Uniform) return x;
@@ -96,9 +92,10 @@ FgdTables::FgdTables(TableGrid grid, std::vector<float> fgd, std::vector<float> 
 
 double FgdTables::reflectance(double cosTheta, double alpha, double eta, double kappa) const {
     // Geometric blending suits the geometric steps of the index spacing only.
-    const std::size_t etaBlend = grid_.eta.spacing == AxisSpacing::IndexOfRefraction ? 2 : 4;
+    constexpr std::size_t kEtaAxis = 2, kNoAxis = 4;
+    const bool geometric = grid_.eta.spacing == AxisSpacing::IndexOfRefraction;
     return interpolate<4>(fgd_, {&grid_.mu, &grid_.alpha, &grid_.eta, &grid_.kappa},
-                          {cosTheta, alpha, eta, kappa}, etaBlend);
+                          {cosTheta, alpha, eta, kappa}, geometric ? kEtaAxis : kNoAxis);
 }
 
 double FgdTables::escapeFraction(double cosTheta, double alpha, double eta) const {

@@ -13,15 +13,10 @@
 // that FGD blends its two eta neighbours geometrically (a^(1-w) b^w) on the index spacing: on
 // its geometric steps that is exact for Fresnel energy's power law near eta = 1.
 //
-// Memory layout (flat float32, uploadable as is):
+// Memory layout (flat float32; only the CPU reads it: the GPU gets the lobe tables built from
+// it, so no shader has to repeat the eta spacing or the geometric blend):
 //   FGD: index = k + Nkappa * (e + Neta * (a + Nalpha * m))   (mu slowest, kappa fastest)
-//        as a 3D texture: width Nkappa, height Neta, depth Nalpha * Nmu. Sample it with two
-//        trilinear fetches, one in the mu slab m and one in m + 1 (depth coordinate clamped to
-//        the texel centres of that slab, so alpha never blends across slabs), then mix by the
-//        mu weight.
 //   TIR: index = e + Neta * (a + Nalpha * m)                  (mu slowest, eta fastest)
-//        as a 3D texture: width Neta, height Nalpha, depth Nmu; one trilinear fetch.
-//   Texel centre of node k on an axis of N nodes: (k + 0.5) / N in normalised coordinates.
 #include <vector>
 
 #include "material/InterfaceAlbedo.h"
