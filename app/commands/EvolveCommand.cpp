@@ -1,5 +1,4 @@
-#include <unistd.h>
-
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -35,7 +34,7 @@ constexpr const char* kHelp =
     "                     [--size N] [--format png|exr] [--heatmap de00|flip]\n"
     "                     [--backend gpu|cpu] [--force]\n"
     "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N] [--hue]\n"
-    "                     [--checkpoint FILE] [--resume FILE]\n\n"
+    "                     [--checkpoint FILE [--checkpoint-every N]] [--resume FILE]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
     "override the preset's GA settings.\n"
@@ -59,8 +58,11 @@ constexpr const char* kHelp =
     "                 CPU when no Vulkan device is usable) or cpu\n"
     "  --force        replace DIR when it holds an earlier matevo output (else a folder with\n"
     "                 files is refused); DIR always holds one whole run\n"
-    "  --checkpoint FILE  after every generation, save the run's state (population, history,\n"
-    "                 random generator) to FILE, atomically\n"
+    "  --checkpoint FILE  save the run's state (population, history, random generator) to\n"
+    "                 FILE, atomically: after the initial population, then at most every 10 s\n"
+    "                 of the run (a kill loses at most that much), and when the run ends or\n"
+    "                 stops\n"
+    "  --checkpoint-every N  save after every N-th generation instead (1: every generation)\n"
     "  --resume FILE  continue the run saved in FILE (same preset and settings; --generations\n"
     "                 may be larger): the result equals the uninterrupted run's, bit for bit.\n"
     "                 Both work with genotype fitness only\n"
@@ -169,6 +171,8 @@ int runEvolve(CommandLine& args) {
     if (!imageFitness) args.onlyWith("--backend", "--out");
     args.onlyWith("--force", "--out");
     const auto checkpointFile = args.option("--checkpoint");
+    const auto checkpointEvery = args.integerOption("--checkpoint-every", 1, kMaxGenerations);
+    args.onlyWith("--checkpoint-every", "--checkpoint");
     const auto resumeFile = args.option("--resume");
     // The image fitness is rebuilt from the options on resume, which a checkpoint does not hold.
     if (imageFitness && (checkpointFile || resumeFile))
@@ -205,27 +209,37 @@ int runEvolve(CommandLine& args) {
     GeneticAlgorithm ga = fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga,
                                                      fitness->evaluator())
                                   : GeneticAlgorithm(preset.family, preset.target, preset.ga);
-    const bool showProgress = ::isatty(STDERR_FILENO) != 0;
     if (resumeFile)
         resume(ga, preset, *resumeFile);
     else
         ga.initialize();
+    // Saving the whole population after every generation made a run many times slower (a large
+    // JSON written and flushed each time); a resumed run is the same whichever generation it
+    // starts from, so saves are spaced out (in time, or every N generations when asked).
+    auto lastSave = std::chrono::steady_clock::now();
+    int savedGeneration = -1;
     auto saveState = [&] {
-        if (!checkpointFile) return;
+        if (!checkpointFile || savedGeneration == ga.generation()) return;
         const GaCheckpoint checkpoint{preset.family, preset.target, preset.baseKappa, preset.ga,
                                       ga.state()};
         if (auto saved = saveCheckpoint(checkpoint, *checkpointFile); !saved)
             throw UsageError("--checkpoint: " + saved.error().message);
+        savedGeneration = ga.generation();
+        lastSave = std::chrono::steady_clock::now();
+    };
+    auto saveDue = [&] {
+        if (checkpointEvery) return ga.generation() % *checkpointEvery == 0;
+        return std::chrono::steady_clock::now() - lastSave >= std::chrono::seconds(10);
     };
     saveState();
     while (!ga.finished() && !stopRequested()) {
         ga.step();
-        saveState();
-        if (showProgress)
-            std::fprintf(stderr, "\r%sgeneration %d/%d", messagePrefix().c_str(),
-                         ga.generation(), preset.ga.generations);
+        if (saveDue()) saveState();
+        printProgress("generation " + std::to_string(ga.generation()) + "/" +
+                      std::to_string(preset.ga.generations));
     }
-    if (showProgress) std::fputc('\n', stderr);
+    saveState();
+    printProgress("");
     if (fitness && fitness->failure()) throw std::runtime_error(fitness->failure()->message);
 
     const auto ranked = ga.rankedPopulation();

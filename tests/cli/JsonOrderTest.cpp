@@ -70,9 +70,12 @@ TEST(JsonOrder, VariantsReportAndMaterialFiles) {
         "--out " +
         shellQuoted(scratch / "set"));
     EXPECT_EQ(keysOf(report),
-              (Keys{"preset", "family", "target", "request", "met", "summary", "variants",
-                    "pairwise_de00", "smallest_pairwise_de00", "evaluations", "archived",
-                    "output_renders", "wall_time_s", "seed"}));
+              (Keys{"preset", "family", "target", "request", "made_by", "met", "summary",
+                    "variants", "pairwise_de00", "smallest_pairwise_de00", "evaluations",
+                    "archived", "output_renders", "wall_time_s", "seed"}));
+    EXPECT_EQ(keysOf(report["made_by"]), (Keys{"matevo", "backend", "device"}));
+    EXPECT_EQ(report["made_by"]["backend"], "cpu");
+    EXPECT_EQ(report["made_by"]["device"], "CPU");
     EXPECT_EQ(keysOf(report["request"]),
               (Keys{"count", "band", "min_apart", "seed", "hue_variety", "size", "fitness_size"}));
     ASSERT_FALSE(report["variants"].empty());
