@@ -137,7 +137,7 @@ FgdTables loadOrBuildFgdTables(const std::filesystem::path& cacheDirectory,
     std::error_code error;
     if (std::filesystem::symlink_status(file, error).type() !=
         std::filesystem::file_type::not_found)
-        notice("rebuilding the table cache: " + cached.error().message);
+        notice("notice: rebuilding the table cache: " + cached.error().message);
     notice("building the FGD/TIR tables (once; cached in " + file.string() + ")");
     int shownPercent = -1;
     buildPermille.store(0);

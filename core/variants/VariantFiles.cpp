@@ -108,16 +108,16 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
                                      {"target", genomeToJson(preset.target)},
                                      {"request", requestJson(run)}};
     if (!run.madeBy.is_null()) report["made_by"] = run.madeBy;
-    report["met"] = met;
-    report["summary"] = variantSummary(run, set);
-    report["variants"] = std::move(variants);
-    report["pairwise_de00"] = set.pairwise;
-    report["smallest_pairwise_de00"] = set.smallestPairwise;
-    report["evaluations"] = run.evaluations;
-    report["archived"] = run.archived;
-    report["output_renders"] = set.outputRenders;
-    report["wall_time_s"] = run.wallSeconds;
-    report["seed"] = request.seed;
+    report.update(nlohmann::ordered_json{{"met", met},
+                                         {"summary", variantSummary(run, set)},
+                                         {"variants", std::move(variants)},
+                                         {"pairwise_de00", set.pairwise},
+                                         {"smallest_pairwise_de00", set.smallestPairwise},
+                                         {"evaluations", run.evaluations},
+                                         {"archived", run.archived},
+                                         {"output_renders", set.outputRenders},
+                                         {"wall_time_s", run.wallSeconds},
+                                         {"seed", request.seed}});
     return report;
 }
 

@@ -255,9 +255,10 @@ TEST(ShareResume, ResumeKeepsOnlyTheSameRequestAndBackEnd) {
     EXPECT_NE(runMatevo(otherSeed + " --resume").err.find("request.seed"), std::string::npos);
     EXPECT_NE(runMatevo(otherBackEnd + " --resume").err.find("made_by.backend"),
               std::string::npos);
-    // A complete share resumed is kept as it is.
-    const auto again = runMatevo(kRequest + share0 + " --resume");
+    // A complete share resumed is kept as it is; --quiet leaves out the "resuming" notice.
+    const auto again = runMatevo(kRequest + share0 + " --resume --quiet");
     EXPECT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_EQ(again.err, "");
     EXPECT_TRUE(filesUnder(folder / "share") == before);
 }
 

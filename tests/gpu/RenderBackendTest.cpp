@@ -75,9 +75,10 @@ TEST(RenderBackend, AModuleSystemsXdgDataDirsDoesNotHideTheDriver) {
 // --no-fallback: no usable device is a failure of the machine (exit 1, one line), no CPU render.
 TEST(RenderBackend, NoFallbackFailsInsteadOfRenderingOnTheCpu) {
     const auto out = scratchFile("strict.png");
-    for (const std::string command :
+    for (const std::string& command :
          {"render --size 24 --out '" + out.string() + "'",
-          "variants --count 1 --band 1,10 --size 24 --fitness-size 16 --max-evaluations 50"}) {
+          std::string("variants --count 1 --band 1,10 --size 24 --fitness-size 16 "
+                      "--max-evaluations 50")}) {
         const auto result = testing::runCommand(
             "VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR "/matevo' " +
             command + " --no-fallback");
