@@ -39,7 +39,7 @@ std::uint64_t evolveImagesMemoryEstimate(int size) {
 
 std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
                                                    const std::vector<Individual>& ranked, int size,
-                                                   RenderBackend backend,
+                                                   const gpu::RendererRequest& rendererRequest,
                                                    const std::string& extension,
                                                    ImageMetric heatmapMetric,
                                                    const std::filesystem::path& outDir) {
@@ -60,7 +60,7 @@ std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
     }
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
     // One renderer for every batch: it keeps the target's render between them.
-    auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
+    auto renderer = createCommandRenderer(rendererRequest, *textures);
     EvaluationOptions options;
     options.heatmaps = false;  // drawn below from the images as written
     std::vector<CandidateImageStats> stats;

@@ -38,7 +38,7 @@ struct CandidateImageStats {
 // a file cannot be written. `extension` is ".png" or ".exr".
 std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
                                                    const std::vector<Individual>& ranked, int size,
-                                                   RenderBackend backend,
+                                                   const gpu::RendererRequest& rendererRequest,
                                                    const std::string& extension,
                                                    ImageMetric heatmapMetric,
                                                    const std::filesystem::path& outDir);

@@ -32,7 +32,7 @@ constexpr const char* kHelp =
     "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
     "                     [--size N] [--format png|exr] [--heatmap de00|flip]\n"
-    "                     [--backend gpu|cpu] [--force]\n"
+    "                     [--backend gpu|cpu [--no-fallback]] [--force]\n"
     "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N] [--hue]\n"
     "                     [--checkpoint FILE [--checkpoint-every N]] [--resume FILE]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
@@ -56,6 +56,7 @@ constexpr const char* kHelp =
     "                 the target and candidates with --out; heatmaps are always PNG\n"
     "  --backend B    renderer for --out and image fitness: gpu (default; falls back to the\n"
     "                 CPU when no Vulkan device is usable) or cpu\n"
+    "  --no-fallback  with the GPU: exit 1 when no Vulkan device is usable\n"
     "  --force        replace DIR when it holds an earlier matevo output (else a folder with\n"
     "                 files is refused); DIR always holds one whole run\n"
     "  --checkpoint FILE  save the run's state (population, history, random generator) to\n"
@@ -139,8 +140,7 @@ int runEvolve(CommandLine& args) {
     const std::string format = args.option("--format").value_or("png");
     if (format != "png" && format != "exr")
         throw UsageError("--format: expected png or exr, got '" + format + "'");
-    const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    const gpu::RendererRequest rendererRequest = backendOptions(args, "matevo evolve");
     const std::string fitnessName = args.option("--fitness").value_or("genotype");
     if (fitnessName != "genotype" && fitnessName != "image" && fitnessName != "flip")
         throw UsageError("--fitness: expected genotype, image or flip, got '" + fitnessName + "'");
@@ -169,6 +169,7 @@ int runEvolve(CommandLine& args) {
     args.onlyWith("--format", "--out");
     args.onlyWith("--heatmap", "--out");
     if (!imageFitness) args.onlyWith("--backend", "--out");
+    if (!imageFitness) args.onlyWith("--no-fallback", "--out");
     args.onlyWith("--force", "--out");
     const auto checkpointFile = args.option("--checkpoint");
     const auto checkpointEvery = args.integerOption("--checkpoint-every", 1, kMaxGenerations);
@@ -196,11 +197,8 @@ int runEvolve(CommandLine& args) {
     if (imageFitness) {
         auto textures = loadSceneTextures(preset, choice.file);
         if (!textures) throw UsageError(textures.error().message);
-        gpu::RendererRequest rendererRequest;
-        rendererRequest.backend = backend;
-        rendererRequest.who = "matevo evolve";
         auto cache = GenomeRenderCache::create(
-            renderGenomesWith(gpu::createPopulationRenderer(rendererRequest, *textures),
+            renderGenomesWith(createCommandRenderer(rendererRequest, *textures),
                               preset.family, preset.baseKappa, preset.scene, fitnessSize),
             preset.target, fitnessMetric);
         if (!cache) throw std::runtime_error(cache.error().message);
@@ -252,7 +250,7 @@ int runEvolve(CommandLine& args) {
     }
     if (output) {
         try {
-            const auto stats = writeEvolveImages(choice, ranked, imageSize, backend, "." + format,
+            const auto stats = writeEvolveImages(choice, ranked, imageSize, rendererRequest, "." + format,
                                                  *heatmapMetric, output->staging());
             addImageStatistics(report, stats);
             report["candidates_written"] = stats.size();

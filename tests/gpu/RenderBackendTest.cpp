@@ -78,7 +78,10 @@ TEST(RenderBackend, NoFallbackFailsInsteadOfRenderingOnTheCpu) {
     for (const std::string& command :
          {"render --size 24 --out '" + out.string() + "'",
           std::string("variants --count 1 --band 1,10 --size 24 --fitness-size 16 "
-                      "--max-evaluations 50")}) {
+                      "--max-evaluations 50"),
+          "evolve --population 4 --generations 1 --size 24 --out '" + out.string() + "'",
+          "experiment --runs 1 --population 4 --generations 1 --size 24 --metric chebyshev "
+          "--out '" + out.string() + "'"}) {
         const auto result = testing::runCommand(
             "VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR "/matevo' " +
             command + " --no-fallback");
