@@ -10,7 +10,8 @@ RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<i
     auto textures = loadSceneTextures(choice.preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
     const Preset& preset = choice.preset;
-    std::shared_ptr<PopulationRenderer> renderer = createCommandRenderer(rendererRequest, *textures);
+    std::shared_ptr<PopulationRenderer> renderer =
+        createCommandRenderer(rendererRequest, *textures);
     return renderGenomesWith(std::move(renderer), preset.family, preset.baseKappa, preset.scene,
                              imageSize.value_or(preset.scene.imageSize));
 }

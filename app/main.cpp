@@ -16,9 +16,9 @@
 #include "CommandLine.h"
 #include "Messages.h"
 #include "Suggestion.h"
+#include "commands/Commands.h"
 #include "common/MemoryBudget.h"
 #include "common/WorkerThreads.h"
-#include "commands/Commands.h"
 #include "gpu/LoaderEnvironment.h"
 #include "io/PresetCatalog.h"
 

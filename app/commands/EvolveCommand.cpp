@@ -198,8 +198,8 @@ int runEvolve(CommandLine& args) {
         auto textures = loadSceneTextures(preset, choice.file);
         if (!textures) throw UsageError(textures.error().message);
         auto cache = GenomeRenderCache::create(
-            renderGenomesWith(createCommandRenderer(rendererRequest, *textures),
-                              preset.family, preset.baseKappa, preset.scene, fitnessSize),
+            renderGenomesWith(createCommandRenderer(rendererRequest, *textures), preset.family,
+                              preset.baseKappa, preset.scene, fitnessSize),
             preset.target, fitnessMetric);
         if (!cache) throw std::runtime_error(cache.error().message);
         fitness.emplace(std::move(cache).value(), band);
@@ -250,8 +250,8 @@ int runEvolve(CommandLine& args) {
     }
     if (output) {
         try {
-            const auto stats = writeEvolveImages(choice, ranked, imageSize, rendererRequest, "." + format,
-                                                 *heatmapMetric, output->staging());
+            const auto stats = writeEvolveImages(choice, ranked, imageSize, rendererRequest,
+                                                 "." + format, *heatmapMetric, output->staging());
             addImageStatistics(report, stats);
             report["candidates_written"] = stats.size();
         } catch (const UsageError& error) {

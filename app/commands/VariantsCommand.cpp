@@ -152,9 +152,14 @@ FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
     printProgress("");
     if (!found) throw std::runtime_error(found.error().message);
     const VariantSearchProgress& progress = found->progress;
-    return {std::move(found->set),
-            VariantRun{request, job.size, job.fitnessSize, progress.evaluations, progress.archived,
-                       progress.closestDeltaE, 0.0, {}}};
+    return {std::move(found->set), VariantRun{request,
+                                              job.size,
+                                              job.fitnessSize,
+                                              progress.evaluations,
+                                              progress.archived,
+                                              progress.closestDeltaE,
+                                              0.0,
+                                              {}}};
 }
 
 void commit(std::optional<OutputFolder>& output) {

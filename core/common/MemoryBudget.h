@@ -37,9 +37,8 @@ inline std::uint64_t memoryLimitBytes() {
     if (const std::uint64_t setting = detail::memoryLimitSetting; setting > 0) return setting;
     static const std::uint64_t byDefault = [] {
         const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
-        const std::uint64_t physical = pages > 0 && pageSize > 0
-                                           ? std::uint64_t(pages) * std::uint64_t(pageSize)
-                                           : 8ull << 30;
+        const std::uint64_t physical =
+            pages > 0 && pageSize > 0 ? std::uint64_t(pages) * std::uint64_t(pageSize) : 8ull << 30;
         return defaultMemoryLimit(physical, cgroupMemoryLimit());
     }();
     return byDefault;

@@ -7,9 +7,9 @@
 #include "io/InputFile.h"
 #include "io/MaterialFile.h"
 #include "io/TextFile.h"
+#include "variants/ShareResume.h"
 #include "variants/VariantBlockFiles.h"
 #include "variants/VariantBlocks.h"
-#include "variants/ShareResume.h"
 #include "variants/VariantFiles.h"
 
 namespace matevo {
@@ -76,8 +76,8 @@ Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::
         }
         const std::vector<int> expected = blocksOfShard(plan, share.shard);
         if (blocks != expected) {
-            const bool partial = std::includes(expected.begin(), expected.end(), blocks.begin(),
-                                               blocks.end());
+            const bool partial =
+                std::includes(expected.begin(), expected.end(), blocks.begin(), blocks.end());
             if (partial)
                 return fieldError(
                     share.folder, "blocks",
@@ -88,7 +88,8 @@ Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::
                         std::to_string(share.shard.index) + "/" +
                         std::to_string(share.shard.count) + " --out " + displayPath(share.folder) +
                         "` again (add --resume to insist), then merge");
-            return fieldError(share.folder, "blocks", "not the blocks of " + shareName(share.shard));
+            return fieldError(share.folder, "blocks",
+                              "not the blocks of " + shareName(share.shard));
         }
         for (const auto& variant : share.report.at("variants")) {
             const auto index = variant.at("index").get<int>();

@@ -56,8 +56,9 @@ Result<ResumableBlocks> readResumableBlocks(const fs::path& folder, const BlockR
         for (const auto& [field, expected] : header.header.items()) {
             if (!report.contains(field)) return fieldError(field, "missing");
             if (auto differs = firstDifference(expected, report.at(field), field))
-                return fieldError(*differs, "differs from this run's: the folder holds another "
-                                            "request (--force replaces it)");
+                return fieldError(*differs,
+                                  "differs from this run's: the folder holds another "
+                                  "request (--force replaces it)");
         }
         if (const std::optional<Shard> found = shardOf(report);
             found.has_value() != shard.has_value() ||

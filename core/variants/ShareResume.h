@@ -23,8 +23,8 @@ namespace matevo {
 struct ResumableBlocks {
     std::vector<nlohmann::ordered_json> blocks;
     std::vector<nlohmann::ordered_json> variants;
-    std::vector<int> missing;            // the blocks still to compute
-    nlohmann::ordered_json madeBy;       // the report's "made_by" (madeByConflict)
+    std::vector<int> missing;       // the blocks still to compute
+    nlohmann::ordered_json madeBy;  // the report's "made_by" (madeByConflict)
 };
 
 // Reads `folder`/report.json, written by a run of the request `header` describes (every field

@@ -58,9 +58,9 @@ nlohmann::ordered_json variantEntry(const Preset& preset, const VariantSet& set,
 // sizes.
 nlohmann::ordered_json requestJson(const VariantRun& run);
 
-// The report: request, what made it (when known), per variant (file, ΔE00 to the target, to its nearest sibling, genome),
-// the pairwise ΔE00 matrix, the smallest pairwise distance, evaluations, wall time, seed, and
-// whether the request was met with a one-line summary.
+// The report: request, what made it (when known), per variant (file, ΔE00 to the target, to its
+// nearest sibling, genome), the pairwise ΔE00 matrix, the smallest pairwise distance, evaluations,
+// wall time, seed, and whether the request was met with a one-line summary.
 nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
                                      const VariantSet& set);
 

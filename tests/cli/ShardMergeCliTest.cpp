@@ -172,10 +172,10 @@ nlohmann::json readReport(const fs::path& folder) {
 // Starts share 0/2 into `out`, waits for its first committed block, and sends `signal`;
 // returns the exit status.
 int interruptAfterFirstBlock(const fs::path& out, int signal) {
-    const pid_t pid = testing::startProcess(
-        {"/bin/sh", "-c",
-         "exec '" + std::string(MATEVO_BINARY_DIR) + "/matevo' " + kResumable +
-             " --shard 0/2 --out " + shellQuoted(out)});
+    const pid_t pid =
+        testing::startProcess({"/bin/sh", "-c",
+                               "exec '" + std::string(MATEVO_BINARY_DIR) + "/matevo' " +
+                                   kResumable + " --shard 0/2 --out " + shellQuoted(out)});
     const auto giveUp = std::chrono::steady_clock::now() + std::chrono::minutes(5);
     while (!fs::exists(out / "report.json") && std::chrono::steady_clock::now() < giveUp)
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -208,9 +208,8 @@ TEST(ShareResume, AShareKilledOrStoppedResumesToTheBytesOfOneRun) {
 
         // merge names the partial share and how to resume it, in one line.
         const fs::path merged = folder / (std::string("merged_") + name);
-        const std::string merge =
-            "merge " + shellQuoted(share) + " " + shellQuoted(folder / "1") + " --out " +
-            shellQuoted(merged);
+        const std::string merge = "merge " + shellQuoted(share) + " " + shellQuoted(folder / "1") +
+                                  " --out " + shellQuoted(merged);
         const auto refused = runMatevo(merge);
         EXPECT_EQ(refused.exitCode, 2) << refused.err;
         EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
@@ -245,7 +244,7 @@ TEST(ShareResume, ResumeKeepsOnlyTheSameRequestAndBackEnd) {
     for (const std::string& arguments :
          {otherSeed + " --resume", otherBackEnd + " --resume",
           kRequest + share0 + " --resume --force",      // contradictory
-          otherSeed,                                     // not resumable: the usual refusal
+          otherSeed,                                    // not resumable: the usual refusal
           kRequest + " --shard 1/2 --resume" + out}) {  // another share
         const auto result = runMatevo(arguments);
         EXPECT_EQ(result.exitCode, 2) << arguments << "\n" << result.err;
@@ -253,8 +252,7 @@ TEST(ShareResume, ResumeKeepsOnlyTheSameRequestAndBackEnd) {
         EXPECT_TRUE(filesUnder(folder / "share") == before) << arguments;
     }
     EXPECT_NE(runMatevo(otherSeed + " --resume").err.find("request.seed"), std::string::npos);
-    EXPECT_NE(runMatevo(otherBackEnd + " --resume").err.find("made_by.backend"),
-              std::string::npos);
+    EXPECT_NE(runMatevo(otherBackEnd + " --resume").err.find("made_by.backend"), std::string::npos);
     // A complete share resumed is kept as it is; --quiet leaves out the "resuming" notice.
     const auto again = runMatevo(kRequest + share0 + " --resume --quiet");
     EXPECT_EQ(again.exitCode, 0) << again.err;
@@ -269,9 +267,9 @@ TEST(ShareResume, MergeRefusesSharesOfDifferentBackEnds) {
                                " --shard 1/2 --out " + shellQuoted(folder / "1"));
     ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
     EXPECT_EQ(readReport(folder / "1")["made_by"]["backend"], "gpu");
-    const auto merged = runMatevo("merge " + shellQuoted(folder / "0") + " " +
-                                  shellQuoted(folder / "1") + " --out " +
-                                  shellQuoted(folder / "merged"));
+    const auto merged =
+        runMatevo("merge " + shellQuoted(folder / "0") + " " + shellQuoted(folder / "1") +
+                  " --out " + shellQuoted(folder / "merged"));
     EXPECT_EQ(merged.exitCode, 2) << merged.err;
     EXPECT_NE(merged.err.find("made_by.backend"), std::string::npos) << merged.err;
     EXPECT_FALSE(fs::exists(folder / "merged"));

@@ -56,8 +56,8 @@ TEST(CgroupLimits, TheTightestLimitOfTheGroupAndItsAncestorsBinds) {
     EXPECT_EQ(*tightestCgroupLimit(root.path(), "/job/step", "memory.max", bytesAllowedByMemoryMax),
               1073741824u);
     EXPECT_FALSE(tightestCgroupLimit(root.path(), "/", "cpu.max", cpusAllowedByCpuMax));
-    EXPECT_FALSE(tightestCgroupLimit(root.path(), "/elsewhere", "memory.max",
-                                     bytesAllowedByMemoryMax));
+    EXPECT_FALSE(
+        tightestCgroupLimit(root.path(), "/elsewhere", "memory.max", bytesAllowedByMemoryMax));
 }
 
 TEST(CgroupLimits, ThreadsAreTheAffinityCappedByTheQuotaRoundedUp) {
@@ -77,10 +77,9 @@ TEST(CgroupLimits, TheMemoryLimitIsTheCgroupsWhenLower) {
 
 // The real executable, bound to one CPU, sizes its pools for one.
 TEST(CgroupLimits, TasksetToOneCpuGivesOneThread) {
-    const auto bound = testing::runCommand("env -u MATEVO_THREADS taskset -c 0 " +
-                                           testing::shellQuoted(fs::path(MATEVO_BINARY_DIR) /
-                                                                "matevo") +
-                                           " --version --verbose");
+    const auto bound = testing::runCommand(
+        "env -u MATEVO_THREADS taskset -c 0 " +
+        testing::shellQuoted(fs::path(MATEVO_BINARY_DIR) / "matevo") + " --version --verbose");
     ASSERT_EQ(bound.exitCode, 0) << bound.err;
     EXPECT_NE(bound.out.find("\nthreads: 1 "), std::string::npos) << bound.out;
 }

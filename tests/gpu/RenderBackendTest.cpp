@@ -49,12 +49,13 @@ TEST(RenderBackend, TheNoDriverNoticeSaysWhereTheLoaderLooks) {
     const auto out = scratchFile("no_driver.png");
     const auto result = testing::runCommand(
         "env -u VK_ICD_FILENAMES VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR
-        "/matevo' render --size 24 --out '" + out.string() + "'");
+        "/matevo' render --size 24 --out '" +
+        out.string() + "'");
     ASSERT_EQ(result.exitCode, 0) << result.err;
     EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-    for (const char* part : {"no compatible Vulkan driver", "VK_DRIVER_FILES", "VK_ICD_FILENAMES",
-                             "$XDG_DATA_DIRS", "vulkaninfo --summary",
-                             "rendering on the CPU instead"})
+    for (const char* part :
+         {"no compatible Vulkan driver", "VK_DRIVER_FILES", "VK_ICD_FILENAMES", "$XDG_DATA_DIRS",
+          "vulkaninfo --summary", "rendering on the CPU instead"})
         EXPECT_NE(result.err.find(part), std::string::npos) << part << "\n" << result.err;
     std::filesystem::remove(out);
 }
@@ -65,8 +66,9 @@ TEST(RenderBackend, TheNoDriverNoticeSaysWhereTheLoaderLooks) {
 TEST(RenderBackend, AModuleSystemsXdgDataDirsDoesNotHideTheDriver) {
     const auto out = scratchFile("module_system.png");
     const auto result = testing::runCommand(
-        "env -u VK_DRIVER_FILES -u VK_ICD_FILENAMES XDG_DATA_DIRS=/nonexistent/modules/share '"
-        MATEVO_BINARY_DIR "/matevo' render --no-fallback --size 24 --out '" + out.string() + "'");
+        "env -u VK_DRIVER_FILES -u VK_ICD_FILENAMES XDG_DATA_DIRS=/nonexistent/modules/share "
+        "'" MATEVO_BINARY_DIR "/matevo' render --no-fallback --size 24 --out '" +
+        out.string() + "'");
     EXPECT_EQ(result.exitCode, 0) << result.err;
     EXPECT_EQ(result.err, "") << "no fallback notice expected";
     std::filesystem::remove(out);
@@ -81,7 +83,8 @@ TEST(RenderBackend, NoFallbackFailsInsteadOfRenderingOnTheCpu) {
                       "--max-evaluations 50"),
           "evolve --population 4 --generations 1 --size 24 --out '" + out.string() + "'",
           "experiment --runs 1 --population 4 --generations 1 --size 24 --metric chebyshev "
-          "--out '" + out.string() + "'"}) {
+          "--out '" +
+              out.string() + "'"}) {
         const auto result = testing::runCommand(
             "VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR "/matevo' " +
             command + " --no-fallback");
@@ -91,8 +94,8 @@ TEST(RenderBackend, NoFallbackFailsInsteadOfRenderingOnTheCpu) {
         EXPECT_EQ(result.err.find("rendering on the CPU instead"), std::string::npos) << result.err;
         EXPECT_FALSE(std::filesystem::exists(out));
     }
-    const auto contradiction = testing::runMatevo("render --backend cpu --no-fallback --out '" +
-                                                  out.string() + "'");
+    const auto contradiction =
+        testing::runMatevo("render --backend cpu --no-fallback --out '" + out.string() + "'");
     EXPECT_EQ(contradiction.exitCode, 2) << contradiction.err;
 }
 
