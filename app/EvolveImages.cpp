@@ -37,7 +37,7 @@ std::uint64_t evolveImagesMemoryEstimate(int size) {
     return 2 * perCandidate * (kEvolveImageBatch + 1);
 }
 
-std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
+EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
                                                    const std::vector<Individual>& ranked, int size,
                                                    const gpu::RendererRequest& rendererRequest,
                                                    const std::string& extension,
@@ -100,7 +100,7 @@ std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
             stats.push_back(entry);
         }
     }
-    return stats;
+    return {std::move(stats), madeBy(*renderer)};
 }
 
 }  // namespace matevo::cli

@@ -194,12 +194,15 @@ int runEvolve(CommandLine& args) {
 
     const Preset& preset = choice.preset;
     std::optional<ImageSpaceFitness> fitness;
+    nlohmann::ordered_json renderedBy;  // made_by, when anything is rendered
     if (imageFitness) {
         auto textures = loadSceneTextures(preset, choice.file);
         if (!textures) throw UsageError(textures.error().message);
+        auto renderer = createCommandRenderer(rendererRequest, *textures);
+        renderedBy = madeBy(*renderer);
         auto cache = GenomeRenderCache::create(
-            renderGenomesWith(createCommandRenderer(rendererRequest, *textures), preset.family,
-                              preset.baseKappa, preset.scene, fitnessSize),
+            renderGenomesWith(std::move(renderer), preset.family, preset.baseKappa, preset.scene,
+                              fitnessSize),
             preset.target, fitnessMetric);
         if (!cache) throw std::runtime_error(cache.error().message);
         fitness.emplace(std::move(cache).value(), band);
@@ -250,14 +253,16 @@ int runEvolve(CommandLine& args) {
     }
     if (output) {
         try {
-            const auto stats = writeEvolveImages(choice, ranked, imageSize, rendererRequest,
-                                                 "." + format, *heatmapMetric, output->staging());
-            addImageStatistics(report, stats);
-            report["candidates_written"] = stats.size();
+            const auto written = writeEvolveImages(choice, ranked, imageSize, rendererRequest,
+                                                   "." + format, *heatmapMetric, output->staging());
+            addImageStatistics(report, written.candidates);
+            report["candidates_written"] = written.candidates.size();
+            renderedBy = written.madeBy;
         } catch (const UsageError& error) {
             throw UsageError(output->userFacing(error.what()));
         }
     }
+    if (!renderedBy.is_null()) report["made_by"] = renderedBy;
     if (const int signal = stopRequested()) {
         report["partial"] = true;
         report["stopped_by"] = signalName(signal);

@@ -49,7 +49,8 @@ TEST(JsonOrder, EvolveReportAndItsFile) {
         "--json --out " +
         shellQuoted(scratch / "run"));
     EXPECT_EQ(keysOf(report), (Keys{"target", "config", "generations", "population", "best",
-                                    "best_material", "candidates_written"}));
+                                    "best_material", "candidates_written", "made_by"}));
+    EXPECT_EQ(report["made_by"]["backend"], "cpu");
     EXPECT_EQ(keysOf(report["target"]), kGenomeKeys);
     EXPECT_EQ(keysOf(report["config"]),
               (Keys{"preset", "family", "population", "generations", "metric", "weights",
