@@ -38,11 +38,10 @@ std::uint64_t evolveImagesMemoryEstimate(int size) {
 }
 
 EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
-                                                   const std::vector<Individual>& ranked, int size,
-                                                   const gpu::RendererRequest& rendererRequest,
-                                                   const std::string& extension,
-                                                   ImageMetric heatmapMetric,
-                                                   const std::filesystem::path& outDir) {
+                                      const std::vector<Individual>& ranked, int size,
+                                      const gpu::RendererRequest& rendererRequest,
+                                      const std::string& extension, ImageMetric heatmapMetric,
+                                      const std::filesystem::path& outDir) {
     // The images as the files will hold them: PNG rounds colour and alpha to 8 bits.
     const auto asStored = [png = extension == ".png"](const Image& image) {
         return png ? quantizeAsPng(image) : image;
