@@ -29,8 +29,11 @@ void linkInto(const fs::path& from, const fs::path& to, const fs::path& relative
 
 }  // namespace
 
-void StepwiseOutput::keep(const std::vector<std::string>& files) {
-    for (const std::string& file : files) linkInto(output_->target(), output_->staging(), file);
+void StepwiseOutput::keepCommitted() {
+    const fs::path folder = output_->target();
+    for (const auto& entry : fs::recursive_directory_iterator(folder))
+        if (entry.is_regular_file())
+            linkInto(folder, output_->staging(), fs::relative(entry.path(), folder));
 }
 
 void StepwiseOutput::step() {
@@ -41,9 +44,7 @@ void StepwiseOutput::step() {
     const fs::path folder = output_->target();
     output_.reset();
     output_.emplace(claimOutputFolder(folder, true));
-    for (const auto& entry : fs::recursive_directory_iterator(folder))
-        if (entry.is_regular_file())
-            linkInto(folder, output_->staging(), fs::relative(entry.path(), folder));
+    keepCommitted();
     lastStep_ = Clock::now();
     lastStepCost_ = lastStep_ - started;
 }

@@ -6,8 +6,6 @@
 // hard links (copies where the filesystem has none): a step costs a link per file, not a copy.
 #include <chrono>
 #include <optional>
-#include <string>
-#include <vector>
 
 #include "io/OutputFolder.h"
 
@@ -18,9 +16,9 @@ public:
     // `output` is the run's claimed folder; each step replaces it with the next staging folder.
     explicit StepwiseOutput(std::optional<OutputFolder>& output) : output_(output) {}
 
-    // Brings `files` (relative paths) of the folder in place into the staging folder: what a
-    // resumed run keeps.
-    void keep(const std::vector<std::string>& files);
+    // Brings every file of the folder in place into the staging folder: what a resumed run
+    // keeps (the folder only ever holds whole blocks and the set's own files).
+    void keepCommitted();
 
     // Commits what the staging folder holds and starts the next one from it. Skipped while the
     // last step took more than a twentieth of the time since it: with thousands of files in

@@ -342,7 +342,7 @@ int runVariants(CommandLine& args) {
         font = requireChartFont();
     }
     if (kept) {
-        StepwiseOutput(output).keep(filesOfBlocks(*kept, std::size_t(request.count)));
+        StepwiseOutput(output).keepCommitted();
         std::move(kept->blocks.begin(), kept->blocks.end(), std::back_inserter(parts.blocks));
         std::move(kept->variants.begin(), kept->variants.end(), std::back_inserter(parts.variants));
     }

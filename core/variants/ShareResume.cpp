@@ -4,7 +4,6 @@
 
 #include "io/InputFile.h"
 #include "io/TextFile.h"
-#include "variants/VariantFiles.h"
 
 namespace matevo {
 namespace {
@@ -91,18 +90,6 @@ Result<ResumableBlocks> readResumableBlocks(const fs::path& folder, const BlockR
         return fieldError("blocks/variants", error.what());
     }
     return kept;
-}
-
-std::vector<std::string> filesOfBlocks(const ResumableBlocks& kept, std::size_t count) {
-    std::vector<std::string> files;
-    for (const auto& block : kept.blocks)
-        files.push_back(blockContactSheet(block.at("index").get<int>()));
-    for (const auto& variant : kept.variants) {
-        const std::string stem =
-            "variants/" + variantStem(variant.at("index").get<std::size_t>(), count);
-        for (const char* suffix : {".json", ".png", "_heatmap.png"}) files.push_back(stem + suffix);
-    }
-    return files;
 }
 
 }  // namespace matevo

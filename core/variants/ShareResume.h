@@ -35,10 +35,6 @@ Result<ResumableBlocks> readResumableBlocks(const std::filesystem::path& folder,
                                             const BlockReport& header,
                                             const std::optional<Shard>& shard);
 
-// The kept blocks' files, relative to the folder: each block's contact sheet and its variants'
-// material file, render and heatmap; `count` is the size of the whole set.
-std::vector<std::string> filesOfBlocks(const ResumableBlocks& kept, std::size_t count);
-
 // "share 1/4" or "the set", for messages.
 std::string shareName(const std::optional<Shard>& shard);
 
