@@ -21,6 +21,12 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// A failure of the machine, not of the user's input nor a bug: e.g. no usable Vulkan device
+// where --no-fallback requires one. main() prints it as it is and exits 1.
+struct MachineFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 class CommandLine {
 public:
     CommandLine(std::string command, std::vector<std::string> args);

@@ -37,12 +37,11 @@ std::uint64_t evolveImagesMemoryEstimate(int size) {
     return 2 * perCandidate * (kEvolveImageBatch + 1);
 }
 
-std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
-                                                   const std::vector<Individual>& ranked, int size,
-                                                   RenderBackend backend,
-                                                   const std::string& extension,
-                                                   ImageMetric heatmapMetric,
-                                                   const std::filesystem::path& outDir) {
+EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
+                                      const std::vector<Individual>& ranked, int size,
+                                      const gpu::RendererRequest& rendererRequest,
+                                      const std::string& extension, ImageMetric heatmapMetric,
+                                      const std::filesystem::path& outDir) {
     // The images as the files will hold them: PNG rounds colour and alpha to 8 bits.
     const auto asStored = [png = extension == ".png"](const Image& image) {
         return png ? quantizeAsPng(image) : image;
@@ -60,7 +59,7 @@ std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
     }
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
     // One renderer for every batch: it keeps the target's render between them.
-    auto renderer = gpu::createPopulationRenderer({backend, "matevo evolve"}, *textures);
+    auto renderer = createCommandRenderer(rendererRequest, *textures);
     EvaluationOptions options;
     options.heatmaps = false;  // drawn below from the images as written
     std::vector<CandidateImageStats> stats;
@@ -100,7 +99,7 @@ std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
             stats.push_back(entry);
         }
     }
-    return stats;
+    return {std::move(stats), madeBy(*renderer)};
 }
 
 }  // namespace matevo::cli

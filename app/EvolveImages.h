@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "color/Flip.h"
@@ -32,15 +34,19 @@ struct CandidateImageStats {
     std::optional<FlipStats> flip;
 };
 
+struct EvolveImagesWritten {
+    std::vector<CandidateImageStats> candidates;
+    nlohmann::ordered_json madeBy;  // what rendered them (RenderBackend.h's madeBy)
+};
+
 // Renders, compares and writes the ranked population with heatmaps of `heatmapMetric` (ΔE00
 // 0-10 through viridis, ꟻLIP 0-1 through magma); returns the statistics of the candidates
-// written, in rank order (fewer than ranked.size() when stopped early). Throws UsageError when
-// a file cannot be written. `extension` is ".png" or ".exr".
-std::vector<CandidateImageStats> writeEvolveImages(const PresetChoice& choice,
-                                                   const std::vector<Individual>& ranked, int size,
-                                                   RenderBackend backend,
-                                                   const std::string& extension,
-                                                   ImageMetric heatmapMetric,
-                                                   const std::filesystem::path& outDir);
+// written, in rank order (fewer than ranked.size() when stopped early), and what rendered them.
+// Throws UsageError when a file cannot be written. `extension` is ".png" or ".exr".
+EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
+                                      const std::vector<Individual>& ranked, int size,
+                                      const gpu::RendererRequest& rendererRequest,
+                                      const std::string& extension, ImageMetric heatmapMetric,
+                                      const std::filesystem::path& outDir);
 
 }  // namespace matevo::cli

@@ -6,12 +6,12 @@
 namespace matevo::cli {
 
 RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<int> imageSize,
-                                     RenderBackend backend) {
+                                     const gpu::RendererRequest& rendererRequest) {
     auto textures = loadSceneTextures(choice.preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
     const Preset& preset = choice.preset;
     std::shared_ptr<PopulationRenderer> renderer =
-        gpu::createPopulationRenderer({backend, "matevo experiment"}, *textures);
+        createCommandRenderer(rendererRequest, *textures);
     return renderGenomesWith(std::move(renderer), preset.family, preset.baseKappa, preset.scene,
                              imageSize.value_or(preset.scene.imageSize));
 }

@@ -13,6 +13,6 @@ namespace matevo::cli {
 // Loads the preset's textures (a bad texture is a UsageError naming the preset and field).
 // imageSize: pixels per side; the preset's scene size when absent.
 RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<int> imageSize,
-                                     RenderBackend backend);
+                                     const gpu::RendererRequest& rendererRequest);
 
 }  // namespace matevo::cli

@@ -1,6 +1,10 @@
 #include "Messages.h"
 
+#include <unistd.h>
+
 #include <cstdio>
+
+#include "common/StatusOutput.h"
 
 namespace matevo::cli {
 namespace {
@@ -9,6 +13,9 @@ std::string& currentCommand() {
     static std::string command;
     return command;
 }
+
+bool quietOutput = false;
+bool progressShown = false;  // a progress line is on the terminal, not yet ended
 
 }  // namespace
 
@@ -27,5 +34,27 @@ void printWarning(std::string_view text) {
     std::fprintf(stderr, "%swarning: %.*s\n", messagePrefix().c_str(), int(text.size()),
                  text.data());
 }
+
+void printNotice(std::string_view text) {
+    if (!quietOutput) printMessage(text);
+}
+
+void printProgress(std::string_view text) {
+    static const bool onTerminal = ::isatty(STDERR_FILENO) != 0;
+    if (quietOutput || !onTerminal) return;
+    if (text.empty()) {
+        if (progressShown) std::fputc('\n', stderr);
+        progressShown = false;
+        return;
+    }
+    std::fprintf(stderr, "\r%s%.*s\x1b[K", messagePrefix().c_str(), int(text.size()), text.data());
+    progressShown = true;
+}
+
+void setQuiet(bool quiet) { quietOutput = quiet; }
+
+bool quiet() { return quietOutput; }
+
+void installStatusSinks() { matevo::setStatusSinks(printNotice, printProgress); }
 
 }  // namespace matevo::cli

@@ -7,6 +7,11 @@
 //
 // TEXT is one line and names the file, field or option at fault. Commands never print the
 // prefix themselves: they throw UsageError("--out: ...") or call these functions.
+//
+// Notices (what a command is doing, e.g. building tables or resuming) and progress are for the
+// person watching: progress is redrawn in place only when stderr is a terminal (a log gets the
+// notices, one line each, and no `\r` updates), and --quiet silences both. Errors, warnings and
+// the outcome of a command are always said.
 #include <string>
 #include <string_view>
 
@@ -30,5 +35,15 @@ std::string messagePrefix();
 
 void printMessage(std::string_view text);
 void printWarning(std::string_view text);
+// A notice: printMessage unless --quiet.
+void printNotice(std::string_view text);
+// A progress line, redrawn in place on a terminal and not shown otherwise or with --quiet; an
+// empty text ends it.
+void printProgress(std::string_view text);
+
+// --quiet; also routes core's notices and progress (common/StatusOutput.h) through the two above.
+void setQuiet(bool quiet);
+bool quiet();
+void installStatusSinks();
 
 }  // namespace matevo::cli

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "Messages.h"
+
 namespace matevo::cli {
 
 namespace {
@@ -11,7 +13,9 @@ constexpr int kBarWidth = 40;
 }
 
 ProgressBar::ProgressBar(int total, std::FILE* stream)
-    : stream_(stream), enabled_(::isatty(::fileno(stream)) != 0), total_(std::max(total, 1)) {}
+    : stream_(stream),
+      enabled_(::isatty(::fileno(stream)) != 0 && !quiet()),
+      total_(std::max(total, 1)) {}
 
 ProgressBar::~ProgressBar() {
     if (drawn_) std::fputc('\n', stream_);

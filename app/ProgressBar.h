@@ -1,6 +1,6 @@
 #pragma once
 // A one-line progress bar on stderr, redrawn in place ("\r") only when it changes, and only when
-// stderr is a terminal so that logs and tests get no control characters.
+// stderr is a terminal so that logs and tests get no control characters, and not with --quiet.
 #include <cstdio>
 #include <string>
 

@@ -10,4 +10,27 @@ RenderBackend parseRenderBackend(const std::string& text, const std::string& opt
     throw UsageError(option + ": expected gpu or cpu, got " + text);
 }
 
+gpu::RendererRequest backendOptions(CommandLine& args, const std::string& who) {
+    gpu::RendererRequest request(
+        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend"), who);
+    request.noFallback = args.flag("--no-fallback");
+    if (request.noFallback && request.backend == RenderBackend::Cpu)
+        throw UsageError("--no-fallback: forbids falling back from the GPU; --backend cpu has "
+                         "nothing to fall back from");
+    return request;
+}
+
+std::unique_ptr<PopulationRenderer> createCommandRenderer(const gpu::RendererRequest& request,
+                                                          const SceneTextures& textures) {
+    auto renderer = gpu::tryCreatePopulationRenderer(request, textures);
+    if (!renderer) throw MachineFailure(renderer.error().message);
+    return std::move(renderer).value();
+}
+
+nlohmann::ordered_json madeBy(const PopulationRenderer& renderer) {
+    return {{"matevo", MATEVO_VERSION},
+            {"backend", renderer.backend() == RenderBackend::Gpu ? "gpu" : "cpu"},
+            {"device", renderer.name()}};
+}
+
 }  // namespace matevo::cli

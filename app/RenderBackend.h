@@ -1,13 +1,32 @@
 #pragma once
-// `--backend gpu|cpu`, which every rendering command and the editor take; what it selects is
+// `--backend gpu|cpu` and `--no-fallback`, which the rendering commands take; what they select is
 // made by gpu::createPopulationRenderer.
+#include <memory>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "gpu/PopulationRendererFactory.h"
 #include "render/PopulationRenderer.h"
 
 namespace matevo::cli {
 
+class CommandLine;
+
 // Throws UsageError naming the option for anything but "gpu" or "cpu".
 RenderBackend parseRenderBackend(const std::string& text, const std::string& option);
+
+// --backend (default gpu) and --no-fallback (only with the GPU, which it makes strict) of a
+// command, as a request to fill in further; `who` prefixes the fallback notice.
+gpu::RendererRequest backendOptions(CommandLine& args, const std::string& who);
+
+// The renderer `request` asks for; a GPU that --no-fallback requires and that is not usable is
+// a MachineFailure (exit 1).
+std::unique_ptr<PopulationRenderer> createCommandRenderer(const gpu::RendererRequest& request,
+                                                          const SceneTextures& textures);
+
+// What made a report's renders, so that work of different back ends or versions is never
+// joined (merge, a resumed share): {"matevo": version, "backend": "gpu"|"cpu", "device": name}.
+nlohmann::ordered_json madeBy(const PopulationRenderer& renderer);
 
 }  // namespace matevo::cli

@@ -16,8 +16,10 @@
 #include "CommandLine.h"
 #include "Messages.h"
 #include "Suggestion.h"
-#include "common/MemoryBudget.h"
 #include "commands/Commands.h"
+#include "common/MemoryBudget.h"
+#include "common/WorkerThreads.h"
+#include "gpu/LoaderEnvironment.h"
 #include "io/PresetCatalog.h"
 
 namespace {
@@ -48,15 +50,16 @@ constexpr Subcommand kSubcommands[] = {
 
 constexpr const char* kMaxMemoryHelp =
     "  --max-memory SIZE  refuse work whose estimated memory is past SIZE (e.g. 512M, 16G;\n"
-    "                     default half the machine's memory); every command that reads\n"
-    "                     images or renders takes it\n";
+    "                     default half the machine's memory, or 3/4 of the cgroup's\n"
+    "                     memory.max when lower); every command that reads images or\n"
+    "                     renders takes it\n";
 
 void printHelp() {
     std::printf(
         "matevo - evolve many variants of a layered material (Belcour 2018 BSDF, genetic\n"
         "algorithm of Bernardi et al. 2020).\n\n"
         "usage: matevo [COMMAND] [ARGS...]\n"
-        "       matevo --version | --help | help COMMAND\n\n"
+        "       matevo --version [--verbose] | --help | help COMMAND\n\n"
         "commands:\n");
     for (const auto& sub : kSubcommands)
         std::printf("  %-11.*s %.*s\n", int(sub.name.size()), sub.name.data(),
@@ -64,7 +67,9 @@ void printHelp() {
     std::printf(
         "\n'matevo COMMAND --help' describes a command. With no command, or with a preset file\n"
         "as the only argument, matevo opens the editor.\n"
-        "messages: 'matevo COMMAND: TEXT' on stderr, one line each.\n"
+        "messages: 'matevo COMMAND: TEXT' on stderr, one line each; progress is redrawn in place\n"
+        "          only on a terminal; every command takes --quiet, which leaves only errors,\n"
+        "          warnings and the outcome.\n"
         "exit status: 0 success, 1 internal failure, 2 bad usage or input,\n"
         "             3 compare --fail-above: the difference is above the threshold.\n\n%s",
         kMaxMemoryHelp);
@@ -94,6 +99,12 @@ bool opensEditor(const std::string& first) {
 int dispatch(std::vector<std::string> args) {
     if (!args.empty() && args[0] == "--version") {
         std::printf("matevo %s\n", MATEVO_VERSION);
+        // What this process may use here, e.g. inside a batch job's allocation.
+        if (args.size() > 1 && args[1] == "--verbose")
+            std::printf("threads: %u (CPUs this process may use: %u; MATEVO_THREADS sets it)\n"
+                        "memory limit: %s (--max-memory sets it)\n",
+                        matevo::workerThreadCount(), matevo::usableCpusOfProcess(),
+                        matevo::describeBytes(matevo::memoryLimitBytes()).c_str());
         return exitCode(ExitStatus::Success);
     }
     if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
@@ -114,6 +125,7 @@ int dispatch(std::vector<std::string> args) {
     }
     setMessageCommand(chosen->name);
     CommandLine commandLine(std::string(chosen->name), std::move(args));
+    setQuiet(commandLine.flag("--quiet"));
     if (!chosen->takesMaxMemory) return chosen->run(commandLine);
     if (const auto limit = commandLine.option("--max-memory"))
         matevo::setMemoryLimitBytes(parseByteSizeOption(*limit, "--max-memory"));
@@ -136,11 +148,16 @@ int main(int argc, char** argv) {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 128 << 20);
 #endif
+    matevo::gpu::prepareVulkanEnvironment();
+    installStatusSinks();
     try {
         return dispatch(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const UsageError& error) {
         printMessage(error.what());
         return exitCode(ExitStatus::BadUsage);
+    } catch (const MachineFailure& error) {
+        printMessage(error.what());
+        return exitCode(ExitStatus::InternalFailure);
     } catch (const std::exception& error) {
         printMessage(std::string("internal error: ") + error.what());
         return exitCode(ExitStatus::InternalFailure);

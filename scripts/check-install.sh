@@ -6,10 +6,10 @@
 # lone copy of the executable says where it looked for its resources (exit 2), and
 # MATEVO_DATA_DIR points it at them. Exits non-zero on the first failure, naming it.
 #   scripts/check-install.sh [CMAKE_ARGUMENT...]
-# ctest's install_and_run_from_anywhere passes the suite's own compiler and build settings, so
-# that with ccache (scripts/install-deps.sh --tests installs it) the second build compiles from
-# the cache the suite's build just filled: the sources are the same absolute paths, and nothing
-# but the generated shader headers differs.
+#   scripts/check-install.sh --built BUILD_DIR
+# With --built, the already built tree BUILD_DIR is installed instead of a fresh build: ctest's
+# install_and_run_from_anywhere passes the suite's own build folder, so the suite checks the
+# install without compiling the program a second time.
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/matevo-install-check.XXXXXX")
@@ -18,11 +18,16 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "check-install: $*" >&2; exit 1; }
 expect_file() { [[ -s "$1" ]] || fail "$2 did not write $1"; }
 
-build_dir="$work/build"
-cmake -S "$source_dir" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-      -DMATEVO_BUILD_TESTS=OFF "$@" >"$work/build.log" 2>&1 \
-    && cmake --build "$build_dir" --target matevo -j"$(nproc)" >>"$work/build.log" 2>&1 \
-    || { cat "$work/build.log" >&2; fail "the out-of-tree build"; }
+if [[ "${1:-}" == --built ]]; then
+    build_dir=$(cd "$2" && pwd)
+    [[ -x "$build_dir/matevo" ]] || fail "$build_dir holds no built matevo"
+else
+    build_dir="$work/build"
+    cmake -S "$source_dir" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+          -DMATEVO_BUILD_TESTS=OFF "$@" >"$work/build.log" 2>&1 \
+        && cmake --build "$build_dir" --target matevo -j"$(nproc)" >>"$work/build.log" 2>&1 \
+        || { cat "$work/build.log" >&2; fail "the out-of-tree build"; }
+fi
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
 [[ -f "$work/prefix/share/doc/matevo/LICENSE" ]] || fail "LICENSE not installed"
 [[ -f "$work/prefix/share/matevo/preset.schema.json" ]] || fail "the presets' schema not installed"
@@ -62,7 +67,7 @@ if command -v xvfb-run >/dev/null; then
     xvfb-run -a "$matevo" edit mine --frames 3 --backend cpu || fail "edit under Xvfb"
 fi
 
-# The out-of-tree build's own executable finds the source tree's resources.
+# The build tree's own executable finds the source tree's resources.
 "$build_dir/matevo" presets | grep -q '^validation_metal ' || fail "build-tree presets"
 
 # A lone copy finds nothing, says where it looked, exits 2; MATEVO_DATA_DIR rescues it.

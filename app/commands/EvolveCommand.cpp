@@ -1,5 +1,4 @@
-#include <unistd.h>
-
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -33,9 +32,9 @@ constexpr const char* kHelp =
     "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
     "                     [--size N] [--format png|exr] [--heatmap de00|flip]\n"
-    "                     [--backend gpu|cpu] [--force]\n"
+    "                     [--backend gpu|cpu [--no-fallback]] [--force]\n"
     "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N] [--hue]\n"
-    "                     [--checkpoint FILE] [--resume FILE]\n\n"
+    "                     [--checkpoint FILE [--checkpoint-every N]] [--resume FILE]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
     "override the preset's GA settings.\n"
@@ -57,10 +56,14 @@ constexpr const char* kHelp =
     "                 the target and candidates with --out; heatmaps are always PNG\n"
     "  --backend B    renderer for --out and image fitness: gpu (default; falls back to the\n"
     "                 CPU when no Vulkan device is usable) or cpu\n"
+    "  --no-fallback  with the GPU: exit 1 when no Vulkan device is usable\n"
     "  --force        replace DIR when it holds an earlier matevo output (else a folder with\n"
     "                 files is refused); DIR always holds one whole run\n"
-    "  --checkpoint FILE  after every generation, save the run's state (population, history,\n"
-    "                 random generator) to FILE, atomically\n"
+    "  --checkpoint FILE  save the run's state (population, history, random generator) to\n"
+    "                 FILE, atomically: after the initial population, then at most every 10 s\n"
+    "                 of the run (a kill loses at most that much), and when the run ends or\n"
+    "                 stops\n"
+    "  --checkpoint-every N  save after every N-th generation instead (1: every generation)\n"
     "  --resume FILE  continue the run saved in FILE (same preset and settings; --generations\n"
     "                 may be larger): the result equals the uninterrupted run's, bit for bit.\n"
     "                 Both work with genotype fitness only\n"
@@ -137,8 +140,7 @@ int runEvolve(CommandLine& args) {
     const std::string format = args.option("--format").value_or("png");
     if (format != "png" && format != "exr")
         throw UsageError("--format: expected png or exr, got '" + format + "'");
-    const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    const gpu::RendererRequest rendererRequest = backendOptions(args, "matevo evolve");
     const std::string fitnessName = args.option("--fitness").value_or("genotype");
     if (fitnessName != "genotype" && fitnessName != "image" && fitnessName != "flip")
         throw UsageError("--fitness: expected genotype, image or flip, got '" + fitnessName + "'");
@@ -167,8 +169,11 @@ int runEvolve(CommandLine& args) {
     args.onlyWith("--format", "--out");
     args.onlyWith("--heatmap", "--out");
     if (!imageFitness) args.onlyWith("--backend", "--out");
+    if (!imageFitness) args.onlyWith("--no-fallback", "--out");
     args.onlyWith("--force", "--out");
     const auto checkpointFile = args.option("--checkpoint");
+    const auto checkpointEvery = args.integerOption("--checkpoint-every", 1, kMaxGenerations);
+    args.onlyWith("--checkpoint-every", "--checkpoint");
     const auto resumeFile = args.option("--resume");
     // The image fitness is rebuilt from the options on resume, which a checkpoint does not hold.
     if (imageFitness && (checkpointFile || resumeFile))
@@ -189,15 +194,15 @@ int runEvolve(CommandLine& args) {
 
     const Preset& preset = choice.preset;
     std::optional<ImageSpaceFitness> fitness;
+    nlohmann::ordered_json renderedBy;  // made_by, when anything is rendered
     if (imageFitness) {
         auto textures = loadSceneTextures(preset, choice.file);
         if (!textures) throw UsageError(textures.error().message);
-        gpu::RendererRequest rendererRequest;
-        rendererRequest.backend = backend;
-        rendererRequest.who = "matevo evolve";
+        auto renderer = createCommandRenderer(rendererRequest, *textures);
+        renderedBy = madeBy(*renderer);
         auto cache = GenomeRenderCache::create(
-            renderGenomesWith(gpu::createPopulationRenderer(rendererRequest, *textures),
-                              preset.family, preset.baseKappa, preset.scene, fitnessSize),
+            renderGenomesWith(std::move(renderer), preset.family, preset.baseKappa, preset.scene,
+                              fitnessSize),
             preset.target, fitnessMetric);
         if (!cache) throw std::runtime_error(cache.error().message);
         fitness.emplace(std::move(cache).value(), band);
@@ -205,29 +210,39 @@ int runEvolve(CommandLine& args) {
     GeneticAlgorithm ga = fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga,
                                                      fitness->evaluator())
                                   : GeneticAlgorithm(preset.family, preset.target, preset.ga);
-    const bool showProgress = ::isatty(STDERR_FILENO) != 0;
     if (resumeFile)
         resume(ga, preset, *resumeFile);
     else
         ga.initialize();
+    // Saving the whole population after every generation made a run many times slower (a large
+    // JSON written and flushed each time); a resumed run is the same whichever generation it
+    // starts from, so saves are spaced out (in time, or every N generations when asked).
+    auto lastSave = std::chrono::steady_clock::now();
+    int savedGeneration = -1;
     auto saveState = [&] {
-        if (!checkpointFile) return;
+        if (!checkpointFile || savedGeneration == ga.generation()) return;
         const GaCheckpoint checkpoint{preset.family, preset.target, preset.baseKappa, preset.ga,
                                       ga.state()};
         if (auto saved = saveCheckpoint(checkpoint, *checkpointFile); !saved)
             throw UsageError("--checkpoint: " + saved.error().message);
+        savedGeneration = ga.generation();
+        lastSave = std::chrono::steady_clock::now();
+    };
+    auto saveDue = [&] {
+        if (checkpointEvery) return ga.generation() % *checkpointEvery == 0;
+        return std::chrono::steady_clock::now() - lastSave >= std::chrono::seconds(10);
     };
     // A checkpoint write a kill -9 interrupted earlier left its temporary file there.
     if (checkpointFile) removeStaleTemporaryFilesBeside(*checkpointFile);
     saveState();
     while (!ga.finished() && !stopRequested()) {
         ga.step();
-        saveState();
-        if (showProgress)
-            std::fprintf(stderr, "\r%sgeneration %d/%d", messagePrefix().c_str(),
-                         ga.generation(), preset.ga.generations);
+        if (saveDue()) saveState();
+        printProgress("generation " + std::to_string(ga.generation()) + "/" +
+                      std::to_string(preset.ga.generations));
     }
-    if (showProgress) std::fputc('\n', stderr);
+    saveState();
+    printProgress("");
     if (fitness && fitness->failure()) throw std::runtime_error(fitness->failure()->message);
 
     const auto ranked = ga.rankedPopulation();
@@ -240,14 +255,16 @@ int runEvolve(CommandLine& args) {
     }
     if (output) {
         try {
-            const auto stats = writeEvolveImages(choice, ranked, imageSize, backend, "." + format,
-                                                 *heatmapMetric, output->staging());
-            addImageStatistics(report, stats);
-            report["candidates_written"] = stats.size();
+            const auto written = writeEvolveImages(choice, ranked, imageSize, rendererRequest,
+                                                   "." + format, *heatmapMetric, output->staging());
+            addImageStatistics(report, written.candidates);
+            report["candidates_written"] = written.candidates.size();
+            renderedBy = written.madeBy;
         } catch (const UsageError& error) {
             throw UsageError(output->userFacing(error.what()));
         }
     }
+    if (!renderedBy.is_null()) report["made_by"] = renderedBy;
     if (const int signal = stopRequested()) {
         report["partial"] = true;
         report["stopped_by"] = signalName(signal);

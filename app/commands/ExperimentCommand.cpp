@@ -35,7 +35,7 @@ constexpr const char* kHelp =
     "                         [--generations N] [--sweep] [--metric M|all] [--seed S]\n"
     "                         [--runs-per-seed N] [--size N] [--scene paper|ambient]\n"
     "                         [--fitness-size N]\n"
-    "                         [--backend gpu|cpu] [--out DIR] [--force]\n\n"
+    "                         [--backend gpu|cpu [--no-fallback]] [--out DIR] [--force]\n\n"
     "The experiment of Bernardi et al. (2020) section 5: for the target material and each\n"
     "distance metric, N GA runs (default 36) at a population and generation count (default 50\n"
     "and 5); the best individual of each run is rendered and scored by its mean CIEDE2000\n"
@@ -59,7 +59,8 @@ constexpr const char* kHelp =
     "                     term, whatever mode the preset names; ambient: the light plus the\n"
     "                     preset's uniform environment\n"
     "  --backend B        gpu (default): Vulkan, one batch per 64 runs; with no usable\n"
-    "                     Vulkan device it says so on stderr and renders on the CPU.\n"
+    "                     Vulkan device it says so on stderr and renders on the CPU\n"
+    "                     (--no-fallback: exits 1 instead).\n"
     "                     cpu: the CPU reference renderer\n"
     "  --out DIR          output folder (default experiment-results), written to:\n"
     "                       results.csv  one row per run: preset, metric, population,\n"
@@ -107,7 +108,7 @@ struct Request {
     bool sweep = false;
     std::optional<int> imageSize;
     SceneMode sceneMode = SceneMode::Paper;
-    RenderBackend backend = RenderBackend::Gpu;
+    gpu::RendererRequest renderer;
     std::filesystem::path outDir = "experiment-results";
     bool replaceOutput = false;
 };
@@ -145,8 +146,7 @@ Request parseRequest(CommandLine& args) {
     }
     // The §5 protocol is defined in its own scene: the option, not the preset, decides.
     for (auto& choice : request.presets) choice.preset.scene.mode = request.sceneMode;
-    if (auto backend = args.option("--backend"))
-        request.backend = parseRenderBackend(*backend, "--backend");
+    request.renderer = backendOptions(args, "matevo experiment");
     if (auto out = args.option("--out")) request.outDir = *out;
     request.replaceOutput = args.flag("--force");
     args.finish();
@@ -251,10 +251,10 @@ int runInto(const Request& request, OutputFolder& output, const Font& font) {
             if (stopRequested()) break;
             const Preset& preset = choice.preset;
             const RenderGenomes render =
-                makeExperimentRenderer(choice, request.imageSize, request.backend);
+                makeExperimentRenderer(choice, request.imageSize, request.renderer);
             const RenderGenomes fitnessRender =
                 usesImageMetric(request.settings)
-                    ? makeExperimentRenderer(choice, request.settings.fitnessSize, request.backend)
+                    ? makeExperimentRenderer(choice, request.settings.fitnessSize, request.renderer)
                     : RenderGenomes{};
             const ExperimentTarget target{preset.name, preset.family, preset.target, preset.ga};
             const std::vector<GaSize> sizes =

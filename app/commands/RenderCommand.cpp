@@ -19,7 +19,8 @@ int runRender(CommandLine& args) {
     if (args.wantsHelp()) {
         std::printf(
             "usage: matevo render [--preset P] [--genome FILE.json] [--size N]\n"
-            "                     [--backend cpu|gpu] [--env paper|ambient|studio|FILE]\n"
+            "                     [--backend cpu|gpu [--no-fallback]]\n"
+            "                     [--env paper|ambient|studio|FILE]\n"
             "                     --out FILE.png|FILE.exr\n\n"
             "Renders one material on the paper's test sphere (one light, transparent\n"
             "background, alpha = coverage): the preset's target, or the material in FILE.json.\n"
@@ -32,15 +33,15 @@ int runRender(CommandLine& args) {
             "environment), studio (the light plus matevo's generated studio) or a lat-long .hdr\n"
             "or .exr FILE (the light plus that environment); default: the material's scene.\n"
             "--backend gpu (default) renders with Vulkan; with no usable Vulkan device it says\n"
-            "so on stderr and renders on the CPU. --backend cpu is the reference renderer.\n"
+            "so on stderr and renders on the CPU (--no-fallback: exit 1 instead). --backend cpu\n"
+            "is the reference renderer.\n"
             "--preset is a file or a name from matevo presets (default validation_metal).\n");
         return 0;
     }
     const MaterialSource source(args);
     const auto genomeFile = args.option("--genome");
     const auto size = args.integerOption("--size", 1, 8192);
-    const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    const gpu::RendererRequest rendererRequest = backendOptions(args, "matevo render");
     const auto lighting = args.option("--env");
     const std::filesystem::path out = imageOutputPath(args);
     args.finish();
@@ -57,7 +58,7 @@ int runRender(CommandLine& args) {
         if (auto lit = applyLightingChoice(*lighting, scene, *textures); !lit)
             throw UsageError("--env: " + lit.error().message);
 
-    auto renderer = gpu::createPopulationRenderer({backend, "matevo render"}, *textures);
+    auto renderer = createCommandRenderer(rendererRequest, *textures);
     auto images = renderer->render(std::span(&material.material, 1), scene, imageSize);
     if (!images) throw std::runtime_error(images.error().message);
     if (auto written = writeImage(images->front(), out); !written)

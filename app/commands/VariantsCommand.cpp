@@ -1,9 +1,8 @@
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +11,7 @@
 #include "OutputNeeds.h"
 #include "PresetOption.h"
 #include "RenderBackend.h"
+#include "StepwiseOutput.h"
 #include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
@@ -22,6 +22,7 @@
 #include "io/ImageFile.h"
 #include "io/OutputFolder.h"
 #include "variants/FindVariants.h"
+#include "variants/ShareResume.h"
 #include "variants/VariantBlockFiles.h"
 #include "variants/VariantBlocks.h"
 #include "variants/VariantFiles.h"
@@ -32,8 +33,9 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
     "                       [--size N] [--fitness-size N] [--max-evaluations N] [--hue]\n"
-    "                       [--backend gpu|cpu] [--out DIR] [--force] [--heatmap de00|flip]\n"
-    "                       [--json] [--block B [--shard I/K]]\n\n"
+    "                       [--backend gpu|cpu [--no-fallback]] [--out DIR] [--force]\n"
+    "                       [--heatmap de00|flip]\n"
+    "                       [--json] [--block B [--shard I/K] [--resume]]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
     "whose renders lie LO to HI mean CIEDE2000 from the target's and at least D from each other.\n"
     "The paper's bands: 0,1 not perceptible; 1,2 close observation; 2,10 at a glance.\n"
@@ -45,7 +47,9 @@ constexpr const char* kHelp =
     "  --hue                hue variety, beyond the paper: evolve the conductor base's kappa\n"
     "                       too (RGB, each in [1, 4]), so variants may differ in colour\n"
     "  --backend B          gpu (default; falls back to the CPU when no Vulkan device is usable)\n"
-    "                       or cpu\n"
+    "                       or cpu; the report's made_by names the version, back end and device\n"
+    "  --no-fallback        with the GPU: exit 1 when no Vulkan device is usable, rather than\n"
+    "                       rendering on the CPU (a farm that wants the GPU or nothing)\n"
     "  --out DIR            write DIR/report.json, DIR/target.png, DIR/contact_sheet.png and per\n"
     "                       variant DIR/variants/variant_NNN.json (for render --genome), .png\n"
     "                       and _heatmap.png; the folder holds one whole run, never a mix\n"
@@ -63,10 +67,17 @@ constexpr const char* kHelp =
     "                       I+K, I+2K, ...; `matevo merge` joins the K shares' folders into\n"
     "                       exactly the folder one run without --shard writes (needs --block\n"
     "                       and --out)\n"
+    "  --resume             keep the blocks an earlier run of the same request (and share)\n"
+    "                       completed in DIR and compute the rest: a run with --block commits\n"
+    "                       DIR after each block, so a kill -9 or a time limit loses at most\n"
+    "                       the block in progress. Also what a run does by itself when DIR holds\n"
+    "                       such a partial run; with --resume, DIR holding another request is\n"
+    "                       refused (exit 2) and an empty DIR starts afresh\n"
     "Exit status 3 when the request cannot be met (a band the family cannot reach, or more\n"
     "variants than fit D apart): a one-line message says what was found, and it is still\n"
     "written. SIGINT or SIGTERM stops the search at the next generation: the set found so\n"
-    "far is chosen and written, marked partial (exit 130 or 143).\n";
+    "far is chosen and written, marked partial (exit 130 or 143); with --block the block in\n"
+    "progress is left out, for a resumed run to compute.\n";
 
 constexpr int kMaxCount = 1000;          // in one search
 constexpr int kMaxBlockedCount = 10000;  // in blocks (a share's report stays well under 16 MiB)
@@ -80,6 +91,24 @@ Shard parseShard(const std::string& text) {
     shard.count = int(parseInteger(text.substr(slash + 1), "--shard K", 1, kMaxBlockedCount));
     shard.index = int(parseInteger(text.substr(0, slash), "--shard I", 0, shard.count - 1));
     return shard;
+}
+
+// The blocks an earlier run of this request left in `folder` to resume (ShareResume.h), or none:
+// no such run there (the claim of the folder then decides), or one that completed (unless
+// `insist`, --resume: then it is kept whole). With `insist`, a folder of another request is
+// refused.
+std::optional<ResumableBlocks> resumableBlocks(const std::string& folder, const BlockReport& header,
+                                               const std::optional<Shard>& shard, bool insist) {
+    std::error_code error;
+    if (!std::filesystem::exists(std::filesystem::path(folder) / "report.json", error))
+        return std::nullopt;
+    auto kept = readResumableBlocks(folder, header, shard);
+    if (!kept) {
+        if (insist) throw UsageError("--resume: " + kept.error().message);
+        return std::nullopt;
+    }
+    if (kept->missing.empty() && !insist) return std::nullopt;
+    return std::move(*kept);
 }
 
 double secondsSince(std::chrono::steady_clock::time_point started) {
@@ -101,6 +130,7 @@ struct VariantsJob {
     ImageMetric heatmapMetric = ImageMetric::DeltaE00;
     bool asJson = false;
     std::chrono::steady_clock::time_point started;
+    nlohmann::ordered_json madeBy;  // RenderBackend.h's madeBy
 };
 
 // One search and the set chosen from it: the whole set, or one block.
@@ -111,23 +141,25 @@ struct FoundSet {
 
 FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
                  const std::string& progressLabel) {
-    const bool showProgress = ::isatty(STDERR_FILENO) != 0;
     VariantSearchHooks hooks;
     hooks.stop = [] { return stopRequested() != 0; };
-    if (showProgress)
-        hooks.onGeneration = [&progressLabel](const VariantSearchProgress& progress) {
-            std::fprintf(stderr, "\r%s%s%zu evaluations, %zu in the archive",
-                         messagePrefix().c_str(), progressLabel.c_str(), progress.evaluations,
-                         progress.archived);
-        };
+    hooks.onGeneration = [&progressLabel](const VariantSearchProgress& progress) {
+        printProgress(progressLabel + std::to_string(progress.evaluations) + " evaluations, " +
+                      std::to_string(progress.archived) + " in the archive");
+    };
     auto found = findVariants({job.preset.target, job.preset.family, job.preset.baseKappa}, request,
                               job.settings, job.fitnessRender, job.outputRender, hooks);
-    if (showProgress) std::fputc('\n', stderr);
+    printProgress("");
     if (!found) throw std::runtime_error(found.error().message);
     const VariantSearchProgress& progress = found->progress;
-    return {std::move(found->set),
-            VariantRun{request, job.size, job.fitnessSize, progress.evaluations, progress.archived,
-                       progress.closestDeltaE, 0.0}};
+    return {std::move(found->set), VariantRun{request,
+                                              job.size,
+                                              job.fitnessSize,
+                                              progress.evaluations,
+                                              progress.archived,
+                                              progress.closestDeltaE,
+                                              0.0,
+                                              {}}};
 }
 
 void commit(std::optional<OutputFolder>& output) {
@@ -167,6 +199,7 @@ int markPartial(nlohmann::ordered_json& report) {
 int runOneSet(const VariantsJob& job) {
     FoundSet found = findSet(job, job.request, "");
     found.run.wallSeconds = secondsSince(job.started);
+    found.run.madeBy = job.madeBy;
     nlohmann::ordered_json report = variantReport(job.preset, found.run, found.set);
     const int signal = markPartial(report);
     if (job.output) {
@@ -181,37 +214,53 @@ int runOneSet(const VariantsJob& job) {
                   job.output.has_value(), job.asJson, found.run.wallSeconds);
 }
 
-// The set in blocks (VariantBlocks.h): `blocks` are the ones this process computes, all of
-// them or one share's. Each block's files are written as soon as it is found.
+void writeReport(const OutputFolder& output, const nlohmann::ordered_json& report) {
+    if (auto written = writeFileAtomically(output.staging() / "report.json", report.dump(2) + "\n");
+        !written)
+        throw UsageError("--out: " + output.userFacing(written.error().message));
+}
+
+// The set in blocks (VariantBlocks.h): `blocks` are the ones this process is to deliver, all of
+// them or one share's; `parts` holds the header and the blocks an earlier run completed
+// (ShareResume.h), the others are computed. The folder is committed after each block
+// (StepwiseOutput.h), with a report that lists the blocks still missing.
 int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vector<int>& blocks,
-              const std::optional<Shard>& shard) {
-    const VariantRun whole{job.request, job.size, job.fitnessSize, 0, 0, 0, 0};
-    BlockReport parts = blockReportHeader(job.preset, whole, plan);
+              const std::optional<Shard>& shard, BlockReport parts) {
+    std::vector<int> kept;
+    for (const auto& entry : parts.blocks) kept.push_back(entry.at("index").get<int>());
     // Rendered here, not taken from a block: a share may have no block at all.
     auto target = job.outputRender(std::span(&job.preset.target, 1));
     if (!target) throw std::runtime_error(target.error().message);
+    std::optional<StepwiseOutput> steps;
+    if (job.output) {
+        if (auto written = writeImage(target->front(), job.output->staging() / "target.png");
+            !written)
+            throw UsageError("--out: " + job.output->userFacing(written.error().message));
+        steps.emplace(job.output);
+    }
     for (const int block : blocks) {
+        if (std::find(kept.begin(), kept.end(), block) != kept.end()) continue;
         if (stopRequested()) break;
         const std::string label =
             "block " + std::to_string(block + 1) + " of " + std::to_string(plan.blocks()) + ": ";
         FoundSet found = findSet(job, blockRequest(job.request, plan, block), label);
+        // A block cut short is left out: a resumed run computes it from its start, as one
+        // run never stopped does.
+        if (stopRequested()) break;
         addBlock(parts, job.preset, found.run, found.set, plan, block);
         if (job.output) {
             if (auto written = writeVariantBlock(job.output->staging(), job.target, found.set, plan,
                                                  block, *job.font, job.heatmapMetric);
                 !written)
                 throw UsageError("--out: " + job.output->userFacing(written.error().message));
+            writeReport(*job.output, assembleBlockReport(parts, shard));
+            steps->step();
         }
     }
     nlohmann::ordered_json report = assembleBlockReport(std::move(parts), shard);
     const int signal = markPartial(report);
     if (job.output) {
-        const auto staging = job.output->staging();
-        if (auto written = writeImage(target->front(), staging / "target.png"); !written)
-            throw UsageError("--out: " + job.output->userFacing(written.error().message));
-        if (auto written = writeFileAtomically(staging / "report.json", report.dump(2) + "\n");
-            !written)
-            throw UsageError("--out: " + job.output->userFacing(written.error().message));
+        writeReport(*job.output, report);
         commit(job.output);
     }
     if (job.asJson) std::printf("%s\n", report.dump(2).c_str());
@@ -251,8 +300,7 @@ int runVariants(CommandLine& args) {
     VariantSearchSettings settings;
     if (auto budget = args.integerOption("--max-evaluations", 1, 1000000))
         settings.maxEvaluations = int(*budget);
-    const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    const gpu::RendererRequest rendererRequest = backendOptions(args, "matevo variants");
     if (args.flag("--hue")) request.kappaGenes = KappaGenes::On;
     const auto outDir = args.option("--out");
     const std::string heatmapName = args.option("--heatmap").value_or("de00");
@@ -262,10 +310,15 @@ int runVariants(CommandLine& args) {
     args.onlyWith("--heatmap", "--out");
     const bool replaceOutput = args.flag("--force");
     const bool asJson = args.flag("--json");
+    const bool resume = args.flag("--resume");
     args.onlyWith("--force", "--out");
     args.onlyWith("--shard", "--block");
     args.onlyWith("--shard", "--out");
+    args.onlyWith("--resume", "--block");
+    args.onlyWith("--resume", "--out");
     args.finish();
+    if (resume && replaceOutput)
+        throw UsageError("--resume keeps what DIR holds, --force replaces it: give one of them");
     const VariantBlocks plan{request.count, int(blockSize.value_or(request.count))};
     const std::optional<Shard> shard =
         shardText ? std::optional<Shard>(parseShard(*shardText)) : std::nullopt;
@@ -277,25 +330,43 @@ int runVariants(CommandLine& args) {
     installStopSignalHandlers();
     // Refused before the search: a folder with other files, or one we cannot write beside, no
     // font for the contact sheets, and work past the memory limit.
+    const VariantRun whole{request, size, fitnessSize, 0, 0, 0, 0, {}};
+    BlockReport parts = blockReportHeader(choice.preset, whole, plan);
+    std::optional<ResumableBlocks> kept;
+    if (outDir && blockSize && !replaceOutput)
+        kept = resumableBlocks(*outDir, parts, shard, resume);
     std::optional<OutputFolder> output;
     std::optional<Font> font;
     if (outDir) {
-        output.emplace(claimOutputFolder(*outDir, replaceOutput));
+        output.emplace(claimOutputFolder(*outDir, replaceOutput || kept));
         font = requireChartFont();
+    }
+    if (kept) {
+        StepwiseOutput(output).keepCommitted();
+        std::move(kept->blocks.begin(), kept->blocks.end(), std::back_inserter(parts.blocks));
+        std::move(kept->variants.begin(), kept->variants.end(), std::back_inserter(parts.variants));
     }
     checkWorkEstimate(variantsEstimate(std::min(request.count, plan.blockSize), size, fitnessSize,
                                        settings.maxEvaluations, settings.population,
-                                       int(blocks.size())));
+                                       int(kept ? kept->missing.size() : blocks.size())));
 
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);
     if (!textures) throw UsageError(textures.error().message);
     // One renderer for the search and the check, so tables and textures are uploaded once.
-    gpu::RendererRequest rendererRequest;
-    rendererRequest.backend = backend;
-    rendererRequest.who = "matevo variants";
     const std::shared_ptr<PopulationRenderer> renderer =
-        gpu::createPopulationRenderer(rendererRequest, *textures);
+        createCommandRenderer(rendererRequest, *textures);
+    parts.header["made_by"] = madeBy(*renderer);
+    if (kept) {
+        if (auto conflict = madeByConflict(kept->madeBy, parts.header["made_by"]))
+            throw UsageError("--out: " + *outDir + "/report.json: " + *conflict +
+                             ": the kept blocks were made by " + kept->madeBy.dump() +
+                             ", this run is " + parts.header["made_by"].dump() +
+                             "; resume with the same back end and version, or --force");
+        printNotice("resuming " + shareName(shard) + " in " + *outDir + ": " +
+                    std::to_string(parts.blocks.size()) + " block(s) kept, " +
+                    std::to_string(kept->missing.size()) + " to compute");
+    }
     auto renderAt = [&](int side) {
         return asStoredInPng(
             renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, side));
@@ -312,8 +383,9 @@ int runVariants(CommandLine& args) {
                           font,
                           *heatmapMetric,
                           asJson,
-                          started};
-    return blockSize ? runBlocks(job, plan, blocks, shard) : runOneSet(job);
+                          started,
+                          parts.header["made_by"]};
+    return blockSize ? runBlocks(job, plan, blocks, shard, std::move(parts)) : runOneSet(job);
 }
 
 }  // namespace matevo::cli

@@ -1,10 +1,11 @@
 #pragma once
 // How many threads the CPU's parallel loops use: MATEVO_THREADS when it holds a whole number
 // from 1 to 1024 (to run with fewer threads than cores, or to check that a result does not
-// depend on the count), else every hardware thread.
-#include <algorithm>
+// depend on the count), else the CPUs this process may use (its affinity mask and its cgroup's
+// CPU quota, CgroupLimits.h), never the whole machine's when a scheduler gave it fewer.
 #include <cstdlib>
-#include <thread>
+
+#include "common/CgroupLimits.h"
 
 namespace matevo {
 
@@ -15,7 +16,7 @@ inline unsigned workerThreadCount() {
             const long value = std::strtol(text, &end, 10);
             if (end != text && *end == '\0' && value >= 1 && value <= 1024) return unsigned(value);
         }
-        return std::max(std::thread::hardware_concurrency(), 1u);
+        return usableCpusOfProcess();
     }();
     return count;
 }

@@ -51,9 +51,9 @@ GaSettings runGaSettings(const ExperimentTarget& target, const ExperimentSetting
 
 // Every metric's runs, metric by metric in settings order, each run's best individual and
 // fitness; meanDeltaE00 is left 0. Runs of a genotype metric go in parallel on up to
-// hardware_concurrency() threads; runs of the image metric one after another, each generation
-// rendered in one batch by `fitnessRender` (at settings.fitnessSize; needed only for the image
-// metric), on the same seeds. After a stop request (SIGINT, SIGTERM) the runs not yet started
+// workerThreadCount() threads (common/WorkerThreads.h); runs of the image metric one after
+// another, each generation rendered in one batch by `fitnessRender` (at settings.fitnessSize;
+// needed only for the image metric), on the same seeds. After a stop request (SIGINT, SIGTERM) the runs not yet started
 // are left out, and the experiment returns only the runs that were completed and scored.
 // An Error when the image metric is asked for without a renderer or a render failed.
 Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,

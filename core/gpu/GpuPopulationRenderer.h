@@ -32,6 +32,7 @@ public:
         const DeltaE00Pass::Colormap& colormap);
 
     std::string name() const override;
+    RenderBackend backend() const override { return RenderBackend::Gpu; }
     Status setTextures(const SceneTextures& textures) override;
     Result<std::vector<Image>> render(std::span<const MaterialInstance> materials,
                                       const SceneSettings& scene, int size) override;

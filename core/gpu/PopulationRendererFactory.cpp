@@ -21,15 +21,26 @@ Result<std::unique_ptr<GpuPopulationRenderer>> createGpuRenderer(const RendererR
 
 }  // namespace
 
-std::unique_ptr<PopulationRenderer> createPopulationRenderer(const RendererRequest& request,
-                                                             const SceneTextures& textures) {
+Result<std::unique_ptr<PopulationRenderer>> tryCreatePopulationRenderer(
+    const RendererRequest& request, const SceneTextures& textures) {
     if (request.backend == RenderBackend::Gpu) {
         auto renderer = createGpuRenderer(request, textures);
-        if (renderer) return std::move(renderer).value();
+        if (renderer) return std::unique_ptr<PopulationRenderer>(std::move(renderer).value());
+        if (request.noFallback)
+            return Error{"no usable Vulkan device (" + renderer.error().message +
+                         "), and --no-fallback forbids falling back to the CPU"};
         std::fprintf(stderr, "%s: no usable Vulkan device (%s); rendering on the CPU instead\n",
                      request.who.c_str(), renderer.error().message.c_str());
     }
-    return std::make_unique<CpuPopulationRenderer>(textures, request.cancelled);
+    return std::unique_ptr<PopulationRenderer>(
+        std::make_unique<CpuPopulationRenderer>(textures, request.cancelled));
+}
+
+std::unique_ptr<PopulationRenderer> createPopulationRenderer(const RendererRequest& asked,
+                                                             const SceneTextures& textures) {
+    RendererRequest request = asked;
+    request.noFallback = false;
+    return std::move(tryCreatePopulationRenderer(request, textures)).value();
 }
 
 }  // namespace matevo::gpu

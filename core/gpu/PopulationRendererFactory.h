@@ -2,7 +2,8 @@
 // The one place that chooses between the GPU and the CPU renderer. Asked for the GPU, it renders
 // on the given device, or on a headless device of its own; when that is not possible it prints
 // the one-line fallback notice on stderr and hands back the CPU reference renderer, which draws
-// the same pictures (to within the cross-check of tests/gpu).
+// the same pictures (to within the cross-check of tests/gpu), unless the request forbids the
+// fallback (the commands' --no-fallback: a farm that wants the GPU or nothing).
 #include <functional>
 #include <memory>
 #include <string>
@@ -26,8 +27,14 @@ struct RendererRequest {
     GpuContextOptions headless;
     // The CPU renderer asks this between images and stops when it answers true.
     std::function<bool()> cancelled;
+    // No CPU renderer in place of an unusable GPU: tryCreatePopulationRenderer fails instead.
+    bool noFallback = false;
 };
 
+// The renderer asked for; an Error only with `noFallback`, saying why the GPU is not usable.
+Result<std::unique_ptr<PopulationRenderer>> tryCreatePopulationRenderer(
+    const RendererRequest& request, const SceneTextures& textures);
+// The same, always falling back (`noFallback` is not looked at).
 std::unique_ptr<PopulationRenderer> createPopulationRenderer(const RendererRequest& request,
                                                              const SceneTextures& textures);
 

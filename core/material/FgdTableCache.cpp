@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/Fnv1a.h"
+#include "common/StatusOutput.h"
 #include "io/AtomicFile.h"
 #include "io/InputFile.h"
 
@@ -137,10 +138,8 @@ FgdTables loadOrBuildFgdTables(const std::filesystem::path& cacheDirectory,
     std::error_code error;
     if (std::filesystem::symlink_status(file, error).type() !=
         std::filesystem::file_type::not_found)
-        std::fprintf(stderr, "matevo: notice: rebuilding the table cache: %s\n",
-                     cached.error().message.c_str());
-    std::fprintf(stderr, "matevo: building the FGD/TIR tables (once; cached in %s)\n",
-                 file.string().c_str());
+        notice("notice: rebuilding the table cache: " + cached.error().message);
+    notice("building the FGD/TIR tables (once; cached in " + file.string() + ")");
     int shownPercent = -1;
     buildPermille.store(0);
     FgdTables tables = generateFgdTables(settings, [&shownPercent](double fraction) {
@@ -148,9 +147,12 @@ FgdTables loadOrBuildFgdTables(const std::filesystem::path& cacheDirectory,
         const int percent = int(fraction * 100.0);
         if (percent == shownPercent) return;
         shownPercent = percent;
-        std::fprintf(stderr, "\rmatevo: tables %3d%%", percent);
+        char text[32];
+        std::snprintf(text, sizeof text, "tables %3d%%", percent);
+        progress(text);
     });
-    std::fprintf(stderr, "\rmatevo: tables done\n");
+    progress("");
+    notice("tables built");
     buildPermille.store(-1);
     if (auto written = writeFgdTables(file, tables, settings); !written)
         std::fprintf(stderr, "matevo: warning: tables not cached: %s\n",

@@ -16,6 +16,7 @@ public:
     explicit CpuPopulationRenderer(SceneTextures textures, std::function<bool()> cancelled = {});
 
     std::string name() const override { return "CPU"; }
+    RenderBackend backend() const override { return RenderBackend::Cpu; }
     Status setTextures(const SceneTextures& textures) override;
     Result<std::vector<Image>> render(std::span<const MaterialInstance> materials,
                                       const SceneSettings& scene, int size) override;

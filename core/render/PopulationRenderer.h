@@ -53,6 +53,8 @@ public:
 
     // "GPU (llvmpipe)" or "CPU", for status lines and reports.
     virtual std::string name() const = 0;
+    // Which back end this is: the GPU asked for may have fallen back to the CPU.
+    virtual RenderBackend backend() const = 0;
 
     // The textures every later render uses (a preset with other textures was chosen).
     virtual Status setTextures(const SceneTextures& textures) = 0;

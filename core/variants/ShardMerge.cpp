@@ -8,6 +8,7 @@
 #include "io/InputFile.h"
 #include "io/MaterialFile.h"
 #include "io/TextFile.h"
+#include "variants/ShareResume.h"
 #include "variants/VariantBlockFiles.h"
 #include "variants/VariantBlocks.h"
 #include "variants/VariantFiles.h"
@@ -16,9 +17,6 @@ namespace matevo {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The fields that say which whole a share belongs to; every share must have them equal.
-constexpr const char* kHeaderFields[] = {"preset", "family", "target", "request"};
 
 struct ShareReport {
     fs::path folder;
@@ -39,7 +37,7 @@ Result<ShareReport> readShare(const fs::path& folder) {
     if (!share.report.contains("shard"))
         return fieldError(folder, "shard", "missing (not written by matevo variants --shard I/K)");
     try {
-        for (const char* field : kHeaderFields)
+        for (const char* field : kBlockHeaderFields)
             if (!share.report.contains(field)) return fieldError(folder, field, "missing");
         share.shard = {share.report.at("shard").at("index").get<int>(),
                        share.report.at("shard").at("count").get<int>()};
@@ -79,10 +77,23 @@ Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::
             blocks.push_back(block.at("index").get<int>());
             joined.blocks.push_back(block);
         }
-        if (blocks != blocksOfShard(plan, share.shard))
+        const std::vector<int> expected = blocksOfShard(plan, share.shard);
+        if (blocks != expected) {
+            const bool partial =
+                std::includes(expected.begin(), expected.end(), blocks.begin(), blocks.end());
+            if (partial)
+                return fieldError(
+                    share.folder, "blocks",
+                    shareName(share.shard) + " is partial (" +
+                        std::to_string(expected.size() - blocks.size()) + " of its " +
+                        std::to_string(expected.size()) +
+                        " blocks missing): resume it by running its `matevo variants ... --shard " +
+                        std::to_string(share.shard.index) + "/" +
+                        std::to_string(share.shard.count) + " --out " + displayPath(share.folder) +
+                        "` again (add --resume to insist), then merge");
             return fieldError(share.folder, "blocks",
-                              "not the blocks of share " + std::to_string(share.shard.index) + "/" +
-                                  std::to_string(share.shard.count));
+                              "not the blocks of " + shareName(share.shard));
+        }
         for (const auto& variant : share.report.at("variants")) {
             const auto index = variant.at("index").get<int>();
             const int block = variant.at("block").get<int>();
@@ -115,6 +126,26 @@ Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::
     return Ok{};
 }
 
+nlohmann::ordered_json madeByOf(const ShareReport& share) {
+    return share.report.value("made_by", nlohmann::ordered_json());
+}
+
+// The shares' common "made_by"; the device lists each share's when they differ.
+nlohmann::ordered_json joinedMadeBy(const std::vector<const ShareReport*>& shares) {
+    nlohmann::ordered_json madeBy = madeByOf(*shares.front());
+    std::vector<std::string> devices;
+    for (const ShareReport* share : shares) {
+        const nlohmann::ordered_json made = madeByOf(*share);
+        const std::string device = made.is_object() ? made.value("device", "") : "";
+        if (std::find(devices.begin(), devices.end(), device) == devices.end())
+            devices.push_back(device);
+    }
+    std::string joined;
+    for (const std::string& device : devices) joined += (joined.empty() ? "" : "; ") + device;
+    madeBy["device"] = joined;
+    return madeBy;
+}
+
 }  // namespace
 
 Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
@@ -140,11 +171,16 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
 
     std::vector<const ShareReport*> byIndex(std::size_t(shareCount), nullptr);
     for (const ShareReport& share : shares) {
-        for (const char* field : kHeaderFields)
+        for (const char* field : kBlockHeaderFields)
             if (share.report[field] != first.report[field])
                 return fieldError(share.folder, field,
                                   "differs from " + displayPath(first.folder) +
                                       "'s: the shares are not of one request");
+        if (auto conflict = madeByConflict(madeByOf(share), madeByOf(first)))
+            return fieldError(share.folder, *conflict,
+                              madeByOf(share).dump() + " differs from " +
+                                  displayPath(first.folder) + "'s " + madeByOf(first).dump() +
+                                  ": shares of different back ends or versions are never merged");
         if (share.shard.count != shareCount || share.shard.index < 0 ||
             share.shard.index >= shareCount)
             return fieldError(share.folder, "shard",
@@ -182,7 +218,8 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
                          ")"};
     }
     BlockReport joined;
-    for (const char* field : kHeaderFields) joined.header[field] = first.report[field];
+    for (const char* field : kBlockHeaderFields) joined.header[field] = first.report[field];
+    if (first.report.contains("made_by")) joined.header["made_by"] = joinedMadeBy(byIndex);
     for (const ShareReport* share : byIndex)
         if (auto copied = copyShare(*share, plan, dir, joined); !copied) return copied.error();
     if (auto written = writeFileAtomically(dir / "target.png", *target); !written)

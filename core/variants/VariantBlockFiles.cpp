@@ -24,6 +24,28 @@ void sortByIndex(std::vector<nlohmann::ordered_json>& entries) {
 
 }  // namespace
 
+std::vector<int> missingBlocks(const BlockReport& parts, const std::optional<Shard>& shard) {
+    const nlohmann::ordered_json& request = parts.header.at("request");
+    const VariantBlocks plan{request.at("count").get<int>(), request.at("block").get<int>()};
+    std::vector<int> missing;
+    for (const int block : blocksOfShard(plan, shard.value_or(Shard{})))
+        if (std::none_of(parts.blocks.begin(), parts.blocks.end(),
+                         [block](const auto& entry) { return int(indexOf(entry)) == block; }))
+            missing.push_back(block);
+    return missing;
+}
+
+std::optional<std::string> madeByConflict(const nlohmann::ordered_json& a,
+                                          const nlohmann::ordered_json& b) {
+    auto field = [](const nlohmann::ordered_json& madeBy, const char* key) {
+        return madeBy.is_object() ? madeBy.value(key, nlohmann::ordered_json())
+                                  : nlohmann::ordered_json();
+    };
+    for (const char* key : {"matevo", "backend"})
+        if (field(a, key) != field(b, key)) return std::string("made_by.") + key;
+    return std::nullopt;
+}
+
 BlockReport blockReportHeader(const Preset& preset, const VariantRun& whole,
                               const VariantBlocks& plan) {
     nlohmann::ordered_json request = requestJson(whole);
@@ -89,6 +111,7 @@ nlohmann::ordered_json assembleBlockReport(BlockReport parts, const std::optiona
     }
     if (!std::isfinite(smallest)) smallest = 0;
     const nlohmann::ordered_json& request = parts.header.at("request");
+    const std::vector<int> missing = missingBlocks(parts, shard);
     char text[512];
     std::snprintf(text, sizeof text,
                   "%zu of %d variants in %zu block(s) of up to %d, band %g-%g, at least %g apart "
@@ -99,6 +122,9 @@ nlohmann::ordered_json assembleBlockReport(BlockReport parts, const std::optiona
     std::string summary = text;
     if (!duplicates.empty())
         summary += "; " + std::to_string(duplicates.size()) + " genome(s) repeated across blocks";
+    if (!missing.empty())
+        summary += "; " + std::to_string(missing.size()) +
+                   " block(s) not computed yet (run the same command again to resume)";
     if (shard)
         summary = "share " + std::to_string(shard->index) + "/" + std::to_string(shard->count) +
                   ": " + summary;
@@ -109,8 +135,10 @@ nlohmann::ordered_json assembleBlockReport(BlockReport parts, const std::optiona
     report["found"] = parts.variants.size();
     report["variants"] = std::move(parts.variants);
     report["duplicates"] = std::move(duplicates);
-    report["met"] =
-        everyBlockMet && report["duplicates"].empty() && report["found"].get<int>() == asked;
+    report["met"] = everyBlockMet && missing.empty() && report["duplicates"].empty() &&
+                    report["found"].get<int>() == asked;
+    if (!missing.empty()) report["partial"] = true;
+    report["missing_blocks"] = missing;
     report["summary"] = summary;
     report["distinct_within"] = "block";
     report["smallest_pairwise_de00"] = smallest;

@@ -34,15 +34,29 @@ struct BlockReport {
         variants;  // per variant: index, block, files, ΔE00s, genome
 };
 
+// The header's fields: they say which whole a block belongs to, so shares that merge and a run
+// that resumes a share must have them equal.
+inline constexpr const char* kBlockHeaderFields[] = {"preset", "family", "target", "request"};
+
+// Which field of two reports' "made_by" ({"matevo": version, "backend", "device"}) forbids
+// joining their blocks (merge, a resumed share): "made_by.matevo" or "made_by.backend"; none
+// when both agree. The devices may differ (merge compares the target renders themselves).
+std::optional<std::string> madeByConflict(const nlohmann::ordered_json& a,
+                                          const nlohmann::ordered_json& b);
+
 // The header of a request cut into `plan`'s blocks; `whole` is the request of the whole set.
 BlockReport blockReportHeader(const Preset& preset, const VariantRun& whole,
                               const VariantBlocks& plan);
 // Adds block `block` of the preset's set: `run` and `set` are its search and its set.
 void addBlock(BlockReport& report, const Preset& preset, const VariantRun& run,
               const VariantSet& set, const VariantBlocks& plan, int block);
+// The blocks of the whole (or of `shard`) that `parts` does not hold yet, in increasing order.
+std::vector<int> missingBlocks(const BlockReport& parts, const std::optional<Shard>& shard);
 // The report: the header; blocks and variants in index order; identical genomes in different
 // blocks ("duplicates", pairs of indices); whether every block met its request and no genome
 // repeats, with a one-line summary; the totals. A share's report also says which share it is.
+// A report of a run that has not computed all its blocks yet (stopped, or a checkpoint of a
+// running share) is "partial", lists them as "missing_blocks" and is never "met".
 nlohmann::ordered_json assembleBlockReport(BlockReport report, const std::optional<Shard>& shard);
 
 // "contact_sheets/block_007.png"

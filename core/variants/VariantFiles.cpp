@@ -104,20 +104,22 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
         variants.push_back(variantEntry(preset, set, i, i, 0, nearest));
     const VariantRequest& request = run.request;
     const bool met = fulfils(set, request);
-    return {{"preset", preset.name},
-            {"family", describe(preset.family)},
-            {"target", genomeToJson(preset.target)},
-            {"request", requestJson(run)},
-            {"met", met},
-            {"summary", variantSummary(run, set)},
-            {"variants", std::move(variants)},
-            {"pairwise_de00", set.pairwise},
-            {"smallest_pairwise_de00", set.smallestPairwise},
-            {"evaluations", run.evaluations},
-            {"archived", run.archived},
-            {"output_renders", set.outputRenders},
-            {"wall_time_s", run.wallSeconds},
-            {"seed", request.seed}};
+    nlohmann::ordered_json report = {{"preset", preset.name},
+                                     {"family", describe(preset.family)},
+                                     {"target", genomeToJson(preset.target)},
+                                     {"request", requestJson(run)}};
+    if (!run.madeBy.is_null()) report["made_by"] = run.madeBy;
+    report.update(nlohmann::ordered_json{{"met", met},
+                                         {"summary", variantSummary(run, set)},
+                                         {"variants", std::move(variants)},
+                                         {"pairwise_de00", set.pairwise},
+                                         {"smallest_pairwise_de00", set.smallestPairwise},
+                                         {"evaluations", run.evaluations},
+                                         {"archived", run.archived},
+                                         {"output_renders", set.outputRenders},
+                                         {"wall_time_s", run.wallSeconds},
+                                         {"seed", request.seed}});
+    return report;
 }
 
 std::string variantSummary(const VariantRun& run, const VariantSet& set) {

@@ -38,6 +38,8 @@ struct VariantRun {
     std::size_t archived = 0;     // candidates the search held at its end
     double closestDeltaE = 0;     // the render nearest the band the search saw
     double wallSeconds = 0;
+    // What rendered it, {"matevo": version, "backend", "device"}; null when not known.
+    nlohmann::ordered_json madeBy;
 };
 
 // The renders as the written PNG files will hold them (quantizeAsPng), so that a set checked on
@@ -59,9 +61,9 @@ nlohmann::ordered_json variantEntry(const Preset& preset, const VariantSet& set,
 // sizes.
 nlohmann::ordered_json requestJson(const VariantRun& run);
 
-// The report: request, per variant (file, ΔE00 to the target, to its nearest sibling, genome),
-// the pairwise ΔE00 matrix, the smallest pairwise distance, evaluations, wall time, seed, and
-// whether the request was met with a one-line summary.
+// The report: request, what made it (when known), per variant (file, ΔE00 to the target, to its
+// nearest sibling, genome), the pairwise ΔE00 matrix, the smallest pairwise distance, evaluations,
+// wall time, seed, and whether the request was met with a one-line summary.
 nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
                                      const VariantSet& set);
 

@@ -4,6 +4,7 @@
 // by name, `matevo presets`, --version and `compare --fail-above`.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "io/ImageFile.h"
@@ -118,6 +119,24 @@ TEST(CliConventions, AnExrOutputWithoutTheImageModuleIsRefusedBeforeTheWork) {
     const auto png = runCommand(alone + "render" + preset + " --backend cpu --size 8 --out " +
                                 shellQuoted(scratch / "x.png"));
     EXPECT_EQ(png.exitCode, 0) << png.err;
+}
+
+// A log (stderr not a terminal) gets each notice as one "matevo COMMAND: " line and no progress
+// redrawn with \r, as when the FGD/TIR tables are built for the first time; --quiet, nothing.
+TEST(CliConventions, ALogGetsOneLinePerNoticeAndNoProgress) {
+    testing::ScratchFolder scratch("matevo_log_lines");
+    const std::string render = " '" MATEVO_BINARY_DIR "/matevo' render --size 16 --backend cpu";
+    const auto logged = runCommand("XDG_CACHE_HOME=" + shellQuoted(scratch / "cache") + render +
+                                   " --out " + shellQuoted(scratch / "a.png"));
+    ASSERT_EQ(logged.exitCode, 0) << logged.err;
+    EXPECT_EQ(logged.err.find('\r'), std::string::npos) << logged.err;
+    EXPECT_EQ(std::count(logged.err.begin(), logged.err.end(), '\n'), 2) << logged.err;
+    EXPECT_EQ(logged.err.rfind("matevo render: building the FGD/TIR tables", 0), 0u) << logged.err;
+    EXPECT_NE(logged.err.find("\nmatevo render: tables built\n"), std::string::npos) << logged.err;
+    const auto quiet = runCommand("XDG_CACHE_HOME=" + shellQuoted(scratch / "cache2") + render +
+                                  " --quiet --out " + shellQuoted(scratch / "b.png"));
+    ASSERT_EQ(quiet.exitCode, 0) << quiet.err;
+    EXPECT_EQ(quiet.err, "");
 }
 
 TEST(CliConventions, VersionAndHelp) {

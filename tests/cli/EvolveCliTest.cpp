@@ -194,8 +194,9 @@ TEST(EvolveCli, HelpTellsTheOptions) {
 namespace matevo {
 namespace {
 
-// --checkpoint saves every generation; --resume continues. A run stopped after 3 of 7 generations
-// and resumed prints exactly what the uninterrupted run prints.
+// --checkpoint saves (every 10 s, every N-th generation with --checkpoint-every N, and at the
+// end); --resume continues. A run stopped after 3 of 7 generations and resumed prints exactly
+// what the uninterrupted run prints.
 TEST(EvolveCli, AResumedRunEqualsTheUninterruptedOne) {
     const fs::path folder = fs::temp_directory_path() / ("matevo_resume_" +
                                                          std::to_string(::getpid()));
@@ -204,14 +205,16 @@ TEST(EvolveCli, AResumedRunEqualsTheUninterruptedOne) {
     const std::string settings = "--population 16 --seed 11 --elitism 1 --json ";
     const auto uninterrupted = runMatevo("evolve " + settings + "--generations 7");
     ASSERT_EQ(uninterrupted.exitCode, 0) << uninterrupted.err;
-    const auto stopped =
-        runMatevo("evolve " + settings + "--generations 3 --checkpoint '" + checkpoint + "'");
+    const auto stopped = runMatevo("evolve " + settings + "--generations 3 --checkpoint-every 2 " +
+                                   "--checkpoint '" + checkpoint + "'");
     ASSERT_EQ(stopped.exitCode, 0) << stopped.err;
     ASSERT_TRUE(fs::exists(checkpoint));
     const auto resumed =
         runMatevo("evolve " + settings + "--generations 7 --resume '" + checkpoint + "'");
     ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
     EXPECT_EQ(resumed.out, uninterrupted.out);
+
+    EXPECT_EQ(runMatevo("evolve --checkpoint-every 2").exitCode, 2);
 
     // A checkpoint of another run is refused, naming what differs.
     const auto otherSeed = runMatevo("evolve --population 16 --seed 12 --elitism 1 "

@@ -49,7 +49,8 @@ TEST(JsonOrder, EvolveReportAndItsFile) {
         "--json --out " +
         shellQuoted(scratch / "run"));
     EXPECT_EQ(keysOf(report), (Keys{"target", "config", "generations", "population", "best",
-                                    "best_material", "candidates_written"}));
+                                    "best_material", "candidates_written", "made_by"}));
+    EXPECT_EQ(report["made_by"]["backend"], "cpu");
     EXPECT_EQ(keysOf(report["target"]), kGenomeKeys);
     EXPECT_EQ(keysOf(report["config"]),
               (Keys{"preset", "family", "population", "generations", "metric", "weights",
@@ -70,9 +71,12 @@ TEST(JsonOrder, VariantsReportAndMaterialFiles) {
         "--out " +
         shellQuoted(scratch / "set"));
     EXPECT_EQ(keysOf(report),
-              (Keys{"preset", "family", "target", "request", "met", "summary", "variants",
-                    "pairwise_de00", "smallest_pairwise_de00", "evaluations", "archived",
-                    "output_renders", "wall_time_s", "seed"}));
+              (Keys{"preset", "family", "target", "request", "made_by", "met", "summary",
+                    "variants", "pairwise_de00", "smallest_pairwise_de00", "evaluations",
+                    "archived", "output_renders", "wall_time_s", "seed"}));
+    EXPECT_EQ(keysOf(report["made_by"]), (Keys{"matevo", "backend", "device"}));
+    EXPECT_EQ(report["made_by"]["backend"], "cpu");
+    EXPECT_EQ(report["made_by"]["device"], "CPU");
     EXPECT_EQ(keysOf(report["request"]),
               (Keys{"count", "band", "min_apart", "seed", "hue_variety", "size", "fitness_size"}));
     ASSERT_FALSE(report["variants"].empty());

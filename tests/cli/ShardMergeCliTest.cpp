@@ -1,12 +1,17 @@
 // `matevo variants --block B --shard I/K` and `matevo merge` end to end through the real
 // executable: K shares merged (in any order) are byte for byte the folder one run without
-// --shard writes; one block is the plain set; mistakes are refused before anything is written.
+// --shard writes; one block is the plain set; mistakes are refused before anything is written;
+// a share killed (SIGKILL) or stopped (SIGTERM) part way resumes to the same bytes.
+#include <signal.h>
+
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -149,6 +154,125 @@ TEST(ShardMerge, MistakesExitTwoWithOneLineAndWriteNothing) {
     // And the right shares join.
     EXPECT_EQ(runMatevo("merge " + a1 + " " + a0 + " --out " + shellQuoted(out)).exitCode, 0);
     expectSameFiles(folder / "whole", out);
+}
+
+// Six blocks of two, share 0/2 computing three of them: long enough to be killed between blocks.
+const std::string kResumable =
+    "variants --preset validation_metal --count 12 --block 2 --band 2,5 --min-apart 2 --seed 5"
+    " --size 32 --fitness-size 16 --max-evaluations 400 --backend cpu";
+
+std::size_t filesIn(const fs::path& folder) {
+    return std::size_t(std::distance(fs::directory_iterator(folder), {}));
+}
+
+nlohmann::json readReport(const fs::path& folder) {
+    return nlohmann::json::parse(std::ifstream(folder / "report.json"), nullptr, false);
+}
+
+// Starts share 0/2 into `out`, waits for its first committed block, and sends `signal`;
+// returns the exit status.
+int interruptAfterFirstBlock(const fs::path& out, int signal) {
+    const pid_t pid =
+        testing::startProcess({"/bin/sh", "-c",
+                               "exec '" + std::string(MATEVO_BINARY_DIR) + "/matevo' " +
+                                   kResumable + " --shard 0/2 --out " + shellQuoted(out)});
+    const auto giveUp = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+    while (!fs::exists(out / "report.json") && std::chrono::steady_clock::now() < giveUp)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    ::kill(pid, signal);
+    return testing::waitForProcess(pid);
+}
+
+TEST(ShareResume, AShareKilledOrStoppedResumesToTheBytesOfOneRun) {
+    testing::ScratchFolder folder("resume");
+    ASSERT_EQ(runMatevo(kResumable + " --out " + shellQuoted(folder / "whole")).exitCode, 0);
+    ASSERT_EQ(runMatevo(kResumable + " --shard 1/2 --out " + shellQuoted(folder / "1")).exitCode,
+              0);
+    for (const auto& [signal, name] : {std::pair{SIGKILL, "kill"}, std::pair{SIGTERM, "term"}}) {
+        SCOPED_TRACE(name);
+        const fs::path share = folder / (std::string("0_") + name);
+        EXPECT_EQ(interruptAfterFirstBlock(share, signal), 128 + signal);
+
+        // The folder is the completed blocks, whole, and says what is missing.
+        const nlohmann::json partial = readReport(share);
+        ASSERT_FALSE(partial.is_discarded());
+        EXPECT_EQ(partial["partial"], true);
+        EXPECT_EQ(partial["met"], false);
+        ASSERT_FALSE(partial["missing_blocks"].empty()) << "the share ended before the signal";
+        EXPECT_EQ(partial["blocks"].size() + partial["missing_blocks"].size(), 3u);
+        EXPECT_EQ(filesIn(share / "variants"), 3 * partial["variants"].size());
+        EXPECT_EQ(filesIn(share / "contact_sheets"), partial["blocks"].size());
+        if (signal == SIGTERM) {
+            EXPECT_EQ(partial["stopped_by"], "SIGTERM");
+        }
+
+        // merge names the partial share and how to resume it, in one line.
+        const fs::path merged = folder / (std::string("merged_") + name);
+        const std::string merge = "merge " + shellQuoted(share) + " " + shellQuoted(folder / "1") +
+                                  " --out " + shellQuoted(merged);
+        const auto refused = runMatevo(merge);
+        EXPECT_EQ(refused.exitCode, 2) << refused.err;
+        EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+        for (const char* part : {"share 0/2 is partial", "--shard 0/2", "resume"})
+            EXPECT_NE(refused.err.find(part), std::string::npos) << part << "\n" << refused.err;
+        EXPECT_FALSE(fs::exists(merged));
+
+        // The same command again resumes (no --resume needed), then the merge is one run's bytes.
+        const auto resumed = runMatevo(kResumable + " --shard 0/2 --out " + shellQuoted(share));
+        ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+        EXPECT_NE(resumed.err.find("resuming share 0/2"), std::string::npos) << resumed.err;
+        const auto joined = runMatevo(merge);
+        ASSERT_EQ(joined.exitCode, 0) << joined.err;
+        expectSameFiles(folder / "whole", merged);
+    }
+}
+
+// kRequest with `from` replaced by `to`.
+std::string requestWith(const std::string& from, const std::string& to) {
+    std::string request = kRequest;
+    return request.replace(request.find(from), from.size(), to);
+}
+
+TEST(ShareResume, ResumeKeepsOnlyTheSameRequestAndBackEnd) {
+    testing::ScratchFolder folder("resume");
+    const std::string out = " --out " + shellQuoted(folder / "share");
+    const std::string share0 = " --shard 0/2" + out;
+    ASSERT_EQ(runMatevo(kRequest + share0).exitCode, 0);
+    const auto before = filesUnder(folder / "share");
+    const std::string otherSeed = requestWith("--seed 11", "--seed 12") + share0;
+    const std::string otherBackEnd = requestWith("--backend cpu", "--backend gpu") + share0;
+    for (const std::string& arguments :
+         {otherSeed + " --resume", otherBackEnd + " --resume",
+          kRequest + share0 + " --resume --force",      // contradictory
+          otherSeed,                                    // not resumable: the usual refusal
+          kRequest + " --shard 1/2 --resume" + out}) {  // another share
+        const auto result = runMatevo(arguments);
+        EXPECT_EQ(result.exitCode, 2) << arguments << "\n" << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_TRUE(filesUnder(folder / "share") == before) << arguments;
+    }
+    EXPECT_NE(runMatevo(otherSeed + " --resume").err.find("request.seed"), std::string::npos);
+    EXPECT_NE(runMatevo(otherBackEnd + " --resume").err.find("made_by.backend"), std::string::npos);
+    // A complete share resumed is kept as it is; --quiet leaves out the "resuming" notice.
+    const auto again = runMatevo(kRequest + share0 + " --resume --quiet");
+    EXPECT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_EQ(again.err, "");
+    EXPECT_TRUE(filesUnder(folder / "share") == before);
+}
+
+TEST(ShareResume, MergeRefusesSharesOfDifferentBackEnds) {
+    testing::ScratchFolder folder("resume");
+    ASSERT_EQ(share(folder / "0", 0, 2).exitCode, 0);
+    const auto gpu = runMatevo(requestWith("--backend cpu", "--backend gpu") +
+                               " --shard 1/2 --out " + shellQuoted(folder / "1"));
+    ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
+    EXPECT_EQ(readReport(folder / "1")["made_by"]["backend"], "gpu");
+    const auto merged =
+        runMatevo("merge " + shellQuoted(folder / "0") + " " + shellQuoted(folder / "1") +
+                  " --out " + shellQuoted(folder / "merged"));
+    EXPECT_EQ(merged.exitCode, 2) << merged.err;
+    EXPECT_NE(merged.err.find("made_by.backend"), std::string::npos) << merged.err;
+    EXPECT_FALSE(fs::exists(folder / "merged"));
 }
 
 }  // namespace

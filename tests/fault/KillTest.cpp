@@ -25,6 +25,7 @@
 #include "io/ImageFile.h"
 #include "io/MaterialFile.h"
 #include "io/Preset.h"
+#include "support/RunCommand.h"
 
 namespace matevo {
 namespace {
@@ -41,26 +42,10 @@ fs::path freshFolder(const std::string& name) {
     return folder;
 }
 
-pid_t spawn(const std::vector<std::string>& arguments) {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        std::vector<char*> argv;
-        for (const auto& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-        argv.push_back(nullptr);
-        std::freopen("/dev/null", "w", stdout);
-        std::freopen("/dev/null", "w", stderr);
-        ::execv(argv[0], argv.data());
-        ::_exit(127);
-    }
-    return pid;
-}
+pid_t spawn(const std::vector<std::string>& arguments) { return testing::startProcess(arguments); }
 
 // Waits for the process; true when it ended by itself with status 0.
-bool reap(pid_t pid) {
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-}
+bool reap(pid_t pid) { return testing::waitForProcess(pid) == 0; }
 
 void killAfter(pid_t pid, std::chrono::microseconds delay) {
     std::this_thread::sleep_for(delay);

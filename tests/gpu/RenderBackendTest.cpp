@@ -44,24 +44,59 @@ TEST(RenderBackend, FallsBackToCpuWithoutVulkanDevice) {
 }
 
 // When the loader finds no driver, the one-line notice says where the loader looks and how to
-// list what it finds, whether XDG_DATA_DIRS hides the manifests or VK_DRIVER_FILES names a
-// missing one.
+// list what it finds.
 TEST(RenderBackend, TheNoDriverNoticeSaysWhereTheLoaderLooks) {
     const auto out = scratchFile("no_driver.png");
-    for (const char* environment :
-         {"XDG_DATA_DIRS=/nonexistent", "VK_DRIVER_FILES=/nonexistent/matevo_icd.json"}) {
-        const auto result = testing::runCommand(
-            std::string("env -u VK_DRIVER_FILES -u VK_ICD_FILENAMES ") + environment +
-            " '" MATEVO_BINARY_DIR "/matevo' render --size 24 --out '" + out.string() + "'");
-        ASSERT_EQ(result.exitCode, 0) << environment << "\n" << result.err;
-        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-        for (const char* part : {"no compatible Vulkan driver", "VK_DRIVER_FILES",
-                                 "VK_ICD_FILENAMES", "$XDG_DATA_DIRS", "vulkaninfo --summary",
-                                 "rendering on the CPU instead"})
-            EXPECT_NE(result.err.find(part), std::string::npos)
-                << environment << ": " << part << "\n" << result.err;
-    }
+    const auto result = testing::runCommand(
+        "env -u VK_ICD_FILENAMES VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR
+        "/matevo' render --size 24 --out '" +
+        out.string() + "'");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    for (const char* part :
+         {"no compatible Vulkan driver", "VK_DRIVER_FILES", "VK_ICD_FILENAMES", "$XDG_DATA_DIRS",
+          "vulkaninfo --summary", "rendering on the CPU instead"})
+        EXPECT_NE(result.err.find(part), std::string::npos) << part << "\n" << result.err;
     std::filesystem::remove(out);
+}
+
+// XDG_DATA_DIRS set for other packages (as a module system does) hid the system's driver
+// manifests from the loader, and the run fell back to the CPU: matevo adds the system folders
+// (gpu/LoaderEnvironment.h), so the GPU is found.
+TEST(RenderBackend, AModuleSystemsXdgDataDirsDoesNotHideTheDriver) {
+    const auto out = scratchFile("module_system.png");
+    const auto result = testing::runCommand(
+        "env -u VK_DRIVER_FILES -u VK_ICD_FILENAMES XDG_DATA_DIRS=/nonexistent/modules/share "
+        "'" MATEVO_BINARY_DIR "/matevo' render --no-fallback --size 24 --out '" +
+        out.string() + "'");
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_EQ(result.err, "") << "no fallback notice expected";
+    std::filesystem::remove(out);
+}
+
+// --no-fallback: no usable device is a failure of the machine (exit 1, one line), no CPU render.
+TEST(RenderBackend, NoFallbackFailsInsteadOfRenderingOnTheCpu) {
+    const auto out = scratchFile("strict.png");
+    for (const std::string& command :
+         {"render --size 24 --out '" + out.string() + "'",
+          std::string("variants --count 1 --band 1,10 --size 24 --fitness-size 16 "
+                      "--max-evaluations 50"),
+          "evolve --population 4 --generations 1 --size 24 --out '" + out.string() + "'",
+          "experiment --runs 1 --population 4 --generations 1 --size 24 --metric chebyshev "
+          "--out '" +
+              out.string() + "'"}) {
+        const auto result = testing::runCommand(
+            "VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR "/matevo' " +
+            command + " --no-fallback");
+        EXPECT_EQ(result.exitCode, 1) << command << "\n" << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_NE(result.err.find("--no-fallback"), std::string::npos) << result.err;
+        EXPECT_EQ(result.err.find("rendering on the CPU instead"), std::string::npos) << result.err;
+        EXPECT_FALSE(std::filesystem::exists(out));
+    }
+    const auto contradiction =
+        testing::runMatevo("render --backend cpu --no-fallback --out '" + out.string() + "'");
+    EXPECT_EQ(contradiction.exitCode, 2) << contradiction.err;
 }
 
 TEST(RenderBackend, GpuIsTheDefaultAndMatchesCpu) {

@@ -125,5 +125,23 @@ TEST(VariantBlockReport, AShareSaysWhichShareItIs) {
     EXPECT_EQ(report["summary"].get<std::string>().rfind("share 1/3: ", 0), 0u);
 }
 
+// A run that has not computed all its blocks yet (stopped, or a checkpoint of a running share)
+// says which are missing and is never met, though every block it holds met its request.
+TEST(VariantBlockReport, AReportWithoutAllItsBlocksIsPartialAndNotMet) {
+    BlockReport parts = twoBlocks(0.6);
+    parts.blocks.erase(parts.blocks.begin());  // block 1 and its variants not computed yet
+    parts.variants.erase(parts.variants.begin(), parts.variants.begin() + 2);
+    EXPECT_EQ(missingBlocks(parts, std::nullopt), std::vector<int>{1});
+    const nlohmann::json report = assembleBlockReport(parts, std::nullopt);
+    EXPECT_FALSE(report["met"].get<bool>());
+    EXPECT_TRUE(report["partial"].get<bool>());
+    EXPECT_EQ(report["missing_blocks"], nlohmann::json({1}));
+    EXPECT_NE(report["summary"].get<std::string>().find("resume"), std::string::npos);
+    // Whole, the same report has none missing and is not partial.
+    const nlohmann::json whole = assembleBlockReport(twoBlocks(0.6), std::nullopt);
+    EXPECT_TRUE(whole["missing_blocks"].empty());
+    EXPECT_FALSE(whole.contains("partial"));
+}
+
 }  // namespace
 }  // namespace matevo
