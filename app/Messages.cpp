@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "common/ShortText.h"
+
 namespace matevo::cli {
 namespace {
 
@@ -20,12 +22,11 @@ std::string messagePrefix() {
 }
 
 void printMessage(std::string_view text) {
-    std::fprintf(stderr, "%s%.*s\n", messagePrefix().c_str(), int(text.size()), text.data());
+    std::fprintf(stderr, "%s%s\n", messagePrefix().c_str(), visibleText(text).c_str());
 }
 
 void printWarning(std::string_view text) {
-    std::fprintf(stderr, "%swarning: %.*s\n", messagePrefix().c_str(), int(text.size()),
-                 text.data());
+    std::fprintf(stderr, "%swarning: %s\n", messagePrefix().c_str(), visibleText(text).c_str());
 }
 
 }  // namespace matevo::cli
