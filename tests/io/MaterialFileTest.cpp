@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "io/VariantFolder.h"
 #include "support/ScratchFolder.h"
 
 namespace matevo {
@@ -190,6 +191,22 @@ TEST(MaterialFile, TexturePathsThatCannotBeLookedAtAreRefusedNotThrown) {
         EXPECT_NE(loaded.error().message.find(": cannot read: "), std::string::npos)
             << loaded.error().message;
     }
+
+    // In a variant folder too, and a material file that is itself a symlink loop is named.
+    const auto variants = folder / "set";
+    std::filesystem::create_directory(variants);
+    std::ofstream(variants / "v0.json") << replaced(json, "paint_roughness.png", "../loop.png");
+    auto withLoop = loadVariantFolder(variants, MaterialFile{});
+    ASSERT_FALSE(withLoop.ok());
+    EXPECT_NE(withLoop.error().message.find("v0.json: textures.roughness: "), std::string::npos)
+        << withLoop.error().message;
+    std::filesystem::remove(variants / "v0.json");
+    std::filesystem::create_symlink("v1.json", variants / "v0.json");
+    std::filesystem::create_symlink("v0.json", variants / "v1.json");
+    auto loopedFile = loadVariantFolder(variants, MaterialFile{});
+    ASSERT_FALSE(loopedFile.ok());
+    EXPECT_NE(loopedFile.error().message.find("v0.json: cannot read: "), std::string::npos)
+        << loopedFile.error().message;
 }
 
 }  // namespace
