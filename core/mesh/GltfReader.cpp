@@ -1,8 +1,8 @@
 #include "mesh/GltfReader.h"
 
 #include <cstring>
-#include <functional>
 #include <limits>
+#include <map>
 #include <string>
 #include <string_view>
 
@@ -210,59 +210,73 @@ constexpr std::size_t kMaxNodePlacements = 100000;
 // Deeper hierarchies are refused before they exhaust the stack.
 constexpr int kMaxNodeDepth = 256;
 
+// One primitive decoded: per-vertex arrays (normals and uvs empty when absent) and the triangle
+// corners, before any node's transform.
+struct DecodedPrimitive {
+    std::vector<float> positions, normals, uvs;
+    std::vector<std::uint32_t> corners;
+};
+
+DecodedPrimitive decodePrimitive(const tinygltf::Model& model,
+                                 const tinygltf::Primitive& primitive, const std::string& what) {
+    DecodedPrimitive decoded;
+    const auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end()) throw GltfError{what + ": no POSITION"};
+    decoded.positions = readAccessor(model, position->second, 3, what + " POSITION");
+    const std::size_t vertexCount = decoded.positions.size() / 3;
+    if (auto found = primitive.attributes.find("NORMAL"); found != primitive.attributes.end())
+        decoded.normals = readAccessor(model, found->second, 3, what + " NORMAL");
+    if (auto found = primitive.attributes.find("TEXCOORD_0"); found != primitive.attributes.end())
+        decoded.uvs = readAccessor(model, found->second, 2, what + " TEXCOORD_0");
+    if ((!decoded.normals.empty() && decoded.normals.size() != decoded.positions.size()) ||
+        (!decoded.uvs.empty() && decoded.uvs.size() / 2 != vertexCount))
+        throw GltfError{what + ": attributes have different vertex counts"};
+
+    std::vector<std::uint32_t> order;
+    if (primitive.indices >= 0) {
+        order = readIndices(model, primitive.indices, what + " indices");
+    } else {
+        for (std::size_t i = 0; i < vertexCount; ++i) order.push_back(std::uint32_t(i));
+    }
+    for (std::uint32_t index : order)
+        if (index >= vertexCount)
+            throw GltfError{what + ": index " + std::to_string(index) + " out of range (" +
+                            std::to_string(vertexCount) + " vertices)"};
+    decoded.corners = triangleCorners(primitive.mode, order);
+    return decoded;
+}
+
 struct MeshBuilder {
     const tinygltf::Model& model;
     Mesh mesh;
     bool missingNormals = false;
     std::size_t placements = 0;
     std::vector<bool> onPath = std::vector<bool>(model.nodes.size(), false);
+    // Each mesh is decoded once, however many nodes place it; its size is bounded by the
+    // buffers' sizes.
+    std::map<int, std::vector<DecodedPrimitive>> decodedMeshes{};
 
     // Refuses geometry that would take the mesh past the memory limit or 32-bit indices. The
     // counts are those of decoded arrays, far from overflowing.
-    void reserveFor(std::size_t vertexCount, std::size_t cornerCount, const std::string& what) {
+    void reserveFor(std::size_t vertexCount, std::size_t cornerCount, int meshIndex) {
         const std::size_t vertices = mesh.vertices.size() + vertexCount;
         const std::size_t corners = mesh.indices.size() + cornerCount;
+        const std::string what = "mesh " + std::to_string(meshIndex);
         if (vertices > std::numeric_limits<std::uint32_t>::max())
-            throw GltfError{what + ": more than 2^32 vertices in all"};
+            throw GltfError{what + ": more than 2^32 vertices placed in all"};
         const std::uint64_t bytes =
             std::uint64_t(vertices) * sizeof(MeshVertex) + std::uint64_t(corners) * 4;
         if (auto fits = checkMemoryEstimate(bytes, what + ": the placed triangles"); !fits)
             throw GltfError{fits.error().message};
     }
 
-    void addPrimitive(const tinygltf::Primitive& primitive, const glm::mat4& transform,
-                      const std::string& what) {
-        const auto position = primitive.attributes.find("POSITION");
-        if (position == primitive.attributes.end()) throw GltfError{what + ": no POSITION"};
-        const std::vector<float> positions =
-            readAccessor(model, position->second, 3, what + " POSITION");
-        const std::size_t vertexCount = positions.size() / 3;
-        std::vector<float> normals, uvs;
-        if (auto found = primitive.attributes.find("NORMAL"); found != primitive.attributes.end())
-            normals = readAccessor(model, found->second, 3, what + " NORMAL");
-        if (auto found = primitive.attributes.find("TEXCOORD_0");
-            found != primitive.attributes.end())
-            uvs = readAccessor(model, found->second, 2, what + " TEXCOORD_0");
-        if ((!normals.empty() && normals.size() != positions.size()) ||
-            (!uvs.empty() && uvs.size() / 2 != vertexCount))
-            throw GltfError{what + ": attributes have different vertex counts"};
-        missingNormals = missingNormals || normals.empty();
-
-        std::vector<std::uint32_t> order;
-        if (primitive.indices >= 0) {
-            order = readIndices(model, primitive.indices, what + " indices");
-        } else {
-            for (std::size_t i = 0; i < vertexCount; ++i) order.push_back(std::uint32_t(i));
-        }
-        for (std::uint32_t index : order)
-            if (index >= vertexCount)
-                throw GltfError{what + ": index " + std::to_string(index) + " out of range (" +
-                                std::to_string(vertexCount) + " vertices)"};
-
-        // Decoding is bounded by the buffers' sizes; what each placement adds up is bounded here.
-        const std::vector<std::uint32_t> corners = triangleCorners(primitive.mode, order);
-        reserveFor(vertexCount, corners.size(), what);
-
+    void place(const DecodedPrimitive& primitive, const glm::mat4& transform, int meshIndex) {
+        const std::size_t vertexCount = primitive.positions.size() / 3;
+        reserveFor(vertexCount, primitive.corners.size(), meshIndex);
+        missingNormals = missingNormals || primitive.normals.empty();
+        const std::vector<float>& positions = primitive.positions;
+        const std::vector<float>& normals = primitive.normals;
+        const std::vector<float>& uvs = primitive.uvs;
         const glm::mat3 normalTransform = glm::inverseTranspose(glm::mat3(transform));
         const auto first = std::uint32_t(mesh.vertices.size());
         for (std::size_t v = 0; v < vertexCount; ++v) {
@@ -282,6 +296,7 @@ struct MeshBuilder {
         }
         // A mirroring transform turns the winding inside out.
         const bool mirrored = glm::determinant(glm::mat3(transform)) < 0.0f;
+        const std::vector<std::uint32_t>& corners = primitive.corners;
         for (std::size_t i = 0; i + 2 < corners.size(); i += 3) {
             const std::uint32_t a = first + corners[i], b = first + corners[i + 1],
                                 c = first + corners[i + 2];
@@ -290,14 +305,24 @@ struct MeshBuilder {
         }
     }
 
-    void addMesh(int meshIndex, const glm::mat4& transform) {
+    const std::vector<DecodedPrimitive>& decodedMesh(int meshIndex) {
+        if (auto found = decodedMeshes.find(meshIndex); found != decodedMeshes.end())
+            return found->second;
         if (meshIndex < 0 || meshIndex >= int(model.meshes.size()))
             throw GltfError{"a node names mesh " + std::to_string(meshIndex) +
                             ", which does not exist"};
         const tinygltf::Mesh& source = model.meshes[std::size_t(meshIndex)];
+        std::vector<DecodedPrimitive> primitives;
         for (std::size_t p = 0; p < source.primitives.size(); ++p)
-            addPrimitive(source.primitives[p], transform,
-                         "mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(p));
+            primitives.push_back(decodePrimitive(
+                model, source.primitives[p],
+                "mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(p)));
+        return decodedMeshes.emplace(meshIndex, std::move(primitives)).first->second;
+    }
+
+    void addMesh(int meshIndex, const glm::mat4& transform) {
+        for (const DecodedPrimitive& primitive : decodedMesh(meshIndex))
+            place(primitive, transform, meshIndex);
     }
 
     void addNode(int nodeIndex, const glm::mat4& parent, int depth) {
