@@ -20,8 +20,8 @@ public:
     const std::string& baseDirectory() const { return baseDirectory_; }
     // Callbacks for TinyGLTF::SetFsCallbacks; they refer to this object, which must outlive them.
     tinygltf::FsCallbacks callbacks();
-    // Why the first refused file was refused ("" when none was): tinygltf's own message for it
-    // names neither the rule nor the URI as the user wrote it.
+    // Why the first refused file was refused ("" when none was), also part of tinygltf's error
+    // when it was a buffer.
     const std::string& firstRefusal() const { return firstRefusal_; }
 
 private:

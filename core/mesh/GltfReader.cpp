@@ -388,9 +388,11 @@ Result<Mesh> parseGltf(const std::string& bytes, const std::filesystem::path& fi
                : loader.LoadASCIIFromString(&model, &errors, &warnings, bytes.data(),
                                             unsigned(bytes.size()), folder);
     if (!loaded) {
-        // tinygltf's messages span lines; the first says what went wrong.
+        // tinygltf's messages span lines; the first says what went wrong. A refused external
+        // file says it better, if it is what failed (a refused image is only a warning).
         std::string first = externalFiles.firstRefusal();
-        if (first.empty()) first = shortText(errors.substr(0, errors.find('\n')));
+        if (first.empty() || errors.find(first) == std::string::npos)
+            first = shortText(errors.substr(0, errors.find('\n')));
         if (first.empty()) first = "not a valid glTF 2.0 file";
         return Error{name + ": " + first};
     }
