@@ -12,13 +12,16 @@
 #include <string>
 #include <vector>
 
+#include "common/ShortText.h"
 #include "io/OutputFolder.h"
 #include "variants/DeltaEBand.h"
 
 namespace matevo::cli {
 
+// The message is kept visible (common/ShortText.h): what() is a C string, which a NUL in a quoted
+// value would cut.
 struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit UsageError(const std::string& message) : std::runtime_error(visibleText(message)) {}
 };
 
 // A failure of the machine, not of the user's input nor a bug: e.g. no usable Vulkan device

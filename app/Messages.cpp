@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "common/ShortText.h"
 #include "common/StatusOutput.h"
 
 namespace matevo::cli {
@@ -27,12 +28,11 @@ std::string messagePrefix() {
 }
 
 void printMessage(std::string_view text) {
-    std::fprintf(stderr, "%s%.*s\n", messagePrefix().c_str(), int(text.size()), text.data());
+    std::fprintf(stderr, "%s%s\n", messagePrefix().c_str(), visibleText(text).c_str());
 }
 
 void printWarning(std::string_view text) {
-    std::fprintf(stderr, "%swarning: %.*s\n", messagePrefix().c_str(), int(text.size()),
-                 text.data());
+    std::fprintf(stderr, "%swarning: %s\n", messagePrefix().c_str(), visibleText(text).c_str());
 }
 
 void printNotice(std::string_view text) {

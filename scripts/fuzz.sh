@@ -12,14 +12,16 @@ cd "$(dirname "$0")/.."
 seconds=${1:-10}
 shift || true
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(fuzz_preset fuzz_genome fuzz_editor_script fuzz_table_cache fuzz_image)
+[[ ${#targets[@]} -gt 0 ]] || targets=(fuzz_preset fuzz_genome fuzz_editor_script fuzz_table_cache fuzz_image
+                                       fuzz_gltf fuzz_glb fuzz_obj fuzz_checkpoint fuzz_shard_report)
 
 build_dir=build-sanitize
 MATEVO_SANITIZE=1 scripts/build.sh "${targets[@]}"
 
 declare -A corpus_of=([fuzz_preset]=preset [fuzz_genome]=genome
                       [fuzz_editor_script]=editor_script [fuzz_table_cache]=table_cache
-                      [fuzz_image]=image)
+                      [fuzz_image]=image [fuzz_gltf]=gltf [fuzz_glb]=glb [fuzz_obj]=obj
+                      [fuzz_checkpoint]=checkpoint [fuzz_shard_report]=shard_report)
 mkdir -p "$build_dir/findings"
 status=0
 for target in "${targets[@]}"; do

@@ -96,9 +96,9 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
             throw UsageError("--weights: expected 12 comma-separated numbers, got " +
                              std::to_string(values.size()));
         for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) {
-            if (values[i] < 0)
-                throw UsageError("--weights: weight of " +
-                                 std::string(chromosomeName(i)) + " must not be negative");
+            if (values[i] < 0 || values[i] > kMaxChromosomeWeight)
+                throw UsageError("--weights: weight of " + std::string(chromosomeName(i)) +
+                                 " must be in [0, 1e6]");
             ga.weights[i] = values[i];
         }
     }

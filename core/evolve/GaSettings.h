@@ -15,6 +15,11 @@ enum class DistanceMetric { Chebyshev, Euclidean, Manhattan };
 std::string_view toString(DistanceMetric metric);
 std::optional<DistanceMetric> parseDistanceMetric(std::string_view text);
 
+// Largest weight of a chromosome's difference (presets and --weights): keeps the weighted
+// distance, and so the fitness, finite for every genome (a weight of 1e308 made it inf, written
+// as null in the JSON).
+constexpr double kMaxChromosomeWeight = 1e6;
+
 struct GaSettings {
     int population = 50;
     int generations = 5;

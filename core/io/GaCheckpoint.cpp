@@ -34,10 +34,9 @@ GaCheckpoint readCheckpoint(JsonReader& root, const nlohmann::json& json) {
     GaCheckpoint checkpoint;
     checkpoint.family = readFamily(root, "family");
     checkpoint.baseKappa = readBaseKappa(root, checkpoint.family);
-    {
-        JsonReader target = root.object("target");
-        checkpoint.target = readGenome(target);
-    }
+    // Genomes are checked against the family's Table 2 rules, as a preset's are: a tampered
+    // checkpoint must not carry a material outside them into a result.
+    checkpoint.target = readFamilyGenome(root, "target", checkpoint.family);
     checkpoint.settings = readGaSettings(root.object("ga"));
     GaState& state = checkpoint.state;
     state.generation = int(root.integer("generation", 0, kMaxGenerations));
@@ -54,9 +53,8 @@ GaCheckpoint readCheckpoint(JsonReader& root, const nlohmann::json& json) {
     for (std::size_t i = 0; i < population.size(); ++i) {
         std::vector<std::string> ignored;
         JsonReader entry(population[i], "population[" + std::to_string(i) + "]", ignored);
-        JsonReader genome = entry.object("genome");
-        state.population.push_back(
-            {readGenome(genome), entry.number("fitness", -kLargest, kLargest)});
+        state.population.push_back({readFamilyGenome(entry, "genome", checkpoint.family),
+                                    entry.number("fitness", -kLargest, kLargest)});
     }
     const auto& history = json["history"];
     for (std::size_t i = 0; i < history.size(); ++i) {
@@ -104,8 +102,12 @@ Status saveCheckpoint(const GaCheckpoint& checkpoint, const std::filesystem::pat
 Result<GaCheckpoint> loadCheckpoint(const std::filesystem::path& file) {
     auto text = readTextFile(file);
     if (!text) return text.error();
+    return parseCheckpoint(*text, file.string());
+}
+
+Result<GaCheckpoint> parseCheckpoint(const std::string& text, const std::string& sourceName) {
     std::vector<std::string> ignored;  // a checkpoint is machine-written: no warnings to give
-    return readJsonDocument<GaCheckpoint>(*text, file.string(), ignored,
+    return readJsonDocument<GaCheckpoint>(text, sourceName, ignored,
                                           [&](const nlohmann::json& json) {
                                               JsonReader root(json, "", ignored);
                                               return readCheckpoint(root, json);

@@ -33,6 +33,8 @@ std::string serializeCheckpoint(const GaCheckpoint& checkpoint);
 Status saveCheckpoint(const GaCheckpoint& checkpoint, const std::filesystem::path& file);
 // Errors name the file and the field.
 Result<GaCheckpoint> loadCheckpoint(const std::filesystem::path& file);
+// The same for a checkpoint's text; `sourceName` names it in errors.
+Result<GaCheckpoint> parseCheckpoint(const std::string& text, const std::string& sourceName);
 
 // Why `checkpoint` cannot continue a run of (family, target, kappa, settings), or nothing when it
 // can; the number of generations may differ (a run can be extended).

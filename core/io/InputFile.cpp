@@ -34,22 +34,34 @@ struct FileDescriptor {
     }
 };
 
+// The error for a failed open() or stat() of `file`.
+Error cannotOpen(const std::filesystem::path& file, int error) {
+    if (error == ENOENT) return cannotRead(file, "no such file");
+    return cannotRead(file, std::strerror(error));
+}
+
+Error notRegular(const std::filesystem::path& file, mode_t mode) {
+    return cannotRead(file, kindOf(mode) + ", not a regular file");
+}
+
 }  // namespace
 
 std::string displayPath(const std::filesystem::path& file) { return shortText(file.string()); }
 
+Status checkInputFile(const std::filesystem::path& file) {
+    struct stat status {};
+    if (::stat(file.c_str(), &status) != 0) return cannotOpen(file, errno);
+    if (!S_ISREG(status.st_mode)) return notRegular(file, status.st_mode);
+    return Ok{};
+}
+
 Result<std::string> readInputFile(const std::filesystem::path& file, std::uintmax_t maxBytes) {
     // O_NONBLOCK: opening a FIFO with no writer must not wait; regular files ignore it.
     FileDescriptor input{::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY)};
-    if (input.fd < 0) {
-        const int error = errno;
-        if (error == ENOENT) return cannotRead(file, "no such file");
-        return cannotRead(file, std::strerror(error));
-    }
+    if (input.fd < 0) return cannotOpen(file, errno);
     struct stat status {};
     if (::fstat(input.fd, &status) != 0) return cannotRead(file, std::strerror(errno));
-    if (!S_ISREG(status.st_mode))
-        return cannotRead(file, kindOf(status.st_mode) + ", not a regular file");
+    if (!S_ISREG(status.st_mode)) return notRegular(file, status.st_mode);
     const auto size = std::uintmax_t(status.st_size);
     if (size > maxBytes)
         return cannotRead(file, "it is " + describeBytes(size) + ", more than the limit of " +

@@ -19,6 +19,10 @@ constexpr std::uintmax_t kMaxImageFileBytes = 512u << 20;  // 512 MiB
 // The whole file as bytes. Errors read "PATH: cannot read: REASON" with the path shortened.
 Result<std::string> readInputFile(const std::filesystem::path& file, std::uintmax_t maxBytes);
 
+// Whether readInputFile could read `file` now (it exists and is a regular file), for files
+// read later, such as textures named in a material file; errors read as readInputFile's.
+Status checkInputFile(const std::filesystem::path& file);
+
 // The path as error messages show it (long paths shortened).
 std::string displayPath(const std::filesystem::path& file);
 

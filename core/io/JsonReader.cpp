@@ -15,6 +15,28 @@ std::string formatNumber(double value) {
 
 }  // namespace
 
+Status checkJsonNesting(std::string_view text, const std::string& sourceName) {
+    std::size_t depth = 0;
+    bool inString = false;
+    for (std::size_t at = 0; at < text.size(); ++at) {
+        const char c = text[at];
+        if (inString) {
+            if (c == '\\') ++at;  // the escaped character cannot end the string
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonNesting)
+                return Error{sourceName + ": JSON nested deeper than " +
+                             std::to_string(kMaxJsonNesting) + " levels (at byte " +
+                             std::to_string(at) + ")"};
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return Ok{};
+}
+
 JsonReader::JsonReader(const nlohmann::json& object, std::string path,
                        std::vector<std::string>& warnings)
     : object_(object), path_(std::move(path)), warnings_(warnings) {

@@ -15,11 +15,15 @@
 #include <nlohmann/json.hpp>
 
 #include "common/Result.h"
+#include "common/ShortText.h"
 
 namespace matevo {
 
+// The message is kept visible (common/ShortText.h): what() is a C string, which a NUL in a quoted
+// value would cut.
 struct JsonFieldError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit JsonFieldError(const std::string& message)
+        : std::runtime_error(visibleText(message)) {}
 };
 
 class JsonReader {
@@ -61,18 +65,40 @@ private:
     std::set<std::string> read_;
 };
 
+// Every JSON text matevo reads is nested at most this deep. Parsers recurse once per level
+// (tinygltf turns each level into a nested Value), so a document 20,000 levels deep overflows the
+// stack; no file matevo reads or writes comes near this.
+constexpr std::size_t kMaxJsonNesting = 256;
+
+// Checks the nesting of arrays and objects in `text` without parsing it, for every JSON reader to
+// call before a parser sees the text. The error names `sourceName` and the byte where the limit
+// was passed.
+Status checkJsonNesting(std::string_view text, const std::string& sourceName);
+
+// Parses a JSON document after checkJsonNesting; errors name `sourceName`.
+template <typename Json>
+Result<Json> parseJsonDocument(const std::string& jsonText, const std::string& sourceName) {
+    if (auto nesting = checkJsonNesting(jsonText, sourceName); !nesting) return nesting.error();
+    try {
+        return Json::parse(jsonText);
+    } catch (const typename Json::exception& error) {
+        return Error{sourceName + ": not valid JSON (" + error.what() + ")"};
+    }
+}
+
 // Parses a JSON document and reads it with `read(const nlohmann::json&)`, which may throw
 // JsonFieldError: a syntax error or a field error becomes an Error naming `sourceName`, and the
 // warnings gathered while reading are prefixed with it.
 template <typename T, typename Read>
 Result<T> readJsonDocument(const std::string& jsonText, const std::string& sourceName,
                            std::vector<std::string>& warnings, Read&& read) {
+    auto json = parseJsonDocument<nlohmann::json>(jsonText, sourceName);
+    if (!json) return json.error();
     try {
-        const auto json = nlohmann::json::parse(jsonText);
-        T value = read(json);
+        T value = read(*json);
         for (auto& warning : warnings) warning = sourceName + ": " + warning;
         return value;
-    } catch (const nlohmann::json::exception& error) {
+    } catch (const nlohmann::json::exception& error) {  // a reader's get<T>() on a wrong type
         return Error{sourceName + ": not valid JSON (" + error.what() + ")"};
     } catch (const JsonFieldError& error) {
         return Error{sourceName + ": " + error.what()};

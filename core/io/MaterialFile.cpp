@@ -3,6 +3,7 @@
 #include "genome/FamilyRules.h"
 #include "io/AtomicFile.h"
 #include "io/GenomeJson.h"
+#include "io/InputFile.h"
 #include "io/JsonReader.h"
 #include "io/PresetFieldsJson.h"
 #include "io/TextFile.h"
@@ -139,8 +140,11 @@ Result<LoadedMaterial> loadMaterial(const fs::path& file, const MaterialFile& co
     for (const auto& [field, path] :
          {std::pair{"textures.roughness", loaded->file.roughnessTexture},
           std::pair{"textures.base_color", loaded->file.baseColorTexture}}) {
-        if (!path.empty() && !fs::is_regular_file(path))
-            return Error{file.string() + ": " + field + ": no such file '" + path.string() + "'"};
+        // A path that cannot even be looked at (a symlink loop, a name too long) is the user's
+        // mistake too, not an internal error.
+        if (path.empty()) continue;
+        if (auto readable = checkInputFile(path); !readable)
+            return Error{displayPath(file) + ": " + field + ": " + readable.error().message};
     }
     return loaded;
 }

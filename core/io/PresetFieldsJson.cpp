@@ -125,7 +125,9 @@ GaSettings readGaSettings(JsonReader reader) {
     if (reader.has("metric"))
         ga.metric = reader.enumeration("metric", parseDistanceMetric,
                                        "chebyshev, euclidean or manhattan");
-    if (reader.has("weights")) ga.weights = reader.numbers<kPaperChromosomeCount>("weights", 0.0, 1e6);
+    if (reader.has("weights"))
+        ga.weights =
+            reader.numbers<kPaperChromosomeCount>("weights", 0.0, kMaxChromosomeWeight);
     if (reader.has("normalize_by_range"))
         ga.normalizeByRange = reader.boolean("normalize_by_range");
     if (reader.has("elitism")) ga.elitism = int(reader.integer("elitism", 0, ga.population - 1));

@@ -12,9 +12,13 @@ Result<std::vector<std::filesystem::path>> variantFolderFiles(const std::filesys
     const std::filesystem::path variants =
         std::filesystem::is_directory(folder / "variants", error) ? folder / "variants" : folder;
     std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(variants, error))
-        if (entry.is_regular_file() && entry.path().extension() == ".json")
+    for (const auto& entry : std::filesystem::directory_iterator(variants, error)) {
+        // An entry whose type cannot be read (a symlink loop) is kept, for its loader to refuse
+        // with the reason.
+        std::error_code typeError;
+        if (entry.path().extension() == ".json" && (entry.is_regular_file(typeError) || typeError))
             files.push_back(entry.path());
+    }
     if (error) return Error{variants.string() + ": cannot list: " + error.message()};
     std::sort(files.begin(), files.end());
     if (files.empty()) return Error{variants.string() + ": no material .json files"};

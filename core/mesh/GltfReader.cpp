@@ -1,9 +1,10 @@
 #include "mesh/GltfReader.h"
 
-#include <cctype>
 #include <cstring>
-#include <functional>
+#include <limits>
+#include <map>
 #include <string>
+#include <string_view>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -13,7 +14,12 @@
 #include <glm/mat4x4.hpp>
 #include <tiny_gltf.h>
 
+#include "common/MemoryBudget.h"
+#include "common/ShortText.h"
+#include "io/ImageType.h"
 #include "io/InputFile.h"
+#include "io/JsonReader.h"
+#include "mesh/GltfExternalFiles.h"
 
 namespace matevo {
 namespace {
@@ -40,38 +46,81 @@ std::size_t componentBytes(int componentType) {
     }
 }
 
-// Reads accessor `index` as `components` numbers per element, after checking that every byte it
-// names lies inside its buffer. Integer components are read as the glTF spec says for their use:
-// normalised (`normalized`) or plain.
-std::vector<float> readAccessor(const tinygltf::Model& model, int index, int components,
-                                const std::string& what) {
+// a + b and a * b for byte offsets and sizes from the file: a value near 2^64 must not wrap
+// around and pass a bounds check.
+std::size_t checkedAdd(std::size_t a, std::size_t b, const std::string& what) {
+    std::size_t sum = 0;
+    if (__builtin_add_overflow(a, b, &sum)) throw GltfError{what + ": byte offsets overflow"};
+    return sum;
+}
+
+std::size_t checkedMultiply(std::size_t a, std::size_t b, const std::string& what) {
+    std::size_t product = 0;
+    if (__builtin_mul_overflow(a, b, &product)) throw GltfError{what + ": byte sizes overflow"};
+    return product;
+}
+
+const tinygltf::Accessor& findAccessor(const tinygltf::Model& model, int index,
+                                       const std::string& what) {
     if (index < 0 || index >= int(model.accessors.size()))
         throw GltfError{what + ": accessor " + std::to_string(index) + " does not exist"};
-    const tinygltf::Accessor& accessor = model.accessors[std::size_t(index)];
-    if (accessor.sparse.isSparse) throw GltfError{what + ": sparse accessors are not supported"};
-    if (tinygltf::GetNumComponentsInType(std::uint32_t(accessor.type)) != components)
-        throw GltfError{what + ": expected " + std::to_string(components) +
-                        " components per element"};
-    const std::size_t elementBytes = componentBytes(accessor.componentType);
-    if (elementBytes == 0) throw GltfError{what + ": unsupported component type"};
+    return model.accessors[std::size_t(index)];
+}
+
+// The first byte of an accessor's elements, after checking that every byte they span lies inside
+// its buffer view and the view inside its buffer.
+const unsigned char* locateElements(const tinygltf::Model& model,
+                                    const tinygltf::Accessor& accessor, std::size_t elementSize,
+                                    std::size_t stride, const std::string& what) {
     if (accessor.bufferView < 0 || accessor.bufferView >= int(model.bufferViews.size()))
         throw GltfError{what + ": accessor has no buffer view"};
     const tinygltf::BufferView& view = model.bufferViews[std::size_t(accessor.bufferView)];
     if (view.buffer < 0 || view.buffer >= int(model.buffers.size()))
         throw GltfError{what + ": buffer view names no buffer"};
     const std::vector<unsigned char>& buffer = model.buffers[std::size_t(view.buffer)].data;
-    const std::size_t stride =
-        view.byteStride > 0 ? view.byteStride : elementBytes * std::size_t(components);
-    const std::size_t begin = view.byteOffset + accessor.byteOffset;
+    const std::size_t viewEnd = checkedAdd(view.byteOffset, view.byteLength, what + " bufferView");
+    if (viewEnd > buffer.size())
+        throw GltfError{what + ": bufferView reads past the end of its buffer"};
+    if (stride < elementSize)
+        throw GltfError{what + ": bufferView byteStride " + std::to_string(stride) +
+                        " is smaller than an element (" + std::to_string(elementSize) +
+                        " bytes)"};
+    const std::size_t begin = checkedAdd(view.byteOffset, accessor.byteOffset, what + " accessor");
+    if (accessor.count > 0) {
+        const std::size_t span = checkedAdd(
+            checkedMultiply(stride, accessor.count - 1, what + " accessor"), elementSize,
+            what + " accessor");
+        if (checkedAdd(begin, span, what + " accessor") > viewEnd)
+            throw GltfError{what + ": accessor reads past the end of its buffer"};
+    }
+    return buffer.data() + (accessor.count > 0 ? begin : 0);
+}
+
+// Reads accessor `index` as `components` numbers per element, after checking that every byte it
+// names lies inside its buffer. Integer components are read as the glTF spec says for their use:
+// normalised (`normalized`) or plain.
+std::vector<float> readAccessor(const tinygltf::Model& model, int index, int components,
+                                const std::string& what) {
+    const tinygltf::Accessor& accessor = findAccessor(model, index, what);
+    if (accessor.sparse.isSparse) throw GltfError{what + ": sparse accessors are not supported"};
+    if (tinygltf::GetNumComponentsInType(std::uint32_t(accessor.type)) != components)
+        throw GltfError{what + ": expected " + std::to_string(components) +
+                        " components per element"};
+    const std::size_t elementBytes = componentBytes(accessor.componentType);
+    if (elementBytes == 0) throw GltfError{what + ": unsupported component type"};
+    const std::size_t elementSize = elementBytes * std::size_t(components);
+    const int viewIndex = accessor.bufferView;
+    const std::size_t viewStride =
+        viewIndex >= 0 && viewIndex < int(model.bufferViews.size())
+            ? model.bufferViews[std::size_t(viewIndex)].byteStride
+            : 0;
+    const std::size_t stride = viewStride > 0 ? viewStride : elementSize;
+    const unsigned char* first = locateElements(model, accessor, elementSize, stride, what);
     const std::size_t count = accessor.count;
-    const std::size_t lastByte =
-        count == 0 ? begin : begin + stride * (count - 1) + elementBytes * std::size_t(components);
-    if (lastByte > view.byteOffset + view.byteLength || lastByte > buffer.size())
-        throw GltfError{what + ": accessor reads past the end of its buffer"};
 
     std::vector<float> values(count * std::size_t(components));
     for (std::size_t element = 0; element < count; ++element) {
-        const unsigned char* source = buffer.data() + begin + element * stride;
+        const unsigned char* source = first + element * stride;
         for (int c = 0; c < components; ++c) {
             const unsigned char* at = source + std::size_t(c) * elementBytes;
             float value = 0.0f;
@@ -102,7 +151,7 @@ std::vector<float> readAccessor(const tinygltf::Model& model, int index, int com
 
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int index,
                                        const std::string& what) {
-    const tinygltf::Accessor& accessor = model.accessors.at(std::size_t(index));
+    const tinygltf::Accessor& accessor = findAccessor(model, index, what);
     if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
         accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
         accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
@@ -154,40 +203,80 @@ glm::mat4 localTransform(const tinygltf::Node& node) {
     return glm::mat4(transform);
 }
 
+// Nodes that share children place those children once per path through the hierarchy: a file of
+// a few hundred nodes can name 2^200 placements. Placing stops with an error after this many, and
+// the placed geometry must fit the memory limit (common/MemoryBudget.h).
+constexpr std::size_t kMaxNodePlacements = 100000;
+// Deeper hierarchies are refused before they exhaust the stack.
+constexpr int kMaxNodeDepth = 256;
+
+// One primitive decoded: per-vertex arrays (normals and uvs empty when absent) and the triangle
+// corners, before any node's transform.
+struct DecodedPrimitive {
+    std::vector<float> positions, normals, uvs;
+    std::vector<std::uint32_t> corners;
+};
+
+DecodedPrimitive decodePrimitive(const tinygltf::Model& model,
+                                 const tinygltf::Primitive& primitive, const std::string& what) {
+    DecodedPrimitive decoded;
+    const auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end()) throw GltfError{what + ": no POSITION"};
+    decoded.positions = readAccessor(model, position->second, 3, what + " POSITION");
+    const std::size_t vertexCount = decoded.positions.size() / 3;
+    if (auto found = primitive.attributes.find("NORMAL"); found != primitive.attributes.end())
+        decoded.normals = readAccessor(model, found->second, 3, what + " NORMAL");
+    if (auto found = primitive.attributes.find("TEXCOORD_0"); found != primitive.attributes.end())
+        decoded.uvs = readAccessor(model, found->second, 2, what + " TEXCOORD_0");
+    if ((!decoded.normals.empty() && decoded.normals.size() != decoded.positions.size()) ||
+        (!decoded.uvs.empty() && decoded.uvs.size() / 2 != vertexCount))
+        throw GltfError{what + ": attributes have different vertex counts"};
+
+    std::vector<std::uint32_t> order;
+    if (primitive.indices >= 0) {
+        order = readIndices(model, primitive.indices, what + " indices");
+    } else {
+        for (std::size_t i = 0; i < vertexCount; ++i) order.push_back(std::uint32_t(i));
+    }
+    for (std::uint32_t index : order)
+        if (index >= vertexCount)
+            throw GltfError{what + ": index " + std::to_string(index) + " out of range (" +
+                            std::to_string(vertexCount) + " vertices)"};
+    decoded.corners = triangleCorners(primitive.mode, order);
+    return decoded;
+}
+
 struct MeshBuilder {
     const tinygltf::Model& model;
     Mesh mesh;
     bool missingNormals = false;
+    std::size_t placements = 0;
+    std::vector<bool> onPath = std::vector<bool>(model.nodes.size(), false);
+    // Each mesh is decoded once, however many nodes place it; its size is bounded by the
+    // buffers' sizes.
+    std::map<int, std::vector<DecodedPrimitive>> decodedMeshes{};
 
-    void addPrimitive(const tinygltf::Primitive& primitive, const glm::mat4& transform,
-                      const std::string& what) {
-        const auto position = primitive.attributes.find("POSITION");
-        if (position == primitive.attributes.end()) throw GltfError{what + ": no POSITION"};
-        const std::vector<float> positions =
-            readAccessor(model, position->second, 3, what + " POSITION");
-        const std::size_t vertexCount = positions.size() / 3;
-        std::vector<float> normals, uvs;
-        if (auto found = primitive.attributes.find("NORMAL"); found != primitive.attributes.end())
-            normals = readAccessor(model, found->second, 3, what + " NORMAL");
-        if (auto found = primitive.attributes.find("TEXCOORD_0");
-            found != primitive.attributes.end())
-            uvs = readAccessor(model, found->second, 2, what + " TEXCOORD_0");
-        if ((!normals.empty() && normals.size() != positions.size()) ||
-            (!uvs.empty() && uvs.size() / 2 != vertexCount))
-            throw GltfError{what + ": attributes have different vertex counts"};
-        missingNormals = missingNormals || normals.empty();
+    // Refuses geometry that would take the mesh past the memory limit or 32-bit indices. The
+    // counts are those of decoded arrays, far from overflowing.
+    void reserveFor(std::size_t vertexCount, std::size_t cornerCount, int meshIndex) {
+        const std::size_t vertices = mesh.vertices.size() + vertexCount;
+        const std::size_t corners = mesh.indices.size() + cornerCount;
+        const std::string what = "mesh " + std::to_string(meshIndex);
+        if (vertices > std::numeric_limits<std::uint32_t>::max())
+            throw GltfError{what + ": more than 2^32 vertices placed in all"};
+        const std::uint64_t bytes =
+            std::uint64_t(vertices) * sizeof(MeshVertex) + std::uint64_t(corners) * 4;
+        if (auto fits = checkMemoryEstimate(bytes, what + ": the placed triangles"); !fits)
+            throw GltfError{fits.error().message};
+    }
 
-        std::vector<std::uint32_t> order;
-        if (primitive.indices >= 0) {
-            order = readIndices(model, primitive.indices, what + " indices");
-        } else {
-            for (std::size_t i = 0; i < vertexCount; ++i) order.push_back(std::uint32_t(i));
-        }
-        for (std::uint32_t index : order)
-            if (index >= vertexCount)
-                throw GltfError{what + ": index " + std::to_string(index) + " out of range (" +
-                                std::to_string(vertexCount) + " vertices)"};
-
+    void place(const DecodedPrimitive& primitive, const glm::mat4& transform, int meshIndex) {
+        const std::size_t vertexCount = primitive.positions.size() / 3;
+        reserveFor(vertexCount, primitive.corners.size(), meshIndex);
+        missingNormals = missingNormals || primitive.normals.empty();
+        const std::vector<float>& positions = primitive.positions;
+        const std::vector<float>& normals = primitive.normals;
+        const std::vector<float>& uvs = primitive.uvs;
         const glm::mat3 normalTransform = glm::inverseTranspose(glm::mat3(transform));
         const auto first = std::uint32_t(mesh.vertices.size());
         for (std::size_t v = 0; v < vertexCount; ++v) {
@@ -207,7 +296,7 @@ struct MeshBuilder {
         }
         // A mirroring transform turns the winding inside out.
         const bool mirrored = glm::determinant(glm::mat3(transform)) < 0.0f;
-        const std::vector<std::uint32_t> corners = triangleCorners(primitive.mode, order);
+        const std::vector<std::uint32_t>& corners = primitive.corners;
         for (std::size_t i = 0; i + 2 < corners.size(); i += 3) {
             const std::uint32_t a = first + corners[i], b = first + corners[i + 1],
                                 c = first + corners[i + 2];
@@ -216,51 +305,94 @@ struct MeshBuilder {
         }
     }
 
-    void addMesh(int meshIndex, const glm::mat4& transform) {
+    const std::vector<DecodedPrimitive>& decodedMesh(int meshIndex) {
+        if (auto found = decodedMeshes.find(meshIndex); found != decodedMeshes.end())
+            return found->second;
         if (meshIndex < 0 || meshIndex >= int(model.meshes.size()))
             throw GltfError{"a node names mesh " + std::to_string(meshIndex) +
                             ", which does not exist"};
         const tinygltf::Mesh& source = model.meshes[std::size_t(meshIndex)];
+        std::vector<DecodedPrimitive> primitives;
         for (std::size_t p = 0; p < source.primitives.size(); ++p)
-            addPrimitive(source.primitives[p], transform,
-                         "mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(p));
+            primitives.push_back(decodePrimitive(
+                model, source.primitives[p],
+                "mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(p)));
+        return decodedMeshes.emplace(meshIndex, std::move(primitives)).first->second;
+    }
+
+    void addMesh(int meshIndex, const glm::mat4& transform) {
+        for (const DecodedPrimitive& primitive : decodedMesh(meshIndex))
+            place(primitive, transform, meshIndex);
     }
 
     void addNode(int nodeIndex, const glm::mat4& parent, int depth) {
-        // Cycles are invalid glTF; the depth bound turns one into an error, not a stack overflow.
-        if (nodeIndex < 0 || nodeIndex >= int(model.nodes.size()) || depth > 256)
-            throw GltfError{"the node hierarchy names a missing node or has a cycle"};
-        const tinygltf::Node& node = model.nodes[std::size_t(nodeIndex)];
+        if (nodeIndex < 0 || nodeIndex >= int(model.nodes.size()))
+            throw GltfError{"the node hierarchy names node " + std::to_string(nodeIndex) +
+                            ", which does not exist"};
+        const auto index = std::size_t(nodeIndex);
+        if (onPath[index])
+            throw GltfError{"node " + std::to_string(nodeIndex) +
+                            " is its own ancestor: the node hierarchy has a cycle"};
+        if (depth > kMaxNodeDepth)
+            throw GltfError{"nodes are nested deeper than " + std::to_string(kMaxNodeDepth) +
+                            " levels"};
+        if (++placements > kMaxNodePlacements)
+            throw GltfError{"the nodes place more than " + std::to_string(kMaxNodePlacements) +
+                            " instances (nodes that share children multiply)"};
+        const tinygltf::Node& node = model.nodes[index];
         const glm::mat4 transform = parent * localTransform(node);
         if (node.mesh >= 0) addMesh(node.mesh, transform);
+        onPath[index] = true;
         for (int child : node.children) addNode(child, transform, depth + 1);
+        onPath[index] = false;
     }
 };
+
+// The JSON text of a .gltf, or of a .glb's first chunk (after a 12-byte header and the chunk's
+// length and type); a malformed header leaves tinygltf to refuse the file.
+std::string_view jsonTextOf(const std::string& bytes, bool binary) {
+    if (!binary) return bytes;
+    if (bytes.size() < 20) return {};
+    std::uint32_t length = 0;
+    for (int i = 3; i >= 0; --i)  // little-endian, whatever the machine's order
+        length = (length << 8) | static_cast<unsigned char>(bytes[12 + std::size_t(i)]);
+    return std::string_view(bytes).substr(20, length);
+}
 
 }  // namespace
 
 Result<Mesh> readGltf(const std::filesystem::path& file) {
-    const std::string name = file.string();
     auto bytes = readInputFile(file, kMaxMeshFileBytes);
     if (!bytes) return bytes.error();
+    return parseGltf(*bytes, file);
+}
+
+Result<Mesh> parseGltf(const std::string& bytes, const std::filesystem::path& file) {
+    const std::string name = displayPath(file);
+    const bool binary = lowerCaseExtension(file) == ".glb";
+    // tinygltf recurses once per level of the JSON, extras included.
+    if (auto nesting = checkJsonNesting(jsonTextOf(bytes, binary), name); !nesting)
+        return nesting.error();
+
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skipImage, nullptr);
+    GltfExternalFiles externalFiles(file);
+    loader.SetFsCallbacks(externalFiles.callbacks());
     tinygltf::Model model;
     std::string errors, warnings;
-    // External buffers are found beside the file.
-    const std::string folder = file.parent_path().string();
-    std::string extension = file.extension().string();
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string& folder = externalFiles.baseDirectory();
     const bool loaded =
-        extension == ".glb"
-            ? loader.LoadBinaryFromMemory(&model, &errors, &warnings,
-                                          reinterpret_cast<const unsigned char*>(bytes->data()),
-                                          unsigned(bytes->size()), folder)
-            : loader.LoadASCIIFromString(&model, &errors, &warnings, bytes->data(),
-                                         unsigned(bytes->size()), folder);
+        binary ? loader.LoadBinaryFromMemory(&model, &errors, &warnings,
+                                             reinterpret_cast<const unsigned char*>(bytes.data()),
+                                             unsigned(bytes.size()), folder)
+               : loader.LoadASCIIFromString(&model, &errors, &warnings, bytes.data(),
+                                            unsigned(bytes.size()), folder);
     if (!loaded) {
-        // tinygltf's messages span lines; the first says what went wrong.
-        std::string first = errors.substr(0, errors.find('\n'));
+        // tinygltf's messages span lines; the first says what went wrong. A refused external
+        // file says it better, if it is what failed (a refused image is only a warning).
+        std::string first = externalFiles.firstRefusal();
+        if (first.empty() || errors.find(first) == std::string::npos)
+            first = shortText(errors.substr(0, errors.find('\n')));
         if (first.empty()) first = "not a valid glTF 2.0 file";
         return Error{name + ": " + first};
     }

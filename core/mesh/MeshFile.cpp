@@ -1,35 +1,39 @@
 #include "mesh/MeshFile.h"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 
+#include "io/ImageType.h"
 #include "io/InputFile.h"
 #include "mesh/GeneratedMeshes.h"
 #include "mesh/GltfReader.h"
 #include "mesh/ObjReader.h"
 
 namespace matevo {
+namespace {
+
+bool isMeshFileName(const std::filesystem::path& file) {
+    const std::string extension = lowerCaseExtension(file);
+    return extension == ".obj" || extension == ".gltf" || extension == ".glb";
+}
+
+}  // namespace
 
 Result<Mesh> loadMesh(const std::string& nameOrFile) {
     if (const auto builtIn = parseBuiltInMesh(nameOrFile)) return makeBuiltInMesh(*builtIn);
     const std::filesystem::path file(nameOrFile);
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    Result<Mesh> mesh = Error{};
-    if (extension == ".obj") {
-        auto text = readInputFile(file, kMaxMeshFileBytes);
-        if (!text) return text.error();
-        mesh = parseObj(*text, nameOrFile);
-    } else if (extension == ".gltf" || extension == ".glb") {
-        mesh = readGltf(file);
-    } else {
+    if (!isMeshFileName(file))
         return Error{nameOrFile +
                      ": not a mesh: expected sphere, shaderball, knot or a .obj, .gltf or .glb file"};
-    }
+    auto bytes = readInputFile(file, kMaxMeshFileBytes);
+    if (!bytes) return bytes.error();
+    return parseMeshFile(*bytes, file);
+}
+
+Result<Mesh> parseMeshFile(const std::string& bytes, const std::filesystem::path& file) {
+    Result<Mesh> mesh = lowerCaseExtension(file) == ".obj" ? parseObj(bytes, file.string())
+                                                           : parseGltf(bytes, file);
     if (!mesh) return mesh.error();
-    if (auto valid = validateMesh(*mesh, nameOrFile); !valid) return valid.error();
+    if (auto valid = validateMesh(*mesh, file.string()); !valid) return valid.error();
     fitToUnitSphere(*mesh);
     return mesh;
 }

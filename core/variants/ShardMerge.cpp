@@ -6,6 +6,7 @@
 #include "io/AtomicFile.h"
 #include "io/CarriedTextures.h"
 #include "io/InputFile.h"
+#include "io/JsonReader.h"
 #include "io/MaterialFile.h"
 #include "io/TextFile.h"
 #include "variants/ShareResume.h"
@@ -31,7 +32,10 @@ Error fieldError(const fs::path& folder, const std::string& field, const std::st
 Result<ShareReport> readShare(const fs::path& folder) {
     auto text = readTextFile(folder / "report.json");
     if (!text) return text.error();
-    ShareReport share{folder, nlohmann::ordered_json::parse(*text, nullptr, false), {}};
+    auto report =
+        parseJsonDocument<nlohmann::ordered_json>(*text, displayPath(folder / "report.json"));
+    if (!report) return report.error();
+    ShareReport share{folder, std::move(*report), {}};
     if (!share.report.is_object())
         return Error{displayPath(folder / "report.json") + ": not a JSON object"};
     if (!share.report.contains("shard"))

@@ -14,8 +14,13 @@ namespace {
 GaCheckpoint checkpointAfter(int generations) {
     GaCheckpoint checkpoint;
     checkpoint.family.hasMedium = true;
+    // A member of its family (Table 2), as a preset's target is.
     checkpoint.target[kEta1] = 1.3;
     checkpoint.target[kEta2] = 0.9;
+    checkpoint.target[kAlpha1] = 0.05;
+    checkpoint.target[kAlpha2] = 0.3;
+    checkpoint.target[kDepth] = 1.0;
+    checkpoint.target[kG] = 0.8;
     checkpoint.baseKappa = {3.1, 2.9, 2.8};
     checkpoint.settings.population = 12;
     checkpoint.settings.generations = 10;
@@ -75,6 +80,25 @@ TEST(GaCheckpoint, MalformedFilesNameTheField) {
     auto preset = loadCheckpoint(folder / "preset.json");
     ASSERT_FALSE(preset.ok());
     EXPECT_NE(preset.error().message.find("format: missing"), std::string::npos);
+}
+
+TEST(GaCheckpoint, GenomesOutsideTable2AreRefused) {
+    const GaCheckpoint valid = checkpointAfter(1);
+    // eta1 of a dielectric coat is at most 2 in Table 2; the generous JSON bound is 1000.
+    GaCheckpoint tamperedMember = valid;
+    tamperedMember.state.population[3].genome[kEta1] = 7.5;
+    auto member = parseCheckpoint(serializeCheckpoint(tamperedMember), "run.json");
+    ASSERT_FALSE(member.ok());
+    EXPECT_NE(member.error().message.find("run.json: population[3].genome: "), std::string::npos)
+        << member.error().message;
+    EXPECT_NE(member.error().message.find("Table 2"), std::string::npos) << member.error().message;
+
+    GaCheckpoint tamperedTarget = valid;
+    tamperedTarget.target[kG] = 0.2;  // Table 2 with this model: g in [0.7, 0.99]
+    auto target = parseCheckpoint(serializeCheckpoint(tamperedTarget), "run.json");
+    ASSERT_FALSE(target.ok());
+    EXPECT_NE(target.error().message.find("run.json: target: "), std::string::npos)
+        << target.error().message;
 }
 
 }  // namespace

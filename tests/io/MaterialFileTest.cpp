@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "io/VariantFolder.h"
 #include "support/ScratchFolder.h"
 
 namespace matevo {
@@ -167,8 +168,45 @@ TEST(MaterialFile, MissingTextureFileNamesFileAndField) {
                                     "paint_roughness.png", "missing.png");
     auto loaded = loadMaterial(file, MaterialFile{});
     ASSERT_FALSE(loaded.ok());
-    EXPECT_NE(loaded.error().message.find(file.string() + ": textures.roughness: no such file"),
+    EXPECT_NE(loaded.error().message.find(file.string() + ": textures.roughness: "),
               std::string::npos);
+    EXPECT_NE(loaded.error().message.find("missing.png: cannot read: no such file"),
+              std::string::npos);
+}
+
+TEST(MaterialFile, TexturePathsThatCannotBeLookedAtAreRefusedNotThrown) {
+    testing::ScratchFolder folder("material");
+    std::filesystem::create_symlink("loop2.png", folder / "loop.png");
+    std::filesystem::create_symlink("loop.png", folder / "loop2.png");
+    std::filesystem::create_directory(folder / "folder.png");
+    const std::string json = materialToJson(paintedMetal()).dump();
+    for (const std::string& texture : {std::string("loop.png"), std::string("folder.png"),
+                                       std::string(5000, 'x') + ".png"}) {
+        const auto file = folder / "m.json";
+        std::ofstream(file) << replaced(json, "paint_roughness.png", texture);
+        auto loaded = loadMaterial(file, MaterialFile{});
+        ASSERT_FALSE(loaded.ok()) << texture;
+        EXPECT_NE(loaded.error().message.find("m.json: textures.roughness: "), std::string::npos)
+            << loaded.error().message;
+        EXPECT_NE(loaded.error().message.find(": cannot read: "), std::string::npos)
+            << loaded.error().message;
+    }
+
+    // In a variant folder too, and a material file that is itself a symlink loop is named.
+    const auto variants = folder / "set";
+    std::filesystem::create_directory(variants);
+    std::ofstream(variants / "v0.json") << replaced(json, "paint_roughness.png", "../loop.png");
+    auto withLoop = loadVariantFolder(variants, MaterialFile{});
+    ASSERT_FALSE(withLoop.ok());
+    EXPECT_NE(withLoop.error().message.find("v0.json: textures.roughness: "), std::string::npos)
+        << withLoop.error().message;
+    std::filesystem::remove(variants / "v0.json");
+    std::filesystem::create_symlink("v1.json", variants / "v0.json");
+    std::filesystem::create_symlink("v0.json", variants / "v1.json");
+    auto loopedFile = loadVariantFolder(variants, MaterialFile{});
+    ASSERT_FALSE(loopedFile.ok());
+    EXPECT_NE(loopedFile.error().message.find("v0.json: cannot read: "), std::string::npos)
+        << loopedFile.error().message;
 }
 
 }  // namespace
