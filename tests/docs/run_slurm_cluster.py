@@ -226,17 +226,15 @@ def run_on_cluster(cluster, found, sbatch_file, folder, env):
 
     wait_for(first_block_written, f"task {task}'s first block", 300, poll=0.01)
     os.kill(matevo, signal.SIGSTOP)
-    share = shares / str(CANCELLED_TASK)
-    if share.exists():
-        raise RuntimeError(f"task {task} ended before it could be stopped midway")
     cluster.slurm(["scancel", task])
     # The task is CANCELLED at once; its matevo still writes the partial share before it ends.
     wait_for(lambda: not Path(f"/proc/{matevo}").exists(), f"task {task}'s matevo to end", 60)
     if cluster.job_state(task) != "CANCELLED":
         raise RuntimeError(f"task {task} ended {cluster.job_state(task)}, not CANCELLED")
+    share = shares / str(CANCELLED_TASK)
     report = json.loads((share / "report.json").read_text())
     if report.get("partial") is not True:
-        raise RuntimeError(f"{share}: the cancelled task's report is not marked partial")
+        raise RuntimeError(f"{share}: not partial: task {task} ended before it was cancelled")
     print(f"slurm cluster: task {task} cancelled midway, "
           f"{sum(block['met'] for block in report['blocks'])} block(s) complete")
 
