@@ -216,7 +216,7 @@ def run_on_cluster(cluster, found, sbatch_file, folder, env):
             raise RuntimeError(f"task {task} ended {state} before it could be cancelled")
         return cluster.matevo_of(task) if state == "RUNNING" else None
 
-    matevo = wait_for(running_matevo, f"task {task}'s matevo", 600)
+    matevo = wait_for(running_matevo, f"task {task}'s matevo", 300)
     shares = folder / "shares"
 
     def first_block_written():
@@ -224,7 +224,7 @@ def run_on_cluster(cluster, found, sbatch_file, folder, env):
             return block_written(shares, CANCELLED_TASK)
         raise RuntimeError(f"task {task}'s matevo ended before it could be cancelled")
 
-    wait_for(first_block_written, f"task {task}'s first block", 300, poll=0.01)
+    wait_for(first_block_written, f"task {task}'s first block", 120, poll=0.01)
     os.kill(matevo, signal.SIGSTOP)
     cluster.slurm(["scancel", task])
     # The task is CANCELLED at once; its matevo still writes the partial share before it ends.
@@ -240,7 +240,7 @@ def run_on_cluster(cluster, found, sbatch_file, folder, env):
 
     rerun_script = f"jobid={jobid}\nmerge={merge}\n" + found["slurm-rerun"] + 'echo "$merge"\n'
     (merge,) = bash(rerun_script, folder, task_env)
-    wait_for(cluster.queue_empty, "every job to end", 900)
+    wait_for(cluster.queue_empty, "every job to end", 300)
     return merge
 
 
