@@ -2,9 +2,12 @@
 // Material JSON files for the commands that read them (render --genome, export): any JSON that
 // matevo writes for a material (io/MaterialFile.h). A bare genome carries no family, so it takes
 // the family, kappa, textures and scene of --preset (or the default preset); beside a file that
-// names its own, --preset would do nothing and is refused. Warnings go to stderr; errors become
-// a UsageError (exit 2).
+// names its own, --preset would do nothing and is refused. The preset is read only when it is
+// needed, so that material files (a moved variant set) are read where no preset can be found.
+// Warnings go to stderr; errors become a UsageError (exit 2).
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include "CommandLine.h"
 #include "PresetOption.h"
@@ -14,7 +17,7 @@ namespace matevo::cli {
 
 class MaterialSource {
 public:
-    // Consumes --preset.
+    // Consumes --preset (read when first needed).
     explicit MaterialSource(CommandLine& args);
 
     // The preset's target as a material.
@@ -22,7 +25,10 @@ public:
     MaterialFile load(const std::filesystem::path& file) const;
 
 private:
-    PresetChoice preset_;
+    const PresetChoice& preset() const;
+
+    std::optional<std::string> presetOption_;
+    mutable std::optional<PresetChoice> preset_;
 };
 
 }  // namespace matevo::cli

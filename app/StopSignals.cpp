@@ -5,18 +5,21 @@
 #include <csignal>
 
 #include "common/StopRequest.h"
+#include "io/TemporaryFiles.h"
 
 namespace matevo::cli {
 
 namespace {
 
+// Ends the process with the status the signal itself gives, leaving no temporary file.
+void quit(int signal) {
+    removeTemporaryFilesInFlight();
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
 void onStopSignal(int signal) {
-    if (stopRequested() != 0) {
-        // Asked twice: stop now, with the status the signal itself gives.
-        std::signal(signal, SIG_DFL);
-        std::raise(signal);
-        return;
-    }
+    if (stopRequested() != 0) return quit(signal);  // asked twice: stop now
     requestStop(signal);
     constexpr char kNotice[] =
         "\nmatevo: stopping after the current step and keeping what is complete "
@@ -24,16 +27,20 @@ void onStopSignal(int signal) {
     (void)!::write(STDERR_FILENO, kNotice, sizeof kNotice - 1);
 }
 
-}  // namespace
-
-void installStopSignalHandlers() {
+void installHandler(void (*handler)(int)) {
     struct sigaction action {};
-    action.sa_handler = onStopSignal;
+    action.sa_handler = handler;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
 }
+
+}  // namespace
+
+void installStopSignalHandlers() { installHandler(onStopSignal); }
+
+void installQuitSignalHandlers() { installHandler(quit); }
 
 int stoppedExitStatus(int signal) { return 128 + signal; }
 

@@ -7,6 +7,10 @@
 namespace matevo::cli {
 
 void installStopSignalHandlers();
+// For short commands (render, scene): SIGINT and SIGTERM end them at once, as by default, but
+// first remove the temporary file being written (io/TemporaryFiles.h). The stop handlers above
+// do the same when a second signal ends a long command.
+void installQuitSignalHandlers();
 
 // 130 for SIGINT, 143 for SIGTERM (128 + signal), as shells report a process the signal ended.
 int stoppedExitStatus(int signal);

@@ -217,6 +217,8 @@ int runEvolve(CommandLine& args) {
         if (auto saved = saveCheckpoint(checkpoint, *checkpointFile); !saved)
             throw UsageError("--checkpoint: " + saved.error().message);
     };
+    // A checkpoint write a kill -9 interrupted earlier left its temporary file there.
+    if (checkpointFile) removeStaleTemporaryFilesBeside(*checkpointFile);
     saveState();
     while (!ga.finished() && !stopRequested()) {
         ga.step();

@@ -5,10 +5,12 @@
 
 #include "MaterialOption.h"
 #include "RenderBackend.h"
+#include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/ImageFile.h"
+#include "io/TemporaryFiles.h"
 #include "scene/LightingChoice.h"
 
 namespace matevo::cli {
@@ -42,6 +44,9 @@ int runRender(CommandLine& args) {
     const auto lighting = args.option("--env");
     const std::filesystem::path out = imageOutputPath(args);
     args.finish();
+    // No temporary file is left behind: not by a signal now, nor by a kill -9 earlier.
+    installQuitSignalHandlers();
+    removeStaleTemporaryFilesBeside(out);
     const MaterialFile material = genomeFile ? source.load(*genomeFile) : source.presetMaterial();
     const int imageSize = int(size.value_or(material.scene.imageSize));
     checkWorkEstimate(renderEstimate(imageSize));

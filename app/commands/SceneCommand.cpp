@@ -5,6 +5,7 @@
 
 #include "Messages.h"
 #include "PresetOption.h"
+#include "StopSignals.h"
 #include "color/ToneMap.h"
 #include "commands/Commands.h"
 #include "gpu/GpuContext.h"
@@ -12,6 +13,7 @@
 #include "io/ImageFile.h"
 #include "io/ImageType.h"
 #include "io/MaterialFile.h"
+#include "io/TemporaryFiles.h"
 #include "io/VariantFolder.h"
 #include "material/FgdTableCache.h"
 #include "mesh/MeshFile.h"
@@ -98,6 +100,9 @@ int runScene(CommandLine& args) {
         throw UsageError("--visibility: expected auto, raster or compute, got " + visibilityName);
     const std::filesystem::path out = imageOutputPath(args);
     args.finish();
+    // No temporary file is left behind: not by a signal now, nor by a kill -9 earlier.
+    installQuitSignalHandlers();
+    removeStaleTemporaryFilesBeside(out);
 
     const std::vector<MaterialInstance> materials = loadMaterials(variantFolder, choice);
     auto mesh = loadMesh(meshName);

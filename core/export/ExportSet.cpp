@@ -46,6 +46,10 @@ std::optional<ExportFormat> exportFormatOfFile(const std::filesystem::path& file
     return std::nullopt;
 }
 
+bool withinExportGoal(const ExportedVariant& variant, const ExportSettings& settings) {
+    return variant.deltaE.stats.mean <= settings.fit.goalMeanDeltaE00;
+}
+
 Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
                                PopulationRenderer& belcour, const ExportSettings& settings,
                                const ExportProgress& progress) {
@@ -85,41 +89,55 @@ Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
 }
 
 Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
-                                 const std::filesystem::path& file) {
+                                 const std::filesystem::path& file, const GltfAsset& asset) {
+    if (format == ExportFormat::MaterialX && asset.arrangement != GltfArrangement::Spheres)
+        return Error{file.string() + ": MaterialX holds materials only; a " +
+                     std::string(toString(asset.arrangement)) + " arrangement needs glTF"};
     std::vector<NamedGltfMaterial> materials;
     for (const auto& variant : set.variants)
         materials.push_back({variant.name, variant.fit.material});
     // Temporary files of an export killed earlier (io/AtomicFile.h).
-    removeStaleTemporaryFiles(file.has_parent_path() ? file.parent_path() : ".");
+    removeStaleTemporaryFilesBeside(file);
     const Status written = format == ExportFormat::MaterialX
                                ? writeMaterialX(materials, set.textures, file)
-                               : writeGltf(materials, set.textures, file);
+                               : writeGltf(materials, set.textures, file, asset);
     if (!written) return written.error();
-    return ExportReport{format, file, set.settings, set.variants};
+    return ExportReport{format, asset.arrangement, file, set.settings, set.variants};
 }
 
 Result<ExportReport> exportMaterials(const std::vector<MaterialFile>& materials,
                                      PopulationRenderer& belcour, ExportFormat format,
                                      const std::filesystem::path& file,
                                      const ExportSettings& settings,
-                                     const ExportProgress& progress) {
+                                     const ExportProgress& progress, const GltfAsset& asset) {
     auto set = fitForExport(materials, belcour, settings, progress);
     if (!set) return set.error();
-    return writeExport(*set, format, file);
+    return writeExport(*set, format, file, asset);
+}
+
+std::string_view toString(GltfArrangement arrangement) {
+    switch (arrangement) {
+        case GltfArrangement::Spheres: return "spheres";
+        case GltfArrangement::MaterialVariants: return "variants";
+        case GltfArrangement::Instances: return "instances";
+    }
+    return "spheres";
 }
 
 namespace {
 
 nlohmann::ordered_json gltfParameters(const GltfMaterial& m) {
-    nlohmann::ordered_json json = {{"base_color", m.baseColor},
-                                   {"metallic", m.metallic},
-                                   {"roughness", m.roughness},
-                                   {"ior", m.ior},
-                                   {"specular", m.specular},
-                                   {"specular_color", m.specularColor},
-                                   {"clearcoat", m.clearcoat},
-                                   {"clearcoat_roughness", m.clearcoatRoughness},
-                                   {"base_color_texture", m.baseColorTextured}};
+    // As the file has them: values that do not act on the material are left out.
+    nlohmann::ordered_json json = {
+        {"base_color", m.baseColor}, {"metallic", m.metallic}, {"roughness", m.roughness}};
+    if (iorActs(m)) json["ior"] = m.ior;
+    if (specularActs(m)) {
+        json["specular"] = m.specular;
+        json["specular_color"] = m.specularColor;
+    }
+    json["clearcoat"] = m.clearcoat;
+    json["clearcoat_roughness"] = m.clearcoatRoughness;
+    json["base_color_texture"] = m.baseColorTextured;
     json["roughness_texture"] = m.roughnessTextured;
     json["clearcoat_roughness_texture"] = m.clearcoatRoughnessTextured;
     if (m.roughnessTextured || m.clearcoatRoughnessTextured)
@@ -141,12 +159,15 @@ nlohmann::ordered_json exportReportJson(const ExportReport& report) {
                             {"max_de00", stats.max},
                             {"p95_de00", stats.p95},
                             {"fit_mean_de00", variant.fit.meanDeltaE00},
+                            {"within_goal", withinExportGoal(variant, report.settings)},
                             {"fit_renders", variant.fit.evaluations}});
     }
     return {{"format", toString(report.format)},
+            {"arrangement", toString(report.arrangement)},
             {"file", report.file.string()},
             {"report_size", report.settings.reportSize},
             {"fit_size", report.settings.fit.imageSize},
+            {"goal_mean_de00", report.settings.fit.goalMeanDeltaE00},
             {"mean_de00", report.variants.empty() ? 0.0 : sum / double(report.variants.size())},
             {"variants", std::move(variants)}};
 }

@@ -15,6 +15,7 @@
 #include "color/ImageDifference.h"
 #include "common/Result.h"
 #include "export/GltfFit.h"
+#include "export/GltfWriter.h"
 #include "io/MaterialFile.h"
 #include "render/PopulationRenderer.h"
 
@@ -43,6 +44,11 @@ struct ExportedVariant {
     Image gltfRender;
 };
 
+// Whether the export reaches the goal (ΔE00 mean at the report size ≤ the fit's goal): past it,
+// the glTF material differs from matevo's render by as much as a set's variants differ from each
+// other, and the report says the variant is not exportable within the goal.
+bool withinExportGoal(const ExportedVariant& variant, const ExportSettings& settings);
+
 // The fitted set, ready to be written in any format.
 struct FittedSet {
     ExportSettings settings;
@@ -52,6 +58,7 @@ struct FittedSet {
 
 struct ExportReport {
     ExportFormat format;
+    GltfArrangement arrangement = GltfArrangement::Spheres;
     std::filesystem::path file;
     ExportSettings settings;
     std::vector<ExportedVariant> variants;
@@ -65,18 +72,22 @@ using ExportProgress = std::function<void(std::size_t, std::size_t)>;
 Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
                                PopulationRenderer& belcour, const ExportSettings& settings = {},
                                const ExportProgress& progress = {});
-// Writes the fitted set in `format` to `file`.
+// Writes the fitted set in `format` to `file`; glTF arranged as `asset` says (GltfWriter.h),
+// MaterialX only as a list of materials (Spheres).
 Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
-                                 const std::filesystem::path& file);
+                                 const std::filesystem::path& file, const GltfAsset& asset = {});
 // Both steps.
 Result<ExportReport> exportMaterials(const std::vector<MaterialFile>& materials,
                                      PopulationRenderer& belcour, ExportFormat format,
                                      const std::filesystem::path& file,
                                      const ExportSettings& settings = {},
-                                     const ExportProgress& progress = {});
+                                     const ExportProgress& progress = {},
+                                     const GltfAsset& asset = {});
+
+std::string_view toString(GltfArrangement arrangement);  // spheres, variants, instances
 
 // Per variant: name, fitted glTF parameters, ΔE00 (mean, max, p95 at the report size; mean at
-// the fitting size), renders used; and their mean.
+// the fitting size), whether it is within the goal, renders used; and their mean.
 nlohmann::ordered_json exportReportJson(const ExportReport& report);
 
 }  // namespace matevo

@@ -7,6 +7,7 @@
 #include "color/ImageDifference.h"
 #include "export/GltfRenderer.h"
 #include "export/NelderMead.h"
+#include "genome/FamilyRules.h"
 #include "material/Fresnel.h"
 
 namespace matevo {
@@ -32,8 +33,9 @@ struct Range {
     double min, max;
 };
 
-constexpr Range kRanges[kParameterCount] = {{0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1},
-                                            {0, 1}, {0, 1}, {1, 3}, {0, 1}};
+Range rangeOf(Parameter parameter, double maxIor) {
+    return parameter == kIor ? Range{1.0, maxIor} : Range{0.0, 1.0};
+}
 
 double toRange(double variable, Range range) {
     return range.min + (range.max - range.min) / (1.0 + std::exp(-variable));
@@ -44,26 +46,63 @@ double toVariable(double value, Range range) {
     return std::log(t / (1.0 - t));
 }
 
-GltfMaterial withParameters(GltfMaterial material, const std::vector<double>& variables) {
-    double value[kParameterCount];
-    for (int i = 0; i < kParameterCount; ++i) value[i] = toRange(variables[i], kRanges[i]);
-    material.baseColor = {value[kBaseRed], value[kBaseGreen], value[kBaseBlue]};
-    material.metallic = value[kMetallic];
-    material.roughness = value[kRoughness];
-    material.clearcoat = value[kClearcoat];
-    material.clearcoatRoughness = value[kClearcoatRoughness];
-    material.ior = value[kIor];
-    material.specular = value[kSpecular];
+double& valueOf(GltfMaterial& material, Parameter parameter) {
+    switch (parameter) {
+        case kBaseRed: return material.baseColor[0];
+        case kBaseGreen: return material.baseColor[1];
+        case kBaseBlue: return material.baseColor[2];
+        case kMetallic: return material.metallic;
+        case kRoughness: return material.roughness;
+        case kClearcoat: return material.clearcoat;
+        case kClearcoatRoughness: return material.clearcoatRoughness;
+        case kIor: return material.ior;
+        case kSpecular:
+        case kParameterCount: break;
+    }
+    return material.specular;
+}
+
+// A start of the fit: the material it starts from and the parameters it varies; the others
+// keep the start's values. A metal start holds metallic at 1 and leaves ior and specular at
+// glTF's defaults, which do not act on a metal (GltfMaterial.h), so that a metal fit never
+// carries values a client could read differently.
+struct Start {
+    GltfMaterial material;
+    std::vector<Parameter> free;
+    double maxIor = GltfMaterial::kDefaultIor;
+};
+
+Start metalStart(GltfMaterial material) {
+    material.metallic = 1.0;
+    material.ior = GltfMaterial::kDefaultIor;
+    material.specular = 1.0;
+    return {material,
+            {kBaseRed, kBaseGreen, kBaseBlue, kRoughness, kClearcoat, kClearcoatRoughness}};
+}
+
+// The ior is varied only where the family gives the fit a range for it (maximumFittedIor).
+Start dielectricStart(GltfMaterial material, double maxIor) {
+    std::vector<Parameter> free;
+    for (int i = 0; i < kParameterCount; ++i)
+        if (i != kIor || maxIor > GltfMaterial::kDefaultIor) free.push_back(Parameter(i));
+    if (maxIor <= GltfMaterial::kDefaultIor) material.ior = GltfMaterial::kDefaultIor;
+    return {material, free, maxIor};
+}
+
+GltfMaterial withParameters(const Start& start, const std::vector<double>& variables) {
+    GltfMaterial material = start.material;
+    for (std::size_t i = 0; i < start.free.size(); ++i)
+        valueOf(material, start.free[i]) =
+            toRange(variables[i], rangeOf(start.free[i], start.maxIor));
     return material;
 }
 
-std::vector<double> variablesOf(const GltfMaterial& material) {
-    const double value[kParameterCount] = {
-        material.baseColor[0], material.baseColor[1], material.baseColor[2],
-        material.metallic,     material.roughness,    material.clearcoat,
-        material.clearcoatRoughness, material.ior,    material.specular};
-    std::vector<double> variables(kParameterCount);
-    for (int i = 0; i < kParameterCount; ++i) variables[i] = toVariable(value[i], kRanges[i]);
+std::vector<double> variablesOf(const Start& start) {
+    GltfMaterial material = start.material;
+    std::vector<double> variables;
+    for (Parameter parameter : start.free)
+        variables.push_back(
+            toVariable(valueOf(material, parameter), rangeOf(parameter, start.maxIor)));
     return variables;
 }
 
@@ -101,12 +140,17 @@ GltfMaterial physicalGuess(const MaterialInstance& instance, const SceneTextures
     } else {
         guess.metallic = 0.0;
         guess.baseColor = {0.5, 0.5, 0.5};
-        guess.ior = std::clamp(genome.eta2(), 1.0, 3.0);
+        guess.ior = std::clamp(genome.eta2(), 1.0, maximumFittedIor(instance.family));
     }
     return guess;
 }
 
 }  // namespace
+
+double maximumFittedIor(const MaterialFamily& family) {
+    if (family.base == Base::Conductor) return GltfMaterial::kDefaultIor;
+    return familyRules(family).ranges[kEta2].max;
+}
 
 GltfFit fitGltfMaterial(const MaterialInstance& material, const Image& target,
                         const SceneTextures& textures, const SceneSettings& scene,
@@ -118,25 +162,39 @@ GltfFit fitGltfMaterial(const MaterialInstance& material, const Image& target,
         auto map = compareImages(image, target);
         return map ? map->stats.mean : 1e9;
     };
-    auto objective = [&](const std::vector<double>& variables) {
-        return meanDeltaE(withParameters(guess, variables));
-    };
     // Two starts: the physical reading, and the same with metal and dielectric swapped (a
     // medium can make a metal look like paint and the reverse).
+    const bool metal = guess.metallic == 1.0;
     GltfMaterial swapped = guess;
-    swapped.metallic = 1.0 - guess.metallic;
+    swapped.metallic = metal ? 0.0 : 1.0;
+    const double maxIor = maximumFittedIor(material.family);
+    const Start starts[] = {metal ? metalStart(guess) : dielectricStart(guess, maxIor),
+                            metal ? dielectricStart(swapped, maxIor) : metalStart(swapped)};
     GltfFit best;
     best.meanDeltaE00 = 1e30;
-    const int budgetPerStart = settings.maxEvaluations / 2;
-    for (const GltfMaterial& start : {guess, swapped}) {
-        const Minimum minimum =
-            minimizeNelderMead(objective, variablesOf(start), 1.0, budgetPerStart, 1e-4);
+    const Start* bestStart = nullptr;
+    std::vector<double> bestPoint;
+    const auto minimizeFrom = [&](const Start& start, const std::vector<double>& point,
+                                  int budget) {
+        const Minimum minimum = minimizeNelderMead(
+            [&](const std::vector<double>& variables) {
+                return meanDeltaE(withParameters(start, variables));
+            },
+            point, 1.0, budget, 1e-4);
         best.evaluations += minimum.evaluations;
         if (minimum.value < best.meanDeltaE00) {
             best.meanDeltaE00 = minimum.value;
-            best.material = withParameters(guess, minimum.point);
+            best.material = withParameters(start, minimum.point);
+            bestStart = &start;
+            bestPoint = minimum.point;
         }
-    }
+    };
+    const int budgetPerStart = settings.maxEvaluations / 2;
+    for (const Start& start : starts) minimizeFrom(start, variablesOf(start), budgetPerStart);
+    // A fit past the goal gets one more round from its best point: a fresh simplex leaves the
+    // flat valley a collapsed one stops in.
+    if (best.meanDeltaE00 > settings.goalMeanDeltaE00)
+        minimizeFrom(*bestStart, bestPoint, budgetPerStart);
     return best;
 }
 

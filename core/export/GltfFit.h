@@ -14,6 +14,8 @@ namespace matevo {
 struct GltfFitSettings {
     int imageSize = 64;        // side of the images compared while fitting
     int maxEvaluations = 900;  // renders, over all starts
+    // The export's goal; a fit past it gets one more round (half the budget again).
+    double goalMeanDeltaE00 = 2.0;
 };
 
 struct GltfFit {
@@ -21,6 +23,14 @@ struct GltfFit {
     double meanDeltaE00 = 0.0;  // at the fitting size, against `target`
     int evaluations = 0;
 };
+
+// The largest ior a fit of `family` writes (the smallest is 1: no dielectric F0). A dielectric
+// base: the largest index Table 2 gives that base (eta2), the range the reference model is
+// defined on. A conductor base has no dielectric index: the dielectric part of its glTF fit
+// stands in for coat and medium, where an ior would stand in for something else (often the coat's
+// reflection, which glTF fixes at ior 1.5 and clients read differently); it stays at glTF's 1.5,
+// so no ior is written.
+double maximumFittedIor(const MaterialFamily& family);
 
 // `target` is the Belcour render of `material` at settings.imageSize (either back end).
 // Deterministic.

@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cctype>
+#include <limits>
 #include <sstream>
+
+#include <glm/common.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
@@ -19,7 +23,7 @@ namespace {
 
 constexpr int kArrayBuffer = 34962;         // glTF bufferView targets
 constexpr int kElementArrayBuffer = 34963;
-constexpr double kSphereSpacing = 2.5;      // centre to centre, unit spheres
+constexpr double kSphereSpacing = 2.5;      // centre to centre, unit spheres (Spheres)
 
 // Appends bytes to the one buffer as a new buffer view (4-byte aligned); returns its index.
 int addBufferView(tinygltf::Model& model, const void* data, std::size_t size, int target) {
@@ -47,7 +51,7 @@ int addAccessor(tinygltf::Model& model, int bufferView, int componentType, std::
     return int(model.accessors.size() - 1);
 }
 
-struct SphereAccessors {
+struct MeshAccessors {
     int positions, normals, uvs, indices;
 };
 
@@ -60,15 +64,21 @@ int addVertexAttribute(tinygltf::Model& model, const Mesh& mesh, Attribute MeshV
     return addBufferView(model, values.data(), values.size() * sizeof(Attribute), kArrayBuffer);
 }
 
-SphereAccessors addSphere(tinygltf::Model& model) {
-    const Mesh mesh = makeSphereMesh(64, 32);
+MeshAccessors addMesh(tinygltf::Model& model, const Mesh& mesh) {
     const std::size_t count = mesh.vertices.size();
-    SphereAccessors accessors;
+    MeshAccessors accessors;
     accessors.positions =
         addAccessor(model, addVertexAttribute(model, mesh, &MeshVertex::position),
                     TINYGLTF_COMPONENT_TYPE_FLOAT, count, TINYGLTF_TYPE_VEC3);
-    model.accessors[std::size_t(accessors.positions)].minValues = {-1.0, -1.0, -1.0};
-    model.accessors[std::size_t(accessors.positions)].maxValues = {1.0, 1.0, 1.0};
+    // glTF requires the bounds of positions.
+    glm::vec3 lowest(std::numeric_limits<float>::max()), highest(-lowest);
+    for (const auto& vertex : mesh.vertices) {
+        lowest = glm::min(lowest, vertex.position);
+        highest = glm::max(highest, vertex.position);
+    }
+    auto& positions = model.accessors[std::size_t(accessors.positions)];
+    positions.minValues = {lowest.x, lowest.y, lowest.z};
+    positions.maxValues = {highest.x, highest.y, highest.z};
     accessors.normals = addAccessor(model, addVertexAttribute(model, mesh, &MeshVertex::normal),
                                     TINYGLTF_COMPONENT_TYPE_FLOAT, count, TINYGLTF_TYPE_VEC3);
     accessors.uvs = addAccessor(model, addVertexAttribute(model, mesh, &MeshVertex::uv),
@@ -79,6 +89,36 @@ SphereAccessors addSphere(tinygltf::Model& model) {
     accessors.indices = addAccessor(model, indexView, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
                                     mesh.indices.size(), TINYGLTF_TYPE_SCALAR);
     return accessors;
+}
+
+tinygltf::Primitive primitiveOf(const MeshAccessors& accessors, int material) {
+    tinygltf::Primitive primitive;
+    primitive.attributes = {{"POSITION", accessors.positions},
+                            {"NORMAL", accessors.normals},
+                            {"TEXCOORD_0", accessors.uvs}};
+    primitive.indices = accessors.indices;
+    primitive.material = material;
+    primitive.mode = TINYGLTF_MODE_TRIANGLES;
+    return primitive;
+}
+
+// Adds a mesh of one primitive and a node showing it; returns the node.
+int addNode(tinygltf::Model& model, const std::string& name, tinygltf::Primitive primitive) {
+    tinygltf::Mesh mesh;
+    mesh.name = name;
+    mesh.primitives.push_back(std::move(primitive));
+    model.meshes.push_back(std::move(mesh));
+    tinygltf::Node node;
+    node.name = name;
+    node.mesh = int(model.meshes.size() - 1);
+    model.nodes.push_back(std::move(node));
+    return int(model.nodes.size() - 1);
+}
+
+void useExtension(tinygltf::Model& model, const std::string& extension) {
+    if (std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), extension) ==
+        model.extensionsUsed.end())
+        model.extensionsUsed.push_back(extension);
 }
 
 // Adds a PNG in the buffer, its image, a sampler (once) and a texture; returns the texture.
@@ -119,7 +159,7 @@ struct SharedTextures {
 };
 
 tinygltf::Material toGltf(const NamedGltfMaterial& named, const SharedTextures& textures,
-                          std::vector<std::string>& extensionsUsed) {
+                          tinygltf::Model& model) {
     const GltfMaterial& m = named.material;
     tinygltf::Material material;
     material.name = named.name;
@@ -133,17 +173,20 @@ tinygltf::Material toGltf(const NamedGltfMaterial& named, const SharedTextures& 
 
     auto use = [&](const std::string& extension, tinygltf::Value::Object values) {
         material.extensions[extension] = tinygltf::Value(std::move(values));
-        if (std::find(extensionsUsed.begin(), extensionsUsed.end(), extension) ==
-            extensionsUsed.end())
-            extensionsUsed.push_back(extension);
+        useExtension(model, extension);
     };
-    tinygltf::Value::Object clearcoat{{"clearcoatFactor", number(m.clearcoat)},
-                                      {"clearcoatRoughnessFactor", number(m.clearcoatRoughness)}};
-    if (m.clearcoatRoughnessTextured)
-        clearcoat["clearcoatRoughnessTexture"] = textureReference(textures.roughness);
-    use("KHR_materials_clearcoat", std::move(clearcoat));
-    use("KHR_materials_ior", {{"ior", number(m.ior)}});
-    if (m.specular != 1.0 || m.specularColor != std::array<double, 3>{1.0, 1.0, 1.0})
+    // Only values that act on the material (GltfMaterial.h): a client that reads an extension
+    // the fit did not use would render something else.
+    if (clearcoatActs(m)) {
+        tinygltf::Value::Object clearcoat{
+            {"clearcoatFactor", number(m.clearcoat)},
+            {"clearcoatRoughnessFactor", number(m.clearcoatRoughness)}};
+        if (m.clearcoatRoughnessTextured)
+            clearcoat["clearcoatRoughnessTexture"] = textureReference(textures.roughness);
+        use("KHR_materials_clearcoat", std::move(clearcoat));
+    }
+    if (iorActs(m)) use("KHR_materials_ior", {{"ior", number(m.ior)}});
+    if (specularActs(m))
         use("KHR_materials_specular",
             {{"specularFactor", number(m.specular)},
              {"specularColorFactor",
@@ -153,13 +196,75 @@ tinygltf::Material toGltf(const NamedGltfMaterial& named, const SharedTextures& 
     return material;
 }
 
+// A sphere per material, side by side on a square grid.
+void arrangeSpheres(tinygltf::Model& model, const std::vector<NamedGltfMaterial>& materials,
+                    tinygltf::Scene& scene) {
+    const MeshAccessors sphere = addMesh(model, makeSphereMesh(64, 32));
+    const int columns = std::max(1, int(std::ceil(std::sqrt(double(materials.size())))));
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const int node = addNode(model, materials[i].name, primitiveOf(sphere, int(i)));
+        const int column = int(i) % columns, row = int(i) / columns;
+        model.nodes[std::size_t(node)].translation = {column * kSphereSpacing,
+                                                      -row * kSphereSpacing, 0.0};
+        scene.nodes.push_back(node);
+    }
+}
+
+// KHR_materials_variants: the mesh wears material 0; material i > 0 is variant i - 1, named
+// after it.
+void arrangeMaterialVariants(tinygltf::Model& model,
+                             const std::vector<NamedGltfMaterial>& materials, const Mesh& mesh,
+                             tinygltf::Scene& scene) {
+    tinygltf::Primitive primitive = primitiveOf(addMesh(model, mesh), 0);
+    tinygltf::Value::Array variants, mappings;
+    for (std::size_t i = 1; i < materials.size(); ++i) {
+        variants.push_back(tinygltf::Value(
+            tinygltf::Value::Object{{"name", tinygltf::Value(materials[i].name)}}));
+        mappings.push_back(tinygltf::Value(tinygltf::Value::Object{
+            {"material", tinygltf::Value(int(i))},
+            {"variants", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(int(i - 1))})}}));
+    }
+    const std::string extension = "KHR_materials_variants";
+    if (!variants.empty()) {
+        model.extensions[extension] = tinygltf::Value(
+            tinygltf::Value::Object{{"variants", tinygltf::Value(std::move(variants))}});
+        primitive.extensions[extension] = tinygltf::Value(
+            tinygltf::Value::Object{{"mappings", tinygltf::Value(std::move(mappings))}});
+        useExtension(model, extension);
+    }
+    scene.nodes.push_back(addNode(model, materials.front().name, std::move(primitive)));
+}
+
+// A node per instance, with the layout's transform; one glTF mesh per material, all sharing the
+// mesh's accessors.
+void arrangeInstances(tinygltf::Model& model, const std::vector<NamedGltfMaterial>& materials,
+                      const Mesh& mesh, const std::vector<SceneInstance>& instances,
+                      tinygltf::Scene& scene) {
+    const MeshAccessors accessors = addMesh(model, mesh);
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        tinygltf::Mesh gltfMesh;
+        gltfMesh.name = materials[i].name;
+        gltfMesh.primitives.push_back(primitiveOf(accessors, int(i)));
+        model.meshes.push_back(std::move(gltfMesh));
+    }
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+        const std::size_t material = instances[i].material % materials.size();
+        tinygltf::Node node;
+        node.name = materials[material].name + " #" + std::to_string(i);
+        node.mesh = int(material);
+        const float* matrix = glm::value_ptr(instances[i].transform);  // column-major, as glTF
+        node.matrix.assign(matrix, matrix + 16);
+        model.nodes.push_back(std::move(node));
+        scene.nodes.push_back(int(model.nodes.size() - 1));
+    }
+}
+
 Result<tinygltf::Model> buildModel(const std::vector<NamedGltfMaterial>& materials,
-                                   const SceneTextures& textures) {
+                                   const SceneTextures& textures, const GltfAsset& asset) {
     tinygltf::Model model;
     model.asset.version = "2.0";
     model.asset.generator = "matevo";
     model.buffers.resize(1);
-    const SphereAccessors sphere = addSphere(model);
 
     SharedTextures shared;
     const bool anyBaseColor = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
@@ -182,30 +287,19 @@ Result<tinygltf::Model> buildModel(const std::vector<NamedGltfMaterial>& materia
         if (!texture) return texture.error();
         shared.roughness = *texture;
     }
+    for (const auto& material : materials)
+        model.materials.push_back(toGltf(material, shared, model));
 
-    const int columns = std::max(1, int(std::ceil(std::sqrt(double(materials.size())))));
     tinygltf::Scene scene;
     scene.name = "matevo variants";
-    for (std::size_t i = 0; i < materials.size(); ++i) {
-        model.materials.push_back(toGltf(materials[i], shared, model.extensionsUsed));
-        tinygltf::Primitive primitive;
-        primitive.attributes = {{"POSITION", sphere.positions},
-                                {"NORMAL", sphere.normals},
-                                {"TEXCOORD_0", sphere.uvs}};
-        primitive.indices = sphere.indices;
-        primitive.material = int(i);
-        primitive.mode = TINYGLTF_MODE_TRIANGLES;
-        tinygltf::Mesh mesh;
-        mesh.name = materials[i].name;
-        mesh.primitives.push_back(primitive);
-        model.meshes.push_back(mesh);
-        tinygltf::Node node;
-        node.name = materials[i].name;
-        node.mesh = int(i);
-        const int column = int(i) % columns, row = int(i) / columns;
-        node.translation = {column * kSphereSpacing, -row * kSphereSpacing, 0.0};
-        model.nodes.push_back(node);
-        scene.nodes.push_back(int(i));
+    switch (asset.arrangement) {
+        case GltfArrangement::Spheres: arrangeSpheres(model, materials, scene); break;
+        case GltfArrangement::MaterialVariants:
+            arrangeMaterialVariants(model, materials, asset.mesh, scene);
+            break;
+        case GltfArrangement::Instances:
+            arrangeInstances(model, materials, asset.mesh, asset.instances, scene);
+            break;
     }
     model.scenes.push_back(scene);
     model.defaultScene = 0;
@@ -235,11 +329,12 @@ Image gltfRoughnessTexture(const Image& roughness, double texelScale) {
 }
 
 Status writeGltf(const std::vector<NamedGltfMaterial>& materials, const SceneTextures& textures,
-                 const std::filesystem::path& file) {
+                 const std::filesystem::path& file, const GltfAsset& asset) {
     const std::string extension = lowercaseExtension(file);
     if (extension != ".gltf" && extension != ".glb")
         return Error{file.string() + ": the extension must be .gltf or .glb"};
-    auto model = buildModel(materials, textures);
+    if (materials.empty()) return Error{file.string() + ": no materials to write"};
+    auto model = buildModel(materials, textures, asset);
     if (!model) return Error{file.string() + ": " + model.error().message};
 
     tinygltf::TinyGLTF writer;

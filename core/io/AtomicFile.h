@@ -8,16 +8,14 @@
 #include <string_view>
 
 #include "common/Result.h"
+#include "io/TemporaryFiles.h"  // the temporary names it writes under, and their reaping
 
 namespace matevo {
 
 Status writeFileAtomically(const std::filesystem::path& file, std::string_view contents);
 
-// A fresh name beside `file` for work in progress: ".NAME.matevo-tmp-PID-N".
-std::filesystem::path temporaryPathBeside(const std::filesystem::path& file);
-
-// Removes the temporary files and folders in `folder` whose process is gone (left by a
-// kill -9); returns how many were removed.
-int removeStaleTemporaryFiles(const std::filesystem::path& folder);
+// Where a write to `file` lands: its symlinks followed (a dangling link names the file to
+// create). Files written beside it (io/CompanionFiles.h) belong beside this path.
+Result<std::filesystem::path> writeDestination(const std::filesystem::path& file);
 
 }  // namespace matevo

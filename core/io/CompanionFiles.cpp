@@ -6,6 +6,7 @@
 
 #include "common/Fnv1a.h"
 #include "io/AtomicFile.h"
+#include "io/FileLock.h"
 #include "io/InputFile.h"
 
 namespace matevo {
@@ -46,13 +47,21 @@ bool holds(const std::filesystem::path& file, std::string_view contents) {
 
 std::string companionFileName(const std::filesystem::path& mainFile,
                               const CompanionFile& companion) {
-    return mainFile.stem().string() + companion.suffix + "." + hashText(companion.contents) +
+    // A symlink loop keeps the link's name here; writeWithCompanions then refuses the loop.
+    const auto destination = writeDestination(mainFile);
+    const auto& named = destination ? *destination : mainFile;
+    return named.stem().string() + companion.suffix + "." + hashText(companion.contents) +
            companion.extension;
 }
 
-Status writeWithCompanions(const std::filesystem::path& mainFile, std::string_view mainContents,
+Status writeWithCompanions(const std::filesystem::path& requested, std::string_view mainContents,
                            const std::vector<CompanionFile>& companions) {
+    const auto destination = writeDestination(requested);
+    if (!destination) return destination.error();
+    const std::filesystem::path& mainFile = *destination;
     const auto folder = mainFile.has_parent_path() ? mainFile.parent_path() : ".";
+    const auto lock = FileLock::acquire(mainFile);
+    if (!lock) return lock.error();
     std::vector<std::string> written;
     for (const auto& companion : companions) {
         if (companion.contents.empty()) continue;
@@ -63,7 +72,7 @@ Status writeWithCompanions(const std::filesystem::path& mainFile, std::string_vi
         if (auto status = writeFileAtomically(folder / name, companion.contents); !status)
             return status;
     }
-    if (auto status = writeFileAtomically(mainFile, mainContents); !status) return status;
+    if (auto status = writeFileAtomically(requested, mainContents); !status) return status;
 
     // Best effort: a companion left here is unused, never wrong.
     const std::string stem = mainFile.stem().string();

@@ -7,6 +7,11 @@
 // companions it no longer names removed. A kill at any moment leaves the old main file with its
 // own companions or the new one with its own, never a mix; an orphan a kill leaves behind is
 // removed by the next write of that main file.
+//
+// Two processes writing one main file at once take turns (io/FileLock.h): otherwise one could
+// remove the companions the other's main file names. Through a symlinked main file, the
+// companions go beside the file the link leads to, named after it, as the main file's relative
+// references need.
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -22,13 +27,13 @@ struct CompanionFile {
     std::string contents;   // empty: not written this time (an older one is removed)
 };
 
-// The file name (no folder) of `companion` beside `mainFile`.
+// The file name (no folder) of `companion` beside `mainFile` (beside where its symlinks lead).
 std::string companionFileName(const std::filesystem::path& mainFile,
                               const CompanionFile& companion);
 
 // Writes the companions that have contents, then `mainFile`, then removes the companions of
-// every listed kind (suffix and extension) that `mainFile` no longer names. Errors name the
-// file.
+// every listed kind (suffix and extension) that `mainFile` no longer names, all under the
+// lock of `mainFile`. Errors name the file.
 Status writeWithCompanions(const std::filesystem::path& mainFile, std::string_view mainContents,
                            const std::vector<CompanionFile>& companions);
 

@@ -155,7 +155,9 @@ Status checkImageEncoder(const std::filesystem::path& file) {
 Result<std::vector<unsigned char>> encodePng(const Image& image, PngValues values) {
     if (image.width <= 0 || image.height <= 0 || image.rgba.size() != image.pixelCount() * 4)
         return Error{"cannot encode an empty or malformed image as PNG"};
-    auto encoded = encodePngRgba8(encode8(image, values).data(), image.width, image.height);
+    auto encoded = encodePngRgba8(
+        encode8(image, values).data(), image.width, image.height,
+        values == PngValues::Srgb ? PngEncodingTag::Srgb : PngEncodingTag::Linear);
     if (!encoded) return Error{"cannot encode PNG: " + encoded.error().message};
     return std::vector<unsigned char>(encoded->begin(), encoded->end());
 }

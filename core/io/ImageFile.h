@@ -45,7 +45,8 @@ Status checkImageEncoder(const std::filesystem::path& file);
 Status writeImage(const Image& image, const std::filesystem::path& file);
 
 // PNG file contents in memory (for files that embed images, such as glTF): 8-bit RGBA, the colour
-// sRGB-encoded (a colour texture) or stored as it is (data, such as roughness).
+// sRGB-encoded and tagged sRGB (a colour texture) or stored as it is and tagged linear (data,
+// such as roughness).
 enum class PngValues { Srgb, Linear };
 Result<std::vector<unsigned char>> encodePng(const Image& image, PngValues values);
 

@@ -108,6 +108,8 @@ nlohmann::ordered_json materialToJson(const MaterialFile& material, const fs::pa
         textures["base_color"] = writtenTexture(material.baseColorTexture, folder);
     if (!textures.empty()) json["textures"] = std::move(textures);
     json["scene"] = sceneToJson(material.scene);
+    if (material.scene.environment != "studio")
+        json["scene"]["environment"] = writtenTexture(material.scene.environment, folder);
     return json;
 }
 

@@ -2,13 +2,17 @@
 
 #include <fcntl.h>
 #include <stdio.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <system_error>
 
 #include "io/AtomicFile.h"
 #include "io/InputFile.h"
+#include "io/RenameWithoutReplacing.h"
 
 namespace matevo {
 
@@ -27,15 +31,52 @@ bool isEmptyFolder(const std::filesystem::path& folder) {
            !error;
 }
 
+bool isMountPoint(const std::filesystem::path& folder, const std::filesystem::path& parent) {
+    struct statx own {}, above {};
+    const unsigned mask = STATX_BASIC_STATS | STATX_MNT_ID;
+    if (::statx(AT_FDCWD, folder.c_str(), 0, mask, &own) != 0 ||
+        ::statx(AT_FDCWD, parent.c_str(), 0, mask, &above) != 0)
+        return false;  // the rename will say what is wrong
+    if ((own.stx_attributes_mask & STATX_ATTR_MOUNT_ROOT) &&
+        (own.stx_attributes & STATX_ATTR_MOUNT_ROOT))
+        return true;
+    if ((own.stx_mask & above.stx_mask & STATX_MNT_ID) && own.stx_mnt_id != above.stx_mnt_id)
+        return true;  // a bind mount of the same filesystem
+    return own.stx_dev_major != above.stx_dev_major || own.stx_dev_minor != above.stx_dev_minor;
+}
+
+// Why an existing `folder` cannot be exchanged with a sibling by rename(), if it cannot: found
+// now, before the work, instead of at the end of a run that is then lost.
+std::optional<std::string> whyNotReplaceable(const std::filesystem::path& folder,
+                                             const std::filesystem::path& parent) {
+    if (isMountPoint(folder, parent))
+        return "is a mount point, which matevo cannot replace as a whole; write into a folder "
+               "inside it";
+    struct stat own {}, above {};
+    if (::stat(folder.c_str(), &own) == 0 && ::stat(parent.c_str(), &above) == 0 &&
+        (above.st_mode & S_ISVTX) && ::geteuid() != 0 && own.st_uid != ::geteuid() &&
+        above.st_uid != ::geteuid())
+        return "belongs to another user in a folder with the sticky bit, so matevo cannot "
+               "replace it; choose another folder";
+    return std::nullopt;
+}
+
 }  // namespace
 
-OutputFolder::OutputFolder(std::filesystem::path target, std::filesystem::path staging)
-    : target_(std::move(target)), staging_(std::move(staging)) {}
+OutputFolder::OutputFolder(std::filesystem::path target, std::filesystem::path staging,
+                           FileLock lock, PreviousRunFiles previous)
+    : target_(std::move(target)),
+      staging_(std::move(staging)),
+      lock_(std::move(lock)),
+      previous_(std::move(previous)) {}
 
 OutputFolder::OutputFolder(OutputFolder&& other) noexcept
     : target_(std::move(other.target_)),
       staging_(std::move(other.staging_)),
+      lock_(std::move(other.lock_)),
+      previous_(std::move(other.previous_)),
       committed_(other.committed_) {
+    other.lock_.reset();
     other.committed_ = true;  // the moved-from object owns nothing
 }
 
@@ -55,6 +96,13 @@ Result<OutputFolder> OutputFolder::claim(const std::filesystem::path& requested,
     if (!folder.has_parent_path() || folder == folder.root_path())
         return refused(requested, "cannot use the root folder as an output folder");
 
+    const std::filesystem::path parent = folder.parent_path();
+    std::filesystem::create_directories(parent, error);
+    if (error) return refused(parent, "cannot create the folder: " + error.message());
+    // Taken before looking at the folder, so that what we see stays true until commit().
+    auto lock = FileLock::tryAcquire(folder);
+    if (!lock) return lock.error();
+
     const auto status = std::filesystem::status(folder, error);
     if (std::filesystem::exists(status)) {
         if (!std::filesystem::is_directory(status))
@@ -66,17 +114,15 @@ Result<OutputFolder> OutputFolder::claim(const std::filesystem::path& requested,
                 return refused(requested,
                                "holds files that matevo did not write; choose another folder");
         }
+        if (auto reason = whyNotReplaceable(folder, parent)) return refused(requested, *reason);
     }
 
-    const std::filesystem::path parent = folder.parent_path();
-    std::filesystem::create_directories(parent, error);
-    if (error) return refused(parent, "cannot create the folder: " + error.message());
     removeStaleTemporaryFiles(parent);
     const std::filesystem::path staging = temporaryPathBeside(folder);
     if (!std::filesystem::create_directory(staging, error) || error)
         return refused(requested, "cannot write beside it in " + displayPath(parent) + ": " +
                                       (error ? error.message() : "already exists"));
-    OutputFolder claimed(folder, staging);
+    OutputFolder claimed(folder, staging, std::move(*lock), PreviousRunFiles::record(folder));
     if (auto marked = writeFileAtomically(staging / kMarkerName, "written by matevo\n"); !marked)
         return marked.error();
     return claimed;
@@ -91,20 +137,27 @@ std::string OutputFolder::userFacing(std::string message) const {
 }
 
 Status OutputFolder::commit() {
-    std::error_code error;
-    const bool targetExists = std::filesystem::exists(target_, error);
-    // An existing folder (empty, or a previous run) is exchanged with the staging folder in
-    // one step, so no moment is without a complete folder; the previous run is then removed.
-    if (targetExists) {
+    // Where no folder is, the run simply takes the name. An existing folder (empty, a previous
+    // run, or one made meanwhile) is exchanged with the staging folder in one step, so no
+    // moment is without a complete folder; then what it held is retired.
+    if (!renameWithoutReplacing(staging_, target_)) {
+        if (errno != EEXIST)
+            return Error{displayPath(target_) +
+                         ": cannot create the folder: " + std::strerror(errno)};
+        if (!std::filesystem::is_directory(std::filesystem::symlink_status(target_)))
+            return Error{displayPath(target_) + ": was replaced by something that is not a " +
+                         "folder while the run went on; the run is not written"};
         if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) !=
             0)
             return Error{displayPath(target_) +
                          ": cannot replace the folder: " + std::strerror(errno)};
-    } else if (::rename(staging_.c_str(), target_.c_str()) != 0) {
-        return Error{displayPath(target_) + ": cannot create the folder: " + std::strerror(errno)};
+        committed_ = true;
+        Status retired = previous_.retire(staging_, target_);
+        lock_.reset();
+        return retired;
     }
     committed_ = true;
-    if (targetExists) std::filesystem::remove_all(staging_, error);  // the previous run
+    lock_.reset();
     return Ok{};
 }
 

@@ -123,11 +123,15 @@ Result<DecodedImage> readSamples(PngReader& reader, const PngHeader& header) {
     return DecodedImage{int(header.width), int(header.height), header.channels, std::move(samples)};
 }
 
-bool writeAll(png_structp png, png_infop info, const std::uint8_t* rgba, int width, int height) {
+bool writeAll(png_structp png, png_infop info, const std::uint8_t* rgba, int width, int height,
+              PngEncodingTag tag) {
     if (setjmp(png_jmpbuf(png))) return false;
     png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGBA,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    if (tag == PngEncodingTag::Srgb)
+        png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    else
+        png_set_gAMA(png, info, 1.0);
     png_write_info(png, info);
     for (int y = 0; y < height; ++y)
         png_write_row(png, rgba + std::size_t(y) * std::size_t(width) * 4);
@@ -160,7 +164,8 @@ Result<DecodedImage> decodePng(std::string_view bytes, const DecodedSizeCheck& c
                                  : readSamples<std::uint8_t>(reader, header);
 }
 
-Result<std::string> encodePngRgba8(const std::uint8_t* rgba, int width, int height) {
+Result<std::string> encodePngRgba8(const std::uint8_t* rgba, int width, int height,
+                                   PngEncodingTag tag) {
     PngMessages messages;
     png_structp png =
         png_create_write_struct(PNG_LIBPNG_VER_STRING, &messages, onPngError, onPngWarning);
@@ -168,7 +173,7 @@ Result<std::string> encodePngRgba8(const std::uint8_t* rgba, int width, int heig
     png_infop info = png_create_info_struct(png);
     std::string encoded;
     png_set_write_fn(png, &encoded, appendToString, flushNothing);
-    const bool written = info && writeAll(png, info, rgba, width, height);
+    const bool written = info && writeAll(png, info, rgba, width, height, tag);
     png_destroy_write_struct(&png, info ? &info : nullptr);
     if (!written) return Error{info ? messages.text : "out of memory"};
     return encoded;

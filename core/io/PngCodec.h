@@ -15,7 +15,12 @@ namespace matevo {
 // text, or checkSize's error as it is) and do not name the file.
 Result<DecodedImage> decodePng(std::string_view bytes, const DecodedSizeCheck& checkSize);
 
-// An 8-bit RGBA PNG (straight alpha, tagged sRGB) of width x height interleaved bytes.
-Result<std::string> encodePngRgba8(const std::uint8_t* rgba, int width, int height);
+// How a PNG says its samples are encoded: an sRGB chunk, or a gAMA chunk of 1.0 (linear data,
+// such as a roughness texture, which a viewer or an importer must not decode as colour).
+enum class PngEncodingTag { Srgb, Linear };
+
+// An 8-bit RGBA PNG (straight alpha) of width x height interleaved bytes.
+Result<std::string> encodePngRgba8(const std::uint8_t* rgba, int width, int height,
+                                   PngEncodingTag tag = PngEncodingTag::Srgb);
 
 }  // namespace matevo

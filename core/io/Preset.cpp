@@ -125,7 +125,7 @@ std::vector<Genome> keptGenomesOfFamily(const Preset& preset) {
 
 Status savePreset(const Preset& preset, const std::filesystem::path& file) {
     // A save killed earlier (kill -9, power loss) may have left its temporary file here.
-    removeStaleTemporaryFiles(file.has_parent_path() ? file.parent_path() : ".");
+    removeStaleTemporaryFilesBeside(file);
     return writeFileAtomically(file, serializePreset(preset));
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "io/AtomicFile.h"
+#include "io/CarriedTextures.h"
 #include "io/InputFile.h"
 #include "io/MaterialFile.h"
 #include "io/TextFile.h"
@@ -57,14 +58,16 @@ Status copyFile(const fs::path& from, const fs::path& to) {
     return writeFileAtomically(to, *bytes);
 }
 
-// A share's material file saved again from `dir`, so that its texture paths (relative to the
-// file) are right where it now lies.
-Status copyMaterial(const fs::path& from, const fs::path& to) {
+// A share's material file saved again in the merged set `dir`, its textures carried into the
+// set (io/CarriedTextures.h), so that the merged set does not depend on the shares' folders.
+Status copyMaterial(const fs::path& from, const fs::path& dir, const fs::path& to) {
     auto loaded = loadMaterial(from, MaterialFile{});
     if (!loaded) return loaded.error();
     if (loaded->fromContext)
         return Error{displayPath(from) + ": a bare genome, not a variant's material file"};
-    return saveMaterial(loaded->file, to);
+    auto carried = carryTextures(loaded->file, dir);
+    if (!carried) return carried.error();
+    return saveMaterial(*carried, to);
 }
 
 // Copies the variants and contact sheets of one share into `dir`; checks that they are its own.
@@ -91,7 +94,8 @@ Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::
                     "variant " + std::to_string(index) + " is not in one of this share's blocks");
             const std::string stem =
                 "variants/" + variantStem(std::size_t(index), std::size_t(plan.count));
-            if (auto copied = copyMaterial(share.folder / (stem + ".json"), dir / (stem + ".json"));
+            if (auto copied =
+                    copyMaterial(share.folder / (stem + ".json"), dir, dir / (stem + ".json"));
                 !copied)
                 return copied;
             for (const char* suffix : {".png", "_heatmap.png"})
@@ -183,6 +187,16 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
         if (auto copied = copyShare(*share, plan, dir, joined); !copied) return copied.error();
     if (auto written = writeFileAtomically(dir / "target.png", *target); !written)
         return written.error();
+    // The target's material file, from a share that holds a block (a share without one wrote
+    // no material).
+    for (const ShareReport* share : byIndex) {
+        if (!fs::exists(targetMaterialFile(share->folder))) continue;
+        if (auto copied =
+                copyMaterial(targetMaterialFile(share->folder), dir, targetMaterialFile(dir));
+            !copied)
+            return copied.error();
+        break;
+    }
     nlohmann::ordered_json report = assembleBlockReport(std::move(joined), std::nullopt);
     if (auto written = writeFileAtomically(dir / "report.json", report.dump(2) + "\n"); !written)
         return written.error();

@@ -7,6 +7,7 @@
 #include "color/ImageDifference.h"
 #include "experiment/Canvas.h"
 #include "io/AtomicFile.h"
+#include "io/CarriedTextures.h"
 #include "io/GenomeJson.h"
 #include "io/ImageFile.h"
 
@@ -170,6 +171,10 @@ Image contactSheet(const VariantSet& set, const Font& font, std::size_t firstInd
     return sheet;
 }
 
+std::filesystem::path targetMaterialFile(const std::filesystem::path& dir) {
+    return dir / "target.json";
+}
+
 MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant, std::size_t index,
                              std::size_t count) {
     MaterialFile material = target;
@@ -186,11 +191,15 @@ Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile&
                            ImageMetric heatmapMetric) {
     const std::filesystem::path folder = dir / "variants";
     if (auto created = createFolder(folder); !created) return created;
+    // The set carries its textures, so that it renders wherever it is moved (io/CarriedTextures.h).
+    auto carried = carryTextures(target, dir);
+    if (!carried) return carried.error();
+    if (auto written = saveMaterial(*carried, targetMaterialFile(dir)); !written) return written;
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         const Variant& variant = set.variants[i];
         const std::size_t index = firstIndex + i;
         const std::string stem = variantStem(index, count);
-        if (auto written = saveMaterial(variantMaterial(target, variant, index, count),
+        if (auto written = saveMaterial(variantMaterial(*carried, variant, index, count),
                                         folder / (stem + ".json"));
             !written)
             return written;

@@ -3,6 +3,9 @@
 // (sharded runs and their merge) and the editor's "Save set" produce the same files:
 //   DIR/report.json                       the report (variantReport)
 //   DIR/target.png                        the target at the output size
+//   DIR/target.json                       the target as a material file
+//   DIR/textures/                         the textures the materials use (io/CarriedTextures.h),
+//                                         so that the folder can be moved
 //   DIR/contact_sheet.png                 the target and the set side by side
 //   DIR/variants/variant_NNN.json         one material each, read by `render --genome`
 //   DIR/variants/variant_NNN.png          its render at the output size
@@ -80,8 +83,12 @@ Image contactSheet(const VariantSet& set, const Font& font, std::size_t firstInd
 MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant, std::size_t index,
                              std::size_t count = 0);
 
+// DIR/target.json: the target as a material file (export shows it as the default material).
+std::filesystem::path targetMaterialFile(const std::filesystem::path& dir);
+
 // Writes the set's members as variants firstIndex, firstIndex + 1, … of a whole of `count`:
-// DIR/variants/variant_NNN.json, .png and _heatmap.png, creating DIR/variants.
+// DIR/variants/variant_NNN.json, .png and _heatmap.png, creating DIR/variants, with the target's
+// material file and the textures they all use.
 Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile& target,
                            const VariantSet& set, std::size_t firstIndex, std::size_t count,
                            ImageMetric heatmapMetric);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -222,6 +223,48 @@ TEST(ExportCommand, ASetIsEveryMaterialFileInItsFolder) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+// Whether `text` holds `option` as a whole word ("--fit-size" does not name "--fit").
+bool names(const std::string& text, const std::string& option) {
+    for (std::size_t at = text.find(option); at != std::string::npos;
+         at = text.find(option, at + 1)) {
+        const std::size_t end = at + option.size();
+        const unsigned char next = end < text.size() ? text[end] : ' ';
+        if (!std::isalnum(next) && next != '-') return true;
+    }
+    return false;
+}
+
+// Every option the help describes is on its usage line.
+TEST(ExportCommand, TheUsageLineNamesEveryOption) {
+    const auto help = testing::runMatevo("help export");
+    ASSERT_EQ(help.exitCode, 0);
+    const std::size_t usageEnd = help.out.find("\n\n");
+    ASSERT_NE(usageEnd, std::string::npos);
+    const std::string usage = help.out.substr(0, usageEnd);
+    // The command's own text: the options every command shares follow its last blank line.
+    const std::size_t ownEnd = help.out.rfind("\n\n");
+    std::istringstream body(help.out.substr(usageEnd, ownEnd - usageEnd));
+    int described = 0;
+    for (std::string line; std::getline(body, line);) {
+        if (line.rfind("  --", 0) != 0) continue;
+        const std::string option = line.substr(2, line.find(' ', 2) - 2);
+        EXPECT_TRUE(names(usage, option)) << option << " is not on the usage line:\n" << usage;
+        ++described;
+    }
+    EXPECT_GE(described, 13);
+}
+
+// Like the other commands' --out, export makes the folder it writes into.
+TEST(ExportCommand, OutCreatesItsFolder) {
+    testing::ScratchFolder folder("export_cli");
+    const auto out = folder / "new" / "deeper" / "target.glb";
+    const auto exported = testing::runMatevo(
+        "export --out " + shellQuoted(out) +
+        " --backend cpu --fit-size 16 --fit-renders 20 --report-size 16");
+    ASSERT_EQ(exported.exitCode, 0) << exported.err;
+    EXPECT_TRUE(fs::is_regular_file(out));
+}
+
 TEST(ExportCommand, MistakesExitTwoWithOneLine) {
     testing::ScratchFolder folder("export_cli");
     const auto genome = folder / "g.json";
@@ -234,7 +277,14 @@ TEST(ExportCommand, MistakesExitTwoWithOneLine) {
           "export --genome " + shellQuoted(genome) + " --out " + shellQuoted(folder / "x.obj"),
           "export --genome " + shellQuoted(genome) + " --format fbx --out " + shellQuoted(out),
           "export --genome " + shellQuoted(genome) + " --format gltf --out " + shellQuoted(out),
-          "export --genome " + shellQuoted(genome) + " --out " + shellQuoted(folder / "missing/x.glb"),
+          "export --genome " + shellQuoted(genome) + " --out " + shellQuoted(genome / "x.glb"),
+          "export --genome " + shellQuoted(genome) + " --out " + shellQuoted(out) + " --mesh knot",
+          "export --genome " + shellQuoted(genome) + " --out " + shellQuoted(out) +
+              " --arrange variants --instances 3",
+          "export --genome " + shellQuoted(genome) + " --out " + shellQuoted(out) +
+              " --arrange carousel",
+          "export --genome " + shellQuoted(genome) + " --out " + shellQuoted(folder / "x.mtlx") +
+              " --arrange crowd",
           "export --variants " + shellQuoted(folder / "empty") + " --out " + shellQuoted(out),
           "export --variants " + shellQuoted(folder / "missing") + " --out " + shellQuoted(out)}) {
         const auto result = testing::runMatevo(arguments);

@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -20,6 +22,7 @@
 #include <tiny_gltf.h>
 
 #include "export/GltfRenderer.h"
+#include "export/GltfWriter.h"
 #include "io/Preset.h"
 #include "render/CpuPopulationRenderer.h"
 #include "scene/SphereRenderer.h"
@@ -105,9 +108,12 @@ TEST(ExportSet, GltfFilesReadBackFieldByField) {
             EXPECT_DOUBLE_EQ(numberOf(clearcoat, "clearcoatFactor"), fitted.clearcoat);
             EXPECT_DOUBLE_EQ(numberOf(clearcoat, "clearcoatRoughnessFactor"),
                              fitted.clearcoatRoughness);
-            EXPECT_DOUBLE_EQ(numberOf(material.extensions.at("KHR_materials_ior"), "ior"),
-                             fitted.ior);
-            if (fitted.specular != 1.0) {
+            EXPECT_EQ(material.extensions.count("KHR_materials_ior"), iorActs(fitted) ? 1u : 0u);
+            if (iorActs(fitted)) {
+                EXPECT_DOUBLE_EQ(numberOf(material.extensions.at("KHR_materials_ior"), "ior"),
+                                 fitted.ior);
+            }
+            if (specularActs(fitted)) {
                 EXPECT_DOUBLE_EQ(
                     numberOf(material.extensions.at("KHR_materials_specular"), "specularFactor"),
                     fitted.specular);
@@ -128,12 +134,9 @@ TEST(ExportSet, GltfFilesReadBackFieldByField) {
             EXPECT_EQ(model.accessors[std::size_t(primitive.attributes.at("TEXCOORD_0"))].count,
                       positions.count);
             EXPECT_EQ(model.nodes.size(), 1u);
-            for (const char* extension :
-                 {"KHR_materials_clearcoat", "KHR_materials_ior"})
-                EXPECT_NE(std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
-                                    extension),
-                          model.extensionsUsed.end())
-                    << extension;
+            EXPECT_NE(std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                                "KHR_materials_clearcoat"),
+                      model.extensionsUsed.end());
         }
     }
 }
@@ -200,6 +203,169 @@ TEST(ExportSet, KhronosValidatorFindsNoErrors) {
         ++reports;
     }
     EXPECT_EQ(reports, 6u) << result.err;
+}
+
+tinygltf::Model loadGlb(const fs::path& file) {
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string error, warning;
+    EXPECT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, file.string())) << error;
+    return model;
+}
+
+bool uses(const tinygltf::Model& model, const std::string& extension) {
+    return std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), extension) !=
+           model.extensionsUsed.end();
+}
+
+// The writer leaves out what does not act on the material, whatever the material holds: no ior
+// or specular on a full metal (a client that reads the ior into the coat, as the Khronos Sample
+// Viewer does, would otherwise render a different coat), no coat of weight 0, and nothing at
+// glTF's defaults; what acts is written as it is.
+TEST(ExportSet, WritesOnlyExtensionValuesThatAct) {
+    testing::ScratchFolder folder("export");
+    GltfMaterial metal;
+    metal.metallic = 1.0;
+    metal.ior = 2.62;
+    metal.specular = 0.4;
+    metal.clearcoat = 1.0;
+    GltfMaterial paint = metal;
+    paint.metallic = 0.3;
+    paint.ior = 1.7;
+    paint.specular = 0.8;
+    GltfMaterial bare;
+    bare.metallic = 0.5;
+    bare.clearcoat = 0.0;
+    const fs::path file = folder / "acting.glb";
+    ASSERT_TRUE(writeGltf({{"metal", metal}, {"paint", paint}, {"bare", bare}}, SceneTextures{},
+                          file)
+                    .ok());
+    const tinygltf::Model model = loadGlb(file);
+    ASSERT_EQ(model.materials.size(), 3u);
+    const auto& metalExtensions = model.materials[0].extensions;
+    EXPECT_EQ(metalExtensions.count("KHR_materials_clearcoat"), 1u);
+    EXPECT_EQ(metalExtensions.count("KHR_materials_ior"), 0u);
+    EXPECT_EQ(metalExtensions.count("KHR_materials_specular"), 0u);
+    const auto& paintExtensions = model.materials[1].extensions;
+    EXPECT_DOUBLE_EQ(numberOf(paintExtensions.at("KHR_materials_ior"), "ior"), 1.7);
+    EXPECT_DOUBLE_EQ(numberOf(paintExtensions.at("KHR_materials_specular"), "specularFactor"),
+                     0.8);
+    EXPECT_TRUE(model.materials[2].extensions.empty());
+    for (const char* extension :
+         {"KHR_materials_clearcoat", "KHR_materials_ior", "KHR_materials_specular"})
+        EXPECT_TRUE(uses(model, extension)) << extension;
+    EXPECT_EQ(model.extensionsUsed.size(), 3u);
+}
+
+// What the fit gives the writer: a metal fit holds glTF's defaults for the values that do not act
+// on it (so MaterialX, which writes every input, says the same as the glTF); the ior stays
+// within the indices Table 2 gives the reference model's base, which for the validation presets'
+// metal bases means none is written. The exported files carry ior and specular exactly where
+// they act.
+TEST(ExportSet, FitsWriteIorOnlyWhereItActsAndWithinTheReferenceRange) {
+    testing::ScratchFolder folder("export");
+    EXPECT_DOUBLE_EQ(maximumFittedIor({Coat::Roughcoat, Base::Dielectric}), 2.5);
+    EXPECT_DOUBLE_EQ(maximumFittedIor({Coat::Clearcoat, Base::Conductor}),
+                     GltfMaterial::kDefaultIor);
+    for (const char* name : kValidationPresets) {
+        const fs::path file = folder / (std::string(name) + ".glb");
+        const ExportReport& report = exportedPreset(name, ExportFormat::Glb, file);
+        const GltfMaterial& fitted = report.variants[0].fit.material;
+        const MaterialFamily family = presetTarget(name).material.family;
+        EXPECT_GE(fitted.ior, 1.0) << name;
+        EXPECT_LE(fitted.ior, maximumFittedIor(family)) << name;
+        EXPECT_FALSE(iorActs(fitted)) << name << ": a metal base has no dielectric ior";
+        if (fitted.metallic == 1.0) {
+            EXPECT_EQ(fitted.ior, GltfMaterial::kDefaultIor) << name;
+            EXPECT_EQ(fitted.specular, 1.0) << name;
+        }
+        const tinygltf::Model model = loadGlb(file);
+        ASSERT_EQ(model.materials.size(), 1u);
+        const auto& extensions = model.materials[0].extensions;
+        const bool dielectricLeft = model.materials[0].pbrMetallicRoughness.metallicFactor < 1.0;
+        if (!dielectricLeft) {
+            EXPECT_EQ(extensions.count("KHR_materials_ior"), 0u) << name;
+            EXPECT_EQ(extensions.count("KHR_materials_specular"), 0u) << name;
+        }
+        if (extensions.count("KHR_materials_ior")) {
+            const double ior = numberOf(extensions.at("KHR_materials_ior"), "ior");
+            EXPECT_NE(ior, GltfMaterial::kDefaultIor) << name;
+            EXPECT_LE(ior, maximumFittedIor(family)) << name;
+        }
+        // The report gives the values the file has, and says whether the goal is met.
+        const auto json = exportReportJson(report);
+        const auto& variant = json["variants"][0];
+        EXPECT_EQ(variant["gltf"].contains("ior"), extensions.count("KHR_materials_ior") == 1);
+        EXPECT_EQ(variant["within_goal"].get<bool>(),
+                  variant["mean_de00"].get<double>() <= json["goal_mean_de00"].get<double>());
+        std::printf("%s: metallic %.3f, ior %s, mean dE00 %.3f\n", name, fitted.metallic,
+                    iorActs(fitted) ? std::to_string(fitted.ior).c_str() : "(none)",
+                    report.variants[0].deltaE.stats.mean);
+    }
+}
+
+// The PNG chunks that say how the samples are encoded: sRGB, and gAMA's value (100000 = 1.0).
+struct PngEncodingChunks {
+    bool srgb = false;
+    long gamma = -1;
+};
+
+PngEncodingChunks pngEncodingChunks(const unsigned char* png, std::size_t size) {
+    PngEncodingChunks chunks;
+    const auto bigEndian = [&](std::size_t at) {
+        return long(png[at]) << 24 | long(png[at + 1]) << 16 | long(png[at + 2]) << 8 |
+               long(png[at + 3]);
+    };
+    for (std::size_t at = 8; at + 8 <= size;) {
+        const long length = bigEndian(at);
+        const std::string type(reinterpret_cast<const char*>(png + at + 4), 4);
+        if (type == "sRGB") chunks.srgb = true;
+        if (type == "gAMA") chunks.gamma = bigEndian(at + 8);
+        at += 12 + std::size_t(length);
+    }
+    return chunks;
+}
+
+PngEncodingChunks imageChunks(const tinygltf::Model& model, const std::string& name) {
+    for (const auto& image : model.images) {
+        if (image.name != name) continue;
+        const auto& view = model.bufferViews[std::size_t(image.bufferView)];
+        return pngEncodingChunks(model.buffers[0].data.data() + view.byteOffset, view.byteLength);
+    }
+    ADD_FAILURE() << "no image " << name;
+    return {};
+}
+
+// The roughness texture holds data, not colour: tagged linear (gAMA 1.0, no sRGB chunk), so
+// that an importer or a viewer that honours the tag does not decode it as sRGB; the base colour
+// texture stays tagged sRGB. Both in the glTF buffer and beside a MaterialX document.
+TEST(ExportSet, TheRoughnessTextureIsTaggedLinear) {
+    testing::ScratchFolder folder("export");
+    const fs::path painted = folder / "painted.glb", depth = folder / "depth.glb";
+    exportedPreset("validation_painted_metal", ExportFormat::Glb, painted);
+    exportedPreset("validation_metal_depth", ExportFormat::Glb, depth);
+    const PngEncodingChunks roughness = imageChunks(loadGlb(painted), "roughness");
+    EXPECT_FALSE(roughness.srgb);
+    EXPECT_EQ(roughness.gamma, 100000);
+    const PngEncodingChunks baseColor = imageChunks(loadGlb(depth), "base_color");
+    EXPECT_TRUE(baseColor.srgb);
+    EXPECT_EQ(baseColor.gamma, -1);
+
+    exportedPreset("validation_painted_metal", ExportFormat::MaterialX, folder / "painted.mtlx");
+    int roughnessFiles = 0;
+    for (const auto& entry : fs::directory_iterator(folder.path())) {
+        const std::string fileName = entry.path().filename().string();
+        if (fileName.find("_roughness") == std::string::npos) continue;
+        ++roughnessFiles;
+        std::ifstream in(entry.path(), std::ios::binary);
+        const std::string bytes{std::istreambuf_iterator<char>(in),
+                                std::istreambuf_iterator<char>()};
+        const PngEncodingChunks chunks = pngEncodingChunks(
+            reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+        EXPECT_FALSE(chunks.srgb) << fileName;
+        EXPECT_EQ(chunks.gamma, 100000) << fileName;
+    }
+    EXPECT_EQ(roughnessFiles, 1);
 }
 
 // MaterialX 1.39's gltf_pbr inputs and the nodes we use, named as its standard library does.

@@ -4,30 +4,20 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <set>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "support/FileContents.h"
 #include "support/ScratchFolder.h"
 
 namespace matevo {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string contentsOf(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::set<std::string> namesIn(const fs::path& folder) {
-    std::set<std::string> names;
-    for (const auto& entry : fs::directory_iterator(folder))
-        names.insert(entry.path().filename().string());
-    return names;
-}
+using testing::contentsOf;
+using testing::namesIn;
 
 TEST(CompanionFiles, TheNameFollowsTheContents) {
     const fs::path main = "/some/where/set.gltf";

@@ -145,18 +145,6 @@ TEST_F(SafeFilesTest, DevicesFoldersAndUnwritableFoldersAreRefusedInOneLine) {
     expectOneLineNaming(written.error(), "a.json", "cannot write");
 }
 
-TEST_F(SafeFilesTest, StaleTemporaryFilesOfDeadProcessesAreRemoved) {
-    // PID 2^22 + 1 is above Linux's pid_max limit, so no process has it.
-    write(folder_ / ".doc.json.matevo-tmp-4194305-0", "left by a kill -9");
-    fs::create_directories(folder_ / ".out.matevo-tmp-4194305-1" / "candidates");
-    const fs::path ours = temporaryPathBeside(folder_ / "doc.json");
-    write(ours, "in progress");
-    write(folder_ / "doc.json", "kept");
-    EXPECT_EQ(removeStaleTemporaryFiles(folder_), 2);
-    EXPECT_TRUE(fs::exists(ours));  // this process is alive
-    EXPECT_EQ(contentsOf(folder_ / "doc.json"), "kept");
-}
-
 TEST_F(SafeFilesTest, OutputFolderHoldsOneRunOrIsRefused) {
     const fs::path out = folder_ / "out";
     {
