@@ -7,7 +7,8 @@
 // texel buffers, not storage buffers: llvmpipe fetches texels for all SIMD lanes at once but
 // loads a storage buffer one lane and one component at a time (even at an index the same for
 // every lane, once some lanes may be inactive).
-// A material record is one RGBA32UI texel (Material below). The lobe table has three RGBA32F
+// A material record is one RGBA32UI texel: first entry, texel nodes | knee node << 16, cosine
+// nodes, the knee texel's float bits (Material below). The lobe table has three RGBA32F
 // texels per entry: coat energy + alpha, base throughput + c(variance), base round trip +
 // c(variance + round-trip variance) with c(v) = v / (1 + v); entry (texel t, cosine m) at
 // firstEntry + t * cosineNodes + m.
@@ -15,12 +16,24 @@
 struct Material {
     uint firstEntry;   // of its lobe table
     uint texelNodes;   // 1: no textured-roughness axis
+    uint kneeNode;     // TexelAxis::kneeNode
     uint cosineNodes;
+    float knee;        // TexelAxis::knee
 };
 
 Material materialAt(uint index) {
     uvec4 record = texelFetch(materialRecords, int(index));
-    return Material(record.x, record.y, record.z);
+    return Material(record.x, record.y & 0xffffu, record.y >> 16u, record.z,
+                    uintBitsToFloat(record.w));
+}
+
+// TexelAxis::position: even nodes on either side of the knee node.
+float texelPosition(Material material, float texel) {
+    float t = clamp(texel, 0.0, 1.0);
+    float kneeNode = float(material.kneeNode);
+    if (t <= material.knee) return t / material.knee * kneeNode;
+    return kneeNode + (t - material.knee) / (1.0 - material.knee) *
+                          (float(material.texelNodes - 1u) - kneeNode);
 }
 
 struct Entry {
@@ -48,9 +61,9 @@ LobeSet lobesAt(Material material, float cosView, float texel, vec3 tint) {
     if (kTextured) {
         // Without a texel axis the second texel row is the first one again, with weight 0:
         // one path for both shapes (lavapipe would run both sides of a branch).
-        float texelPosition = clamp(texel, 0.0, 1.0) * float(material.texelNodes - 1u);
-        uint t = min(uint(texelPosition), max(material.texelNodes, 2u) - 2u);
-        float wt = texelPosition - float(t);
+        float position = texelPosition(material, texel);
+        uint t = min(uint(position), max(material.texelNodes, 2u) - 2u);
+        float wt = position - float(t);
         uint texelStride = material.texelNodes > 1u ? uint(cosineNodes) : 0u;
         uint row = material.firstEntry + t * uint(cosineNodes) + uint(m);
         accumulate(sum, row, (1.0 - wt) * (1.0 - wm));

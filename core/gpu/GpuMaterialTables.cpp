@@ -14,10 +14,11 @@ namespace {
 // shaders/LobeTable.glsl's Material, one RGBA32UI texel.
 struct GpuMaterial {
     uint32_t firstEntry;  // of its lobe table, in entries
-    uint32_t texelNodes;
+    uint32_t texelNodes;  // TexelAxis::nodes | TexelAxis::kneeNode << 16
     uint32_t cosineNodes;
-    uint32_t unused;  // the texel's fourth channel
+    float texelKnee;  // TexelAxis::knee, read as uintBitsToFloat
 };
+static_assert(sizeof(GpuMaterial) == 16, "one RGBA32UI texel");
 
 }  // namespace
 
@@ -31,8 +32,10 @@ Status GpuMaterialTables::upload(const Device& device, const FgdTables& tables,
     std::vector<GpuMaterial> gpuMaterials(std::max<std::size_t>(materials.size(), 1));
     uint32_t entryCount = 0;
     for (std::size_t i = 0; i < lobeTables.size(); ++i) {
-        gpuMaterials[i] = {entryCount, uint32_t(lobeTables[i].texelNodes()),
-                           uint32_t(lobeTables[i].cosineNodes()), 0};
+        const TexelAxis& texelAxis = lobeTables[i].texelAxis();
+        gpuMaterials[i] = {entryCount,
+                           uint32_t(texelAxis.nodes) | uint32_t(texelAxis.kneeNode) << 16,
+                           uint32_t(lobeTables[i].cosineNodes()), float(texelAxis.knee)};
         entryCount += uint32_t(lobeTables[i].data().size() / LobeTable::kFloatsPerEntry);
     }
     const VkDeviceSize materialBytes = gpuMaterials.size() * sizeof(GpuMaterial);

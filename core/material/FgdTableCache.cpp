@@ -48,6 +48,7 @@ Bytes header(const TableGenerationSettings& settings) {
         append(bytes, std::int32_t(axis->count));
         append(bytes, axis->min);
         append(bytes, axis->max);
+        append(bytes, std::int32_t(axis->spacing));
     }
     append(bytes, std::int32_t(settings.samplesPerAxis));
     append(bytes, std::int32_t(settings.histogramIntervals));

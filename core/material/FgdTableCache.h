@@ -4,7 +4,7 @@
 // otherwise it is rebuilt, with a one-line notice when a file was there.
 //
 // File layout (little-endian): 8-byte magic "MVFGDTIR", uint32 format version, then per axis
-// (mu, alpha, eta, kappa) int32 count and float64 min, max; int32 samplesPerAxis, int32
+// (mu, alpha, eta, kappa) int32 count, float64 min, max and int32 spacing; int32 samplesPerAxis, int32
 // histogramIntervals, the FGD floats, the TIR floats, and a uint64 FNV-1a checksum of all the
 // bytes before it.
 #include <filesystem>
@@ -17,7 +17,8 @@
 namespace matevo {
 
 // Bump when the generator's mathematics change, so old caches are rebuilt.
-constexpr unsigned kTableFormatVersion = 2;  // 2: no NaN at mu = 0, eta = 1
+// 2: no NaN at mu = 0, eta = 1. 3: the eta axis geometric around 1 (relative accuracy).
+constexpr unsigned kTableFormatVersion = 3;
 
 // A file is accepted only if its size, header and checksum match and every value is finite
 // and in [0, 1]; the error names `sourceName` and what is wrong.

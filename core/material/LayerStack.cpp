@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "material/RoughnessMap.h"
+
 namespace matevo {
 
 namespace {
@@ -35,6 +37,14 @@ LayerStack makeLayerStack(const MaterialInstance& material, const SurfaceTexels&
         std::max({extinction.r, extinction.g, extinction.b}) > 0.0)
         stack.medium = medium;
     return stack;
+}
+
+double saturatingRoughnessTexel(const MaterialInstance& material) {
+    const TexturedLayer textured = material.family.texturedLayer;
+    if (textured == TexturedLayer::None) return 1.0;
+    const double weight =
+        textured == TexturedLayer::Top ? material.genome.alpha1() : material.genome.alpha2();
+    return weight > kMaximumRoughness ? kMaximumRoughness / weight : 1.0;
 }
 
 }  // namespace matevo

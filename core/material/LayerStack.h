@@ -44,4 +44,9 @@ struct SurfaceTexels {
 // sigma_t h = 0, docs/bsdf.md §6.4).
 LayerStack makeLayerStack(const MaterialInstance& material, const SurfaceTexels& texels = {});
 
+// The roughness texel at which the textured layer's alpha reaches kMaximumRoughness, where the
+// stack's statistics have a kink (a roughness weight > 1 gets there inside [0, 1]); >= 1 when
+// it does not happen below texel 1 or the family has no textured layer.
+double saturatingRoughnessTexel(const MaterialInstance& material);
+
 }  // namespace matevo

@@ -2,22 +2,28 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace matevo {
 
 namespace {
 
-// Position of x in [0, 1] on an axis of `count` uniform nodes: lower node and blend weight.
+// A point on an axis: lower node and blend weight.
 struct AxisPosition {
     int node = 0;
     double weight = 0.0;
 };
 
-AxisPosition locate(double x, int count) {
+// Lower node and blend weight at continuous node coordinate `position` on `count` nodes.
+AxisPosition nodePosition(double position, int count) {
     if (count < 2) return {};
-    const double position = std::clamp(x, 0.0, 1.0) * (count - 1);
     const int node = std::min(int(position), count - 2);
     return {node, position - node};
+}
+
+// Position of x in [0, 1] on an axis of `count` uniform nodes.
+AxisPosition locate(double x, int count) {
+    return nodePosition(std::clamp(x, 0.0, 1.0) * (count - 1), count);
 }
 
 // Variances grow without bound as a roughness nears 1 (a textured alpha weight > 1 gets there
@@ -38,17 +44,36 @@ void store(float* entry, const UntintedLobes& lobes) {
 
 }  // namespace
 
+TexelAxis::TexelAxis(int nodeCount, double saturatingTexel)
+    : nodes(nodeCount), kneeNode(nodeCount - 1) {
+    if (nodes < 3 || saturatingTexel <= 0.0 || saturatingTexel >= 1.0) return;
+    knee = saturatingTexel;
+    kneeNode = std::clamp(int(std::lround(knee * (nodes - 1))), 1, nodes - 2);
+}
+
+double TexelAxis::texelAt(int node) const {
+    if (node <= kneeNode) return kneeNode > 0 ? knee * node / kneeNode : 0.0;
+    return knee + (1.0 - knee) * (node - kneeNode) / (nodes - 1 - kneeNode);
+}
+
+double TexelAxis::position(double texel) const {
+    const double t = std::clamp(texel, 0.0, 1.0);
+    if (t <= knee) return t / knee * kneeNode;
+    return kneeNode + (t - knee) / (1.0 - knee) * (nodes - 1 - kneeNode);
+}
+
 LobeTable LobeTable::build(const MaterialInstance& material, const InterfaceAlbedo& albedo,
                            const LobeTableShape& shape) {
     LobeTable table;
     table.cosineNodes_ = std::max(shape.cosineNodes, 2);
-    table.texelNodes_ =
+    const int texelNodes =
         material.family.texturedLayer == TexturedLayer::None ? 1 : std::max(shape.texelNodes, 2);
+    table.texelAxis_ = TexelAxis(texelNodes, saturatingRoughnessTexel(material));
     const int cosineNodes = table.cosineNodes_;
-    table.entries_.resize(std::size_t(table.texelNodes_) * cosineNodes * kFloatsPerEntry);
-    for (int t = 0; t < table.texelNodes_; ++t) {
+    table.entries_.resize(std::size_t(texelNodes) * cosineNodes * kFloatsPerEntry);
+    for (int t = 0; t < texelNodes; ++t) {
         SurfaceTexels texels;
-        if (table.texelNodes_ > 1) texels.roughness = double(t) / (table.texelNodes_ - 1);
+        if (texelNodes > 1) texels.roughness = table.texelAxis_.texelAt(t);
         const LayerStack stack = makeLayerStack(material, texels);
         for (int m = 0; m < cosineNodes; ++m)
             store(&table.entries_[std::size_t(t * cosineNodes + m) * kFloatsPerEntry],
@@ -59,9 +84,9 @@ LobeTable LobeTable::build(const MaterialInstance& material, const InterfaceAlbe
 
 LobeSet LobeTable::lobesAt(double cosView, const SurfaceTexels& texels) const {
     const AxisPosition cosine = locate(cosView, cosineNodes_);
-    const AxisPosition texel = locate(texels.roughness, texelNodes_);
+    const AxisPosition texel = nodePosition(texelAxis_.position(texels.roughness), texelAxis_.nodes);
     std::array<double, kFloatsPerEntry> v{};
-    for (int dt = 0; dt < std::min(texelNodes_, 2); ++dt) {
+    for (int dt = 0; dt < std::min(texelAxis_.nodes, 2); ++dt) {
         for (int dm = 0; dm < 2; ++dm) {
             const double weight = (dt ? texel.weight : 1.0 - texel.weight) *
                                   (dm ? cosine.weight : 1.0 - cosine.weight);

@@ -16,11 +16,29 @@
 
 namespace matevo {
 
-// Uniform nodes over cos_view in [0, 1] and over the roughness texel in [0, 1] (texels are
-// clamped); the defaults are chosen by measurement (docs/belcour-decisions.md).
+// Uniform nodes over cos_view in [0, 1]; nodes over the roughness texel in [0, 1] (texels are
+// clamped) as TexelAxis places them; the defaults are chosen by measurement
+// (docs/belcour-decisions.md).
 struct LobeTableShape {
     int cosineNodes = 32;
     int texelNodes = 33;  // used only by a family with a textured-roughness layer
+};
+
+// The texel axis: `nodes` nodes over [0, 1], even on either side of node `kneeNode`, which sits
+// on the texel `knee` where the textured roughness saturates (saturatingRoughnessTexel). The
+// loop has a kink there (the variance's pole is clamped); on a node the interpolation follows
+// it, between two nodes it cut the corner by up to ΔE00 2.5 on painted metal. Without a knee
+// inside (0, 1) the knee is 1 on the last node: even nodes.
+struct TexelAxis {
+    int nodes = 1;
+    int kneeNode = 0;
+    double knee = 1.0;
+
+    TexelAxis() = default;
+    TexelAxis(int nodeCount, double saturatingTexel);
+    double texelAt(int node) const;
+    // The continuous node coordinate of a texel (clamped to [0, 1]), in [0, nodes - 1].
+    double position(double texel) const;
 };
 
 class LobeTable {
@@ -37,14 +55,15 @@ public:
     LobeSet lobesAt(double cosView, const SurfaceTexels& texels) const;
 
     int cosineNodes() const { return cosineNodes_; }
-    // 1 when the family has no textured layer.
-    int texelNodes() const { return texelNodes_; }
+    // One node when the family has no textured layer.
+    const TexelAxis& texelAxis() const { return texelAxis_; }
+    int texelNodes() const { return texelAxis_.nodes; }
     // Entry (texel node t, cosine node m) starts at (t * cosineNodes() + m) * kFloatsPerEntry.
     std::span<const float> data() const { return entries_; }
 
 private:
     int cosineNodes_ = 2;
-    int texelNodes_ = 1;
+    TexelAxis texelAxis_;
     std::vector<float> entries_;
 };
 

@@ -10,7 +10,7 @@ constexpr double kExponent = 1.1;
 }
 
 double roughnessToVariance(double alpha) {
-    const double powered = std::pow(std::clamp(alpha, 0.0, 0.9999), kExponent);
+    const double powered = std::pow(std::clamp(alpha, 0.0, kMaximumRoughness), kExponent);
     return powered / (1.0 - powered);
 }
 

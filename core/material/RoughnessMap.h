@@ -4,7 +4,10 @@
 // Henyey-Greenstein phase function of asymmetry g adds the variance sigma_g (§2.6).
 namespace matevo {
 
-// f(a) = a^1.1 / (1 - a^1.1), with a clamped to [0, 0.9999].
+// The largest roughness f accepts: the variance has a pole at 1.
+constexpr double kMaximumRoughness = 0.9999;
+
+// f(a) = a^1.1 / (1 - a^1.1), with a clamped to [0, kMaximumRoughness].
 double roughnessToVariance(double alpha);
 
 // f^-1(v) = (v / (1 + v))^(1/1.1), with v clamped to [0, 1e7].

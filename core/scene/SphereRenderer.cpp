@@ -102,9 +102,10 @@ Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& tex
 }
 
 Image renderSphereCpuExact(const MaterialInstance& material, const SceneTextures& textures,
-                           const SceneSettings& scene, int size, const FgdTables& tables) {
+                           const SceneSettings& scene, int size, const InterfaceAlbedo& albedo,
+                           const AddingOptions& options) {
     const auto lobesAt = [&](double cosView, const SurfaceTexels& texels) {
-        return computeLobes(makeLayerStack(material, texels), cosView, tables);
+        return computeLobes(makeLayerStack(material, texels), cosView, albedo, options);
     };
     return renderSphere(belcourShader(lobesAt, textures, scene), scene, size);
 }

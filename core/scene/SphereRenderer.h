@@ -42,9 +42,11 @@ Image renderSphereCpu(const MaterialInstance& material, const SceneTextures& tex
                       const LobeTableShape& shape = {});
 
 // The reference that the LobeTable approximates: the adding loop at every subsample (tens of
-// times slower). Only the tests that bound the table's error use it.
+// times slower), on any InterfaceAlbedo (the tables, or IntegratedAlbedo for the reference of
+// the tables themselves) and with any AddingOptions. Tests and the BSDF accuracy bench use it.
 Image renderSphereCpuExact(const MaterialInstance& material, const SceneTextures& textures,
-                           const SceneSettings& scene, int size, const FgdTables& tables);
+                           const SceneSettings& scene, int size, const InterfaceAlbedo& albedo,
+                           const AddingOptions& options = {});
 
 // The same as renderSphereCpu with the process-wide tables (built or read from the cache on first
 // use).

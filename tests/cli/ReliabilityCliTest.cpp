@@ -89,7 +89,7 @@ TEST_F(ReliabilityCli, InputsThatAreNotRegularFilesAreRefusedNamingThePath) {
 
 TEST_F(ReliabilityCli, ATableCachePathThatIsAFolderIsBuiltAroundWithANotice) {
     const fs::path cache = folder_ / "cache";
-    fs::create_directories(cache / "matevo" / "fgd_tir_v2.bin" / "inside");
+    fs::create_directories(cache / "matevo" / "fgd_tir_v3.bin" / "inside");  // kTableFormatVersion
     const CommandOutput run = runCommand("XDG_CACHE_HOME='" + cache.string() + "' " + kMatevo +
                                          " render --backend cpu --size 16 --out " + path("a.png"));
     EXPECT_EQ(run.exitCode, 0) << run.err;

@@ -2,6 +2,9 @@
 // family (a texel axis only for a textured-roughness layer).
 #include "material/LobeTable.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "material/FgdTableCache.h"
@@ -53,6 +56,40 @@ TEST(LobeTable, EqualsTheAddingLoopAtItsNodesForAnyTint) {
             }
         }
     }
+}
+
+// Painted metal's alpha1 = 2.5 x texel saturates at texel 0.9999 / 2.5, where the loop has a
+// kink; the texel axis puts a node there, so the table follows the loop on both sides of it.
+TEST(LobeTable, ASaturatingTexturedRoughnessHasANodeOnItsKink) {
+    MaterialInstance material = mediumMetal(TexturedLayer::Top);
+    material.family.hasMedium = false;
+    material.genome[kAlpha1] = 2.5;
+    material.genome[kDepth] = 0.0;
+    for (std::size_t c = kSigmaSR; c <= kSigmaAB; ++c) material.genome[c] = 0.0;
+    const LobeTable table = LobeTable::build(material, defaultFgdTables());
+    const TexelAxis& axis = table.texelAxis();
+    const double knee = 0.9999 / 2.5;
+    EXPECT_DOUBLE_EQ(axis.texelAt(axis.kneeNode), knee);
+    EXPECT_EQ(axis.texelAt(0), 0.0);
+    EXPECT_EQ(axis.texelAt(axis.nodes - 1), 1.0);
+    EXPECT_DOUBLE_EQ(axis.position(knee), axis.kneeNode);
+    double largestAlphaError = 0.0;
+    for (double texel = knee - 0.03; texel < knee + 0.03; texel += 0.001) {
+        SurfaceTexels texels;
+        texels.roughness = texel;
+        const LobeSet exact = computeLobes(makeLayerStack(material, texels), 0.7,
+                                           defaultFgdTables());
+        const LobeSet interpolated = table.lobesAt(0.7, texels);
+        largestAlphaError = std::max(
+            {largestAlphaError, std::abs(interpolated.base.alpha - exact.base.alpha),
+             std::abs(interpolated.coat.alpha - exact.coat.alpha)});
+    }
+    // Between two even nodes across the kink the base alpha was off by 0.066.
+    EXPECT_LT(largestAlphaError, 2e-3);
+    // An even axis when nothing saturates.
+    const TexelAxis even(33, 1.0);
+    EXPECT_EQ(even.kneeNode, 32);
+    EXPECT_DOUBLE_EQ(even.texelAt(8), 0.25);
 }
 
 TEST(LobeTable, BetweenNodesStaysBetweenTheNeighbours) {

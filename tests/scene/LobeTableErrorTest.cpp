@@ -81,6 +81,33 @@ TEST(LobeTableError, EveryEntryIsFiniteForRandomGenomesOfEveryFamily) {
     }
 }
 
+// Painted metal's roughness texture crosses the texel where alpha1 = 2.5 x texel saturates;
+// with that kink between two texel nodes the table was ΔE00 2.5 off the loop on ~200 pixels.
+TEST(LobeTableError, PaintedMetalAtThePresetSizeFollowsTheLoopAcrossTheTexelEdge) {
+    const auto file =
+        std::filesystem::path(MATEVO_SOURCE_DIR) / "presets" / "validation_painted_metal.json";
+    auto loaded = loadPreset(file);
+    ASSERT_TRUE(loaded.ok());
+    auto textures = loadSceneTextures(loaded->preset, file);
+    ASSERT_TRUE(textures.ok());
+    const Preset& preset = loaded->preset;
+    const MaterialInstance material{preset.target, preset.family, preset.baseKappa};
+    const int size = preset.scene.imageSize;
+    const Image exact =
+        renderSphereCpuExact(material, *textures, preset.scene, size, defaultFgdTables());
+    const Image table =
+        renderSphereCpu(material, *textures, preset.scene, size, defaultFgdTables());
+    auto difference = compareImages(exact, table);
+    ASSERT_TRUE(difference.ok());
+    const auto above = std::count_if(difference->deltaE.begin(), difference->deltaE.end(),
+                                     [](float e) { return e > 0.5f; });
+    std::printf("painted metal %d²: lobe table vs loop mean ΔE00 %.4f, max %.3f, %td pixels "
+                "above 0.5\n",
+                size, difference->stats.mean, difference->stats.max, above);
+    EXPECT_LT(difference->stats.mean, 0.01);
+    EXPECT_LT(difference->stats.max, 0.5);
+}
+
 TEST(LobeTableError, DefaultGridStaysFarBelowVisibleAndFinerGridsShrinkIt) {
     const std::vector<ErrorCase> cases = validationAndRandomCases();
     ASSERT_GT(cases.size(), 3u);
