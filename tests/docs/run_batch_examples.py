@@ -21,8 +21,7 @@ from pathlib import Path
 
 # Added by the wrapper, per command: small renders and fits, the CPU back end.
 SMALL = {
-    "variants": ["--size", "32", "--fitness-size", "16", "--max-evaluations", "120",
-                 "--backend", "cpu"],
+    "variants": ["--size", "32", "--fitness-size", "16", "--backend", "cpu"],
     "export": ["--fit-size", "16", "--fit-renders", "30", "--report-size", "16",
                "--backend", "cpu"],
 }
@@ -36,10 +35,11 @@ def examples(page):
     return found
 
 
-def write_wrapper(folder, matevo):
+def write_wrapper(folder, matevo, added=None):
+    """A `matevo` in folder that runs the real one with `added` (default SMALL) per command."""
     folder.mkdir(parents=True, exist_ok=True)
     cases = "\n".join(f'    {command}) extra=({" ".join(args)}) ;;'
-                      for command, args in SMALL.items())
+                      for command, args in (added or SMALL).items())
     wrapper = folder / "matevo"
     wrapper.write_text(f"""#!/bin/bash
 extra=()
