@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 constexpr const char* kHelp =
     "usage: matevo export [--genome FILE.json | --variants DIR] [--preset P]\n"
     "                     [--format gltf|glb|mtlx] --out PATH [--json] [--fit-size N]\n"
-    "                     [--fit-renders N] [--report-size N] [--backend gpu|cpu]\n"
+    "                     [--fit-renders N] [--report-size N]\n"
+    "                     [--backend gpu|cpu [--no-fallback]]\n"
     "                     [--images DIR] [--arrange spheres|variants|crowd]\n"
     "                     [--mesh FILE|sphere|shaderball|knot] [--instances N] [--seed S]\n\n"
     "Writes materials for engines. glTF cannot express the layered Belcour model, so each\n"
@@ -55,6 +56,7 @@ constexpr const char* kHelp =
     "  --backend B       renderer of matevo's own images: gpu (default; falls back to the CPU\n"
     "                    when no Vulkan device is usable) or cpu; the glTF model is always\n"
     "                    rendered on the CPU\n"
+    "  --no-fallback     with the GPU: exit 1 when no Vulkan device is usable\n"
     "  --images DIR      also write, per material, NAME_matevo.png (our render), NAME_gltf.png\n"
     "                    (the fitted glTF material in the same scene) and NAME_heatmap.png\n"
     "                    (their per-pixel dE00, 0-10 through viridis) at the report size\n"
@@ -192,8 +194,7 @@ int runExport(CommandLine& args) {
         args.integerOption("--fit-renders", 20, 100000).value_or(settings.fit.maxEvaluations));
     settings.reportSize =
         int(args.integerOption("--report-size", 16, 2048).value_or(settings.reportSize));
-    const RenderBackend backend =
-        parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend");
+    const gpu::RendererRequest rendererRequest = backendOptions(args, "matevo export");
     const auto imageFolder = args.option("--images");
     const std::string arrangeName = args.option("--arrange").value_or("spheres");
     const auto arrangement = parseArrangement(arrangeName);
@@ -228,10 +229,7 @@ int runExport(CommandLine& args) {
         if (materials.back().name.empty()) materials.back().name = file.stem().string();
     }
 
-    gpu::RendererRequest request;
-    request.backend = backend;
-    request.who = "matevo export";
-    auto renderer = gpu::createPopulationRenderer(request, SceneTextures{});
+    auto renderer = createCommandRenderer(rendererRequest, SceneTextures{});
     ProgressBar progress(int(materials.size()));
     GltfAsset asset{arrangement, {}, {}};
     if (arrangement != GltfArrangement::Spheres) {

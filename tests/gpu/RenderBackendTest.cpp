@@ -77,6 +77,7 @@ TEST(RenderBackend, AModuleSystemsXdgDataDirsDoesNotHideTheDriver) {
 // --no-fallback: no usable device is a failure of the machine (exit 1, one line), no CPU render.
 TEST(RenderBackend, NoFallbackFailsInsteadOfRenderingOnTheCpu) {
     const auto out = scratchFile("strict.png");
+    const auto exported = scratchFile("strict.glb");
     for (const std::string& command :
          {"render --size 24 --out '" + out.string() + "'",
           std::string("variants --count 1 --band 1,10 --size 24 --fitness-size 16 "
@@ -84,7 +85,9 @@ TEST(RenderBackend, NoFallbackFailsInsteadOfRenderingOnTheCpu) {
           "evolve --population 4 --generations 1 --size 24 --out '" + out.string() + "'",
           "experiment --runs 1 --population 4 --generations 1 --size 24 --metric chebyshev "
           "--out '" +
-              out.string() + "'"}) {
+              out.string() + "'",
+          "export --fit-size 16 --fit-renders 20 --report-size 16 --out '" + exported.string() +
+              "'"}) {
         const auto result = testing::runCommand(
             "VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR "/matevo' " +
             command + " --no-fallback");
@@ -93,6 +96,7 @@ TEST(RenderBackend, NoFallbackFailsInsteadOfRenderingOnTheCpu) {
         EXPECT_NE(result.err.find("--no-fallback"), std::string::npos) << result.err;
         EXPECT_EQ(result.err.find("rendering on the CPU instead"), std::string::npos) << result.err;
         EXPECT_FALSE(std::filesystem::exists(out));
+        EXPECT_FALSE(std::filesystem::exists(exported));
     }
     const auto contradiction =
         testing::runMatevo("render --backend cpu --no-fallback --out '" + out.string() + "'");
