@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "io/InputFile.h"
+#include "io/JsonReader.h"
 #include "io/TextFile.h"
 
 namespace matevo {
@@ -45,7 +46,11 @@ Result<ResumableBlocks> readResumableBlocks(const fs::path& folder, const BlockR
     const fs::path file = folder / "report.json";
     auto text = readTextFile(file);
     if (!text) return text.error();
-    const auto report = nlohmann::ordered_json::parse(*text, nullptr, false);
+    // Through the depth check as every JSON matevo reads: a tampered report must not overflow
+    // the parser's stack.
+    auto parsed = parseJsonDocument<nlohmann::ordered_json>(*text, displayPath(file));
+    if (!parsed) return parsed.error();
+    const nlohmann::ordered_json& report = *parsed;
     auto fieldError = [&file](const std::string& field, const std::string& problem) {
         return Error{displayPath(file) + ": " + field + ": " + problem};
     };
