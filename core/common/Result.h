@@ -7,9 +7,26 @@
 
 namespace matevo {
 
+// Where a failure was born, which decides the exit status once, in app/Messages.h: bad input
+// (options, files, folders the user named), the machine or environment (no Vulkan device, out
+// of memory, a full disk), an internal fault (a bug), or work stopped on request.
+enum class ErrorKind { BadInput, Environment, Internal, Cancelled };
+
 struct Error {
     std::string message;
+    ErrorKind kind = ErrorKind::BadInput;
 };
+
+inline Error badInput(std::string message) { return {std::move(message), ErrorKind::BadInput}; }
+inline Error environmentError(std::string message) {
+    return {std::move(message), ErrorKind::Environment};
+}
+inline Error internalError(std::string message) {
+    return {std::move(message), ErrorKind::Internal};
+}
+inline Error cancelledError(std::string message = "stopped on request") {
+    return {std::move(message), ErrorKind::Cancelled};
+}
 
 template <typename T>
 class [[nodiscard]] Result {
