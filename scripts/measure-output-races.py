@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The output races of the README's Reliability section, measured with a real matevo.
+"""The output races of docs/reliability.md, measured with a real matevo.
 
   scripts/measure-output-races.py MATEVO [--rounds-cross-host 20] [--rounds-foreign 50]
                                   [--rounds-export 50]
