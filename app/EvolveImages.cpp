@@ -47,8 +47,8 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
         return png ? quantizeAsPng(image) : image;
     };
     const Preset& preset = choice.preset;
-    auto textures = loadSceneTextures(preset, choice.file);
-    if (!textures) throw UsageError(textures.error().message);
+    // One renderer for every batch: it keeps the target's render between them.
+    auto renderer = createCommandRenderer(rendererRequest, preset, choice.file);
 
     std::error_code error;
     for (const char* folder : {"candidates", "heatmaps"}) {
@@ -58,8 +58,6 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
                              "' (" + error.message() + ")");
     }
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
-    // One renderer for every batch: it keeps the target's render between them.
-    auto renderer = createCommandRenderer(rendererRequest, *textures);
     EvaluationOptions options;
     options.heatmaps = false;  // drawn below from the images as written
     std::vector<CandidateImageStats> stats;

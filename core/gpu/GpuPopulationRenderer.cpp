@@ -106,9 +106,10 @@ Status GpuPopulationRenderer::ensureFlipPass() {
     return Ok{};
 }
 
-Status GpuPopulationRenderer::compileFlip(const FlipSettings& settings) {
+Status GpuPopulationRenderer::prepareFor(const EvaluationOptions& options) {
+    if (!options.wantsFlip()) return Ok{};
     if (Status made = ensureFlipPass(); !made) return made;
-    return flipPass_->compile(runner_, settings);
+    return flipPass_->compile(runner_, options.flipSettings);
 }
 
 Status GpuPopulationRenderer::renderTarget(const TargetKey& key) {
@@ -135,10 +136,19 @@ Status GpuPopulationRenderer::renderTarget(const TargetKey& key) {
 Result<PopulationEvaluation> GpuPopulationRenderer::evaluate(
     const MaterialInstance& target, std::span<const MaterialInstance> candidates,
     const SceneSettings& scene, int size, const EvaluationOptions& options) {
-    return evaluateIntoTiles(target, candidates, scene, size, options, {});
+    return evaluateOnDevice(target, candidates, scene, size, options, {});
 }
 
 Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
+    const MaterialInstance& target, std::span<const MaterialInstance> candidates,
+    const SceneSettings& scene, int size, const EvaluationOptions& options,
+    const TileOutput& tiles) {
+    if (tiles.tiles.size() != candidates.size())
+        return Error{"GPU render: one tile per candidate expected"};
+    return evaluateOnDevice(target, candidates, scene, size, options, tiles.tiles);
+}
+
+Result<PopulationEvaluation> GpuPopulationRenderer::evaluateOnDevice(
     const MaterialInstance& target, std::span<const MaterialInstance> candidates,
     const SceneSettings& scene, int size, const EvaluationOptions& options,
     std::span<const DisplayTile* const> tiles) {
@@ -150,8 +160,6 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     evaluation.target = target_;
     if (candidates.empty()) return evaluation;
 
-    if (!tiles.empty() && tiles.size() != candidates.size())
-        return Error{"GPU render: one tile per candidate expected"};
     const ImageBatchShape shape{size, size, uint32_t(candidates.size())};
     const bool flip = options.wantsFlip();
     if (auto ready = ensureBuffers(shape, flip); !ready) return ready.error();
@@ -204,18 +212,19 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
 }
 
 Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
-                                             const SceneSettings& scene, const DisplayTile& tile) {
-    const ImageBatchShape shape{tile.width, tile.height, 1};
+                                             const SceneSettings& scene, int size,
+                                             const TileOutput& tile) {
+    if (tile.tiles.size() != 1) return Error{"GPU render: one tile expected"};
+    const ImageBatchShape shape{size, size, 1};
     auto buffer = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
     if (!buffer) return buffer.error();
     auto commands = runner_.begin();
     if (!commands) return commands.error();
     if (auto recorded =
-            renderer_.record(*commands, std::span(&material, 1), scene, tile.width, *buffer);
+            renderer_.record(*commands, std::span(&material, 1), scene, size, *buffer);
         !recorded)
         return recorded.error();
-    const DisplayTile* tiles[] = {&tile};
-    recordCopiesToTiles(*commands, *buffer, nullptr, shape, tiles);
+    recordCopiesToTiles(*commands, *buffer, nullptr, shape, tile.tiles);
     return runner_.submitAndWait();
 }
 

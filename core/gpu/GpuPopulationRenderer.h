@@ -41,28 +41,28 @@ public:
                                           const SceneSettings& scene, int size,
                                           const EvaluationOptions& options = {}) override;
 
-    // For a window on the same device: as evaluate, and in the same submission candidate i's
-    // render and error map are copied into tiles[i] (one per candidate, size x size). The map is
-    // the ꟻLIP one when options.heatmapMetric is ꟻLIP and options.flip computes it (e where
-    // pooled, −1 − e elsewhere: negative, "not covered", as ΔE00's −1), else the ΔE00 one.
+    // On the tiles' device (this renderer's): the renders and error maps are copied into the
+    // tiles in the evaluation's own submission, nothing uploaded from the host.
     Result<PopulationEvaluation> evaluateIntoTiles(const MaterialInstance& target,
                                                    std::span<const MaterialInstance> candidates,
                                                    const SceneSettings& scene, int size,
                                                    const EvaluationOptions& options,
-                                                   std::span<const DisplayTile* const> tiles);
-    // Has the ꟻLIP pipelines compiled now, one submission each (FlipPass::compile): the editor's
-    // worker calls it before its first ꟻLIP tiles, so that the window's frames on the same
-    // queue wait for one compile at a time.
-    Status compileFlip(const FlipSettings& settings = {});
-    // Renders one material into the tile's render image (tile size x tile size).
-    Status renderIntoTile(const MaterialInstance& material, const SceneSettings& scene,
-                          const DisplayTile& tile);
+                                                   const TileOutput& tiles) override;
+    // Compiles the ꟻLIP pipelines when `options` want ꟻLIP (FlipPass::compile).
+    Status prepareFor(const EvaluationOptions& options) override;
+    Status renderIntoTile(const MaterialInstance& material, const SceneSettings& scene, int size,
+                          const TileOutput& tile) override;
 
 private:
     GpuPopulationRenderer() = default;
     Status ensureFlipPass();
     Status ensureBuffers(const ImageBatchShape& shape, bool flip);
     Status renderTarget(const TargetKey& key);
+    Result<PopulationEvaluation> evaluateOnDevice(const MaterialInstance& target,
+                                                  std::span<const MaterialInstance> candidates,
+                                                  const SceneSettings& scene, int size,
+                                                  const EvaluationOptions& options,
+                                                  std::span<const DisplayTile* const> tiles);
 
     // Declared first, destroyed last: everything below lives on its device.
     std::unique_ptr<GpuContext> ownContext_;

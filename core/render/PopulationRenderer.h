@@ -4,7 +4,9 @@
 // asked, ꟻLIP of each candidate against the target, heatmaps). Two implementations draw the same
 // pictures to within the cross-check of tests/gpu: CpuPopulationRenderer (the reference) and
 // gpu::GpuPopulationRenderer. Callers get one from gpu::createPopulationRenderer, the only place
-// that chooses between them. An instance is used from one thread at a time.
+// that chooses between them, and talk to it through this interface only. An instance is used
+// from one thread at a time.
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -20,6 +22,10 @@
 #include "scene/SceneTextures.h"
 
 namespace matevo {
+
+namespace gpu {
+struct DisplayTile;
+}
 
 enum class RenderBackend { Gpu, Cpu };
 
@@ -47,6 +53,15 @@ struct EvaluationOptions {
     bool wantsFlip() const { return flip || (heatmaps && heatmapMetric == ImageMetric::Flip); }
 };
 
+// Display tiles on a window's device (gpu::DisplayTile, made in core/gpu) for evaluateIntoTiles
+// and renderIntoTile to fill, and the copy of host pictures into them (gpu::uploadToTiles) that a
+// renderer which does not draw on that device uses.
+struct TileOutput {
+    std::span<const gpu::DisplayTile* const> tiles;
+    // tiles[i] gets pictures[i], and maps[i] when maps is not empty.
+    std::function<Status(std::span<const Image> pictures, std::span<const DeltaEMap> maps)> upload;
+};
+
 class PopulationRenderer {
 public:
     virtual ~PopulationRenderer() = default;
@@ -69,6 +84,25 @@ public:
                                                   std::span<const MaterialInstance> candidates,
                                                   const SceneSettings& scene, int size,
                                                   const EvaluationOptions& options = {}) = 0;
+
+    // Gets ready now what evaluations with `options` need (the GPU compiles its ꟻLIP pipelines,
+    // one submission each), so that a window drawing on the same queue waits for one at a time
+    // rather than for all of them at its first ꟻLIP tiles. Optional: evaluate does it too.
+    virtual Status prepareFor(const EvaluationOptions& options);
+
+    // As evaluate, and candidate i's picture and error map go into tiles.tiles[i]: the map of
+    // options.heatmapMetric when it is computed, ꟻLIP where pooled and "not covered" (negative,
+    // as ΔE00's) elsewhere, else the ΔE00 map. The GPU renderer on the tiles' device copies them
+    // in its own submission (it is made on that device); any other hands its host copies to
+    // tiles.upload.
+    virtual Result<PopulationEvaluation> evaluateIntoTiles(
+        const MaterialInstance& target, std::span<const MaterialInstance> candidates,
+        const SceneSettings& scene, int size, const EvaluationOptions& options,
+        const TileOutput& tiles);
+
+    // Renders `material` into tile.tiles[0]'s picture, which is size x size.
+    virtual Status renderIntoTile(const MaterialInstance& material, const SceneSettings& scene,
+                                  int size, const TileOutput& tile);
 };
 
 // What a kept target render was drawn from; both implementations compare against it.

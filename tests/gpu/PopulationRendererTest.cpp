@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "GpuTestContext.h"
+#include "support/BackEndAgreement.h"
 #include "color/Colormap.h"
 #include "evolve/GenomeSampling.h"
 #include "genome/FamilyRules.h"
@@ -69,7 +70,9 @@ TEST(PopulationRenderer, GpuAndCpuEvaluateAlike) {
     }
     for (std::size_t i = 0; i < population.candidates.size(); ++i) {
         EXPECT_GT(onCpu->deltaE[i].stats.mean, 0.0) << "distinct genomes should differ";
-        EXPECT_NEAR(onGpu->deltaE[i].stats.mean, onCpu->deltaE[i].stats.mean, 0.5) << i;
+        EXPECT_NEAR(onGpu->deltaE[i].stats.mean, onCpu->deltaE[i].stats.mean,
+                    test::kBackEndMeanDeltaE)
+            << i;
     }
     test::expectNoValidationMessages(*test::validatedContext());
 }
