@@ -9,7 +9,6 @@
 #include "gpu/PopulationRendererFactory.h"
 #include "color/Colormap.h"
 #include "io/ImageFile.h"
-#include "scene/SceneTextures.h"
 
 namespace matevo::cli {
 
@@ -58,8 +57,7 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
                              "' (" + error.message() + ")");
     }
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
-    EvaluationOptions options;
-    options.heatmaps = false;  // drawn below from the images as written
+    const EvaluationOptions options;  // heatmaps are drawn below from the images as written
     std::vector<CandidateImageStats> stats;
     Image storedTarget;
     for (std::size_t first = 0; first < ranked.size() && !stopRequested();

@@ -20,7 +20,6 @@
 #include "io/AtomicFile.h"
 #include "io/GaCheckpoint.h"
 #include "io/OutputFolder.h"
-#include "scene/SceneTextures.h"
 #include "variants/ImageFitness.h"
 
 namespace matevo::cli {

@@ -12,7 +12,6 @@ constexpr std::size_t kTilesPerSubmission = 8;
 // The tiles' error maps are `heatmapMetric`'s; the window colours them itself.
 EvaluationOptions evaluationOptions(ImageMetric heatmapMetric) {
     EvaluationOptions options;
-    options.heatmaps = false;
     options.candidateImages = true;  // the inspector's readout
     options.flip = heatmapMetric == ImageMetric::Flip;
     options.heatmapMetric = heatmapMetric;

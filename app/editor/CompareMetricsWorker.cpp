@@ -5,7 +5,6 @@
 #include <utility>
 
 #include "experiment/Experiment.h"
-#include "scene/SceneTextures.h"
 
 namespace matevo::editor {
 

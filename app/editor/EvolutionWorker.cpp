@@ -11,7 +11,6 @@
 #include <unistd.h>
 
 #include "experiment/Experiment.h"
-#include "scene/SceneTextures.h"
 #include "variants/ImageFitness.h"
 
 namespace matevo::editor {

@@ -1,8 +1,7 @@
 #pragma once
 // The render interface on Vulkan: the target and every candidate are rendered by
 // GpuSphereRenderer, the ΔE00 pass (and, when asked, the ꟻLIP pass) compares each candidate
-// with the target's render and colours the heatmaps, and everything is read back, in one
-// submission. The target's render stays in
+// with the target's render, and everything is read back, in one submission. The target's render stays in
 // its own buffer until the target changes. Buffers are kept between calls of the same shape.
 #include <memory>
 #include <optional>
@@ -10,7 +9,6 @@
 #include <vector>
 
 #include "common/Result.h"
-#include "gpu/DeltaE00Pass.h"
 #include "gpu/DisplayTile.h"
 #include "gpu/FlipPass.h"
 #include "gpu/GpuContext.h"
@@ -24,12 +22,10 @@ public:
     // Renders on `device`, which must outlive the renderer. `tables` too (the process-wide
     // defaultFgdTables() does).
     static Result<std::unique_ptr<GpuPopulationRenderer>> create(
-        const Device& device, const FgdTables& tables, const SceneTextures& textures,
-        const DeltaE00Pass::Colormap& colormap);
+        const Device& device, const FgdTables& tables, const SceneTextures& textures);
     // Renders on a headless device of its own.
     static Result<std::unique_ptr<GpuPopulationRenderer>> createHeadless(
-        const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures,
-        const DeltaE00Pass::Colormap& colormap);
+        const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures);
 
     std::string name() const override;
     RenderBackend backend() const override { return RenderBackend::Gpu; }
@@ -70,22 +66,19 @@ private:
     const FgdTables* tables_ = nullptr;
     CommandRunner runner_;
     GpuSphereRenderer renderer_;
-    TexelBuffer heatmapColormap_;
     std::optional<FlipPass> flipPass_;  // made when first asked for (lavapipe compiles it then)
     std::optional<TargetKey> targetKey_;
     Image target_;  // the host copy of targetRender_
     Buffer targetRender_;
     TexelBuffer targetLab_;  // target_ in L*a*b*, with its alpha: what each render compares with
     ImageBatchShape bufferShape_;
-    // The coverage whose background renders_, deltaE_ and heatmaps_ already hold (the fills
+    // The coverage whose background renders_ and deltaE_ already hold (the fills
     // are skipped while it stays the same); none after the buffers are made.
     std::optional<GpuSphereSamples::Key> backgroundFilledFor_;
     Buffer renders_;
     Buffer deltaE_;
-    Buffer heatmaps_;
-    // The ꟻLIP pass's maps and heatmaps, of bufferShape_ when ꟻLIP was asked for.
+    // The ꟻLIP pass's maps, of bufferShape_ when ꟻLIP was asked for.
     Buffer flip_;
-    Buffer flipHeatmaps_;
 };
 
 }  // namespace matevo::gpu

@@ -3,7 +3,6 @@
 #include <cstdio>
 
 #include "gpu/GpuPopulationRenderer.h"
-#include "gpu/HeatmapColormap.h"
 #include "material/FgdTableCache.h"
 #include "render/CpuPopulationRenderer.h"
 
@@ -13,10 +12,8 @@ namespace {
 Result<std::unique_ptr<GpuPopulationRenderer>> createGpuRenderer(const RendererRequest& request,
                                                                  const SceneTextures& textures) {
     if (request.device)
-        return GpuPopulationRenderer::create(*request.device, defaultFgdTables(), textures,
-                                             heatmapColormap());
-    return GpuPopulationRenderer::createHeadless(request.headless, defaultFgdTables(), textures,
-                                                 heatmapColormap());
+        return GpuPopulationRenderer::create(*request.device, defaultFgdTables(), textures);
+    return GpuPopulationRenderer::createHeadless(request.headless, defaultFgdTables(), textures);
 }
 
 }  // namespace

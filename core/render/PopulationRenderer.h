@@ -1,17 +1,17 @@
 #pragma once
 // The one way matevo turns materials into pictures: render a batch of materials on the test
 // sphere, or evaluate a population (target and candidates rendered, per-pixel ΔE00 and, when
-// asked, ꟻLIP of each candidate against the target, heatmaps). Two implementations draw the same
-// pictures to within the cross-check of tests/gpu: CpuPopulationRenderer (the reference) and
-// gpu::GpuPopulationRenderer. Callers get one from gpu::createPopulationRenderer, the only place
-// that chooses between them, and talk to it through this interface only. An instance is used
-// from one thread at a time.
+// asked, ꟻLIP of each candidate against the target). Heatmaps are coloured from the maps by
+// whoever shows them (core/color for files, the editor window's shader). Two implementations
+// draw the same pictures to within the cross-check of tests/gpu: CpuPopulationRenderer (the
+// reference) and gpu::GpuPopulationRenderer. Callers get one from gpu::createPopulationRenderer,
+// the only place that chooses between them, and talk to it through this interface only. An
+// instance is used from one thread at a time.
 #include <functional>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "color/Colormap.h"
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/ImageMetric.h"
@@ -33,24 +33,18 @@ struct PopulationEvaluation {
     Image target;
     std::vector<Image> candidates;  // empty unless EvaluationOptions::candidateImages
     std::vector<DeltaEMap> deltaE;  // candidate vs target, over pixels covered in both
-    std::vector<FlipMap> flip;    // the same with ꟻLIP; empty unless EvaluationOptions::wantsFlip
-    std::vector<Image> heatmaps;  // EvaluationOptions::heatmapMetric colour-mapped, transparent
-                                  // where not covered; empty unless EvaluationOptions::heatmaps
+    std::vector<FlipMap> flip;      // the same with ꟻLIP; empty unless EvaluationOptions::flip
 };
 
 struct EvaluationOptions {
-    HeatmapSettings heatmap;  // the ΔE00 range of the colour map (opacity is not used)
-    // What the heatmaps show: ΔE00 through viridis over `heatmap`'s range, or ꟻLIP through
-    // magma over its fixed range [0, 1].
-    ImageMetric heatmapMetric = ImageMetric::DeltaE00;
-    // ꟻLIP maps too (e.g. for a ꟻLIP fitness), at this viewing condition.
+    // ꟻLIP maps too (e.g. for a ꟻLIP fitness or heatmap), at this viewing condition.
     bool flip = false;
     FlipSettings flipSettings;
-    // What to hand back besides the ΔE00 maps: fitness needs neither, the grid only images.
+    // The map whose heatmap a window shows, which evaluateIntoTiles puts into the tiles: ΔE00,
+    // or ꟻLIP (with `flip`).
+    ImageMetric heatmapMetric = ImageMetric::DeltaE00;
+    // The candidates' renders besides the maps (fitness needs only the maps).
     bool candidateImages = true;
-    bool heatmaps = true;
-
-    bool wantsFlip() const { return flip || (heatmaps && heatmapMetric == ImageMetric::Flip); }
 };
 
 // Display tiles on a window's device (gpu::DisplayTile, made in core/gpu) for evaluateIntoTiles

@@ -15,7 +15,6 @@
 #include "evolve/GenomeSampling.h"
 #include "gpu/ComputeKernel.h"
 #include "gpu/GpuPopulationRenderer.h"
-#include "gpu/HeatmapColormap.h"
 #include "material/FgdTableCache.h"
 
 namespace matevo::editor {
@@ -64,16 +63,14 @@ TEST(CandidateRenderCache, TargetChangeKeepsTexturesAndPipelines) {
     EXPECT_EQ(gpu::ComputeKernel::pipelinesCreated(), pipelines)
         << "a change of the target built pipelines";
 
-    auto fresh = gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(),
-                                                    *textures, gpu::heatmapColormap());
+    auto fresh =
+        gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(), *textures);
     ASSERT_TRUE(fresh.ok()) << fresh.error().message;
     std::vector<MaterialInstance> materials;
     for (const Genome& genome : candidates)
         materials.push_back({genome, preset.family, preset.baseKappa});
-    EvaluationOptions options;
-    options.heatmaps = false;
     auto expected = (*fresh)->evaluate({moved.target, preset.family, preset.baseKappa}, materials,
-                                       preset.scene, kTileSize, options);
+                                       preset.scene, kTileSize);
     ASSERT_TRUE(expected.ok()) << expected.error().message;
     ASSERT_NE(cache.targetPicture(), nullptr);
     EXPECT_EQ(cache.targetPicture()->rgba, expected->target.rgba);

@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include "GpuTestContext.h"
-#include "support/BackEndAgreement.h"
 #include "color/ImageDifference.h"
 #include "evolve/GenomeSampling.h"
 #include "genome/FamilyRules.h"
@@ -18,6 +17,7 @@
 #include "scene/ProceduralTextures.h"
 #include "scene/SphereRenderer.h"
 #include "scene/StudioEnvironment.h"
+#include "support/BackEndAgreement.h"
 
 namespace matevo {
 namespace {
@@ -159,8 +159,8 @@ TEST(GpuPopulation, DeltaEMatchesCoreColorOnRenderedPairs) {
     ASSERT_NE(context, nullptr);
     SceneTextures textures;
     textures.roughness = makePaintRoughnessTexture(64, 32);
-    auto renderer = gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(),
-                                                       textures, test::rampColormap());
+    auto renderer =
+        gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(), textures);
     ASSERT_TRUE(renderer.ok()) << renderer.error().message;
 
     const MaterialFamily family = supportedFamilies().front();
@@ -186,20 +186,6 @@ TEST(GpuPopulation, DeltaEMatchesCoreColorOnRenderedPairs) {
         largestDifference = std::max(largestDifference, meanDifference);
         EXPECT_LT(meanDifference, 1e-3) << "candidate " << i;
         EXPECT_GT(cpu->stats.mean, 0.0) << "distinct genomes should differ";
-        // The heatmap is the ramp's entry of each covered pixel's ΔE00 (default range 0-10),
-        // transparent elsewhere.
-        const Image& heatmap = evaluation->heatmaps[i];
-        for (std::size_t p = 0; p < cpu->deltaE.size(); ++p) {
-            std::array<float, 4> expected{};
-            if (cpu->covered[p]) {
-                const double position =
-                    std::clamp(double(evaluation->deltaE[i].deltaE[p]) / 10.0, 0.0, 1.0);
-                expected = test::rampColormap()[std::size_t(std::lround(position * 255.0))];
-            }
-            for (std::size_t c = 0; c < 4; ++c)
-                ASSERT_NEAR(heatmap.rgba[4 * p + c], expected[c], 1.5f / 255.0f)
-                    << "candidate " << i << ", pixel " << p;
-        }
     }
     std::printf("largest mean |GPU - CPU| ΔE00 on rendered pairs: %.2e\n", largestDifference);
     test::expectNoValidationMessages(*context);
