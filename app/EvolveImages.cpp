@@ -9,7 +9,6 @@
 #include "gpu/PopulationRendererFactory.h"
 #include "color/Colormap.h"
 #include "io/ImageFile.h"
-#include "scene/SceneTextures.h"
 
 namespace matevo::cli {
 
@@ -47,8 +46,8 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
         return png ? quantizeAsPng(image) : image;
     };
     const Preset& preset = choice.preset;
-    auto textures = loadSceneTextures(preset, choice.file);
-    if (!textures) throw UsageError(textures.error().message);
+    // One renderer for every batch: it keeps the target's render between them.
+    auto renderer = createCommandRenderer(rendererRequest, preset, choice.file);
 
     std::error_code error;
     for (const char* folder : {"candidates", "heatmaps"}) {
@@ -58,10 +57,7 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
                              "' (" + error.message() + ")");
     }
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
-    // One renderer for every batch: it keeps the target's render between them.
-    auto renderer = createCommandRenderer(rendererRequest, *textures);
-    EvaluationOptions options;
-    options.heatmaps = false;  // drawn below from the images as written
+    const EvaluationOptions options;  // heatmaps are drawn below from the images as written
     std::vector<CandidateImageStats> stats;
     Image storedTarget;
     for (std::size_t first = 0; first < ranked.size() && !stopRequested();

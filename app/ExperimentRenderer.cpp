@@ -7,11 +7,9 @@ namespace matevo::cli {
 
 RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<int> imageSize,
                                      const gpu::RendererRequest& rendererRequest) {
-    auto textures = loadSceneTextures(choice.preset, choice.file);
-    if (!textures) throw UsageError(textures.error().message);
     const Preset& preset = choice.preset;
     std::shared_ptr<PopulationRenderer> renderer =
-        createCommandRenderer(rendererRequest, *textures);
+        createCommandRenderer(rendererRequest, preset, choice.file);
     return renderGenomesWith(std::move(renderer), preset.family, preset.baseKappa, preset.scene,
                              imageSize.value_or(preset.scene.imageSize));
 }

@@ -27,6 +27,18 @@ std::unique_ptr<PopulationRenderer> createCommandRenderer(const gpu::RendererReq
     return std::move(renderer).value();
 }
 
+std::unique_ptr<PopulationRenderer> createCommandRenderer(const gpu::RendererRequest& request,
+                                                          const Preset& preset,
+                                                          const std::filesystem::path& presetFile) {
+    auto renderer = gpu::createPresetRenderer(request, preset, presetFile);
+    if (!renderer) {
+        if (renderer.error().kind == ErrorKind::BadInput)
+            throw UsageError(renderer.error().message);
+        throw MachineFailure(renderer.error().message);
+    }
+    return std::move(renderer).value();
+}
+
 nlohmann::ordered_json madeBy(const PopulationRenderer& renderer) {
     return {{"matevo", MATEVO_VERSION},
             {"backend", renderer.backend() == RenderBackend::Gpu ? "gpu" : "cpu"},

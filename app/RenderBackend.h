@@ -1,6 +1,7 @@
 #pragma once
 // `--backend gpu|cpu` and `--no-fallback`, which the rendering commands take; what they select is
 // made by gpu::createPopulationRenderer.
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -24,6 +25,11 @@ gpu::RendererRequest backendOptions(CommandLine& args, const std::string& who);
 // a MachineFailure (exit 1).
 std::unique_ptr<PopulationRenderer> createCommandRenderer(const gpu::RendererRequest& request,
                                                           const SceneTextures& textures);
+// The same for a preset, its textures loaded (gpu::createPresetRenderer); a texture that cannot
+// be read is a UsageError naming the preset file and field.
+std::unique_ptr<PopulationRenderer> createCommandRenderer(const gpu::RendererRequest& request,
+                                                          const Preset& preset,
+                                                          const std::filesystem::path& presetFile);
 
 // What made a report's renders, so that work of different back ends or versions is never
 // joined (merge, a resumed share): {"matevo": version, "backend": "gpu"|"cpu", "device": name}.

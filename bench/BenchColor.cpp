@@ -11,7 +11,6 @@
 
 #include "gpu/GpuContext.h"
 #include "gpu/GpuImageComparer.h"
-#include "gpu/HeatmapColormap.h"
 
 namespace matevo::bench {
 namespace {
@@ -132,7 +131,7 @@ void benchGpuComparison(BenchReport& report) {
                      context.error().message.c_str());
         return;
     }
-    auto comparer = gpu::GpuImageComparer::create(context->device, gpu::heatmapColormap());
+    auto comparer = gpu::GpuImageComparer::create(context->device);
     if (!comparer) {
         std::fprintf(stderr, "matevo bench: %s; gpu_* skipped\n", comparer.error().message.c_str());
         return;

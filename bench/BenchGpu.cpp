@@ -6,7 +6,6 @@
 #include "Timing.h"
 #include "evolve/GenomeSampling.h"
 #include "gpu/GpuPopulationRenderer.h"
-#include "gpu/HeatmapColormap.h"
 #include "material/FgdTableCache.h"
 #include "render/CpuPopulationRenderer.h"
 
@@ -33,7 +32,7 @@ Grid makeGrid() {
     return grid;
 }
 
-// Medians of the grid's evaluation (render + ΔE00 + heatmaps + read-back) after one warm-up
+// Medians of the grid's evaluation (render + ΔE00 + read-back) after one warm-up
 // call (lavapipe compiles the shaders on first use); nullopt when an evaluation failed.
 std::optional<WallAndCpu> gridTimes(PopulationRenderer& renderer, const Grid& grid,
                                     int repetitions) {
@@ -54,9 +53,8 @@ void benchGpuGrid(BenchReport& report) {
     const Grid grid = makeGrid();
     (void)defaultFgdTables();  // table generation or loading is not part of the figure
     std::optional<WallAndCpu> gpuGrid;
-    auto gpuRenderer = gpu::GpuPopulationRenderer::createHeadless({}, defaultFgdTables(),
-                                                                  SceneTextures{},
-                                                                  gpu::heatmapColormap());
+    auto gpuRenderer =
+        gpu::GpuPopulationRenderer::createHeadless({}, defaultFgdTables(), SceneTextures{});
     if (!gpuRenderer) {
         std::fprintf(stderr, "matevo bench: no usable Vulkan device (%s); gpu_grid64_ms skipped\n",
                      gpuRenderer.error().message.c_str());
@@ -65,7 +63,7 @@ void benchGpuGrid(BenchReport& report) {
         if (gpuGrid) {
             report.push_back({"gpu_grid64_ms", gpuGrid->wallMilliseconds,
                               "64 candidates at 128^2 on " + (*gpuRenderer)->name() +
-                                  ": render + ΔE00 + heatmaps + read-back"});
+                                  ": render + ΔE00 + read-back"});
             report.push_back({"gpu_grid64_cpu_ms", gpuGrid->cpuMilliseconds,
                               "the same, CPU time of every thread (lavapipe's too)"});
         }

@@ -81,9 +81,3 @@ float ciede2000(vec3 lab1, vec3 lab2) {
     float termH = dH / sH;
     return sqrt(max(termL * termL + termC * termC + termH * termH + rT * termC * termH, 0.0));
 }
-
-// Index into a 256-entry colour map: minDeltaE maps to the first entry, maxDeltaE to the last.
-uint colormapEntry(float deltaE, float minDeltaE, float maxDeltaE) {
-    float span = max(maxDeltaE - minDeltaE, 1e-6);
-    return uint(round(clamp((deltaE - minDeltaE) / span, 0.0, 1.0) * 255.0));
-}

@@ -1,21 +1,16 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // The second of the two ꟻLIP passes (core/gpu/FlipPass.h): the row-filtered planes of the
 // reference and of each candidate filtered along y, then the colour difference, the feature
 // difference and their combination per pixel, as core/color/FlipStages.cpp. Writes the error
 // (pooled pixels, covered in both images with alpha >= 0.5 as core/color/Coverage.h says, as
-// e ≥ 0; the others as −1 − e) and the magma heatmap (transparent where not pooled). The images
-// are not read again: the planes carry each pixel's alpha.
+// e ≥ 0; the others as −1 − e). The images are not read again: the planes carry each pixel's
+// alpha.
 layout(local_size_x = 64) in;
 
 layout(binding = 3) uniform samplerBuffer planes;  // a texel buffer, as the images in the row pass
 layout(std430, binding = 4) writeonly buffer Error { float flipError[]; };
-// RGBA texels moved whole as two 64-bit words, not four floats: llvmpipe loads and stores
-// storage buffers lane by lane and component by component (FlipRowFilter.comp).
-layout(std430, binding = 5) writeonly buffer Heatmap { u64vec2 heatmapPixels[]; };
-layout(std430, binding = 6) readonly buffer Colormap { u64vec2 colormap[256]; };
 
 #include "FlipCommon.glsl"
 #include "LinearSrgbToLab.glsl"
@@ -140,8 +135,6 @@ void main() {
             uint index = candidate * uint(pixelCount) + pixel;
             bool pooled = reference[i].alpha >= 0.5 && test[i].alpha >= 0.5;
             flipError[index] = pooled ? error : -1.0 - error;
-            heatmapPixels[index] =
-                pooled ? colormap[uint(floor(clamp(error, 0.0, 1.0) * 255.0 + 0.5))] : u64vec2(0);
         }
         slide(referenceCsf, referenceFeature);
         slide(testCsf, testFeature);

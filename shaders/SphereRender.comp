@@ -14,7 +14,7 @@
 // silhouette's pixels of up to kMaxPoints points.
 //
 // Built twice: with COMPARE_WITH_TARGET defined it also writes each pixel's ΔE00 against the
-// target and its heatmap colour (what shaders/DeltaE00Heatmap.comp computes from two images),
+// target (what shaders/DeltaE00.comp computes from two images),
 // while the radiance is still in registers: no second pass over the images, the target's
 // L*a*b* converted once on the CPU, and no work on background pixels (the caller fills them).
 layout(local_size_x = 64) in;
@@ -41,8 +41,6 @@ layout(push_constant) uniform Dispatch {
     uint pixelsPerImage;
     uint firstPixel;  // of this dispatch, in coveredPixels
     uint pixelCount;
-    float minDeltaE;  // maps to colormap[0] (with COMPARE_WITH_TARGET)
-    float maxDeltaE;  // maps to colormap[255]
 } dispatch;
 layout(binding = 6) uniform sampler3D environmentMap;
 
@@ -57,22 +55,16 @@ layout(binding = 8) uniform samplerBuffer pointData;
 // Per pixel of one image: the target's L*a*b* and its alpha.
 layout(binding = 9) uniform samplerBuffer targetLab;
 layout(std430, binding = 10) writeonly buffer DeltaE { float deltaE[]; };
-layout(std430, binding = 11) writeonly buffer Heatmap { vec4 heatmapPixels[]; };
-layout(binding = 12) uniform samplerBuffer colormap;  // 256 entries
 #include "LinearSrgbToLab.glsl"
 #include "Ciede2000.glsl"
 
 // Pixels covered in the target and the candidate (alpha >= 0.5, core/color/Coverage.h) get
-// their ΔE00; the others -1 and a transparent heatmap, as the ΔE00 pass writes them.
+// their ΔE00; the others -1, as the ΔE00 pass writes them.
 void compareWithTarget(uint index, uint pixel, vec4 candidate) {
     vec4 target = texelFetch(targetLab, int(pixel));
     bool covered = target.a >= 0.5 && candidate.a >= 0.5;
     float difference = ciede2000(target.xyz, linearSrgbToLab(candidate.rgb));
     deltaE[index] = covered ? difference : -1.0;
-    heatmapPixels[index] =
-        covered ? texelFetch(colormap,
-                             int(colormapEntry(difference, dispatch.minDeltaE, dispatch.maxDeltaE)))
-                : vec4(0.0);
 }
 #endif
 

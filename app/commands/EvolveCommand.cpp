@@ -20,7 +20,6 @@
 #include "io/AtomicFile.h"
 #include "io/GaCheckpoint.h"
 #include "io/OutputFolder.h"
-#include "scene/SceneTextures.h"
 #include "variants/ImageFitness.h"
 
 namespace matevo::cli {
@@ -196,9 +195,7 @@ int runEvolve(CommandLine& args) {
     std::optional<ImageSpaceFitness> fitness;
     nlohmann::ordered_json renderedBy;  // made_by, when anything is rendered
     if (imageFitness) {
-        auto textures = loadSceneTextures(preset, choice.file);
-        if (!textures) throw UsageError(textures.error().message);
-        auto renderer = createCommandRenderer(rendererRequest, *textures);
+        auto renderer = createCommandRenderer(rendererRequest, preset, choice.file);
         renderedBy = madeBy(*renderer);
         auto cache = GenomeRenderCache::create(
             renderGenomesWith(std::move(renderer), preset.family, preset.baseKappa, preset.scene,

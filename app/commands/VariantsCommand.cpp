@@ -351,11 +351,9 @@ int runVariants(CommandLine& args) {
                                        int(kept ? kept->missing.size() : blocks.size())));
 
     const Preset& preset = choice.preset;
-    auto textures = loadSceneTextures(preset, choice.file);
-    if (!textures) throw UsageError(textures.error().message);
     // One renderer for the search and the check, so tables and textures are uploaded once.
     const std::shared_ptr<PopulationRenderer> renderer =
-        createCommandRenderer(rendererRequest, *textures);
+        createCommandRenderer(rendererRequest, preset, choice.file);
     parts.header["made_by"] = madeBy(*renderer);
     if (kept) {
         if (auto conflict = madeByConflict(kept->madeBy, parts.header["made_by"]))

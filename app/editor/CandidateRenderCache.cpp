@@ -9,6 +9,15 @@ namespace {
 // of a few tiles keep a frame's wait short.
 constexpr std::size_t kTilesPerSubmission = 8;
 
+// The tiles' error maps are `heatmapMetric`'s; the window colours them itself.
+EvaluationOptions evaluationOptions(ImageMetric heatmapMetric) {
+    EvaluationOptions options;
+    options.candidateImages = true;  // the inspector's readout
+    options.flip = heatmapMetric == ImageMetric::Flip;
+    options.heatmapMetric = heatmapMetric;
+    return options;
+}
+
 }  // namespace
 
 CandidateRenderCache::CandidateRenderCache(int tileSize, int targetSize, std::size_t capacity,
@@ -35,29 +44,43 @@ MaterialInstance CandidateRenderCache::material(const Genome& genome) const {
     return {genome, preset_->family, preset_->baseKappa};
 }
 
-Status CandidateRenderCache::createRenderer(const SceneTextures& textures) {
-    renderer_ = gpu::createPopulationRenderer(request_, textures);
-    gpuRenderer_ = dynamic_cast<gpu::GpuPopulationRenderer*>(renderer_.get());
-    auto runner = gpu::CommandRunner::create(device_);
-    if (!runner) return runner.error();
-    uploadRunner_ = std::move(runner).value();
+Status CandidateRenderCache::useTexturesOf(const Preset& preset,
+                                           const std::filesystem::path& presetFile) {
+    const TextureSources sources = textureSourcesOf(preset, presetFile);
+    if (renderer_ && textureSources_ == sources) return Ok{};
+    textureSources_.reset();
+    if (!uploadRunner_) {
+        auto runner = gpu::CommandRunner::create(device_);
+        if (!runner) return runner.error();
+        uploadRunner_ = std::move(runner).value();
+    }
+    if (!renderer_) {
+        auto created = gpu::createPresetRenderer(request_, preset, presetFile);
+        if (!created) return created.error();
+        renderer_ = std::move(created).value();
+    } else {
+        auto textures = loadSceneTextures(preset, presetFile);
+        if (!textures) return textures.error();
+        if (Status set = renderer_->setTextures(*textures); !set) return set;
+    }
+    textureSources_ = sources;
     return Ok{};
+}
+
+TileOutput CandidateRenderCache::tileOutput(std::span<const gpu::DisplayTile* const> tiles) {
+    return {tiles, [this, tiles](std::span<const Image> pictures, std::span<const DeltaEMap> maps) {
+                return gpu::uploadToTiles(device_, *uploadRunner_, tiles, pictures, maps);
+            }};
 }
 
 Status CandidateRenderCache::prepare(const Preset& preset, const std::filesystem::path& presetFile,
                                      ImageMetric heatmapMetric) {
     if (drawsTheSame(preset, presetFile, heatmapMetric)) return Ok{};
-    auto textures = loadSceneTextures(preset, presetFile);
-    if (!textures) return textures.error();
-    if (!renderer_) {
-        if (Status created = createRenderer(*textures); !created) return created;
-    } else if (Status set = renderer_->setTextures(*textures); !set) {
-        return set;
-    }
+    if (Status ready = useTexturesOf(preset, presetFile); !ready) return ready;
     // lavapipe compiles the ꟻLIP pipelines at their first dispatch, holding the queue the window
     // draws on: one at a time, before any tile waits on them (docs/flip.md).
-    if (heatmapMetric == ImageMetric::Flip && gpuRenderer_)
-        if (Status compiled = gpuRenderer_->compileFlip(); !compiled) return compiled;
+    if (Status compiled = renderer_->prepareFor(evaluationOptions(heatmapMetric)); !compiled)
+        return compiled;
     entries_.clear();
     heatmapMetric_ = heatmapMetric;
     targetPicture_.reset();
@@ -73,17 +96,11 @@ Status CandidateRenderCache::drawTarget(const Preset& preset) {
     if (!tile) return tile.error();
     auto target = std::make_shared<gpu::DisplayTile>(std::move(tile).value());
     const MaterialInstance material{preset.target, preset.family, preset.baseKappa};
-    if (gpuRenderer_) {
-        if (Status drawn = gpuRenderer_->renderIntoTile(material, preset.scene, *target); !drawn)
-            return drawn;
-    } else {
-        auto image = renderer_->render(std::span(&material, 1), preset.scene, targetSize_);
-        if (!image) return image.error();
-        const gpu::DisplayTile* tiles[] = {target.get()};
-        if (Status uploaded = gpu::uploadToTiles(device_, *uploadRunner_, tiles, *image, {});
-            !uploaded)
-            return uploaded;
-    }
+    const gpu::DisplayTile* tiles[] = {target.get()};
+    if (Status drawn = renderer_->renderIntoTile(material, preset.scene, targetSize_,
+                                                 tileOutput(tiles));
+        !drawn)
+        return drawn;
     target_ = std::move(target);
     return Ok{};
 }
@@ -105,33 +122,12 @@ Status CandidateRenderCache::draw(std::span<const Genome> genomes) {
         targets.push_back(tiles.back().get());
         materials.push_back(material(genome));
     }
-    EvaluationOptions options;
-    options.heatmaps = false;        // the window colours the error maps itself
-    options.candidateImages = true;  // the GPU's are copied to the tiles on the device too
-    const bool flip = heatmapMetric_ == ImageMetric::Flip;
-    options.flip = flip;
-    options.heatmapMetric = heatmapMetric_;  // the error map the tiles hold
     const MaterialInstance target = material(preset_->target);
-    // The GPU renderer writes the tiles in place (its ꟻLIP pipelines are compiled by lavapipe at
-    // their first dispatch, in this worker's submission); the CPU renderer's go through the host.
-    auto evaluation =
-        gpuRenderer_ ? gpuRenderer_->evaluateIntoTiles(target, materials, preset_->scene,
-                                                       tileSize_, options, targets)
-                     : renderer_->evaluate(target, materials, preset_->scene, tileSize_, options);
+    auto evaluation = renderer_->evaluateIntoTiles(target, materials, preset_->scene, tileSize_,
+                                                   evaluationOptions(heatmapMetric_),
+                                                   tileOutput(targets));
     if (!evaluation) return evaluation.error();
-    if (!gpuRenderer_) {
-        // A ꟻLIP tile's error map holds ꟻLIP where the pixel is pooled (as ΔE00's, "not covered"
-        // elsewhere), so the window draws either map the same way.
-        std::vector<DeltaEMap> shownMaps;
-        if (flip)
-            for (const FlipMap& map : evaluation->flip)
-                shownMaps.push_back({map.width, map.height, map.error, map.pooled, {}});
-        if (Status uploaded =
-                gpu::uploadToTiles(device_, *uploadRunner_, targets, evaluation->candidates,
-                                   flip ? shownMaps : evaluation->deltaE);
-            !uploaded)
-            return uploaded;
-    }
+    const bool flip = heatmapMetric_ == ImageMetric::Flip;
     if (!targetPicture_) targetPicture_ = std::make_shared<Image>(std::move(evaluation->target));
     for (std::size_t i = 0; i < genomes.size(); ++i) {
         const DeltaEStats stats = evaluation->deltaE[i].stats;

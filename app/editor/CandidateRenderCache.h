@@ -18,10 +18,12 @@
 
 #include "color/ImageDifference.h"
 #include "common/Result.h"
+#include "gpu/CommandRunner.h"
 #include "gpu/DisplayTile.h"
-#include "gpu/GpuPopulationRenderer.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/Preset.h"
+#include "render/PopulationRenderer.h"
+#include "scene/SceneTextures.h"
 
 namespace matevo::editor {
 
@@ -43,7 +45,8 @@ public:
 
     // Serves `preset` from now on, with tiles whose heatmaps show `heatmapMetric`; forgets
     // everything if the picture's inputs or the metric changed. The target is rendered here,
-    // once per change.
+    // once per change; the textures are read again only when their files change, so a change
+    // of the target keeps the renderer's textures and pipelines.
     Status prepare(const Preset& preset, const std::filesystem::path& presetFile,
                    ImageMetric heatmapMetric = ImageMetric::DeltaE00);
     const std::shared_ptr<const gpu::DisplayTile>& target() const { return target_; }
@@ -63,7 +66,8 @@ private:
     bool drawsTheSame(const Preset& preset, const std::filesystem::path& presetFile,
                       ImageMetric heatmapMetric) const;
     MaterialInstance material(const Genome& genome) const;
-    Status createRenderer(const SceneTextures& textures);
+    Status useTexturesOf(const Preset& preset, const std::filesystem::path& presetFile);
+    TileOutput tileOutput(std::span<const gpu::DisplayTile* const> tiles);
     Status drawTarget(const Preset& preset);
     Status draw(std::span<const Genome> genomes);
     Entry* find(const Genome& genome);
@@ -75,9 +79,8 @@ private:
     const gpu::Device& device_;
     gpu::RendererRequest request_;
     std::unique_ptr<PopulationRenderer> renderer_;
-    // The GPU renderer writes the tiles on the device itself; the CPU renderer's pictures and
-    // maps are uploaded with uploadRunner_. Null with the CPU renderer.
-    gpu::GpuPopulationRenderer* gpuRenderer_ = nullptr;
+    std::optional<TextureSources> textureSources_;  // what the renderer's textures were read from
+    // Uploads host pictures into tiles, for a renderer that draws elsewhere (the CPU's).
     std::optional<gpu::CommandRunner> uploadRunner_;
     ImageMetric heatmapMetric_ = ImageMetric::DeltaE00;
     std::optional<Preset> preset_;  // what the cached pictures were drawn from

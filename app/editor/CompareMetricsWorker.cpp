@@ -5,7 +5,6 @@
 #include <utility>
 
 #include "experiment/Experiment.h"
-#include "scene/SceneTextures.h"
 
 namespace matevo::editor {
 
@@ -23,14 +22,13 @@ bool CompareMetricsWorker::start(CompareMetricsJob job) {
 
 CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job) {
     CompareMetricsResult result;
-    auto textures = loadSceneTextures(job.preset, job.presetFile);
-    if (!textures) {
-        result.error = textures.error().message;
+    const Preset& preset = job.preset;
+    auto created = gpu::createPresetRenderer(rendererRequest_, preset, job.presetFile);
+    if (!created) {
+        result.error = created.error().message;
         return result;
     }
-    const Preset& preset = job.preset;
-    std::shared_ptr<PopulationRenderer> renderer =
-        gpu::createPopulationRenderer(rendererRequest_, *textures);
+    std::shared_ptr<PopulationRenderer> renderer = std::move(created).value();
     result.backend = renderer->name();
     const RenderGenomes render = renderGenomesWith(std::move(renderer), preset.family,
                                                    preset.baseKappa, preset.scene, kRenderSize);

@@ -11,7 +11,6 @@
 #include <unistd.h>
 
 #include "experiment/Experiment.h"
-#include "scene/SceneTextures.h"
 #include "variants/ImageFitness.h"
 
 namespace matevo::editor {
@@ -213,11 +212,11 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
     };
     std::optional<ImageSpaceFitness> fitness;
     if (job.imageFitness) {
-        auto textures = loadSceneTextures(preset, job.presetFile);
-        if (!textures) return failed(textures.error().message);
+        auto renderer = gpu::createPresetRenderer(fitnessRenderer, preset, job.presetFile);
+        if (!renderer) return failed(renderer.error().message);
         auto cache = GenomeRenderCache::create(
-            renderGenomesWith(gpu::createPopulationRenderer(fitnessRenderer, *textures),
-                              preset.family, preset.baseKappa, preset.scene, kImageFitnessSize),
+            renderGenomesWith(std::move(renderer).value(), preset.family, preset.baseKappa,
+                              preset.scene, kImageFitnessSize),
             preset.target);
         if (!cache) return cancelled(jobId) ? void() : failed(cache.error().message);
         fitness.emplace(std::move(cache).value());

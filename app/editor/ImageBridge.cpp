@@ -107,7 +107,7 @@ Status ImageBridge::createPipeline(VkRenderPass renderPass) {
 
 Status ImageBridge::createSharedResources() {
     // Encoded once here rather than at every pixel of every frame.
-    gpu::DeltaE00Pass::Colormap colors[2] = {gpu::heatmapColormap(), gpu::flipColormap()};
+    gpu::Colormap colors[2] = {gpu::heatmapColormap(), gpu::flipColormap()};
     for (auto& colormap : colors)
         for (auto& entry : colormap)
             for (int channel = 0; channel < 3; ++channel)

@@ -5,7 +5,6 @@
 #include <utility>
 
 #include "experiment/Experiment.h"
-#include "scene/SceneTextures.h"
 
 namespace matevo::editor {
 
@@ -23,14 +22,13 @@ bool VariantsWorker::start(VariantsJob job) {
 VariantsResult VariantsWorker::compute(const VariantsJob& job) {
     const auto started = std::chrono::steady_clock::now();
     VariantsResult result{job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, {}};
-    auto textures = loadSceneTextures(job.preset, job.presetFile);
-    if (!textures) {
-        result.error = textures.error().message;
+    const Preset& preset = job.preset;
+    auto created = gpu::createPresetRenderer(rendererRequest_, preset, job.presetFile);
+    if (!created) {
+        result.error = created.error().message;
         return result;
     }
-    const Preset& preset = job.preset;
-    std::shared_ptr<PopulationRenderer> renderer =
-        gpu::createPopulationRenderer(rendererRequest_, *textures);
+    const std::shared_ptr<PopulationRenderer> renderer = std::move(created).value();
     // As `matevo variants` measures: on the images as the PNG files of a saved set hold them.
     auto renderAt = [&](int size) {
         return asStoredInPng(

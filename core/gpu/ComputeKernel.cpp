@@ -1,10 +1,19 @@
 #include "gpu/ComputeKernel.h"
 
+#include <atomic>
+
 #include "gpu/ShaderModule.h"
 #include "gpu/VulkanError.h"
 #include "gpu/VulkanObjects.h"
 
 namespace matevo::gpu {
+namespace {
+
+std::atomic<std::uint64_t> pipelineCount{0};
+
+}  // namespace
+
+std::uint64_t ComputeKernel::pipelinesCreated() { return pipelineCount.load(); }
 
 Result<ComputeKernel> ComputeKernel::create(const Device& device,
                                             std::span<const uint32_t> spirv,
@@ -44,6 +53,7 @@ Result<ComputeKernel> ComputeKernel::create(const Device& device,
         result != VK_SUCCESS)
         return vulkanError("creating a compute pipeline", result);
     kernel.pipeline_ = UniquePipeline(vkDevice, pipeline);
+    ++pipelineCount;
 
     return kernel;
 }

@@ -27,6 +27,10 @@ public:
     void bindStorageImage(uint32_t binding, VkImageView view) const;
     const DescriptorSet& descriptors() const { return set_; }
 
+    // How many compute pipelines this process has made: tests check that work which should keep
+    // its pipelines (a change of the editor's target) makes none.
+    static std::uint64_t pipelinesCreated();
+
     // Records the dispatch; pushConstants must hold pushConstantBytes bytes.
     void record(VkCommandBuffer commands, const void* pushConstants, uint32_t groupsX,
                 uint32_t groupsY, uint32_t groupsZ) const;

@@ -72,15 +72,12 @@ void recordCombination(VkCommandBuffer commands, const ComputeKernel& combine,
 
 }  // namespace
 
-Result<FlipPass> FlipPass::create(const Device& device, const DeltaE00Pass::Colormap& colormap) {
+Result<FlipPass> FlipPass::create(const Device& device) {
     if (!device.int64())
         return Error{"FLIP on the GPU needs 64-bit integers in shaders (shaderInt64), which " +
                      device.name() + " does not have"};
-    auto colormapBuffer = createColormapBuffer(device, colormap);
-    if (!colormapBuffer) return colormapBuffer.error();
     FlipPass pass;
     pass.device_ = &device;
-    pass.colormap_ = std::move(colormapBuffer).value();
     // The kernels follow the viewing condition: prepare() makes them for the first batch.
     return pass;
 }
@@ -105,10 +102,9 @@ Result<const FlipPass::Kernels*> FlipPass::kernelsFor(int csfRadius, int feature
     if (!rowFilter) return rowFilter.error();
     // The combination reads the planes, not the images: bindings 0 and 1 are bound, not read.
     auto combine = ComputeKernel::create(
-        *device_, kFlipCombineSpirv, {texels, texels, uniform, texels, storage, storage, storage},
+        *device_, kFlipCombineSpirv, {texels, texels, uniform, texels, storage},
         sizeof(PushConstants), combineConstants);
     if (!combine) return combine.error();
-    combine->bindBuffer(6, colormap_);
     kernels_.push_back(
         {csfRadius, featureRadius, std::move(rowFilter).value(), std::move(combine).value()});
     return &kernels_.back();
@@ -182,7 +178,6 @@ Result<const FlipPass::Kernels*> FlipPass::bind(const FlipBatch& batch,
     rowFilter.bindBuffer(3, planes_);
     combine.descriptors().bindTexelBuffer(3, planesView_.get());
     combine.bindBuffer(4, *batch.error);
-    combine.bindBuffer(5, *batch.heatmaps);
     return kernels;
 }
 
@@ -201,11 +196,10 @@ Status FlipPass::compile(CommandRunner& runner, const FlipSettings& settings) {
     const ImageBatchShape shape{1, 1, 1};
     auto image = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
     auto map = createBatchBuffer(*device_, shape, 1, MemoryUse::DeviceLocal);
-    auto heatmap = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
-    for (const auto* buffer : {&image, &map, &heatmap})
+    for (const auto* buffer : {&image, &map})
         if (!*buffer) return buffer->error();
     // One pixel, whatever its value: only the dispatches matter.
-    const FlipBatch batch{&*image, &*image, &*map, &*heatmap, 1, 1, 1, 0, 0};
+    const FlipBatch batch{&*image, &*image, &*map, 1, 1, 1, 0, 0};
     auto kernels = bind(batch, settings);
     if (!kernels) return kernels.error();
     Status compiled = Ok{};

@@ -1,7 +1,7 @@
 #pragma once
 // The LDR-ꟻLIP compute passes (shaders/FlipRowFilter.comp, then shaders/FlipCombine.comp):
 // one reference image against a batch of candidates, all linear RGBA float buffers laid out
-// like Image::rgba, as the ΔE00 pass takes them. Writes per-pixel ꟻLIP and a magma heatmap.
+// like Image::rgba, as the ΔE00 pass takes them. Writes per-pixel ꟻLIP.
 // core/color/Flip is the reference these passes follow step by step (tests/gpu compares them).
 // The passes unroll their filters for the viewing condition's radii, and lavapipe's compile
 // time grows with them (uncached, in CPU time at load 9: about 1.8 s at the default 67 pixels
@@ -18,7 +18,6 @@
 #include "gpu/Buffer.h"
 #include "gpu/CommandRunner.h"
 #include "gpu/ComputeKernel.h"
-#include "gpu/DeltaE00Pass.h"
 
 namespace matevo::gpu {
 
@@ -29,7 +28,6 @@ struct FlipBatch {
     // candidateCount * width * height floats, written: the error e where both images cover
     // the pixel (alpha >= 0.5), −1 − e elsewhere (downloadFlipMap reads it).
     const Buffer* error = nullptr;
-    const Buffer* heatmaps = nullptr;  // candidateCount * width * height RGBA, written
     int width = 0;
     int height = 0;
     uint32_t candidateCount = 0;
@@ -39,8 +37,7 @@ struct FlipBatch {
 
 class FlipPass {
 public:
-    // `colormap` colours [0, 1] (magma: flipColormap()).
-    static Result<FlipPass> create(const Device& device, const DeltaE00Pass::Colormap& colormap);
+    static Result<FlipPass> create(const Device& device);
 
     // Records both passes and the barrier between them; the caller adds barriers around. The
     // pass's own buffers (the row-filtered planes, the filter taps) follow the batch and the
@@ -73,7 +70,6 @@ private:
     Result<const Kernels*> kernelsFor(int csfRadius, int featureRadius);
 
     const Device* device_ = nullptr;
-    Buffer colormap_;
     std::vector<Kernels> kernels_;
     Buffer taps_;
     double tapsPixelsPerDegree_ = 0;

@@ -1,15 +1,13 @@
 #include "gpu/GpuImageComparer.h"
 
-#include "gpu/HeatmapColormap.h"
 #include "gpu/ImageBatch.h"
 
 namespace matevo::gpu {
 
-Result<GpuImageComparer> GpuImageComparer::create(const Device& device,
-                                                  const DeltaE00Pass::Colormap& colormap) {
-    auto deltaEPass = DeltaE00Pass::create(device, colormap);
+Result<GpuImageComparer> GpuImageComparer::create(const Device& device) {
+    auto deltaEPass = DeltaE00Pass::create(device);
     if (!deltaEPass) return deltaEPass.error();
-    auto flipPass = FlipPass::create(device, flipColormap());
+    auto flipPass = FlipPass::create(device);
     if (!flipPass) return flipPass.error();
     auto runner = CommandRunner::create(device);
     if (!runner) return runner.error();
@@ -47,8 +45,7 @@ Result<ImageBatchShape> GpuImageComparer::upload(const Image& reference,
     for (const Status& held :
          {holdBatch(*device_, buffers_.reference, referenceShape, 4, MemoryUse::Upload),
           holdBatch(*device_, buffers_.candidates, shape, 4, MemoryUse::Upload),
-          holdBatch(*device_, buffers_.maps, shape, 1, MemoryUse::Readback),
-          holdBatch(*device_, buffers_.heatmaps, shape, 4, MemoryUse::Readback)})
+          holdBatch(*device_, buffers_.maps, shape, 1, MemoryUse::Readback)})
         if (!held) return held.error();
     if (shape.pixelCount() > 0) {
         uploadImage(buffers_.reference, shape, 0, reference);
@@ -58,56 +55,50 @@ Result<ImageBatchShape> GpuImageComparer::upload(const Image& reference,
     return shape;
 }
 
-Result<GpuComparison> GpuImageComparer::compare(const Image& reference,
-                                                std::span<const Image> candidates,
-                                                const HeatmapRange& range) {
+Result<std::vector<DeltaEMap>> GpuImageComparer::compare(const Image& reference,
+                                                         std::span<const Image> candidates) {
     auto uploaded = upload(reference, candidates);
     if (!uploaded) return uploaded.error();
     const ImageBatchShape& shape = *uploaded;
-    if (shape.count == 0 || shape.pixelCount() == 0) return GpuComparison{};
+    if (shape.count == 0 || shape.pixelCount() == 0) return std::vector<DeltaEMap>{};
 
     auto commands = runner_.begin();
     if (!commands) return commands.error();
     deltaEPass_.record(*commands, {&buffers_.reference, &buffers_.candidates, &buffers_.maps,
-                                   &buffers_.heatmaps, shape.pixelCount(), shape.count, 0, 0,
-                                   range.minDeltaE, range.maxDeltaE});
+                                   shape.pixelCount(), shape.count, 0, 0});
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
 
-    GpuComparison comparison;
-    for (uint32_t i = 0; i < shape.count; ++i) {
-        comparison.maps.push_back(downloadDeltaEMap(buffers_.maps, shape, i));
-        comparison.heatmaps.push_back(downloadImage(buffers_.heatmaps, shape, i));
-    }
-    return comparison;
+    std::vector<DeltaEMap> maps;
+    for (uint32_t i = 0; i < shape.count; ++i)
+        maps.push_back(downloadDeltaEMap(buffers_.maps, shape, i));
+    return maps;
 }
 
-Result<GpuFlipComparison> GpuImageComparer::compareFlip(const Image& reference,
-                                                        std::span<const Image> candidates,
-                                                        const FlipSettings& settings) {
+Result<std::vector<FlipMap>> GpuImageComparer::compareFlip(const Image& reference,
+                                                           std::span<const Image> candidates,
+                                                           const FlipSettings& settings) {
     auto uploaded = upload(reference, candidates);
     if (!uploaded) return uploaded.error();
     const ImageBatchShape& shape = *uploaded;
-    if (shape.count == 0 || shape.pixelCount() == 0) return GpuFlipComparison{};
+    if (shape.count == 0 || shape.pixelCount() == 0) return std::vector<FlipMap>{};
 
     auto commands = runner_.begin();
     if (!commands) return commands.error();
     if (auto recorded =
             flipPass_.record(*commands,
                              {&buffers_.reference, &buffers_.candidates, &buffers_.maps,
-                              &buffers_.heatmaps, shape.width, shape.height, shape.count, 0, 0},
+                              shape.width, shape.height, shape.count, 0, 0},
                              settings);
         !recorded)
         return recorded.error();
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
 
-    GpuFlipComparison comparison;
-    for (uint32_t i = 0; i < shape.count; ++i) {
-        comparison.maps.push_back(downloadFlipMap(buffers_.maps, shape, i));
-        comparison.heatmaps.push_back(downloadImage(buffers_.heatmaps, shape, i));
-    }
-    return comparison;
+    std::vector<FlipMap> maps;
+    for (uint32_t i = 0; i < shape.count; ++i)
+        maps.push_back(downloadFlipMap(buffers_.maps, shape, i));
+    return maps;
 }
 
 }  // namespace matevo::gpu

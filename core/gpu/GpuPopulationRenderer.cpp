@@ -1,9 +1,6 @@
 #include "gpu/GpuPopulationRenderer.h"
 
-#include <cstring>
-
 #include "color/LabImage.h"
-#include "gpu/HeatmapColormap.h"
 #include "material/ParallelFor.h"
 
 namespace matevo::gpu {
@@ -28,32 +25,25 @@ Result<TexelBuffer> uploadLab(const Device& device, const Image& image) {
 }  // namespace
 
 Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
-    const Device& device, const FgdTables& tables, const SceneTextures& textures,
-    const DeltaE00Pass::Colormap& colormap) {
+    const Device& device, const FgdTables& tables, const SceneTextures& textures) {
     auto runner = CommandRunner::create(device);
     if (!runner) return runner.error();
     auto renderer = GpuSphereRenderer::create(device, *runner, tables, textures);
     if (!renderer) return renderer.error();
-    auto colormapBuffer =
-        createTexelBuffer(device, sizeof(colormap), VK_FORMAT_R32G32B32A32_SFLOAT);
-    if (!colormapBuffer) return colormapBuffer.error();
-    std::memcpy(colormapBuffer->buffer.bytes().data(), colormap.data(), sizeof(colormap));
     std::unique_ptr<GpuPopulationRenderer> result(new GpuPopulationRenderer);
     result->device_ = &device;
     result->tables_ = &tables;
     result->runner_ = std::move(runner).value();
     result->renderer_ = std::move(renderer).value();
-    result->heatmapColormap_ = std::move(colormapBuffer).value();
     return result;
 }
 
 Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::createHeadless(
-    const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures,
-    const DeltaE00Pass::Colormap& colormap) {
+    const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures) {
     auto context = GpuContext::createHeadless(options);
     if (!context) return context.error();
     auto ownContext = std::make_unique<GpuContext>(std::move(context).value());
-    auto result = create(ownContext->device, tables, textures, colormap);
+    auto result = create(ownContext->device, tables, textures);
     if (!result) return result.error();
     (*result)->ownContext_ = std::move(ownContext);
     return result;
@@ -75,40 +65,35 @@ Status GpuPopulationRenderer::ensureBuffers(const ImageBatchShape& shape, bool f
     if (!sameShape) {
         auto renders = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
         auto deltaE = createBatchBuffer(*device_, shape, 1, MemoryUse::Readback);
-        auto heatmaps = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
-        for (const auto* buffer : {&renders, &deltaE, &heatmaps})
+        for (const auto* buffer : {&renders, &deltaE})
             if (!*buffer) return buffer->error();
         renders_ = std::move(renders).value();
         deltaE_ = std::move(deltaE).value();
-        heatmaps_ = std::move(heatmaps).value();
         backgroundFilledFor_.reset();
         flip_ = {};
-        flipHeatmaps_ = {};
         bufferShape_ = shape;
     }
     if (flip && !flip_.handle()) {
         if (Status made = ensureFlipPass(); !made) return made;
         auto errors = createBatchBuffer(*device_, shape, 1, MemoryUse::Readback);
-        auto heatmaps = createBatchBuffer(*device_, shape, 4, MemoryUse::Readback);
-        for (const auto* buffer : {&errors, &heatmaps})
-            if (!*buffer) return buffer->error();
+        if (!errors) return errors.error();
         flip_ = std::move(errors).value();
-        flipHeatmaps_ = std::move(heatmaps).value();
     }
     return Ok{};
 }
 
 Status GpuPopulationRenderer::ensureFlipPass() {
     if (flipPass_) return Ok{};
-    auto pass = FlipPass::create(*device_, flipColormap());
+    auto pass = FlipPass::create(*device_);
     if (!pass) return pass.error();
     flipPass_ = std::move(pass).value();
     return Ok{};
 }
 
-Status GpuPopulationRenderer::compileFlip(const FlipSettings& settings) {
+Status GpuPopulationRenderer::prepareFor(const EvaluationOptions& options) {
+    if (!options.flip) return Ok{};
     if (Status made = ensureFlipPass(); !made) return made;
-    return flipPass_->compile(runner_, settings);
+    return flipPass_->compile(runner_, options.flipSettings);
 }
 
 Status GpuPopulationRenderer::renderTarget(const TargetKey& key) {
@@ -135,10 +120,19 @@ Status GpuPopulationRenderer::renderTarget(const TargetKey& key) {
 Result<PopulationEvaluation> GpuPopulationRenderer::evaluate(
     const MaterialInstance& target, std::span<const MaterialInstance> candidates,
     const SceneSettings& scene, int size, const EvaluationOptions& options) {
-    return evaluateIntoTiles(target, candidates, scene, size, options, {});
+    return evaluateOnDevice(target, candidates, scene, size, options, {});
 }
 
 Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
+    const MaterialInstance& target, std::span<const MaterialInstance> candidates,
+    const SceneSettings& scene, int size, const EvaluationOptions& options,
+    const TileOutput& tiles) {
+    if (tiles.tiles.size() != candidates.size())
+        return Error{"GPU render: one tile per candidate expected"};
+    return evaluateOnDevice(target, candidates, scene, size, options, tiles.tiles);
+}
+
+Result<PopulationEvaluation> GpuPopulationRenderer::evaluateOnDevice(
     const MaterialInstance& target, std::span<const MaterialInstance> candidates,
     const SceneSettings& scene, int size, const EvaluationOptions& options,
     std::span<const DisplayTile* const> tiles) {
@@ -150,19 +144,12 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     evaluation.target = target_;
     if (candidates.empty()) return evaluation;
 
-    if (!tiles.empty() && tiles.size() != candidates.size())
-        return Error{"GPU render: one tile per candidate expected"};
     const ImageBatchShape shape{size, size, uint32_t(candidates.size())};
-    const bool flip = options.wantsFlip();
+    const bool flip = options.flip;
     if (auto ready = ensureBuffers(shape, flip); !ready) return ready.error();
     auto commands = runner_.begin();
     if (!commands) return commands.error();
-    const TargetComparison comparison{targetLab_.view.get(),
-                                      &deltaE_,
-                                      &heatmaps_,
-                                      heatmapColormap_.view.get(),
-                                      float(options.heatmap.minDeltaE),
-                                      float(options.heatmap.maxDeltaE)};
+    const TargetComparison comparison{targetLab_.view.get(), &deltaE_};
     const GpuSphereSamples::Key coverage = GpuSphereSamples::keyOf(scene, size);
     if (auto recorded = renderer_.record(*commands, candidates, scene, size, renders_, &comparison,
                                          backgroundFilledFor_ == coverage);
@@ -173,7 +160,7 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     if (flip)
         if (auto recorded = flipPass_->record(
                 *commands,
-                {&targetRender_, &renders_, &flip_, &flipHeatmaps_, size, size, shape.count, 0, 0},
+                {&targetRender_, &renders_, &flip_, size, size, shape.count, 0, 0},
                 options.flipSettings);
             !recorded)
             return recorded.error();
@@ -191,31 +178,29 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     evaluation.candidates.resize(options.candidateImages ? count : 0);
     evaluation.deltaE.resize(count);
     evaluation.flip.resize(flip ? count : 0);
-    evaluation.heatmaps.resize(options.heatmaps ? count : 0);
-    const Buffer& heatmaps = options.heatmapMetric == ImageMetric::Flip ? flipHeatmaps_ : heatmaps_;
     parallelForChunks(int(count), [&](int chunk) {
         const auto i = uint32_t(chunk);
         if (options.candidateImages) evaluation.candidates[i] = downloadImage(renders_, shape, i);
         evaluation.deltaE[i] = downloadDeltaEMap(deltaE_, shape, i);
         if (flip) evaluation.flip[i] = downloadFlipMap(flip_, shape, i);
-        if (options.heatmaps) evaluation.heatmaps[i] = downloadImage(heatmaps, shape, i);
     });
     return evaluation;
 }
 
 Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
-                                             const SceneSettings& scene, const DisplayTile& tile) {
-    const ImageBatchShape shape{tile.width, tile.height, 1};
+                                             const SceneSettings& scene, int size,
+                                             const TileOutput& tile) {
+    if (tile.tiles.size() != 1) return Error{"GPU render: one tile expected"};
+    const ImageBatchShape shape{size, size, 1};
     auto buffer = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
     if (!buffer) return buffer.error();
     auto commands = runner_.begin();
     if (!commands) return commands.error();
     if (auto recorded =
-            renderer_.record(*commands, std::span(&material, 1), scene, tile.width, *buffer);
+            renderer_.record(*commands, std::span(&material, 1), scene, size, *buffer);
         !recorded)
         return recorded.error();
-    const DisplayTile* tiles[] = {&tile};
-    recordCopiesToTiles(*commands, *buffer, nullptr, shape, tiles);
+    recordCopiesToTiles(*commands, *buffer, nullptr, shape, tile.tiles);
     return runner_.submitAndWait();
 }
 

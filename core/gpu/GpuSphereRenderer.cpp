@@ -29,8 +29,6 @@ struct PushConstants {
     uint32_t pixelsPerImage;
     uint32_t firstPixel;
     uint32_t pixelCount;
-    float minDeltaE;
-    float maxDeltaE;
 };
 
 void store(float (&target)[4], const std::array<double, 3>& xyz, double w) {
@@ -71,8 +69,8 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
         const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
         std::vector<VkDescriptorType> bindings = {texels, storage, sampled, sampled, uniform,
                                                   texels, sampled, texels,  texels};
-        // The target's L*a*b*, the ΔE00 maps, the heatmaps and the colour map.
-        if (compared) bindings.insert(bindings.end(), {texels, storage, storage, texels});
+        // The target's L*a*b* and the ΔE00 maps.
+        if (compared) bindings.insert(bindings.end(), {texels, storage});
         // One pipeline for the pixels of one point, one for the silhouette's of several.
         for (bool silhouette : {false, true}) {
             const uint32_t specialization[] = {
@@ -105,12 +103,11 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
 
     const ImageBatchShape shape{size, size, uint32_t(materials.size())};
     // The shader writes covered pixels only. (On lavapipe a fill is a memset on the queue's
-    // thread: a 64-candidate grid's three buffers take about 36 MB of it.)
+    // thread: a 64-candidate grid's two buffers take about 20 MB of it.)
     if (!backgroundFilled) {
         recordClear(commands, renders, shape, 4, 0.0f);
         if (comparison) {
             recordClear(commands, *comparison->deltaE, shape, 1, -1.0f);
-            recordClear(commands, *comparison->heatmaps, shape, 4, 0.0f);
         }
     } else {
         recordRewrite(commands);
@@ -125,14 +122,10 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
         kernel.descriptors().bindTexelBuffer(5, materials_.lobeEntries());
         kernel.descriptors().bindTexelBuffer(7, samples_.pixels());
         kernel.descriptors().bindTexelBuffer(8, samples_.points());
-        PushConstants constants{shape.pixelCount(), first, count, 0.0f, 0.0f};
+        const PushConstants constants{shape.pixelCount(), first, count};
         if (comparison) {
             kernel.descriptors().bindTexelBuffer(9, comparison->targetLab);
             kernel.bindBuffer(10, *comparison->deltaE);
-            kernel.bindBuffer(11, *comparison->heatmaps);
-            kernel.descriptors().bindTexelBuffer(12, comparison->colormap);
-            constants.minDeltaE = comparison->minDeltaE;
-            constants.maxDeltaE = comparison->maxDeltaE;
         }
         if (count > 0)
             kernel.record(commands, &constants, (count + kWorkgroupSize - 1) / kWorkgroupSize,

@@ -28,10 +28,6 @@ namespace matevo::gpu {
 struct TargetComparison {
     VkBufferView targetLab = VK_NULL_HANDLE;  // RGBA32F per pixel of one image: L*, a*, b*, alpha
     const Buffer* deltaE = nullptr;     // 1 float per pixel, -1 where not covered in both
-    const Buffer* heatmaps = nullptr;   // RGBA per pixel, transparent where not covered in both
-    VkBufferView colormap = VK_NULL_HANDLE;   // 256 linear RGBA32F entries
-    float minDeltaE = 0.0f;             // maps to the first colormap entry
-    float maxDeltaE = 10.0f;            // maps to the last
 };
 
 class GpuSphereRenderer {
@@ -43,7 +39,7 @@ public:
     // Records the render of `materials` at size x size into `renders` (ImageBatch layout,
     // materials.size() images). Uploads the materials' lobe tables and the scene into buffers
     // it keeps, so the caller must wait for the submission before recording again.
-    // With a comparison it also writes the ΔE00 maps and heatmaps against the target.
+    // With a comparison it also writes the ΔE00 maps against the target.
     // The shader writes covered pixels only; the background is filled first unless
     // `backgroundFilled` says that these buffers hold an earlier render of the same coverage
     // (GpuSphereSamples::Key) and nothing wrote their background since.

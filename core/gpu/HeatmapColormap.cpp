@@ -7,8 +7,8 @@ namespace {
 
 // Entry i holds the colour at position i / 255.
 template <typename Color>
-DeltaE00Pass::Colormap tabulated(const Color& colorAt) {
-    DeltaE00Pass::Colormap colormap{};
+Colormap tabulated(const Color& colorAt) {
+    Colormap colormap{};
     for (std::size_t i = 0; i < colormap.size(); ++i) {
         const auto rgb = colorAt(double(i) / double(colormap.size() - 1));
         colormap[i] = {rgb[0], rgb[1], rgb[2], 1.0f};
@@ -18,11 +18,11 @@ DeltaE00Pass::Colormap tabulated(const Color& colorAt) {
 
 }  // namespace
 
-DeltaE00Pass::Colormap heatmapColormap() {
+Colormap heatmapColormap() {
     return tabulated([](double position) { return colormapLinear(position); });
 }
 
-DeltaE00Pass::Colormap flipColormap() {
+Colormap flipColormap() {
     return tabulated([](double error) { return flipColorLinear(error); });
 }
 

@@ -3,7 +3,6 @@
 #include <cstdio>
 
 #include "gpu/GpuPopulationRenderer.h"
-#include "gpu/HeatmapColormap.h"
 #include "material/FgdTableCache.h"
 #include "render/CpuPopulationRenderer.h"
 
@@ -13,10 +12,8 @@ namespace {
 Result<std::unique_ptr<GpuPopulationRenderer>> createGpuRenderer(const RendererRequest& request,
                                                                  const SceneTextures& textures) {
     if (request.device)
-        return GpuPopulationRenderer::create(*request.device, defaultFgdTables(), textures,
-                                             heatmapColormap());
-    return GpuPopulationRenderer::createHeadless(request.headless, defaultFgdTables(), textures,
-                                                 heatmapColormap());
+        return GpuPopulationRenderer::create(*request.device, defaultFgdTables(), textures);
+    return GpuPopulationRenderer::createHeadless(request.headless, defaultFgdTables(), textures);
 }
 
 }  // namespace
@@ -27,8 +24,8 @@ Result<std::unique_ptr<PopulationRenderer>> tryCreatePopulationRenderer(
         auto renderer = createGpuRenderer(request, textures);
         if (renderer) return std::unique_ptr<PopulationRenderer>(std::move(renderer).value());
         if (request.noFallback)
-            return Error{"no usable Vulkan device (" + renderer.error().message +
-                         "), and --no-fallback forbids falling back to the CPU"};
+            return environmentError("no usable Vulkan device (" + renderer.error().message +
+                                    "), and --no-fallback forbids falling back to the CPU");
         std::fprintf(stderr, "%s: no usable Vulkan device (%s); rendering on the CPU instead\n",
                      request.who.c_str(), renderer.error().message.c_str());
     }
@@ -41,6 +38,13 @@ std::unique_ptr<PopulationRenderer> createPopulationRenderer(const RendererReque
     RendererRequest request = asked;
     request.noFallback = false;
     return std::move(tryCreatePopulationRenderer(request, textures)).value();
+}
+
+Result<std::unique_ptr<PopulationRenderer>> createPresetRenderer(
+    const RendererRequest& request, const Preset& preset, const std::filesystem::path& presetFile) {
+    auto textures = loadSceneTextures(preset, presetFile);
+    if (!textures) return textures.error();
+    return tryCreatePopulationRenderer(request, *textures);
 }
 
 }  // namespace matevo::gpu

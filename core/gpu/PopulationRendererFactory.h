@@ -4,12 +4,14 @@
 // the one-line fallback notice on stderr and hands back the CPU reference renderer, which draws
 // the same pictures (to within the cross-check of tests/gpu), unless the request forbids the
 // fallback (the commands' --no-fallback: a farm that wants the GPU or nothing).
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
 #include <utility>
 
 #include "gpu/GpuContext.h"
+#include "io/Preset.h"
 #include "render/PopulationRenderer.h"
 
 namespace matevo::gpu {
@@ -37,5 +39,11 @@ Result<std::unique_ptr<PopulationRenderer>> tryCreatePopulationRenderer(
 // The same, always falling back (`noFallback` is not looked at).
 std::unique_ptr<PopulationRenderer> createPopulationRenderer(const RendererRequest& request,
                                                              const SceneTextures& textures);
+
+// The renderer for `preset`, read from `presetFile`: its textures loaded (loadSceneTextures),
+// then the renderer `request` asks for. An Error when a texture cannot be read (bad input,
+// naming the file and field) or, with `noFallback`, when the GPU is not usable (environment).
+Result<std::unique_ptr<PopulationRenderer>> createPresetRenderer(
+    const RendererRequest& request, const Preset& preset, const std::filesystem::path& presetFile);
 
 }  // namespace matevo::gpu

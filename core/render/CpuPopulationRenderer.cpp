@@ -47,15 +47,11 @@ Result<PopulationEvaluation> CpuPopulationRenderer::evaluate(
         Image image = renderSphereCpu(candidate, textures_, scene, size);
         auto map = compareImages(target_, image);
         if (!map) return map.error();  // cannot happen: both are size x size
-        if (options.wantsFlip()) {
+        if (options.flip) {
             auto flipMap = computeFlip(target_, image, true, options.flipSettings);
             if (!flipMap) return flipMap.error();  // a viewing condition out of range
             evaluation.flip.push_back(std::move(flipMap).value());
         }
-        if (options.heatmaps)
-            evaluation.heatmaps.push_back(options.heatmapMetric == ImageMetric::Flip
-                                              ? flipHeatmapImage(evaluation.flip.back())
-                                              : heatmapImage(*map, options.heatmap));
         if (options.candidateImages) evaluation.candidates.push_back(std::move(image));
         evaluation.deltaE.push_back(std::move(map).value());
     }

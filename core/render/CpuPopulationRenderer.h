@@ -1,6 +1,6 @@
 #pragma once
-// The render interface on the CPU reference renderer (renderSphereCpu) and core/color's ΔE00,
-// ꟻLIP and heatmaps: what runs without a usable Vulkan device, and what `--backend cpu` asks
+// The render interface on the CPU reference renderer (renderSphereCpu) and core/color's ΔE00
+// and ꟻLIP: what runs without a usable Vulkan device, and what `--backend cpu` asks
 // for.
 #include <functional>
 #include <optional>

@@ -1,15 +1,17 @@
 #pragma once
 // The one way matevo turns materials into pictures: render a batch of materials on the test
 // sphere, or evaluate a population (target and candidates rendered, per-pixel ΔE00 and, when
-// asked, ꟻLIP of each candidate against the target, heatmaps). Two implementations draw the same
-// pictures to within the cross-check of tests/gpu: CpuPopulationRenderer (the reference) and
-// gpu::GpuPopulationRenderer. Callers get one from gpu::createPopulationRenderer, the only place
-// that chooses between them. An instance is used from one thread at a time.
+// asked, ꟻLIP of each candidate against the target). Heatmaps are coloured from the maps by
+// whoever shows them (core/color for files, the editor window's shader). Two implementations
+// draw the same pictures to within the cross-check of tests/gpu: CpuPopulationRenderer (the
+// reference) and gpu::GpuPopulationRenderer. Callers get one from gpu::createPopulationRenderer,
+// the only place that chooses between them, and talk to it through this interface only. An
+// instance is used from one thread at a time.
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "color/Colormap.h"
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/ImageMetric.h"
@@ -21,30 +23,37 @@
 
 namespace matevo {
 
+namespace gpu {
+struct DisplayTile;
+}
+
 enum class RenderBackend { Gpu, Cpu };
 
 struct PopulationEvaluation {
     Image target;
     std::vector<Image> candidates;  // empty unless EvaluationOptions::candidateImages
     std::vector<DeltaEMap> deltaE;  // candidate vs target, over pixels covered in both
-    std::vector<FlipMap> flip;    // the same with ꟻLIP; empty unless EvaluationOptions::wantsFlip
-    std::vector<Image> heatmaps;  // EvaluationOptions::heatmapMetric colour-mapped, transparent
-                                  // where not covered; empty unless EvaluationOptions::heatmaps
+    std::vector<FlipMap> flip;      // the same with ꟻLIP; empty unless EvaluationOptions::flip
 };
 
 struct EvaluationOptions {
-    HeatmapSettings heatmap;  // the ΔE00 range of the colour map (opacity is not used)
-    // What the heatmaps show: ΔE00 through viridis over `heatmap`'s range, or ꟻLIP through
-    // magma over its fixed range [0, 1].
-    ImageMetric heatmapMetric = ImageMetric::DeltaE00;
-    // ꟻLIP maps too (e.g. for a ꟻLIP fitness), at this viewing condition.
+    // ꟻLIP maps too (e.g. for a ꟻLIP fitness or heatmap), at this viewing condition.
     bool flip = false;
     FlipSettings flipSettings;
-    // What to hand back besides the ΔE00 maps: fitness needs neither, the grid only images.
+    // The map whose heatmap a window shows, which evaluateIntoTiles puts into the tiles: ΔE00,
+    // or ꟻLIP (with `flip`).
+    ImageMetric heatmapMetric = ImageMetric::DeltaE00;
+    // The candidates' renders besides the maps (fitness needs only the maps).
     bool candidateImages = true;
-    bool heatmaps = true;
+};
 
-    bool wantsFlip() const { return flip || (heatmaps && heatmapMetric == ImageMetric::Flip); }
+// Display tiles on a window's device (gpu::DisplayTile, made in core/gpu) for evaluateIntoTiles
+// and renderIntoTile to fill, and the copy of host pictures into them (gpu::uploadToTiles) that a
+// renderer which does not draw on that device uses.
+struct TileOutput {
+    std::span<const gpu::DisplayTile* const> tiles;
+    // tiles[i] gets pictures[i], and maps[i] when maps is not empty.
+    std::function<Status(std::span<const Image> pictures, std::span<const DeltaEMap> maps)> upload;
 };
 
 class PopulationRenderer {
@@ -69,6 +78,25 @@ public:
                                                   std::span<const MaterialInstance> candidates,
                                                   const SceneSettings& scene, int size,
                                                   const EvaluationOptions& options = {}) = 0;
+
+    // Gets ready now what evaluations with `options` need (the GPU compiles its ꟻLIP pipelines,
+    // one submission each), so that a window drawing on the same queue waits for one at a time
+    // rather than for all of them at its first ꟻLIP tiles. Optional: evaluate does it too.
+    virtual Status prepareFor(const EvaluationOptions& options);
+
+    // As evaluate, and candidate i's picture and error map go into tiles.tiles[i]: the map of
+    // options.heatmapMetric when it is computed, ꟻLIP where pooled and "not covered" (negative,
+    // as ΔE00's) elsewhere, else the ΔE00 map. The GPU renderer on the tiles' device copies them
+    // in its own submission (it is made on that device); any other hands its host copies to
+    // tiles.upload.
+    virtual Result<PopulationEvaluation> evaluateIntoTiles(
+        const MaterialInstance& target, std::span<const MaterialInstance> candidates,
+        const SceneSettings& scene, int size, const EvaluationOptions& options,
+        const TileOutput& tiles);
+
+    // Renders `material` into tile.tiles[0]'s picture, which is size x size.
+    virtual Status renderIntoTile(const MaterialInstance& material, const SceneSettings& scene,
+                                  int size, const TileOutput& tile);
 };
 
 // What a kept target render was drawn from; both implementations compare against it.

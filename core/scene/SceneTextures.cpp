@@ -42,15 +42,17 @@ Result<SceneTextures> loadTextures(const std::string& source,
 }
 
 // The environment mode's lighting: "studio", or a file (relative to `folder` unless absolute).
+std::string environmentFile(const SceneSettings& scene, const std::filesystem::path& folder) {
+    const std::filesystem::path name(scene.environment);
+    return scene.environment == "studio" || name.is_absolute() ? scene.environment
+                                                               : (folder / name).string();
+}
+
 Result<SceneTextures> withEnvironment(SceneTextures textures, const SceneSettings& scene,
                                       const std::filesystem::path& folder,
                                       const std::string& source) {
     if (scene.mode != SceneMode::Environment) return textures;
-    const std::filesystem::path name(scene.environment);
-    const std::string file = scene.environment == "studio" || name.is_absolute()
-                                 ? scene.environment
-                                 : (folder / name).string();
-    auto environment = loadEnvironment(file);
+    auto environment = loadEnvironment(environmentFile(scene, folder));
     if (!environment)
         return Error{source + ": scene.environment: " + environment.error().message};
     textures.environment = std::move(environment).value();
@@ -72,6 +74,14 @@ Result<SceneTextures> loadSceneTextures(const Preset& preset,
     if (!textures) return textures;
     return withEnvironment(std::move(*textures), preset.scene, presetFile.parent_path(),
                            presetFile.string());
+}
+
+TextureSources textureSourcesOf(const Preset& preset, const std::filesystem::path& presetFile) {
+    return {besidePreset(presetFile, preset.roughnessTexture),
+            besidePreset(presetFile, preset.baseColorTexture),
+            preset.scene.mode == SceneMode::Environment
+                ? environmentFile(preset.scene, presetFile.parent_path())
+                : std::string()};
 }
 
 Result<SceneTextures> loadSceneTextures(const MaterialFile& material,

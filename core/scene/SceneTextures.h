@@ -4,6 +4,7 @@
 // prefiltered environment that lights it (empty: none).
 #include <array>
 #include <filesystem>
+#include <string>
 
 #include "common/Image.h"
 #include "common/Result.h"
@@ -25,6 +26,17 @@ struct SceneTextures {
 // image file.
 Result<SceneTextures> loadSceneTextures(const Preset& preset,
                                         const std::filesystem::path& presetFile);
+
+// The files loadSceneTextures(preset, presetFile) reads: while they stay the same, so do the
+// textures, and a renderer keeps its own (the editor's, while a target slider is dragged).
+struct TextureSources {
+    std::filesystem::path roughness;
+    std::filesystem::path baseColor;
+    std::string environment;  // empty outside the environment scene mode
+
+    bool operator==(const TextureSources&) const = default;
+};
+TextureSources textureSourcesOf(const Preset& preset, const std::filesystem::path& presetFile);
 
 // Loads a material file's textures (absolute paths); errors name `sourceName` and the field.
 Result<SceneTextures> loadSceneTextures(const MaterialFile& material,

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "support/BackEndAgreement.h"
 #include "support/RunCommand.h"
 
 namespace matevo {
@@ -152,7 +153,8 @@ TEST(EvolveCli, CpuAndGpuBackendsAgreeOnTheCandidates) {
     }
     for (std::size_t rank = 0; rank < 4; ++rank)
         EXPECT_NEAR(reports[0]["population"][rank]["mean_de00"].get<double>(),
-                    reports[1]["population"][rank]["mean_de00"].get<double>(), 0.5);
+                    reports[1]["population"][rank]["mean_de00"].get<double>(),
+                    test::kBackEndMeanDeltaE);
     fs::remove_all(base);
 }
 

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/BackEndAgreement.h"
+
 namespace matevo::editor {
 namespace {
 
@@ -46,7 +48,8 @@ TEST(CompareMetricsWorker, HonoursTheBackend) {
     // The same seeds give the same best genomes, scored alike on either back end.
     for (std::size_t i = 0; i < cpu.records.size(); ++i) {
         EXPECT_EQ(cpu.records[i].genome, gpu.records[i].genome);
-        EXPECT_NEAR(cpu.records[i].meanDeltaE00, gpu.records[i].meanDeltaE00, 0.5);
+        EXPECT_NEAR(cpu.records[i].meanDeltaE00, gpu.records[i].meanDeltaE00,
+                    test::kBackEndMeanDeltaE);
     }
 }
 

@@ -43,7 +43,7 @@ Image syntheticImage(int size, uint32_t seed, float perturbation, const Image* b
 TEST(GpuDeltaE00, MatchesCoreColorOnImagePairs) {
     gpu::GpuContext* context = test::validatedContext();
     ASSERT_NE(context, nullptr);
-    auto comparer = gpu::GpuImageComparer::create(context->device, test::rampColormap());
+    auto comparer = gpu::GpuImageComparer::create(context->device);
     ASSERT_TRUE(comparer.ok()) << comparer.error().message;
 
     const Image reference = syntheticImage(48, 1, 0.0f, nullptr);
@@ -52,16 +52,15 @@ TEST(GpuDeltaE00, MatchesCoreColorOnImagePairs) {
         candidates.push_back(syntheticImage(48, seed, 0.02f * float(seed * seed), &reference));
     candidates.push_back(syntheticImage(48, 9, 0.0f, nullptr));  // unrelated colours
 
-    const gpu::HeatmapRange range{0.0f, 10.0f};
-    auto gpuResult = comparer->compare(reference, candidates, range);
+    auto gpuResult = comparer->compare(reference, candidates);
     ASSERT_TRUE(gpuResult.ok()) << gpuResult.error().message;
-    ASSERT_EQ(gpuResult->maps.size(), candidates.size());
+    ASSERT_EQ(gpuResult->size(), candidates.size());
 
     double largestMeanDifference = 0.0;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         auto cpu = compareImages(reference, candidates[i]);
         ASSERT_TRUE(cpu.ok()) << cpu.error().message;
-        const DeltaEMap& gpuMap = gpuResult->maps[i];
+        const DeltaEMap& gpuMap = (*gpuResult)[i];
         ASSERT_EQ(gpuMap.covered, cpu->covered) << "candidate " << i;
         ASSERT_GT(cpu->stats.pixels, 0u);
         double difference = 0.0;
@@ -72,19 +71,6 @@ TEST(GpuDeltaE00, MatchesCoreColorOnImagePairs) {
         EXPECT_LT(meanDifference, 1e-3) << "candidate " << i;
         EXPECT_NEAR(gpuMap.stats.mean, cpu->stats.mean, 1e-3) << "candidate " << i;
         EXPECT_EQ(gpuMap.stats.pixels, cpu->stats.pixels);
-
-        // The heatmap shows the colormap entry of each covered pixel's ΔE00, nothing elsewhere.
-        const Image& heatmap = gpuResult->heatmaps[i];
-        for (std::size_t p = 0; p < cpu->deltaE.size(); ++p) {
-            const float* texel = &heatmap.rgba[p * 4];
-            if (!cpu->covered[p]) {
-                EXPECT_EQ(texel[3], 0.0f);
-                continue;
-            }
-            const float position = std::clamp(gpuMap.deltaE[p] / range.maxDeltaE, 0.0f, 1.0f);
-            EXPECT_NEAR(texel[0], std::round(position * 255.0f) / 255.0f, 1e-6f);
-            EXPECT_EQ(texel[3], 1.0f);
-        }
     }
     std::printf("largest mean |GPU - CPU| ΔE00 over %zu pairs: %.2e\n", candidates.size(),
                 largestMeanDifference);
@@ -94,7 +80,7 @@ TEST(GpuDeltaE00, MatchesCoreColorOnImagePairs) {
 TEST(GpuDeltaE00, RejectsCandidatesOfAnotherSize) {
     gpu::GpuContext* context = test::validatedContext();
     ASSERT_NE(context, nullptr);
-    auto comparer = gpu::GpuImageComparer::create(context->device, test::rampColormap());
+    auto comparer = gpu::GpuImageComparer::create(context->device);
     ASSERT_TRUE(comparer.ok()) << comparer.error().message;
     const std::vector<Image> candidates{Image(8, 8)};
     auto result = comparer->compare(Image(16, 16), candidates);

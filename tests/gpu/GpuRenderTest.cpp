@@ -17,13 +17,13 @@
 #include "scene/ProceduralTextures.h"
 #include "scene/SphereRenderer.h"
 #include "scene/StudioEnvironment.h"
+#include "support/BackEndAgreement.h"
 
 namespace matevo {
 namespace {
 
 // Small enough that the CPU reference of 320 random genomes stays within seconds on 2 cores.
 constexpr int kImageSize = 48;
-constexpr double kMaxMeanDeltaE = 0.5;
 constexpr int kGenomesPerFamily = 20;
 
 struct RenderCase {
@@ -33,7 +33,8 @@ struct RenderCase {
     SceneSettings scene;
 };
 
-// Renders every case on both back ends and checks the mean ΔE00 between them per image.
+// Renders every case on both back ends and checks the mean and the largest ΔE00 between them per
+// image.
 void expectBackEndsAgree(const std::vector<RenderCase>& cases) {
     gpu::GpuContext* context = test::validatedContext();
     ASSERT_NE(context, nullptr);
@@ -41,6 +42,7 @@ void expectBackEndsAgree(const std::vector<RenderCase>& cases) {
     ASSERT_TRUE(runner.ok()) << runner.error().message;
 
     double largestMean = 0.0;
+    double largestPixel = 0.0;
     std::string largestName;
     // Cases are grouped by textures and scene: one renderer and one submission per group.
     for (std::size_t begin = 0; begin < cases.size();) {
@@ -61,7 +63,9 @@ void expectBackEndsAgree(const std::vector<RenderCase>& cases) {
             ASSERT_TRUE(difference.ok()) << difference.error().message;
             EXPECT_GT(difference->stats.pixels, std::size_t(kImageSize * kImageSize / 3))
                 << cases[i].name << ": the sphere should cover the image's middle";
-            EXPECT_LT(difference->stats.mean, kMaxMeanDeltaE) << cases[i].name;
+            EXPECT_LT(difference->stats.mean, test::kBackEndMeanDeltaE) << cases[i].name;
+            EXPECT_LT(difference->stats.max, test::kBackEndPixelDeltaE) << cases[i].name;
+            largestPixel = std::max(largestPixel, difference->stats.max);
             if (difference->stats.mean >= largestMean) {
                 largestMean = difference->stats.mean;
                 largestName = cases[i].name;
@@ -69,8 +73,8 @@ void expectBackEndsAgree(const std::vector<RenderCase>& cases) {
         }
         begin = end;
     }
-    std::printf("max mean ΔE00 GPU vs CPU over %zu images: %.4f (%s)\n", cases.size(),
-                largestMean, largestName.c_str());
+    std::printf("GPU vs CPU over %zu images: largest mean ΔE00 %.5f (%s), largest pixel %.5f\n",
+                cases.size(), largestMean, largestName.c_str(), largestPixel);
     test::expectNoValidationMessages(*context);
 }
 
@@ -155,8 +159,8 @@ TEST(GpuPopulation, DeltaEMatchesCoreColorOnRenderedPairs) {
     ASSERT_NE(context, nullptr);
     SceneTextures textures;
     textures.roughness = makePaintRoughnessTexture(64, 32);
-    auto renderer = gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(),
-                                                       textures, test::rampColormap());
+    auto renderer =
+        gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(), textures);
     ASSERT_TRUE(renderer.ok()) << renderer.error().message;
 
     const MaterialFamily family = supportedFamilies().front();
@@ -182,20 +186,6 @@ TEST(GpuPopulation, DeltaEMatchesCoreColorOnRenderedPairs) {
         largestDifference = std::max(largestDifference, meanDifference);
         EXPECT_LT(meanDifference, 1e-3) << "candidate " << i;
         EXPECT_GT(cpu->stats.mean, 0.0) << "distinct genomes should differ";
-        // The heatmap is the ramp's entry of each covered pixel's ΔE00 (default range 0-10),
-        // transparent elsewhere.
-        const Image& heatmap = evaluation->heatmaps[i];
-        for (std::size_t p = 0; p < cpu->deltaE.size(); ++p) {
-            std::array<float, 4> expected{};
-            if (cpu->covered[p]) {
-                const double position =
-                    std::clamp(double(evaluation->deltaE[i].deltaE[p]) / 10.0, 0.0, 1.0);
-                expected = test::rampColormap()[std::size_t(std::lround(position * 255.0))];
-            }
-            for (std::size_t c = 0; c < 4; ++c)
-                ASSERT_NEAR(heatmap.rgba[4 * p + c], expected[c], 1.5f / 255.0f)
-                    << "candidate " << i << ", pixel " << p;
-        }
     }
     std::printf("largest mean |GPU - CPU| ΔE00 on rendered pairs: %.2e\n", largestDifference);
     test::expectNoValidationMessages(*context);

@@ -33,11 +33,4 @@ void ValidatedGpuTest::TearDown() {
     if (context) expectNoValidationMessages(*context);
 }
 
-gpu::DeltaE00Pass::Colormap rampColormap() {
-    gpu::DeltaE00Pass::Colormap colormap{};
-    for (std::size_t i = 0; i < colormap.size(); ++i)
-        colormap[i] = {float(i) / 255.0f, 0.5f, 1.0f - float(i) / 255.0f, 1.0f};
-    return colormap;
-}
-
 }  // namespace matevo::test

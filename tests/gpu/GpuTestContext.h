@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include "gpu/CommandRunner.h"
-#include "gpu/DeltaE00Pass.h"
 #include "gpu/GpuContext.h"
 
 namespace matevo::test {
@@ -29,8 +28,5 @@ protected:
     gpu::GpuContext* context = nullptr;
     std::optional<gpu::CommandRunner> runner;
 };
-
-// A colormap whose red channel is the entry's position, so tests can read ΔE00 back from it.
-gpu::DeltaE00Pass::Colormap rampColormap();
 
 }  // namespace matevo::test

@@ -96,7 +96,6 @@ TEST_F(GridBrowsing, ARunFarFromTheTargetSaysWhatToChangeAndTheButtonDoesIt) {
     CpuPopulationRenderer renderer(std::move(textures).value());
     EvaluationOptions options;
     options.candidateImages = false;
-    options.heatmaps = false;
     auto evaluation =
         renderer.evaluate(materialFromPreset(preset, presetFile, preset.target).material, materials,
                           preset.scene, kEditorTileSize, options);

@@ -1,9 +1,9 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Per-pixel CIEDE2000 between one reference image and a batch of candidates, plus a heatmap
-// coloured through a 256-entry lookup table. Mirrors core/color: linear sRGB clamped to [0,1]
-// -> XYZ (D65) -> L*a*b* (white Y = 1) -> CIEDE2000 (kL = kC = kH = 1). Only pixels covered in
-// both images (alpha >= 0.5, core/color/Coverage.h) are compared; the others get deltaE = -1 and a transparent heatmap.
+// Per-pixel CIEDE2000 between one reference image and a batch of candidates. Mirrors
+// core/color: linear sRGB clamped to [0,1] -> XYZ (D65) -> L*a*b* (white Y = 1) -> CIEDE2000
+// (kL = kC = kH = 1). Only pixels covered in both images (alpha >= 0.5, core/color/Coverage.h)
+// are compared; the others get deltaE = -1.
 layout(local_size_x = 64) in;
 
 // The reference and the candidates may share one buffer (the renderer's): they are addressed
@@ -11,15 +11,11 @@ layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Reference { vec4 referencePixels[]; };
 layout(std430, binding = 1) readonly buffer Candidates { vec4 candidatePixels[]; };
 layout(std430, binding = 2) writeonly buffer DeltaE { float deltaE[]; };
-layout(std430, binding = 3) writeonly buffer Heatmap { vec4 heatmapPixels[]; };
-layout(std430, binding = 4) readonly buffer Colormap { vec4 colormap[256]; };
 
 layout(push_constant) uniform Settings {
     uint pixelCount;      // per image
     uint referenceImage;  // index of the reference in binding 0
     uint firstCandidate;  // index of the first candidate in binding 1
-    float minDeltaE;  // maps to colormap[0]
-    float maxDeltaE;  // maps to colormap[255]
 } settings;
 
 #include "LinearSrgbToLab.glsl"
@@ -34,11 +30,7 @@ void main() {
     vec4 candidate = candidatePixels[candidateImage * settings.pixelCount + pixel];
     if (reference.a < 0.5 || candidate.a < 0.5) {
         deltaE[index] = -1.0;
-        heatmapPixels[index] = vec4(0.0);
         return;
     }
-    float difference = ciede2000(linearSrgbToLab(reference.rgb), linearSrgbToLab(candidate.rgb));
-    deltaE[index] = difference;
-    heatmapPixels[index] =
-        colormap[colormapEntry(difference, settings.minDeltaE, settings.maxDeltaE)];
+    deltaE[index] = ciede2000(linearSrgbToLab(reference.rgb), linearSrgbToLab(candidate.rgb));
 }
