@@ -29,12 +29,20 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job) {
         return result;
     }
     const Preset& preset = job.preset;
-    std::shared_ptr<PopulationRenderer> renderer =
-        gpu::createPopulationRenderer(rendererRequest_, *textures);
+    // One renderer per lighting's environment (render/LightingScenes.h).
+    auto lit = lightingScenes(job.request.lightings, preset.scene, *textures,
+                              [this](const SceneTextures& lighting)
+                                  -> Result<std::shared_ptr<PopulationRenderer>> {
+                                  return std::shared_ptr<PopulationRenderer>(
+                                      gpu::createPopulationRenderer(rendererRequest_, lighting));
+                              });
+    if (!lit) {
+        result.error = lit.error().message;
+        return result;
+    }
     // As `matevo variants` measures: on the images as the PNG files of a saved set hold them.
     auto renderAt = [&](int size) {
-        return asStoredInPng(
-            renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, size));
+        return renderUnderEachLighting(*lit, preset.family, preset.baseKappa, size);
     };
     const VariantSearchSettings settings;
     const double wanted = double(job.request.count + settings.spare);
