@@ -33,34 +33,35 @@ std::string lightingAsChosen(const std::string& name) {
 
 bool drawLightingChoice(SceneSettings& scene, LightingView& view) {
     const std::string lighting = lightingChoiceOf(scene);
-    int choice = choiceIndex(lighting);
+    const int current = choiceIndex(lighting);
+    if (current == kFileChoice && view.hdrFile.empty()) view.hdrFile = lighting;
     bool changed = false;
-    if (ImGui::Combo("lighting", &choice, kChoiceLabels, IM_ARRAYSIZE(kChoiceLabels)) &&
-        choice != choiceIndex(lighting)) {
-        if (choice < kFileChoice) {
-            setLightingChoice(kLightingNames[choice], scene);
-            changed = true;
-        } else if (!view.hdrFile.empty()) {
-            setLightingChoice(view.hdrFile, scene);
-            changed = true;
-        }
-    }
-    hoverHint("What every view draws in: the target, the grid, the inspector, the variant "
-              "search and the Scene window; saved with the preset (scene.mode)");
-    if (choiceIndex(lightingChoiceOf(scene)) == kFileChoice || choice == kFileChoice) {
-        if (view.hdrFile.empty() && choiceIndex(lighting) == kFileChoice) view.hdrFile = lighting;
-        char path[512];
-        std::snprintf(path, sizeof path, "%s", view.hdrFile.c_str());
-        if (ImGui::InputText("HDR file", path, sizeof path,
-                             ImGuiInputTextFlags_EnterReturnsTrue)) {
-            view.hdrFile = path;
-            if (!view.hdrFile.empty()) {
-                setLightingChoice(lightingAsChosen(view.hdrFile), scene);
+    if (ImGui::BeginCombo("lighting", kChoiceLabels[view.typingFile ? kFileChoice : current])) {
+        for (int i = 0; i <= kFileChoice; ++i) {
+            if (!ImGui::Selectable(kChoiceLabels[i], i == current) || i == current) continue;
+            // A file is applied once typed (Enter); a named lighting at once.
+            view.typingFile = i == kFileChoice;
+            if (i < kFileChoice) {
+                setLightingChoice(kLightingNames[i], scene);
                 changed = true;
             }
         }
-        hoverHint("A lat-long .hdr or .exr environment; Enter applies it");
+        ImGui::EndCombo();
     }
+    hoverHint("What every view draws in: the target, the grid, the inspector, the variant "
+              "search and the Scene window; saved with the preset (scene.mode)");
+    if (current != kFileChoice && !view.typingFile) return changed;
+    char path[512];
+    std::snprintf(path, sizeof path, "%s", view.hdrFile.c_str());
+    if (ImGui::InputText("HDR file", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        view.hdrFile = path;
+        if (!view.hdrFile.empty()) {
+            setLightingChoice(lightingAsChosen(view.hdrFile), scene);
+            view.typingFile = false;
+            changed = true;
+        }
+    }
+    hoverHint("A lat-long .hdr or .exr environment; Enter applies it");
     return changed;
 }
 

@@ -15,7 +15,8 @@ namespace matevo::ui {
 
 // What the lighting controls keep between frames.
 struct LightingView {
-    std::string hdrFile;  // the HDR file field while it is typed, applied on Enter
+    std::string hdrFile;      // the HDR file field, applied on Enter
+    bool typingFile = false;  // "HDR file" picked, the file not applied yet
 };
 
 // The lighting names the editor offers besides a file, as LightingChoice takes them.

@@ -18,16 +18,15 @@ namespace matevo {
 namespace {
 
 using testing::runMatevo;
+using testing::shellQuoted;
 namespace fs = std::filesystem;
 
 constexpr double kLow = 2, kHigh = 5, kApart = 2;
 constexpr int kSize = 48;  // small and quick on the CPU renderer; the rule is the same at 256
 const std::vector<std::string> kLightings{"paper", "studio"};
 
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
-
 std::string presetPath(const std::string& name) {
-    return quoted(fs::path(MATEVO_SOURCE_DIR) / "presets" / (name + ".json"));
+    return shellQuoted(fs::path(MATEVO_SOURCE_DIR) / "presets" / (name + ".json"));
 }
 
 nlohmann::ordered_json readJson(const fs::path& file) {
@@ -40,13 +39,14 @@ nlohmann::ordered_json readJson(const fs::path& file) {
 // `matevo render` of a material file under one lighting, as the user would re-render it.
 fs::path renderUnder(const fs::path& material, const std::string& lighting, const fs::path& out) {
     auto run = runMatevo("render --backend cpu --size " + std::to_string(kSize) + " --genome " +
-                         quoted(material) + " --env " + lighting + " --out " + quoted(out));
+                         shellQuoted(material) + " --env " + lighting +
+                         " --out " + shellQuoted(out));
     EXPECT_EQ(run.exitCode, 0) << run.err;
     return out;
 }
 
 double compareMean(const fs::path& a, const fs::path& b) {
-    auto run = runMatevo("compare --json " + quoted(a) + " " + quoted(b));
+    auto run = runMatevo("compare --json " + shellQuoted(a) + " " + shellQuoted(b));
     EXPECT_EQ(run.exitCode, 0) << run.err;
     return run.exitCode == 0 ? nlohmann::json::parse(run.out)["mean_de00"].get<double>() : -1;
 }
@@ -88,7 +88,7 @@ bool holds(const Remeasured& measured) {
 std::string variantsArguments(const std::string& preset, int count, const fs::path& out) {
     return "variants --backend cpu --preset " + presetPath(preset) + " --count " +
            std::to_string(count) + " --band 2,5 --min-apart 2 --seed 1 --size " +
-           std::to_string(kSize) + " --fitness-size 32 --out " + quoted(out);
+           std::to_string(kSize) + " --fitness-size 32 --out " + shellQuoted(out);
 }
 
 TEST(VariantsLighting, ASetForPaperAndStudioHoldsUnderBothWhenRenderedAgain) {

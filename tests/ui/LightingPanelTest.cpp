@@ -31,6 +31,16 @@ TEST_F(EditorUiTest, TheLightingChoiceIsThePresetsSceneSavedAndUndoable) {
     EXPECT_EQ(reloaded->preset.scene.mode, SceneMode::Environment);
     EXPECT_EQ(reloaded->preset.scene.environment, "studio");
 
+    // "HDR file" asks for the file and changes nothing until it is given.
+    imgui.click(locate("Controls", "lighting"), draw);
+    imgui.frame(draw);
+    const auto file = imgui.locate(*popup, popup->GetID("HDR file"), draw);
+    ASSERT_TRUE(file.has_value());
+    imgui.click(*file, draw);
+    imgui.frame(draw);
+    EXPECT_TRUE(imgui.locate("Controls", "HDR file", draw).has_value());
+    EXPECT_EQ(ui.state().preset.scene.environment, "studio");
+
     imgui.frame(draw);
     ui.undo();
     imgui.frame(draw);
