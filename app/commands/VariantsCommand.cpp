@@ -16,7 +16,6 @@
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
 #include "common/StopRequest.h"
-#include "experiment/Experiment.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/AtomicFile.h"
 #include "io/ImageFile.h"

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <utility>
 
-#include "experiment/Experiment.h"
 #include "scene/SceneTextures.h"
 
 namespace matevo::editor {
