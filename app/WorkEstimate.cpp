@@ -56,22 +56,26 @@ WorkEstimate evolveEstimate(int population, int generations, int size) {
 }
 
 WorkEstimate variantsEstimate(int count, int size, int fitnessSize, int maxEvaluations,
-                              int population, int blocks) {
+                              int population, int blocks, int lightings) {
     const std::uint64_t members = std::uint64_t(count + kVariantSpare + 1);  // and the target
     const std::uint64_t outputPixels = pixels(size, size);
     const std::uint64_t searchPixels = pixels(fitnessSize, fitnessSize);
+    const auto lit = std::uint64_t(std::max(lightings, 1));
     WorkEstimate estimate;
     estimate.what = std::to_string(count) + " variants at " + sideBySide(size) + ", up to " +
                     std::to_string(maxEvaluations) + " evaluations at " + sideBySide(fitnessSize);
-    // The search's batch and archive, then the set and its contact sheet (one more image).
-    estimate.bytes = std::uint64_t(population) * searchPixels * kSearchBytesPerPixel +
-                     members * searchPixels * kSetBytesPerPixel +
-                     members * outputPixels * (kSetBytesPerPixel + 16);
+    if (lit > 1) estimate.what += " under " + std::to_string(lit) + " lightings";
+    // The search's batch and archive under every lighting, then the set (checked under every
+    // lighting, its images kept under the first) and its contact sheet (one more image).
+    estimate.bytes = lit * std::uint64_t(population) * searchPixels * kSearchBytesPerPixel +
+                     lit * members * searchPixels * kSetBytesPerPixel +
+                     lit * members * outputPixels * kSetBytesPerPixel + members * outputPixels * 16;
     estimate.seconds =
-        double(maxEvaluations) * double(searchPixels) *
-            (kRenderSecondsPerPixel + kDeltaESecondsPerPixel) +
-        double(members) * double(outputPixels) * kWrittenCandidateSecondsPerPixel +
-        double(members) * double(members) / 2 * double(outputPixels) * kDeltaESecondsPerPixel;
+        double(lit) * (double(maxEvaluations) * double(searchPixels) *
+                           (kRenderSecondsPerPixel + kDeltaESecondsPerPixel) +
+                       double(members) * double(members) / 2 * double(outputPixels) *
+                           kDeltaESecondsPerPixel) +
+        double(members) * double(outputPixels) * kWrittenCandidateSecondsPerPixel;
     if (blocks > 1) {
         estimate.what = std::to_string(blocks) + " blocks of " + estimate.what;
         estimate.seconds *= double(blocks);

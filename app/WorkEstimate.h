@@ -22,9 +22,10 @@ WorkEstimate renderEstimate(int size);
 // `evolve`, with --out at `size` when size > 0 (the GA alone otherwise).
 WorkEstimate evolveEstimate(int population, int generations, int size);
 // `variants`: the search at fitnessSize, then the set checked and written at size; in
-// `blocks` blocks of `count` variants, one after another (memory of one, time of all).
+// `blocks` blocks of `count` variants, one after another (memory of one, time of all); every
+// material rendered and measured under each of `lightings` lightings.
 WorkEstimate variantsEstimate(int count, int size, int fitnessSize, int maxEvaluations,
-                              int population, int blocks = 1);
+                              int population, int blocks = 1, int lightings = 1);
 // `experiment`: gaRuns GA runs, each scored by one render at size; imageRuns of them (--metric
 // image) also render every individual at fitnessSize.
 WorkEstimate experimentEstimate(long long gaRuns, int population, int generations, int size,

@@ -1,6 +1,7 @@
 #include "ControlPanel.h"
 
 #include "GaControls.h"
+#include "LightingPanel.h"
 #include "MaterialControls.h"
 #include "Widgets.h"
 
@@ -48,6 +49,7 @@ ControlPanelActions drawFileRow(const EditorState& state, bool canUndo, bool can
 ControlPanelActions drawControlPanel(EditorState& state, bool canUndo, bool canRedo) {
     const ControlPanelActions actions = drawFileRow(state, canUndo, canRedo);
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.58f);
+    drawLightingChoice(state.preset.scene, state.lighting);
     drawMaterialControls(state.preset.family, state.preset.target, state.status);
     drawGaControls(state.preset.ga, state.preset.family, state.imageFitness, state.status);
     ImGui::PopItemWidth();

@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "CompareMetricsPanel.h"
+#include "LightingPanel.h"
 #include "PanelLayout.h"
 #include "ScenePanel.h"
 #include "StatusLog.h"
@@ -113,6 +114,7 @@ struct EditorState {
     CompareMetricsView compareMetrics;  // the "Compare metrics" window
     VariantsView variants;              // the "Variants" window
     SceneView sceneView;                // the "Scene" window
+    LightingView lighting;              // the lighting choice (the preset's scene)
     std::filesystem::path presetPath;   // empty until opened or saved
     Preset savedPreset;                 // as last opened or saved, for the unsaved mark
     // The inspected material, by genome: a re-run reorders the grid, and an index would then

@@ -19,6 +19,7 @@
 #include "VariantsPanel.h"
 #include "genome/FamilyRules.h"
 #include "io/MaterialFile.h"
+#include "scene/LightingChoice.h"
 
 namespace matevo::ui {
 namespace {
@@ -72,6 +73,7 @@ FrameRequests EditorUi::draw() {
 
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
     state_.variants.keptInFamily = int(keptGenomesOfFamily(state_.preset).size());
+    state_.variants.lighting = lightingChoiceOf(state_.preset.scene);
     requests.variants = drawVariantsWindow(state_.variants);
     drawSceneWindow(state_);
     drawDialogs();

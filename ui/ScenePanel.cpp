@@ -21,10 +21,6 @@ void drawControls(SceneViewControls& controls) {
     ImGui::SameLine();
     const char* layouts[] = {"grid", "crowd"};
     ImGui::Combo("layout", &controls.layout, layouts, IM_ARRAYSIZE(layouts));
-    ImGui::Combo("lighting", &controls.lighting, kSceneLightings, IM_ARRAYSIZE(kSceneLightings));
-    hoverHint("paper: the single light; ambient: plus a uniform environment; studio: plus the "
-              "generated studio environment (image-based lighting)");
-    ImGui::SameLine();
     ImGui::SliderFloat("exposure", &controls.exposure, -4.0f, 4.0f, "%.1f stops");
     ImGui::SameLine();
     if (ImGui::Button("reset view")) {

@@ -1,7 +1,7 @@
 #pragma once
 // The Scene window (the paper's §6 application): N instances of a mesh, each wearing one
 // material of the current population (instance i wears candidate i mod count, best first),
-// lit like the rest of matevo, with an orbit / zoom camera. Hovering an instance names its
+// lit like the rest of the editor (its one lighting choice, ui/LightingPanel.h), with an orbit / zoom camera. Hovering an instance names its
 // candidate; clicking selects it in the grid and the inspector. The app renders when the
 // controls change (app/editor/SceneViewWorker) and fills the result in; the panel only reads
 // it and edits the controls.
@@ -20,7 +20,6 @@ struct SceneViewControls {
     int mesh = 1;        // kSceneMeshes: sphere, shaderball, knot
     int instances = 24;
     int layout = 0;      // grid, crowd
-    int lighting = 2;    // kSceneLightings: paper, ambient, studio
     float exposure = 0.0f;  // stops, before the ACES tone map
     float yawDegrees = 0.0f;
     float pitchDegrees = 25.0f;
@@ -32,7 +31,6 @@ struct SceneViewControls {
 };
 
 inline constexpr const char* kSceneMeshes[] = {"sphere", "shaderball", "knot"};
-inline constexpr const char* kSceneLightings[] = {"paper", "ambient", "studio"};
 
 struct SceneView {
     bool open = false;

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "ImageView.h"
+#include "LightingPanel.h"
 #include "Widgets.h"
 #include "color/Colormap.h"
 #include "variants/DeltaEBand.h"
@@ -49,6 +50,7 @@ void drawRequest(VariantsView& view, VariantsActions& actions) {
     hoverHint("Beyond the paper: evolve the metal's extinction (kappa, RGB, each in [1, 4]) "
               "too, so variants may differ in colour. Off: every variant keeps the preset's "
               "kappa");
+    drawHoldUnderLightings(view.holdAlsoUnder, view.lighting);
     if (view.running) {
         char overlay[32];
         std::snprintf(overlay, sizeof overlay, "%.0f%%", view.progress * 100.0f);

@@ -32,6 +32,10 @@ struct VariantsView {
     int seed = 1;
     // Beyond the paper: evolve the conductor base's kappa too, so variants may differ in colour.
     bool hueVariety = false;
+    // Lightings the set must hold under besides the chosen one (LightingPanel.h); `lighting`
+    // is the chosen one, filled by the app.
+    std::vector<std::string> holdAlsoUnder;
+    std::string lighting = "paper";
     bool running = false;
     float progress = 0.0f;  // of the running search, in [0, 1]
     std::string summary;    // what the last run achieved, or why it failed

@@ -16,11 +16,11 @@
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
 #include "common/StopRequest.h"
-#include "experiment/Experiment.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/AtomicFile.h"
 #include "io/ImageFile.h"
 #include "io/OutputFolder.h"
+#include "render/LightingScenes.h"
 #include "variants/FindVariants.h"
 #include "variants/ShareResume.h"
 #include "variants/VariantBlockFiles.h"
@@ -34,7 +34,7 @@ constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
     "                       [--size N] [--fitness-size N] [--max-evaluations N] [--hue]\n"
     "                       [--backend gpu|cpu [--no-fallback]] [--out DIR] [--force]\n"
-    "                       [--heatmap de00|flip]\n"
+    "                       [--heatmap de00|flip] [--env L1,L2,...]\n"
     "                       [--json] [--block B [--shard I/K] [--resume]]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
     "whose renders lie LO to HI mean CIEDE2000 from the target's and at least D from each other.\n"
@@ -57,6 +57,11 @@ constexpr const char* kHelp =
     "                       with files is refused before the search starts)\n"
     "  --heatmap M          what the heatmaps show: de00 (default; 0-10 viridis) or flip\n"
     "                       (per-pixel LDR-FLIP, 0-1 magma)\n"
+    "  --env L1,L2,...      the lightings the set must hold under, each paper, ambient, studio\n"
+    "                       or an .hdr/.exr FILE (as for render --env): a variant counts only\n"
+    "                       when it is in band and D apart from the others under every one;\n"
+    "                       the report gives ΔE00 per lighting, the images show the first\n"
+    "                       (default: the preset's own scene alone)\n"
     "  --json               print the report as JSON\n"
     "  --block B            cut the set into blocks of B variants, each an independent search\n"
     "                       seeded by the seed and the block's index: variants are at least D\n"
@@ -123,8 +128,8 @@ struct VariantsJob {
     VariantSearchSettings settings;
     int size = 256;
     int fitnessSize = 64;
-    RenderGenomes fitnessRender;
-    RenderGenomes outputRender;
+    LightingRenders fitnessRender;  // one per lighting (LightingMeasure.h)
+    LightingRenders outputRender;
     std::optional<OutputFolder>& output;
     const std::optional<Font>& font;  // the contact sheets', loaded with the output folder
     ImageMetric heatmapMetric = ImageMetric::DeltaE00;
@@ -229,7 +234,7 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
     std::vector<int> kept;
     for (const auto& entry : parts.blocks) kept.push_back(entry.at("index").get<int>());
     // Rendered here, not taken from a block: a share may have no block at all.
-    auto target = job.outputRender(std::span(&job.preset.target, 1));
+    auto target = job.outputRender.perLighting.front()(std::span(&job.preset.target, 1));
     if (!target) throw std::runtime_error(target.error().message);
     std::optional<StepwiseOutput> steps;
     if (job.output) {
@@ -308,6 +313,11 @@ int runVariants(CommandLine& args) {
     if (!heatmapMetric)
         throw UsageError("--heatmap: expected de00 or flip, got '" + heatmapName + "'");
     args.onlyWith("--heatmap", "--out");
+    if (auto lightings = args.option("--env")) {
+        auto names = parseLightingList(*lightings);
+        if (!names) throw UsageError("--env: " + names.error().message);
+        request.lightings = std::move(names).value();
+    }
     const bool replaceOutput = args.flag("--force");
     const bool asJson = args.flag("--json");
     const bool resume = args.flag("--resume");
@@ -348,13 +358,25 @@ int runVariants(CommandLine& args) {
     }
     checkWorkEstimate(variantsEstimate(std::min(request.count, plan.blockSize), size, fitnessSize,
                                        settings.maxEvaluations, settings.population,
-                                       int(kept ? kept->missing.size() : blocks.size())));
+                                       int(kept ? kept->missing.size() : blocks.size()),
+                                       int(std::max<std::size_t>(1, request.lightings.size()))));
 
     const Preset& preset = choice.preset;
-    // One renderer for the search and the check, so tables and textures are uploaded once.
-    const std::shared_ptr<PopulationRenderer> renderer =
-        createCommandRenderer(rendererRequest, preset, choice.file);
-    parts.header["made_by"] = madeBy(*renderer);
+    auto textures = loadSceneTextures(preset, choice.file);
+    if (!textures) throw UsageError(textures.error().message);
+    // One renderer per lighting's textures for the search and the check, so tables and
+    // textures are uploaded once.
+    // Renderers after the first ask for the back end it got: a fallback is announced once.
+    gpu::RendererRequest asked = rendererRequest;
+    auto lit = lightingScenes(
+        request.lightings, preset.scene, *textures,
+        [&asked](const SceneTextures& lighting) -> Result<std::shared_ptr<PopulationRenderer>> {
+            std::shared_ptr<PopulationRenderer> made = createCommandRenderer(asked, lighting);
+            asked.backend = made->backend();
+            return made;
+        });
+    if (!lit) throw UsageError("--env: " + lit.error().message);
+    parts.header["made_by"] = madeBy(*lit->front().renderer);
     if (kept) {
         if (auto conflict = madeByConflict(kept->madeBy, parts.header["made_by"]))
             throw UsageError("--out: " + *outDir + "/report.json: " + *conflict +
@@ -366,8 +388,7 @@ int runVariants(CommandLine& args) {
                     std::to_string(kept->missing.size()) + " to compute");
     }
     auto renderAt = [&](int side) {
-        return asStoredInPng(
-            renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, side));
+        return renderUnderEachLighting(*lit, preset.family, preset.baseKappa, side);
     };
     const VariantsJob job{preset,
                           materialFromPreset(preset, choice.file, preset.target, preset.name),

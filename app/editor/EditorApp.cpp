@@ -27,6 +27,7 @@
 #include "EvolutionWorker.h"
 #include "ExportWorker.h"
 #include "ImageBridge.h"
+#include "LightingPanel.h"
 #include "SceneViewWorker.h"
 #include "ScriptPlayer.h"
 #include "VariantsDisplay.h"
@@ -40,6 +41,7 @@
 #include "io/PresetCatalog.h"
 #include "io/ResourcePaths.h"
 #include "material/FgdTableCache.h"
+#include "scene/LightingChoice.h"
 
 namespace matevo::editor {
 namespace {
@@ -519,6 +521,8 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
     request.minApart = double(view.minApart);
     request.seed = std::uint64_t(view.seed);
     if (view.hueVariety) request.kappaGenes = KappaGenes::On;
+    request.lightings =
+        ui::lightingsToHold(lightingChoiceOf(state.preset.scene), view.holdAlsoUnder);
     if (actions.run) {
         // The kept bin is where a set starts: its materials join as they are.
         if (view.startFromKept) request.keep = keptGenomesOfFamily(state.preset);

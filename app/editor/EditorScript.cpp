@@ -7,6 +7,7 @@
 
 #include "common/ShortText.h"
 #include "evolve/GaSettings.h"
+#include "render/LightingScenes.h"
 
 namespace matevo::editor {
 namespace {
@@ -38,6 +39,8 @@ const std::map<std::string, Grammar>& grammar() {
         {"heatmap", {Kind::Heatmap, 0, true}},
         {"select", {Kind::Select, 1, false, 0, kMaxPopulation - 1}},
         {"scene", {Kind::Scene, 0, true}},
+        {"lighting", {Kind::Lighting, 0, true}},
+        {"variants-hold", {Kind::VariantsHold, 0, true}},
         {"wait-scene", {Kind::WaitScene, 0, false}},
         {"undo", {Kind::Undo, 0, false}},
         {"redo", {Kind::Redo, 0, false}},
@@ -79,6 +82,8 @@ std::string validateText(const ScriptAction& action) {
         return "expected on or off, got '" + shortText(action.text, 40) + "'";
     if (action.kind == Kind::Scene && action.text != "open" && action.text != "close")
         return "expected open or close, got '" + shortText(action.text, 40) + "'";
+    if (action.kind == Kind::VariantsHold && action.text != "none")
+        if (auto names = parseLightingList(action.text); !names) return names.error().message;
     return {};
 }
 

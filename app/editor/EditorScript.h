@@ -11,6 +11,10 @@
 //   heatmap on|off|toggle  the overlay; or heatmap de00|flip: on, showing that metric
 //   select I                inspect candidate I (0 = best)
 //   scene open|close        the Scene window
+//   lighting L              the lighting every view uses (the preset's scene): paper, ambient,
+//                           studio or an .hdr/.exr FILE
+//   variants-hold L1,L2     the lightings the variant set must hold under besides the chosen
+//                           one ("hold under several lightings"); "none" clears them
 //   wait-scene              draw until the Scene window shows a render (gives up after 120 s)
 //   undo | redo
 //   resize W H              resize the window (pixels)
@@ -45,6 +49,8 @@ struct ScriptAction {
         Heatmap,
         Select,
         Scene,
+        Lighting,
+        VariantsHold,
         WaitScene,
         Undo,
         Redo,

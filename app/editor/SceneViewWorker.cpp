@@ -97,7 +97,8 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
         renderer.reset(new SceneViewRenderer{std::move(runner).value(), {}, {}, {}, 0});
     }
     const std::string meshName = ui::kSceneMeshes[controls.mesh];
-    const std::string lighting = ui::kSceneLightings[controls.lighting];
+    // The editor's one lighting choice (ui/LightingPanel.h): the preset's scene.
+    const std::string lighting = lightingChoiceOf(job.preset.scene);
     const std::string key = meshName + "|" + lighting + "|" + job.presetFile.string() + "|" +
                             job.preset.roughnessTexture + "|" + job.preset.baseColorTexture;
     if (!renderer->scene || renderer->key != key) {

@@ -3,6 +3,9 @@
 #include <algorithm>
 
 #include "LayoutCheck.h"
+#include "LightingPanel.h"
+#include "render/LightingScenes.h"
+#include "scene/LightingChoice.h"
 
 namespace matevo::editor {
 namespace {
@@ -106,6 +109,14 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
             return true;
         case Kind::Scene:
             state.sceneView.open = action.text == "open";
+            return true;
+        case Kind::Lighting:
+            setLightingChoice(ui::lightingAsChosen(action.text), state.preset.scene);
+            return true;
+        case Kind::VariantsHold:
+            state.variants.holdAlsoUnder.clear();
+            if (action.text != "none")
+                state.variants.holdAlsoUnder = *parseLightingList(action.text);
             return true;
         case Kind::WaitScene: {
             if (!waitingSince_) waitingSince_ = std::chrono::steady_clock::now();

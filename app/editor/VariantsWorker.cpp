@@ -4,7 +4,7 @@
 #include <chrono>
 #include <utility>
 
-#include "experiment/Experiment.h"
+#include "scene/SceneTextures.h"
 
 namespace matevo::editor {
 
@@ -23,16 +23,25 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job) {
     const auto started = std::chrono::steady_clock::now();
     VariantsResult result{job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, {}};
     const Preset& preset = job.preset;
-    auto created = gpu::createPresetRenderer(rendererRequest_, preset, job.presetFile);
-    if (!created) {
-        result.error = created.error().message;
+    auto textures = loadSceneTextures(preset, job.presetFile);
+    if (!textures) {
+        result.error = textures.error().message;
         return result;
     }
-    const std::shared_ptr<PopulationRenderer> renderer = std::move(created).value();
+    // One renderer per lighting's environment (render/LightingScenes.h).
+    auto lit = lightingScenes(job.request.lightings, preset.scene, *textures,
+                              [this](const SceneTextures& lighting)
+                                  -> Result<std::shared_ptr<PopulationRenderer>> {
+                                  return std::shared_ptr<PopulationRenderer>(
+                                      gpu::createPopulationRenderer(rendererRequest_, lighting));
+                              });
+    if (!lit) {
+        result.error = lit.error().message;
+        return result;
+    }
     // As `matevo variants` measures: on the images as the PNG files of a saved set hold them.
     auto renderAt = [&](int size) {
-        return asStoredInPng(
-            renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, size));
+        return renderUnderEachLighting(*lit, preset.family, preset.baseKappa, size);
     };
     const VariantSearchSettings settings;
     const double wanted = double(job.request.count + settings.spare);

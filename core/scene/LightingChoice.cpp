@@ -7,16 +7,27 @@ namespace matevo {
 Status applyLightingChoice(const std::string& choice, SceneSettings& scene,
                            SceneTextures& textures, const PrefilterSettings& prefilter) {
     textures.environment = {};
+    if (choice != "paper" && choice != "ambient") {
+        auto environment = loadEnvironment(choice, prefilter);
+        if (!environment) return environment.error();
+        textures.environment = std::move(environment).value();
+    }
+    setLightingChoice(choice, scene);
+    return Ok{};
+}
+
+void setLightingChoice(const std::string& choice, SceneSettings& scene) {
     if (choice == "paper" || choice == "ambient") {
         scene.mode = *parseSceneMode(choice);
-        return Ok{};
+        return;
     }
-    auto environment = loadEnvironment(choice, prefilter);
-    if (!environment) return environment.error();
     scene.mode = SceneMode::Environment;
     scene.environment = choice;
-    textures.environment = std::move(environment).value();
-    return Ok{};
+}
+
+std::string lightingChoiceOf(const SceneSettings& scene) {
+    return scene.mode == SceneMode::Environment ? scene.environment
+                                                : std::string(toString(scene.mode));
 }
 
 }  // namespace matevo

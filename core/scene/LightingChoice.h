@@ -19,4 +19,11 @@ namespace matevo {
 Status applyLightingChoice(const std::string& choice, SceneSettings& scene,
                            SceneTextures& textures, const PrefilterSettings& prefilter = {});
 
+// The scene's mode and environment for a choice, nothing loaded: for a preset, whose
+// environment loadSceneTextures loads where it is rendered (the editor's lighting choice).
+void setLightingChoice(const std::string& choice, SceneSettings& scene);
+
+// The choice a scene is lit by: "paper", "ambient", or its environment ("studio" or a file).
+std::string lightingChoiceOf(const SceneSettings& scene);
+
 }  // namespace matevo

@@ -6,9 +6,10 @@ namespace matevo {
 
 Result<FoundVariants> findVariants(const MaterialInstance& target, const VariantRequest& request,
                                    const VariantSearchSettings& settings,
-                                   RenderGenomes fitnessRender, const RenderGenomes& outputRender,
+                                   const LightingRenders& fitnessRender,
+                                   const LightingRenders& outputRender,
                                    const VariantSearchHooks& hooks) {
-    auto search = VariantSearch::start(target, request, settings, std::move(fitnessRender));
+    auto search = VariantSearch::start(target, request, settings, fitnessRender);
     if (!search) return search.error();
     if (auto ran = (*search)->run(hooks); !ran) return ran.error();
     auto set = chooseVariantSet((*search)->archive(), request, target.genome, outputRender);

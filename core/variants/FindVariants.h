@@ -5,7 +5,7 @@
 // chosen from its archive and checked at the output resolution (chooseVariantSet). A stopped
 // search still gives the set its archive holds, so a caller can deliver it, marked partial.
 #include "common/Result.h"
-#include "evolve/RenderGenomes.h"
+#include "variants/LightingMeasure.h"
 #include "material/MaterialInstance.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
@@ -17,11 +17,13 @@ struct FoundVariants {
     VariantSearchProgress progress;  // the search's at its end
 };
 
-// `fitnessRender` draws at the fitness resolution, `outputRender` at the output resolution (as
-// for VariantSearch::start and chooseVariantSet); an Error when rendering failed.
+// `fitnessRender` draws at the fitness resolution, `outputRender` at the output resolution, each
+// once per lighting of the request (as for VariantSearch::start and chooseVariantSet); an Error
+// when rendering failed.
 Result<FoundVariants> findVariants(const MaterialInstance& target, const VariantRequest& request,
                                    const VariantSearchSettings& settings,
-                                   RenderGenomes fitnessRender, const RenderGenomes& outputRender,
+                                   const LightingRenders& fitnessRender,
+                                   const LightingRenders& outputRender,
                                    const VariantSearchHooks& hooks = {});
 
 }  // namespace matevo

@@ -130,6 +130,13 @@ Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::
     return Ok{};
 }
 
+// The lightings a share's set holds under; null for the preset's own scene.
+nlohmann::ordered_json lightingsOf(const ShareReport& share) {
+    const nlohmann::ordered_json& request = share.report.at("request");
+    return request.is_object() ? request.value("lightings", nlohmann::ordered_json())
+                               : nlohmann::ordered_json();
+}
+
 nlohmann::ordered_json madeByOf(const ShareReport& share) {
     return share.report.value("made_by", nlohmann::ordered_json());
 }
@@ -175,6 +182,11 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
 
     std::vector<const ShareReport*> byIndex(std::size_t(shareCount), nullptr);
     for (const ShareReport& share : shares) {
+        if (lightingsOf(share) != lightingsOf(first))
+            return fieldError(share.folder, "request.lightings",
+                              lightingsOf(share).dump() + " differs from " +
+                                  displayPath(first.folder) + "'s " + lightingsOf(first).dump() +
+                                  ": shares searched under different lightings are never merged");
         for (const char* field : kBlockHeaderFields)
             if (share.report[field] != first.report[field])
                 return fieldError(share.folder, field,

@@ -6,14 +6,16 @@
 
 namespace matevo {
 
-std::vector<double> VariantArchive::distancesTo(const LabImage& lab) const {
+std::vector<double> VariantArchive::distancesTo(const LabsPerLighting& labs) const {
     std::vector<double> distances;
     distances.reserve(members_.size());
-    for (const ArchivedVariant& member : members_) distances.push_back(meanDeltaE00(lab, member.lab));
+    for (const ArchivedVariant& member : members_)
+        distances.push_back(apartUnderEvery(labs, member.labs));
     return distances;
 }
 
-bool VariantArchive::offer(const Genome& genome, const LabImage& lab, double deltaEToTarget,
+bool VariantArchive::offer(const Genome& genome, LabsPerLighting labs,
+                           std::vector<double> deltaEToTarget,
                            const std::vector<double>& distances) {
     std::size_t closeCount = 0;
     std::size_t closeMember = 0;
@@ -25,7 +27,7 @@ bool VariantArchive::offer(const Genome& genome, const LabImage& lab, double del
         }
     }
     if (closeCount == 0) {
-        add(genome, lab, deltaEToTarget, false, distances);
+        add(genome, std::move(labs), std::move(deltaEToTarget), false, distances);
         return true;
     }
     if (closeCount > 1 || members_[closeMember].pinned) return false;
@@ -36,7 +38,7 @@ bool VariantArchive::offer(const Genome& genome, const LabImage& lab, double del
     for (std::size_t i = 0; i < members_.size(); ++i)
         if (i != closeMember) newcomerRoom = std::min(newcomerRoom, distances[i]);
     if (newcomerRoom <= room(closeMember, closeMember)) return false;
-    members_[closeMember] = {nextId_++, genome, lab, deltaEToTarget, false};
+    members_[closeMember] = {nextId_++, genome, std::move(labs), std::move(deltaEToTarget), false};
     for (std::size_t i = 0; i < members_.size(); ++i) {
         const double d = i == closeMember ? 0.0 : distances[i];
         distances_[closeMember][i] = d;
@@ -45,8 +47,10 @@ bool VariantArchive::offer(const Genome& genome, const LabImage& lab, double del
     return true;
 }
 
-void VariantArchive::pin(const Genome& genome, const LabImage& lab, double deltaEToTarget) {
-    add(genome, lab, deltaEToTarget, true, distancesTo(lab));
+void VariantArchive::pin(const Genome& genome, LabsPerLighting labs,
+                         std::vector<double> deltaEToTarget) {
+    std::vector<double> distances = distancesTo(labs);
+    add(genome, std::move(labs), std::move(deltaEToTarget), true, std::move(distances));
 }
 
 bool VariantArchive::holds(std::uint64_t id) const {
@@ -54,12 +58,13 @@ bool VariantArchive::holds(std::uint64_t id) const {
                        [id](const ArchivedVariant& member) { return member.id == id; });
 }
 
-void VariantArchive::add(const Genome& genome, const LabImage& lab, double deltaEToTarget,
-                         bool pinned, std::vector<double> distances) {
+void VariantArchive::add(const Genome& genome, LabsPerLighting labs,
+                         std::vector<double> deltaEToTarget, bool pinned,
+                         std::vector<double> distances) {
     for (std::size_t i = 0; i < members_.size(); ++i) distances_[i].push_back(distances[i]);
     distances.push_back(0.0);
     distances_.push_back(std::move(distances));
-    members_.push_back({nextId_++, genome, lab, deltaEToTarget, pinned});
+    members_.push_back({nextId_++, genome, std::move(labs), std::move(deltaEToTarget), pinned});
 }
 
 double VariantArchive::room(std::size_t i, std::size_t skip) const {

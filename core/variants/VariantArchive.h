@@ -6,21 +6,22 @@
 // MAP-Elites' grid. A newcomer joins when it is far enough from every member; one that falls
 // inside a single member's niche competes with it locally (as in MAP-Elites, but on novelty):
 // it takes the member's place when it lies farther from the rest of the archive, so the archive
-// spreads out over the band as the search goes on.
+// spreads out over the band as the search goes on. With several lightings (LightingMeasure.h)
+// each member holds its render under every one, and "apart" means apart under every one.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "color/LabImage.h"
 #include "genome/Genome.h"
+#include "variants/LightingMeasure.h"
 
 namespace matevo {
 
 struct ArchivedVariant {
     std::uint64_t id = 0;  // unique over the archive's life: a newcomer always has a higher one
     Genome genome;
-    LabImage lab;
-    double deltaEToTarget = 0;
+    LabsPerLighting labs;
+    std::vector<double> deltaEToTarget;  // per lighting
     bool pinned = false;  // kept by the user: never replaced
 };
 
@@ -28,29 +29,31 @@ class VariantArchive {
 public:
     explicit VariantArchive(double minApart) : minApart_(minApart) {}
 
-    // Mean ΔE00 from lab to every member, in member order.
-    std::vector<double> distancesTo(const LabImage& lab) const;
-    // Adds a render the caller has checked to be inside the band; `distances` are
-    // distancesTo(lab). Returns whether the archive changed (joined, or replaced a member).
-    bool offer(const Genome& genome, const LabImage& lab, double deltaEToTarget,
+    // The spacing under every lighting (apartUnderEvery) from labs to every member, in member
+    // order.
+    std::vector<double> distancesTo(const LabsPerLighting& labs) const;
+    // Adds renders the caller has checked to be inside the band under every lighting;
+    // `distances` are distancesTo(labs). Returns whether the archive changed (joined, or
+    // replaced a member).
+    bool offer(const Genome& genome, LabsPerLighting labs, std::vector<double> deltaEToTarget,
                const std::vector<double>& distances);
     // A variant the user keeps: joins unconditionally (even closer than minApart to another
     // pinned one) and is never replaced.
-    void pin(const Genome& genome, const LabImage& lab, double deltaEToTarget);
+    void pin(const Genome& genome, LabsPerLighting labs, std::vector<double> deltaEToTarget);
 
     // Whether a member with this id is still in the archive.
     bool holds(std::uint64_t id) const;
     std::uint64_t lastId() const { return nextId_ - 1; }
 
     const std::vector<ArchivedVariant>& members() const { return members_; }
-    // Mean ΔE00 between members i and j (fitness resolution).
+    // The spacing under every lighting between members i and j (fitness resolution).
     double distance(std::size_t i, std::size_t j) const { return distances_[i][j]; }
     std::size_t size() const { return members_.size(); }
     double minApart() const { return minApart_; }
 
 private:
-    void add(const Genome& genome, const LabImage& lab, double deltaEToTarget, bool pinned,
-             std::vector<double> distances);
+    void add(const Genome& genome, LabsPerLighting labs, std::vector<double> deltaEToTarget,
+             bool pinned, std::vector<double> distances);
     // Distance from member i to its nearest other member, skipping member `skip`.
     double room(std::size_t i, std::size_t skip) const;
 

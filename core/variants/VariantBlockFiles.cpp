@@ -71,9 +71,11 @@ void addBlock(BlockReport& report, const Preset& preset, const VariantRun& run,
                              {"evaluations", run.evaluations},
                              {"archived", run.archived},
                              {"output_renders", set.outputRenders},
-                             {"pairwise_de00", set.pairwise},
-                             {"smallest_pairwise_de00", set.smallestPairwise},
-                             {"contact_sheet", blockContactSheet(block)}});
+                             {"pairwise_de00", set.pairwise}});
+    nlohmann::ordered_json& added = report.blocks.back();
+    if (!set.lightings.empty()) added["pairwise_de00_by_lighting"] = pairwiseByLighting(set);
+    added["smallest_pairwise_de00"] = set.smallestPairwise;
+    added["contact_sheet"] = blockContactSheet(block);
     const std::vector<double> nearest = set.nearestSibling();
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         nlohmann::ordered_json entry =

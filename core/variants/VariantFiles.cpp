@@ -6,6 +6,7 @@
 #include "color/Colormap.h"
 #include "color/ImageDifference.h"
 #include "experiment/Canvas.h"
+#include "experiment/Experiment.h"
 #include "io/AtomicFile.h"
 #include "io/CarriedTextures.h"
 #include "io/GenomeJson.h"
@@ -47,6 +48,14 @@ void placeTile(Image& sheet, const Image& tile, int x, int y) {
         }
 }
 
+// "paper", "paper and studio", "paper, ambient and studio".
+std::string listOfLightings(const std::vector<std::string>& lightings) {
+    std::string text;
+    for (std::size_t i = 0; i < lightings.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == lightings.size() ? " and " : ", ") + lightings[i];
+    return text;
+}
+
 }  // namespace
 
 RenderGenomes asStoredInPng(RenderGenomes render) {
@@ -57,6 +66,16 @@ RenderGenomes asStoredInPng(RenderGenomes render) {
         for (Image& image : *images) image = quantizeAsPng(image);
         return images;
     };
+}
+
+LightingRenders renderUnderEachLighting(const std::vector<LitScene>& lit,
+                                        const MaterialFamily& family,
+                                        const std::array<double, 3>& kappa, int size) {
+    std::vector<RenderGenomes> perLighting;
+    for (const LitScene& lighting : lit)
+        perLighting.push_back(asStoredInPng(
+            renderGenomesWith(lighting.renderer, family, kappa, lighting.scene, size)));
+    return LightingRenders(std::move(perLighting));
 }
 
 std::string variantStem(std::size_t index, std::size_t count) {
@@ -78,22 +97,39 @@ nlohmann::ordered_json variantEntry(const Preset& preset, const VariantSet& set,
                                     {"image", stem + ".png"},
                                     {"heatmap", stem + "_heatmap.png"},
                                     {"de00_to_target", variant.deltaEToTarget},
-                                    {"de00_to_nearest_sibling", nearest[member]},
-                                    {"kept", variant.kept},
-                                    {"genome", genomeToJson(material.genome)}};
+                                    {"de00_to_nearest_sibling", nearest[member]}};
+    if (!set.lightings.empty()) {
+        nlohmann::ordered_json byLighting = nlohmann::ordered_json::object();
+        for (std::size_t lighting = 0; lighting < set.lightings.size(); ++lighting)
+            byLighting[set.lightings[lighting]] = {
+                {"to_target", variant.deltaEUnder(lighting)},
+                {"to_nearest_sibling", set.nearestSibling(lighting)[member]}};
+        entry["de00_by_lighting"] = std::move(byLighting);
+    }
+    entry["kept"] = variant.kept;
+    entry["genome"] = genomeToJson(material.genome);
     if (variant.genome.carriesKappa()) entry["base_kappa"] = material.baseKappa;
     return entry;
 }
 
 nlohmann::ordered_json requestJson(const VariantRun& run) {
     const VariantRequest& request = run.request;
-    return {{"count", request.count},
-            {"band", {request.band.low, request.band.high}},
-            {"min_apart", request.minApart},
-            {"seed", request.seed},
-            {"hue_variety", request.kappaGenes == KappaGenes::On},
-            {"size", run.size},
-            {"fitness_size", run.fitnessSize}};
+    nlohmann::ordered_json json = {{"count", request.count},
+                                   {"band", {request.band.low, request.band.high}},
+                                   {"min_apart", request.minApart},
+                                   {"seed", request.seed},
+                                   {"hue_variety", request.kappaGenes == KappaGenes::On},
+                                   {"size", run.size},
+                                   {"fitness_size", run.fitnessSize}};
+    if (!request.lightings.empty()) json["lightings"] = request.lightings;
+    return json;
+}
+
+nlohmann::ordered_json pairwiseByLighting(const VariantSet& set) {
+    nlohmann::ordered_json matrices = nlohmann::ordered_json::object();
+    for (std::size_t lighting = 0; lighting < set.lightings.size(); ++lighting)
+        matrices[set.lightings[lighting]] = set.pairwiseUnder(lighting);
+    return matrices;
 }
 
 nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
@@ -112,8 +148,9 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
     report.update(nlohmann::ordered_json{{"met", met},
                                          {"summary", variantSummary(run, set)},
                                          {"variants", std::move(variants)},
-                                         {"pairwise_de00", set.pairwise},
-                                         {"smallest_pairwise_de00", set.smallestPairwise},
+                                         {"pairwise_de00", set.pairwise}});
+    if (!set.lightings.empty()) report["pairwise_de00_by_lighting"] = pairwiseByLighting(set);
+    report.update(nlohmann::ordered_json{{"smallest_pairwise_de00", set.smallestPairwise},
                                          {"evaluations", run.evaluations},
                                          {"archived", run.archived},
                                          {"output_renders", set.outputRenders},
@@ -126,8 +163,9 @@ std::string variantSummary(const VariantRun& run, const VariantSet& set) {
     const VariantRequest& request = run.request;
     std::string text = std::to_string(set.variants.size()) + " of " +
                        std::to_string(request.count) + " variants in band " +
-                       describe(request.band) + ", at least " + format("%g", request.minApart) +
-                       " apart";
+                       describe(request.band);
+    if (!request.lightings.empty()) text += " under " + listOfLightings(request.lightings);
+    text += ", at least " + format("%g", request.minApart) + " apart";
     if (set.variants.size() > 1)
         text += " (smallest pairwise " + format("%.2f", set.smallestPairwise) + ")";
     text += ", " + std::to_string(run.evaluations) + " evaluations";

@@ -24,6 +24,7 @@
 #include "experiment/Font.h"
 #include "io/MaterialFile.h"
 #include "io/Preset.h"
+#include "render/LightingScenes.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
 
@@ -46,24 +47,37 @@ struct VariantRun {
 // them reports the figures `matevo compare` finds in its files.
 RenderGenomes asStoredInPng(RenderGenomes render);
 
+// Renders under each of `lit`'s lightings (one RenderGenomes each, LightingMeasure.h) at
+// size x size, as stored in PNG files (asStoredInPng): what a variant search is given.
+LightingRenders renderUnderEachLighting(const std::vector<LitScene>& lit,
+                                        const MaterialFamily& family,
+                                        const std::array<double, 3>& kappa, int size);
+
 // "variant_007": the index in the whole set, with three digits, or as many as the last index
 // of a set of `count` needs (a set of 1001 to 10000 variants: "variant_0007").
 std::string variantStem(std::size_t index, std::size_t count = 0);
 
 // One variant's entry in a report: its index in the whole set, its files, ΔE00 to the target
-// and to its nearest sibling (`nearest`, VariantSet::nearestSibling), kept or not, genome (and
-// its own kappa when it carries kappa genes). `member` is its place in `set`.
+// and to its nearest sibling (`nearest`, VariantSet::nearestSibling), with named lightings the
+// same per lighting ("de00_by_lighting"), kept or not, genome (and its own kappa when it
+// carries kappa genes). `member` is its place in `set`.
 nlohmann::ordered_json variantEntry(const Preset& preset, const VariantSet& set, std::size_t member,
                                     std::size_t index, std::size_t count,
                                     const std::vector<double>& nearest);
 
-// The request as a report states it: count, band, distance, seed, hue variety and the two image
-// sizes.
+// The request as a report states it: count, band, distance, seed, hue variety, the two image
+// sizes and the lightings when they are named.
 nlohmann::ordered_json requestJson(const VariantRun& run);
 
+// A set's pairwise ΔE00 matrix under each named lighting, keyed by its name in the request's
+// order ("pairwise_de00_by_lighting").
+nlohmann::ordered_json pairwiseByLighting(const VariantSet& set);
+
 // The report: request, what made it (when known), per variant (file, ΔE00 to the target, to its
-// nearest sibling, genome), the pairwise ΔE00 matrix, the smallest pairwise distance, evaluations,
-// wall time, seed, and whether the request was met with a one-line summary.
+// nearest sibling, genome), the pairwise ΔE00 matrix (and with named lightings one per
+// lighting), the smallest pairwise distance under any lighting, evaluations, wall time, seed,
+// and whether the request was met with a one-line summary. The unnamed figures are those of the
+// first lighting, the one the images show.
 nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
                                      const VariantSet& set);
 

@@ -46,7 +46,7 @@ Genome withKappaGenes(Genome genome, const std::array<double, 3>& presetKappa,
 }  // namespace
 
 VariantSearch::VariantSearch(const VariantRequest& request, const VariantSearchSettings& settings,
-                             GenomeRenderCache cache)
+                             LightingRenderCache cache)
     : request_(request),
       settings_(settings),
       searchBand_(request.band.inset(settings.bandMargin)),
@@ -58,18 +58,21 @@ VariantSearch::VariantSearch(const VariantRequest& request, const VariantSearchS
 Result<std::unique_ptr<VariantSearch>> VariantSearch::start(const MaterialInstance& target,
                                                             const VariantRequest& request,
                                                             const VariantSearchSettings& settings,
-                                                            RenderGenomes render) {
-    auto cache = GenomeRenderCache::create(std::move(render), target.genome);
+                                                            const LightingRenders& render) {
+    if (render.count() != std::max<std::size_t>(1, request.lightings.size()))
+        return internalError("the variant search was given " + std::to_string(render.count()) +
+                             " renderings for " + std::to_string(request.lightings.size()) +
+                             " lightings");
+    auto cache = LightingRenderCache::create(render, target.genome);
     if (!cache) return cache.error();
     std::unique_ptr<VariantSearch> search(
         new VariantSearch(request, settings, std::move(cache).value()));
 
     if (auto rendered = search->cache_.renderMissing(request.keep); !rendered)
         return rendered.error();
-    for (const Genome& kept : request.keep) {
-        const GenomeRender& keptRender = search->cache_.at(kept);
-        search->archive_.pin(kept, keptRender.lab, keptRender.deltaEToTarget);
-    }
+    for (const Genome& kept : request.keep)
+        search->archive_.pin(kept, search->cache_.labs(kept),
+                             search->cache_.deltaEsToTarget(kept));
 
     // Two streams from the one seed: the initial variants and the GA's operators.
     SplitMix64 seeds(request.seed);
@@ -115,16 +118,17 @@ void VariantSearch::score(std::span<const Genome> genomes, std::span<double> fit
     }
     for (const Genome& genome : genomes) {
         seen_.insert(genome);
-        const GenomeRender& render = cache_.at(genome);
-        const double deltaE = render.deltaEToTarget;
+        std::vector<double> deltaEs = cache_.deltaEsToTarget(genome);
+        const double deltaE = worstDeltaE(request_.band, deltaEs);
         if (std::isnan(progress_.closestDeltaE) ||
             request_.band.violation(deltaE) < request_.band.violation(progress_.closestDeltaE))
             progress_.closestDeltaE = deltaE;
-        if (!searchBand_.contains(deltaE) || listed(request_.exclude, genome) ||
+        if (!inBandUnderEvery(searchBand_, deltaEs) || listed(request_.exclude, genome) ||
             novelty_.contains(genome))
             continue;
         // Measured once against the whole archive: for the offer and as the novelty.
-        const std::vector<double> distances = archive_.distancesTo(render.lab);
+        LabsPerLighting labs = cache_.labs(genome);
+        const std::vector<double> distances = archive_.distancesTo(labs);
         Novelty entry{std::numeric_limits<double>::infinity(), 0, archive_.lastId()};
         for (std::size_t i = 0; i < distances.size(); ++i)
             if (distances[i] < entry.nearest && !(archive_.members()[i].genome == genome)) {
@@ -132,32 +136,32 @@ void VariantSearch::score(std::span<const Genome> genomes, std::span<double> fit
                 entry.nearestId = archive_.members()[i].id;
             }
         novelty_.emplace(genome, entry);
-        archive_.offer(genome, render.lab, deltaE, distances);
+        archive_.offer(genome, std::move(labs), std::move(deltaEs), distances);
     }
     // Novelty is capped: beyond twice the spacing asked for, more distance buys nothing.
     const double cap = 2 * archive_.minApart();
     for (std::size_t i = 0; i < genomes.size(); ++i) {
-        const GenomeRender& render = cache_.at(genomes[i]);
-        const double violation = searchBand_.violation(render.deltaEToTarget);
+        const double violation = bandViolation(searchBand_, cache_.deltaEsToTarget(genomes[i]));
         if (violation > 0)
             fitness[i] = violation;
         else
-            fitness[i] =
-                settings_.novelty ? -std::min(cap, novelty(genomes[i], render.lab)) : 0.0;
+            fitness[i] = settings_.novelty ? -std::min(cap, novelty(genomes[i])) : 0.0;
     }
     progress_.evaluations = cache_.renderCount();
     progress_.archived = archive_.size();
 }
 
-double VariantSearch::novelty(const Genome& genome, const LabImage& lab) {
+double VariantSearch::novelty(const Genome& genome) {
     Novelty& entry = novelty_[genome];
     if (entry.nearestId != 0 && !archive_.holds(entry.nearestId))
         entry = {};  // the nearest member left: measure again from scratch
     if (entry.nearestId == 0 && entry.checkedUpTo == 0)
         entry.nearest = std::numeric_limits<double>::infinity();
+    if (archive_.lastId() <= entry.checkedUpTo) return entry.nearest;
+    const LabsPerLighting labs = cache_.labs(genome);
     for (const ArchivedVariant& member : archive_.members()) {
         if (member.id <= entry.checkedUpTo || member.genome == genome) continue;
-        const double distance = meanDeltaE00(lab, member.lab);
+        const double distance = apartUnderEvery(labs, member.labs);
         if (distance < entry.nearest) {
             entry.nearest = distance;
             entry.nearestId = member.id;

@@ -7,7 +7,9 @@
 // in-band render is offered to that archive (VariantArchive). The population starts from
 // variants of the target made by the paper's mutation, since variants are wanted near it.
 // One generation per step(), so the editor can show progress. All rendering goes through a
-// RenderGenomes at the fitness resolution; the search never touches a GPU API itself.
+// RenderGenomes at the fitness resolution, one per lighting the set must hold under
+// (LightingMeasure.h): band and spacing then hold under every one; the search never touches a
+// GPU API itself.
 // Deterministic for a seed: the only parallel work (rendering, ΔE00) does not depend on the
 // thread count.
 #include <cstddef>
@@ -15,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -27,6 +30,7 @@
 #include "material/MaterialInstance.h"
 #include "variants/DeltaEBand.h"
 #include "variants/GenomeRenderCache.h"
+#include "variants/LightingRenderCache.h"
 #include "variants/VariantArchive.h"
 
 namespace matevo {
@@ -45,6 +49,10 @@ struct VariantRequest {
     // genes, in FamilyRules' bounds, under the same operators), so variants may differ in
     // colour. Off, every variant has the preset's kappa.
     KappaGenes kappaGenes = KappaGenes::Off;
+    // The lightings the set must hold under, by the names `--env` takes (paper, ambient, studio
+    // or an environment file), in order; the search is given one render per lighting in this
+    // order (LightingRenders). Empty: the preset's own scene alone, unnamed.
+    std::vector<std::string> lightings;
 };
 
 // How the search runs; the defaults are chosen by measurement (docs/variants.md).
@@ -82,14 +90,15 @@ struct VariantSearchHooks {
 
 class VariantSearch {
 public:
-    // Renders the target and the kept variants, then the initial population. The render
-    // function's images all have one size (the fitness resolution) and honour the kappa genes
+    // Renders the target and the kept variants, then the initial population, under every
+    // lighting (one render each, max(1, request.lightings.size()) of them). The render
+    // functions' images all have one size (the fitness resolution) and honour the kappa genes
     // (materialOf). With hue variety the population starts from the target's kappa, brought
     // into the genes' bounds.
     static Result<std::unique_ptr<VariantSearch>> start(const MaterialInstance& target,
                                                         const VariantRequest& request,
                                                         const VariantSearchSettings& settings,
-                                                        RenderGenomes render);
+                                                        const LightingRenders& render);
 
     // One generation; an Error when rendering failed.
     Status step();
@@ -116,9 +125,9 @@ private:
     };
 
     VariantSearch(const VariantRequest& request, const VariantSearchSettings& settings,
-                  GenomeRenderCache cache);
+                  LightingRenderCache cache);
     void score(std::span<const Genome> genomes, std::span<double> fitness);
-    double novelty(const Genome& genome, const LabImage& lab);
+    double novelty(const Genome& genome);
     // Offspring already rendered (or twice in one generation) are mutated again until new, so
     // every generation spends its renders on new materials.
     void renewSeen(std::span<Genome> offspring, Random& random) const;
@@ -127,7 +136,7 @@ private:
     VariantRequest request_;
     VariantSearchSettings settings_;
     DeltaEBand searchBand_;
-    GenomeRenderCache cache_;
+    LightingRenderCache cache_;
     VariantArchive archive_;
     std::optional<GeneticAlgorithm> ga_;
     std::unordered_map<Genome, Novelty, GenomeHash> novelty_;

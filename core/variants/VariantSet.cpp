@@ -28,7 +28,7 @@ std::vector<std::size_t> spreadOrder(const VariantArchive& archive, const DeltaE
             if (taken[i]) continue;
             double score;
             if (order.empty()) {
-                score = -std::abs(archive.members()[i].deltaEToTarget - band.centre());
+                score = -offCentre(band, archive.members()[i].deltaEToTarget);
             } else {
                 score = std::numeric_limits<double>::infinity();
                 for (std::size_t j : order) score = std::min(score, archive.distance(i, j));
@@ -46,66 +46,116 @@ std::vector<std::size_t> spreadOrder(const VariantArchive& archive, const DeltaE
 
 void updateSmallestPairwise(VariantSet& set) {
     double smallest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < set.variants.size(); ++i)
-        for (std::size_t j = i + 1; j < set.variants.size(); ++j)
-            smallest = std::min(smallest, set.pairwise[i][j]);
+    for (std::size_t lighting = 0; lighting <= set.pairwiseUnderOthers.size(); ++lighting) {
+        const DistanceMatrix& pairwise = set.pairwiseUnder(lighting);
+        for (std::size_t i = 0; i < set.variants.size(); ++i)
+            for (std::size_t j = i + 1; j < set.variants.size(); ++j)
+                smallest = std::min(smallest, pairwise[i][j]);
+    }
     set.smallestPairwise = std::isinf(smallest) ? 0.0 : smallest;
+}
+
+// Images of a batch of genomes under one lighting, checked to be one per genome.
+Result<std::vector<Image>> renderBatch(const RenderGenomes& render,
+                                       std::span<const Genome> genomes) {
+    auto images = render(genomes);
+    if (!images) return images.error();
+    if (images->size() != genomes.size())
+        return internalError("the renderer returned " + std::to_string(images->size()) +
+                             " images for " + std::to_string(genomes.size()) + " genomes");
+    return images;
+}
+
+// Adds a row and column of distances (to the members before it) to a matrix.
+void addToMatrix(DistanceMatrix& matrix, std::vector<double> distances) {
+    for (std::size_t i = 0; i < distances.size(); ++i) matrix[i].push_back(distances[i]);
+    distances.push_back(0.0);
+    matrix.push_back(std::move(distances));
+}
+
+void removeFromMatrix(DistanceMatrix& matrix, std::size_t index) {
+    const auto offset = std::ptrdiff_t(index);
+    matrix.erase(matrix.begin() + offset);
+    for (auto& row : matrix) row.erase(row.begin() + offset);
 }
 
 }  // namespace
 
-std::vector<double> VariantSet::nearestSibling() const {
+double Variant::deltaEUnder(std::size_t lighting) const {
+    return lighting == 0 ? deltaEToTarget : deltaEUnderOthers.at(lighting - 1);
+}
+
+const DistanceMatrix& VariantSet::pairwiseUnder(std::size_t lighting) const {
+    return lighting == 0 ? pairwise : pairwiseUnderOthers.at(lighting - 1);
+}
+
+std::vector<double> VariantSet::nearestSibling(std::size_t lighting) const {
+    const DistanceMatrix& matrix = pairwiseUnder(lighting);
     std::vector<double> nearest(variants.size(), 0.0);
     for (std::size_t i = 0; i < variants.size(); ++i) {
         double value = std::numeric_limits<double>::infinity();
         for (std::size_t j = 0; j < variants.size(); ++j)
-            if (j != i) value = std::min(value, pairwise[i][j]);
+            if (j != i) value = std::min(value, matrix[i][j]);
         nearest[i] = std::isinf(value) ? 0.0 : value;
     }
     return nearest;
 }
 
 Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const VariantRequest& request,
-                                    const Genome& target, const RenderGenomes& outputRender) {
+                                    const Genome& target, const LightingRenders& outputRender) {
+    const std::size_t lightings = outputRender.count();
+    if (lightings == 0) return internalError("a variant set needs at least one lighting");
     VariantSet set;
-    auto targetImages = outputRender(std::span(&target, 1));
-    if (!targetImages) return targetImages.error();
-    if (targetImages->size() != 1) return Error{"the renderer returned no image for the target"};
-    set.target = std::move(targetImages->front());
-    const LabImage targetLab = toLabImage(set.target);
+    set.lightings = request.lightings;
+    set.pairwiseUnderOthers.resize(lightings - 1);
+    LabsPerLighting targetLabs;
+    for (const RenderGenomes& render : outputRender.perLighting) {
+        auto targetImages = renderBatch(render, std::span(&target, 1));
+        if (!targetImages) return targetImages.error();
+        targetLabs.push_back(toLabImage(targetImages->front()));
+        if (set.target.width == 0) set.target = std::move(targetImages->front());
+    }
 
     const std::vector<std::size_t> order = spreadOrder(archive, request.band);
     const auto wanted = std::size_t(std::max(request.count, 0));
-    std::vector<LabImage> acceptedLabs;
+    std::vector<LabsPerLighting> acceptedLabs;
     std::size_t next = 0;
     while (set.variants.size() < wanted && next < order.size()) {
-        // Render as many as are still missing, in one batch.
+        // Render as many as are still missing, in one batch per lighting.
         const std::size_t batchEnd = std::min(order.size(), next + wanted - set.variants.size());
         std::vector<Genome> genomes;
         for (std::size_t k = next; k < batchEnd; ++k)
             genomes.push_back(archive.members()[order[k]].genome);
-        auto images = outputRender(genomes);
-        if (!images) return images.error();
-        if (images->size() != genomes.size())
-            return Error{"the renderer returned " + std::to_string(images->size()) +
-                         " images for " + std::to_string(genomes.size()) + " genomes"};
-        set.outputRenders += genomes.size();
+        std::vector<std::vector<Image>> images;  // per lighting, per genome
+        for (const RenderGenomes& render : outputRender.perLighting) {
+            auto batch = renderBatch(render, genomes);
+            if (!batch) return batch.error();
+            images.push_back(std::move(batch).value());
+        }
+        set.outputRenders += genomes.size() * lightings;
         for (std::size_t k = 0; k < genomes.size() && set.variants.size() < wanted; ++k) {
             const ArchivedVariant& member = archive.members()[order[next + k]];
-            LabImage lab = toLabImage((*images)[k]);
-            const double deltaE = meanDeltaE00(targetLab, lab);
-            std::vector<double> distances;
+            LabsPerLighting labs;
+            for (const auto& batch : images) labs.push_back(toLabImage(batch[k]));
+            const std::vector<double> deltaEs = deltaEPerLighting(targetLabs, labs);
+            // distances[l][i]: to accepted variant i under lighting l.
+            std::vector<std::vector<double>> distances(lightings);
             bool apart = true;
-            for (const LabImage& other : acceptedLabs) {
-                distances.push_back(meanDeltaE00(lab, other));
-                apart = apart && distances.back() >= request.minApart;
+            for (const LabsPerLighting& other : acceptedLabs) {
+                const std::vector<double> perLighting = deltaEPerLighting(labs, other);
+                for (std::size_t l = 0; l < lightings; ++l) {
+                    distances[l].push_back(perLighting[l]);
+                    apart = apart && perLighting[l] >= request.minApart;
+                }
             }
-            if (!member.pinned && !(request.band.contains(deltaE) && apart)) continue;
-            for (std::size_t i = 0; i < distances.size(); ++i) set.pairwise[i].push_back(distances[i]);
-            distances.push_back(0.0);
-            set.pairwise.push_back(std::move(distances));
-            set.variants.push_back({member.genome, std::move((*images)[k]), deltaE, member.pinned});
-            acceptedLabs.push_back(std::move(lab));
+            if (!member.pinned && !(inBandUnderEvery(request.band, deltaEs) && apart)) continue;
+            addToMatrix(set.pairwise, std::move(distances[0]));
+            for (std::size_t l = 1; l < lightings; ++l)
+                addToMatrix(set.pairwiseUnderOthers[l - 1], std::move(distances[l]));
+            set.variants.push_back({member.genome, std::move(images[0][k]), deltaEs[0],
+                                    member.pinned,
+                                    std::vector<double>(deltaEs.begin() + 1, deltaEs.end())});
+            acceptedLabs.push_back(std::move(labs));
         }
         next = batchEnd;
     }
@@ -115,10 +165,9 @@ Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const Variant
 
 void removeVariant(VariantSet& set, std::size_t index) {
     if (index >= set.variants.size()) return;
-    const auto offset = std::ptrdiff_t(index);
-    set.variants.erase(set.variants.begin() + offset);
-    set.pairwise.erase(set.pairwise.begin() + offset);
-    for (auto& row : set.pairwise) row.erase(row.begin() + offset);
+    set.variants.erase(set.variants.begin() + std::ptrdiff_t(index));
+    removeFromMatrix(set.pairwise, index);
+    for (DistanceMatrix& matrix : set.pairwiseUnderOthers) removeFromMatrix(matrix, index);
     updateSmallestPairwise(set);
 }
 

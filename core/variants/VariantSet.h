@@ -3,14 +3,18 @@
 // resolution and checked there. Members are picked farthest-first (each next one the member
 // farthest from those already picked), so the set spreads over the band; each is rendered at
 // the output size and kept only if it holds there (inside the band, at least minApart from
-// every variant kept before it); one that fails is replaced by the next member.
+// every variant kept before it); one that fails is replaced by the next member. With several
+// lightings (LightingMeasure.h) every member is rendered under each and must hold under each;
+// the images are those of the first lighting.
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "common/Image.h"
 #include "common/Result.h"
 #include "evolve/RenderGenomes.h"
 #include "genome/Genome.h"
+#include "variants/LightingMeasure.h"
 #include "variants/VariantArchive.h"
 #include "variants/VariantSearch.h"
 
@@ -21,25 +25,40 @@ struct Variant {
     Image image;                // at the output size, as the caller's renderer gave it
     double deltaEToTarget = 0;  // mean ΔE00 to the target, at the output size
     bool kept = false;          // the user kept it (VariantRequest::keep)
+    // Under each further lighting of the request (after the first, which the two above are
+    // of), in order: the mean ΔE00 to the target's render under that lighting.
+    std::vector<double> deltaEUnderOthers;
+
+    // The mean ΔE00 to the target under lighting `lighting` (0: the first).
+    double deltaEUnder(std::size_t lighting) const;
 };
+
+using DistanceMatrix = std::vector<std::vector<double>>;
 
 struct VariantSet {
-    Image target;
+    Image target;  // under the first lighting
     std::vector<Variant> variants;
-    // Mean ΔE00 between variants i and j at the output size; 0 on the diagonal.
-    std::vector<std::vector<double>> pairwise;
-    // The smallest pairwise distance; 0 for fewer than two variants.
+    // Mean ΔE00 between variants i and j at the output size, under the first lighting; 0 on the
+    // diagonal.
+    DistanceMatrix pairwise;
+    // The same under each further lighting, in the request's order.
+    std::vector<DistanceMatrix> pairwiseUnderOthers;
+    // The smallest pairwise distance under any lighting; 0 for fewer than two variants.
     double smallestPairwise = 0;
-    std::size_t outputRenders = 0;  // output-size renders spent on checking
+    std::size_t outputRenders = 0;  // output-size renders spent on checking (one per lighting)
+    // The request's lightings the figures are measured under (VariantRequest::lightings).
+    std::vector<std::string> lightings;
 
-    // For each variant, the distance to its nearest sibling (0 when alone).
-    std::vector<double> nearestSibling() const;
+    const DistanceMatrix& pairwiseUnder(std::size_t lighting) const;
+    // For each variant, the distance to its nearest sibling (0 when alone) under `lighting`.
+    std::vector<double> nearestSibling(std::size_t lighting = 0) const;
 };
 
-// outputRender draws at the output size; give it the images as they will be stored (e.g.
-// quantised as in a PNG) so that the figures are the ones found in the files.
+// outputRender draws at the output size, one render per lighting as for VariantSearch::start;
+// give it the images as they will be stored (e.g. quantised as in a PNG) so that the figures
+// are the ones found in the files.
 Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const VariantRequest& request,
-                                    const Genome& target, const RenderGenomes& outputRender);
+                                    const Genome& target, const LightingRenders& outputRender);
 
 // Drops variant `index` (the user discarded it), keeping the matrix and smallest distance right.
 void removeVariant(VariantSet& set, std::size_t index);

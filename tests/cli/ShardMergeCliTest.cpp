@@ -156,6 +156,30 @@ TEST(ShardMerge, MistakesExitTwoWithOneLineAndWriteNothing) {
     expectSameFiles(folder / "whole", out);
 }
 
+// A share records the lightings its set holds under: shares of one list merge into the bytes of
+// one run, shares of different lists are refused with the field named.
+TEST(ShardMerge, SharesRecordTheirLightingsAndDifferentListsAreRefused) {
+    testing::ScratchFolder folder("shards");
+    const std::string both = " --env paper,studio";
+    ASSERT_EQ(runMatevo(kRequest + both + " --out " + shellQuoted(folder / "whole")).exitCode, 0);
+    ASSERT_EQ(share(folder / "s0", 0, 2, both).exitCode, 0);
+    ASSERT_EQ(share(folder / "s1", 1, 2, both).exitCode, 0);
+    ASSERT_EQ(share(folder / "p1", 1, 2, " --env paper").exitCode, 0);
+    const auto report = nlohmann::json::parse(std::ifstream(folder / "s0/report.json"));
+    EXPECT_EQ(report["request"]["lightings"], nlohmann::json({"paper", "studio"}));
+    const auto out = folder / "merged";
+    const auto refused = runMatevo("merge " + shellQuoted(folder / "s0") + " " +
+                                   shellQuoted(folder / "p1") + " --out " + shellQuoted(out));
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+    EXPECT_NE(refused.err.find("request.lightings"), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(out));
+    const auto joined = runMatevo("merge " + shellQuoted(folder / "s1") + " " +
+                                  shellQuoted(folder / "s0") + " --out " + shellQuoted(out));
+    ASSERT_EQ(joined.exitCode, 0) << joined.err;
+    expectSameFiles(folder / "whole", out);
+}
+
 // Six blocks of two, share 0/2 computing three of them: long enough to be killed between blocks.
 const std::string kResumable =
     "variants --preset validation_metal --count 12 --block 2 --band 2,5 --min-apart 2 --seed 5"

@@ -64,7 +64,7 @@ TEST(SceneViewWorker, TheWindowSamplesTheRenderersDisplayImageOnItsOwnDevice) {
     SceneViewJob job{{}, loaded->preset, kPresetFile, {}};
     job.controls.mesh = 0;      // sphere
     job.controls.instances = 4;
-    job.controls.lighting = 2;  // studio
+    setLightingChoice("studio", job.preset.scene);
     job.controls.exposure = 0.5f;
     job.controls.width = 96;
     job.controls.height = 64;

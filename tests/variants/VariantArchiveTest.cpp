@@ -22,7 +22,7 @@ LabImage greyPatch(float value) {
 Genome genomeNumber(double n) { return Genome{{1.2, 0.8, 0.03, n}}; }
 
 bool offer(VariantArchive& archive, const Genome& genome, const LabImage& lab) {
-    return archive.offer(genome, lab, 3.0, archive.distancesTo(lab));
+    return archive.offer(genome, {lab}, {3.0}, archive.distancesTo({lab}));
 }
 
 void expectSpacing(const VariantArchive& archive) {
@@ -30,7 +30,7 @@ void expectSpacing(const VariantArchive& archive) {
         for (std::size_t j = i + 1; j < archive.size(); ++j) {
             EXPECT_GE(archive.distance(i, j), archive.minApart()) << i << ", " << j;
             EXPECT_NEAR(archive.distance(i, j),
-                        meanDeltaE00(archive.members()[i].lab, archive.members()[j].lab), 1e-12);
+                        meanDeltaE00(archive.members()[i].labs[0], archive.members()[j].labs[0]), 1e-12);
             EXPECT_FALSE(archive.members()[i].genome == archive.members()[j].genome);
         }
 }
@@ -69,7 +69,7 @@ TEST(VariantArchive, ANewcomerWithMoreRoomTakesTheNiche) {
 
 TEST(VariantArchive, PinnedMembersAreNeverReplaced) {
     VariantArchive archive(2.0);
-    archive.pin(genomeNumber(0.1), greyPatch(0.20f), 3.0);
+    archive.pin(genomeNumber(0.1), {greyPatch(0.20f)}, {3.0});
     offer(archive, genomeNumber(0.2), greyPatch(0.40f));
     EXPECT_FALSE(offer(archive, genomeNumber(0.3), greyPatch(0.19f)));
     EXPECT_EQ(archive.members()[0].genome, genomeNumber(0.1));
@@ -86,6 +86,25 @@ TEST(VariantArchive, IdsGrowAndReplacedMembersLeave) {
     EXPECT_TRUE(archive.holds(archive.members()[0].id));
     EXPECT_EQ(archive.members()[0].id, archive.lastId());
     EXPECT_GT(archive.members()[0].id, archive.members()[1].id);
+}
+
+// Two lightings: the patches stand apart under the first and are twins under the second, as
+// two variants may look distinct under the paper's light and alike in the studio.
+TEST(VariantArchive, UnderSeveralLightingsApartMeansApartUnderEveryOne) {
+    VariantArchive archive(2.0);
+    const LabsPerLighting first{greyPatch(0.20f), greyPatch(0.30f)};
+    const LabsPerLighting second{greyPatch(0.40f), greyPatch(0.301f)};
+    ASSERT_GE(meanDeltaE00(first[0], second[0]), 2.0);
+    ASSERT_LT(meanDeltaE00(first[1], second[1]), 2.0);
+    ASSERT_TRUE(archive.offer(genomeNumber(0.1), first, {3.0, 3.0}, archive.distancesTo(first)));
+    const std::vector<double> distances = archive.distancesTo(second);
+    EXPECT_NEAR(distances[0], meanDeltaE00(first[1], second[1]), 1e-12);
+    archive.offer(genomeNumber(0.2), second, {3.0, 3.0}, distances);
+    EXPECT_EQ(archive.size(), 1u);
+    // Apart under both: joins.
+    const LabsPerLighting third{greyPatch(0.40f), greyPatch(0.50f)};
+    EXPECT_TRUE(archive.offer(genomeNumber(0.3), third, {3.0, 3.0}, archive.distancesTo(third)));
+    EXPECT_EQ(archive.size(), 2u);
 }
 
 }  // namespace

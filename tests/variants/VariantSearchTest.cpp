@@ -77,7 +77,7 @@ TEST(VariantSearch, DeliversTheRequestedSetInsideTheBandAndApart) {
     auto search = runSearch(request);
     ASSERT_TRUE(search);
     for (const auto& member : search->archive().members())
-        EXPECT_TRUE(request.band.contains(member.deltaEToTarget)) << member.deltaEToTarget;
+        EXPECT_TRUE(request.band.contains(member.deltaEToTarget[0])) << member.deltaEToTarget[0];
     for (std::size_t i = 0; i < search->archive().size(); ++i)
         for (std::size_t j = i + 1; j < search->archive().size(); ++j)
             EXPECT_GE(search->archive().distance(i, j), request.minApart);
@@ -262,7 +262,8 @@ TEST(VariantSearch, ARenderFailureIsAnError) {
         if (++calls > 1) return Error{"device lost"};
         return cpuRenderer(8)(genomes);
     };
-    auto search = VariantSearch::start(kValidationMetal, smallRequest(), {}, failing);
+    auto search =
+        VariantSearch::start(kValidationMetal, smallRequest(), {}, RenderGenomes(failing));
     ASSERT_FALSE(search.ok());
     EXPECT_EQ(search.error().message, "device lost");
 }
