@@ -5,9 +5,9 @@
 #include <algorithm>
 
 #include "color/ImageDifference.h"
+#include "common/ParallelFor.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "experiment/RunSeeds.h"
-#include "material/ParallelFor.h"
 #include "variants/ImageFitness.h"
 
 namespace matevo {

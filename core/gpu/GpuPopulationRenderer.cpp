@@ -3,8 +3,8 @@
 #include <cstring>
 
 #include "color/LabImage.h"
+#include "common/ParallelFor.h"
 #include "gpu/HeatmapColormap.h"
-#include "material/ParallelFor.h"
 
 namespace matevo::gpu {
 namespace {

@@ -1,4 +1,4 @@
-#include "material/ParallelFor.h"
+#include "common/ParallelFor.h"
 
 #include <algorithm>
 #include <atomic>
