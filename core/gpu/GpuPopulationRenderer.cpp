@@ -29,7 +29,7 @@ Result<TexelBuffer> uploadLab(const Device& device, const Image& image) {
 
 Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
     const Device& device, const FgdTables& tables, const SceneTextures& textures,
-    const DeltaE00Pass::Colormap& colormap) {
+    const DeltaE00Pass::Colormap& colormap, CancelToken cancel) {
     auto runner = CommandRunner::create(device);
     if (!runner) return runner.error();
     auto renderer = GpuSphereRenderer::create(device, *runner, tables, textures);
@@ -41,6 +41,7 @@ Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
     std::unique_ptr<GpuPopulationRenderer> result(new GpuPopulationRenderer);
     result->device_ = &device;
     result->tables_ = &tables;
+    result->cancel_ = std::move(cancel);
     result->runner_ = std::move(runner).value();
     result->renderer_ = std::move(renderer).value();
     result->heatmapColormap_ = std::move(colormapBuffer).value();
@@ -49,11 +50,11 @@ Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
 
 Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::createHeadless(
     const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures,
-    const DeltaE00Pass::Colormap& colormap) {
+    const DeltaE00Pass::Colormap& colormap, CancelToken cancel) {
     auto context = GpuContext::createHeadless(options);
     if (!context) return context.error();
     auto ownContext = std::make_unique<GpuContext>(std::move(context).value());
-    auto result = create(ownContext->device, tables, textures, colormap);
+    auto result = create(ownContext->device, tables, textures, colormap, std::move(cancel));
     if (!result) return result.error();
     (*result)->ownContext_ = std::move(ownContext);
     return result;
@@ -143,6 +144,7 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     const SceneSettings& scene, int size, const EvaluationOptions& options,
     std::span<const DisplayTile* const> tiles) {
     if (size <= 0) return Error{"GPU render: image size must be positive"};
+    if (cancel_.cancelled()) return cancelledError("rendering cancelled");
     const TargetKey key{target, scene, size};
     if (targetKey_ != key)
         if (auto rendered = renderTarget(key); !rendered) return rendered.error();
@@ -205,6 +207,7 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
 
 Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
                                              const SceneSettings& scene, const DisplayTile& tile) {
+    if (cancel_.cancelled()) return cancelledError("rendering cancelled");
     const ImageBatchShape shape{tile.width, tile.height, 1};
     auto buffer = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
     if (!buffer) return buffer.error();
@@ -222,6 +225,7 @@ Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
 Result<std::vector<Image>> GpuPopulationRenderer::render(
     std::span<const MaterialInstance> materials, const SceneSettings& scene, int size) {
     if (size <= 0) return Error{"GPU render: image size must be positive"};
+    if (cancel_.cancelled()) return cancelledError("rendering cancelled");
     return renderer_.render(runner_, materials, scene, size);
 }
 

@@ -14,9 +14,9 @@ Result<std::unique_ptr<GpuPopulationRenderer>> createGpuRenderer(const RendererR
                                                                  const SceneTextures& textures) {
     if (request.device)
         return GpuPopulationRenderer::create(*request.device, defaultFgdTables(), textures,
-                                             heatmapColormap());
+                                             heatmapColormap(), request.cancel);
     return GpuPopulationRenderer::createHeadless(request.headless, defaultFgdTables(), textures,
-                                                 heatmapColormap());
+                                                 heatmapColormap(), request.cancel);
 }
 
 }  // namespace
@@ -33,7 +33,7 @@ Result<std::unique_ptr<PopulationRenderer>> tryCreatePopulationRenderer(
                      request.who.c_str(), renderer.error().message.c_str());
     }
     return std::unique_ptr<PopulationRenderer>(
-        std::make_unique<CpuPopulationRenderer>(textures, request.cancelled));
+        std::make_unique<CpuPopulationRenderer>(textures, request.cancel));
 }
 
 std::unique_ptr<PopulationRenderer> createPopulationRenderer(const RendererRequest& asked,

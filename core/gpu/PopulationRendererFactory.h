@@ -4,11 +4,11 @@
 // the one-line fallback notice on stderr and hands back the CPU reference renderer, which draws
 // the same pictures (to within the cross-check of tests/gpu), unless the request forbids the
 // fallback (the commands' --no-fallback: a farm that wants the GPU or nothing).
-#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
 
+#include "common/CancelToken.h"
 #include "gpu/GpuContext.h"
 #include "render/PopulationRenderer.h"
 
@@ -25,8 +25,9 @@ struct RendererRequest {
     // null: on a headless device of its own, created with `headless`.
     const Device* device = nullptr;
     GpuContextOptions headless;
-    // The CPU renderer asks this between images and stops when it answers true.
-    std::function<bool()> cancelled;
+    // Either renderer stops at its next image (CPU) or submission (GPU) once this is
+    // cancelled, its call ending with cancelledError().
+    CancelToken cancel;
     // No CPU renderer in place of an unusable GPU: tryCreatePopulationRenderer fails instead.
     bool noFallback = false;
 };

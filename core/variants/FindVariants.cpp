@@ -7,10 +7,11 @@ namespace matevo {
 Result<FoundVariants> findVariants(const MaterialInstance& target, const VariantRequest& request,
                                    const VariantSearchSettings& settings,
                                    RenderGenomes fitnessRender, const RenderGenomes& outputRender,
-                                   const VariantSearchHooks& hooks) {
+                                   const CancelToken& cancel,
+                                   const VariantSearchObserver& onGeneration) {
     auto search = VariantSearch::start(target, request, settings, std::move(fitnessRender));
     if (!search) return search.error();
-    if (auto ran = (*search)->run(hooks); !ran) return ran.error();
+    if (auto ran = (*search)->run(cancel, onGeneration); !ran) return ran.error();
     auto set = chooseVariantSet((*search)->archive(), request, target.genome, outputRender);
     if (!set) return set.error();
     return FoundVariants{std::move(set).value(), (*search)->progress()};

@@ -1,9 +1,10 @@
 #pragma once
 // A whole variant request, the one way every caller runs it (`matevo variants`, the editor's
 // Variants mode, the bench): the quality-diversity search (VariantSearch::run) at the fitness
-// resolution until it is finished or the caller stops it (hooks), then the set
-// chosen from its archive and checked at the output resolution (chooseVariantSet). A stopped
-// search still gives the set its archive holds, so a caller can deliver it, marked partial.
+// resolution until it is finished or the caller cancels it, then the set
+// chosen from its archive and checked at the output resolution (chooseVariantSet). A search
+// stopped by `cancel` still gives the set its archive holds, so a caller can deliver it, marked
+// partial.
 #include "common/Result.h"
 #include "evolve/RenderGenomes.h"
 #include "material/MaterialInstance.h"
@@ -22,6 +23,7 @@ struct FoundVariants {
 Result<FoundVariants> findVariants(const MaterialInstance& target, const VariantRequest& request,
                                    const VariantSearchSettings& settings,
                                    RenderGenomes fitnessRender, const RenderGenomes& outputRender,
-                                   const VariantSearchHooks& hooks = {});
+                                   const CancelToken& cancel = {},
+                                   const VariantSearchObserver& onGeneration = {});
 
 }  // namespace matevo
