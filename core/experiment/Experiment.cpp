@@ -86,8 +86,12 @@ Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,
     }
     if (cancel.cancelled()) {
         std::size_t kept = 0;
-        for (std::size_t i = 0; i < records.size(); ++i)
-            if (finished[i]) records[kept++] = std::move(records[i]);
+        for (std::size_t i = 0; i < records.size(); ++i) {
+            if (!finished[i]) continue;
+            // Not onto itself: a self-moved record loses its strings (the preset's name).
+            if (kept != i) records[kept] = std::move(records[i]);
+            ++kept;
+        }
         records.resize(kept);
     }
     return records;
