@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "CommandLine.h"
-#include "common/StopRequest.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "color/Colormap.h"
 #include "io/ImageFile.h"
@@ -40,7 +39,8 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
                                       const std::vector<Individual>& ranked, int size,
                                       const gpu::RendererRequest& rendererRequest,
                                       const std::string& extension, ImageMetric heatmapMetric,
-                                      const std::filesystem::path& outDir) {
+                                      const std::filesystem::path& outDir,
+                                      const CancelToken& cancel) {
     // The images as the files will hold them: PNG rounds colour and alpha to 8 bits.
     const auto asStored = [png = extension == ".png"](const Image& image) {
         return png ? quantizeAsPng(image) : image;
@@ -60,7 +60,7 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
     const EvaluationOptions options;  // heatmaps are drawn below from the images as written
     std::vector<CandidateImageStats> stats;
     Image storedTarget;
-    for (std::size_t first = 0; first < ranked.size() && !stopRequested();
+    for (std::size_t first = 0; first < ranked.size() && !cancel.cancelled();
          first += kEvolveImageBatch) {
         const std::size_t count = std::min<std::size_t>(kEvolveImageBatch, ranked.size() - first);
         std::vector<MaterialInstance> candidates;

@@ -19,6 +19,7 @@
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/ImageMetric.h"
+#include "common/CancelToken.h"
 #include "evolve/GeneticAlgorithm.h"
 
 namespace matevo::cli {
@@ -41,12 +42,14 @@ struct EvolveImagesWritten {
 
 // Renders, compares and writes the ranked population with heatmaps of `heatmapMetric` (ΔE00
 // 0-10 through viridis, ꟻLIP 0-1 through magma); returns the statistics of the candidates
-// written, in rank order (fewer than ranked.size() when stopped early), and what rendered them.
+// written, in rank order (fewer than ranked.size() when `cancel` stopped it between batches),
+// and what rendered them.
 // Throws UsageError when a file cannot be written. `extension` is ".png" or ".exr".
 EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
                                       const std::vector<Individual>& ranked, int size,
                                       const gpu::RendererRequest& rendererRequest,
                                       const std::string& extension, ImageMetric heatmapMetric,
-                                      const std::filesystem::path& outDir);
+                                      const std::filesystem::path& outDir,
+                                      const CancelToken& cancel);
 
 }  // namespace matevo::cli

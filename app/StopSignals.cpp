@@ -2,14 +2,19 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
 
-#include "common/StopRequest.h"
 #include "io/TemporaryFiles.h"
 
 namespace matevo::cli {
 
 namespace {
+
+// What the handler touches: only lock-free atomics (async-signal-safe), never the token's
+// shared state itself. Set before the handlers are installed.
+std::atomic<bool>* stopFlag = nullptr;
+std::atomic<int> stopSignalNumber{0};
 
 // Ends the process with the status the signal itself gives, leaving no temporary file.
 void quit(int signal) {
@@ -19,8 +24,10 @@ void quit(int signal) {
 }
 
 void onStopSignal(int signal) {
-    if (stopRequested() != 0) return quit(signal);  // asked twice: stop now
-    requestStop(signal);
+    if (stopSignalNumber.load(std::memory_order_relaxed) != 0)
+        return quit(signal);  // asked twice: stop now
+    stopSignalNumber.store(signal, std::memory_order_relaxed);
+    stopFlag->store(true, std::memory_order_relaxed);
     constexpr char kNotice[] =
         "\nmatevo: stopping after the current step and keeping what is complete "
         "(again to quit at once)\n";
@@ -38,7 +45,17 @@ void installHandler(void (*handler)(int)) {
 
 }  // namespace
 
-void installStopSignalHandlers() { installHandler(onStopSignal); }
+const CancelToken& stopToken() {
+    static const CancelToken token;
+    return token;
+}
+
+int stopSignal() { return stopSignalNumber.load(std::memory_order_relaxed); }
+
+void installStopSignalHandlers() {
+    stopFlag = stopToken().flag();
+    installHandler(onStopSignal);
+}
 
 void installQuitSignalHandlers() { installHandler(quit); }
 

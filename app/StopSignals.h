@@ -1,10 +1,19 @@
 #pragma once
-// SIGINT and SIGTERM during long commands (evolve, experiment): the first asks the work to stop
-// at its next generation or batch (common/StopRequest.h), so what is complete is written whole
-// and marked partial; a second one ends the process at once.
+// SIGINT and SIGTERM during long commands (evolve, experiment, variants): the first cancels the
+// process's stop token (common/CancelToken.h), which the command passes into core, so the work
+// stops at its next generation or batch and what is complete is written whole and marked
+// partial; a second one ends the process at once.
 #include <string>
 
+#include "common/CancelToken.h"
+
 namespace matevo::cli {
+
+// The token the long commands pass down; cancelled by the first SIGINT or SIGTERM once
+// installStopSignalHandlers() ran.
+const CancelToken& stopToken();
+// The signal that cancelled stopToken(), 0 when none did.
+int stopSignal();
 
 void installStopSignalHandlers();
 // For short commands (render, scene): SIGINT and SIGTERM end them at once, as by default, but

@@ -12,7 +12,6 @@
 #include "PresetOption.h"
 #include "StopSignals.h"
 #include "WorkEstimate.h"
-#include "common/StopRequest.h"
 #include "commands/Commands.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "experiment/Experiment.h"
@@ -232,7 +231,7 @@ int runEvolve(CommandLine& args) {
     // A checkpoint write a kill -9 interrupted earlier left its temporary file there.
     if (checkpointFile) removeStaleTemporaryFilesBeside(*checkpointFile);
     saveState();
-    while (!ga.finished() && !stopRequested()) {
+    while (!ga.finished() && !stopToken().cancelled()) {
         ga.step();
         if (saveDue()) saveState();
         printProgress("generation " + std::to_string(ga.generation()) + "/" +
@@ -253,7 +252,8 @@ int runEvolve(CommandLine& args) {
     if (output) {
         try {
             const auto written = writeEvolveImages(choice, ranked, imageSize, rendererRequest,
-                                                   "." + format, *heatmapMetric, output->staging());
+                                                   "." + format, *heatmapMetric, output->staging(),
+                                                   stopToken());
             addImageStatistics(report, written.candidates);
             report["candidates_written"] = written.candidates.size();
             renderedBy = written.madeBy;
@@ -262,7 +262,7 @@ int runEvolve(CommandLine& args) {
         }
     }
     if (!renderedBy.is_null()) report["made_by"] = renderedBy;
-    if (const int signal = stopRequested()) {
+    if (const int signal = stopSignal()) {
         report["partial"] = true;
         report["stopped_by"] = signalName(signal);
     }
@@ -276,7 +276,7 @@ int runEvolve(CommandLine& args) {
         std::printf("%s\n", report.dump(2).c_str());
     else
         printEvolveSummary(preset, ga, ranked, stdout);
-    if (const int signal = stopRequested()) {
+    if (const int signal = stopSignal()) {
         printMessage("stopped by " + signalName(signal) + " after generation " +
                      std::to_string(ga.generation()) + " of " +
                      std::to_string(preset.ga.generations) +

@@ -16,7 +16,6 @@
 #include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
-#include "common/StopRequest.h"
 #include "experiment/Experiment.h"
 #include "experiment/ExperimentCharts.h"
 #include "experiment/ResultsCsv.h"
@@ -248,7 +247,7 @@ int runInto(const Request& request, OutputFolder& output, const Font& font) {
         ProgressBar progress(totalWork(request));
         int finishedWork = 0;
         for (const auto& choice : request.presets) {
-            if (stopRequested()) break;
+            if (stopToken().cancelled()) break;
             const Preset& preset = choice.preset;
             const RenderGenomes render =
                 makeExperimentRenderer(choice, request.imageSize, request.renderer);
@@ -260,14 +259,14 @@ int runInto(const Request& request, OutputFolder& output, const Font& font) {
             const std::vector<GaSize> sizes =
                 request.sweep ? paperSweep(preset.family) : std::vector{request.settings.size};
             for (const GaSize& size : sizes) {
-                if (stopRequested()) break;
+                if (stopToken().cancelled()) break;
                 ExperimentSettings settings = request.settings;
                 settings.size = size;
                 const std::string label = preset.name + " " + sizeLabel(size);
                 auto records = runExperiment(
                     target, settings, render,
                     [&](int done, int) { progress.update(finishedWork + done, label); },
-                    fitnessRender);
+                    fitnessRender, stopToken());
                 if (!records) throw std::runtime_error(records.error().message);
                 finishedWork += int(records->size()) * 2;
                 allRecords.insert(allRecords.end(), records->begin(), records->end());
@@ -278,7 +277,7 @@ int runInto(const Request& request, OutputFolder& output, const Font& font) {
         }
     }
     nlohmann::ordered_json report = {{"runs_completed", allRecords.size()}, {"partial", false}};
-    if (const int signal = stopRequested()) {
+    if (const int signal = stopSignal()) {
         report["partial"] = true;
         report["stopped_by"] = signalName(signal);
         if (allRecords.empty())
@@ -294,7 +293,7 @@ int runInto(const Request& request, OutputFolder& output, const Font& font) {
     std::snprintf(done, sizeof done, "%zu runs in %.1f s in the ", allRecords.size(), seconds);
     printMessage(done + std::string(describe(request.sceneMode)) + " scene; results in " +
                  request.outDir.string());
-    if (const int signal = stopRequested()) {
+    if (const int signal = stopSignal()) {
         printMessage("stopped by " + signalName(signal) +
                      "; the completed runs are written, marked partial");
         return stoppedExitStatus(signal);

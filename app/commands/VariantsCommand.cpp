@@ -15,7 +15,6 @@
 #include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
-#include "common/StopRequest.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/AtomicFile.h"
 #include "io/ImageFile.h"
@@ -146,14 +145,15 @@ struct FoundSet {
 
 FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
                  const std::string& progressLabel) {
-    VariantSearchHooks hooks;
-    hooks.stop = [] { return stopRequested() != 0; };
-    hooks.onGeneration = [&progressLabel](const VariantSearchProgress& progress) {
-        printProgress(progressLabel + std::to_string(progress.evaluations) + " evaluations, " +
-                      std::to_string(progress.archived) + " in the archive");
-    };
     auto found = findVariants({job.preset.target, job.preset.family, job.preset.baseKappa}, request,
-                              job.settings, job.fitnessRender, job.outputRender, hooks);
+                              job.settings, job.fitnessRender, job.outputRender, stopToken(),
+                              [&progressLabel](const VariantSearchProgress& progress) {
+                                  printProgress(progressLabel +
+                                                std::to_string(progress.evaluations) +
+                                                " evaluations, " +
+                                                std::to_string(progress.archived) +
+                                                " in the archive");
+                              });
     printProgress("");
     if (!found) throw std::runtime_error(found.error().message);
     const VariantSearchProgress& progress = found->progress;
@@ -192,7 +192,7 @@ int finish(int signal, const std::string& summary, bool met, bool wroteFiles, bo
 
 // Marks the report partial when a signal stopped the work; returns the signal (0: none).
 int markPartial(nlohmann::ordered_json& report) {
-    const int signal = stopRequested();
+    const int signal = stopSignal();
     if (signal) {
         report["partial"] = true;
         report["stopped_by"] = signalName(signal);
@@ -245,13 +245,13 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
     }
     for (const int block : blocks) {
         if (std::find(kept.begin(), kept.end(), block) != kept.end()) continue;
-        if (stopRequested()) break;
+        if (stopToken().cancelled()) break;
         const std::string label =
             "block " + std::to_string(block + 1) + " of " + std::to_string(plan.blocks()) + ": ";
         FoundSet found = findSet(job, blockRequest(job.request, plan, block), label);
         // A block cut short is left out: a resumed run computes it from its start, as one
         // run never stopped does.
-        if (stopRequested()) break;
+        if (stopToken().cancelled()) break;
         addBlock(parts, job.preset, found.run, found.set, plan, block);
         if (job.output) {
             if (auto written = writeVariantBlock(job.output->staging(), job.target, found.set, plan,

@@ -2,8 +2,9 @@
 // One job at a time on a worker thread, for the editor's long tasks ("Compare metrics", the
 // Variants search): the UI thread starts it, polls busy() and progress() and takes the result;
 // `onUpdate` (which must be thread-safe) wakes the UI whenever there is something to show. The
-// job reads stopping() to end early when the editor closes. Nothing may escape the thread: an
-// exception becomes the result's `error` (Result has a std::string `error`), shown in the window.
+// job passes cancelToken() into core, cancelled when the editor closes. Nothing may escape the
+// thread: an exception becomes the result's `error` (Result has a std::string `error`), shown
+// in the window.
 #include <atomic>
 #include <exception>
 #include <functional>
@@ -13,6 +14,8 @@
 #include <thread>
 #include <utility>
 
+#include "common/CancelToken.h"
+
 namespace matevo::editor {
 
 template <typename Result>
@@ -20,7 +23,7 @@ class BackgroundJob {
 public:
     explicit BackgroundJob(std::function<void()> onUpdate) : onUpdate_(std::move(onUpdate)) {}
     ~BackgroundJob() {  // asks a running job to stop and waits for it
-        stopping_.store(true);
+        cancel_.cancel();
         if (thread_.joinable()) thread_.join();
     }
     BackgroundJob(const BackgroundJob&) = delete;
@@ -55,7 +58,8 @@ public:
 
     bool busy() const { return busy_.load(); }
     float progress() const { return progress_.load(); }
-    bool stopping() const { return stopping_.load(); }
+    bool stopping() const { return cancel_.cancelled(); }
+    const CancelToken& cancelToken() const { return cancel_; }
     // From the job: its progress in [0, 1], shown at once.
     void reportProgress(float progress) {
         progress_.store(progress);
@@ -74,7 +78,7 @@ public:
 private:
     std::function<void()> onUpdate_;
     std::atomic<bool> busy_{false};
-    std::atomic<bool> stopping_{false};
+    CancelToken cancel_;
     std::atomic<float> progress_{0.0f};
     std::mutex mutex_;
     std::optional<Result> result_;

@@ -151,7 +151,8 @@ void CandidateRenderCache::evictBeyondCapacity() {
     if (entries_.size() > keep) entries_.resize(keep);
 }
 
-Result<std::vector<CandidateTile>> CandidateRenderCache::tiles(std::span<const Genome> genomes) {
+Result<std::vector<CandidateTile>> CandidateRenderCache::tiles(std::span<const Genome> genomes,
+                                                               const CancelToken& cancel) {
     if (!preset_) return Error{"no preset prepared"};
     ++useCounter_;
     std::vector<Genome> missing;
@@ -162,7 +163,7 @@ Result<std::vector<CandidateTile>> CandidateRenderCache::tiles(std::span<const G
             missing.push_back(genome);
     }
     for (std::size_t first = 0; first < missing.size(); first += kTilesPerSubmission) {
-        if (request_.cancelled && request_.cancelled()) return Error{"rendering cancelled"};
+        if (cancel.cancelled()) return cancelledError("rendering cancelled");
         const std::size_t count = std::min(kTilesPerSubmission, missing.size() - first);
         if (Status drawn = draw(std::span(missing).subspan(first, count)); !drawn)
             return drawn.error();

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "color/ImageDifference.h"
+#include "common/CancelToken.h"
 #include "common/Result.h"
 #include "gpu/CommandRunner.h"
 #include "gpu/DisplayTile.h"
@@ -52,8 +53,10 @@ public:
     const std::shared_ptr<const gpu::DisplayTile>& target() const { return target_; }
     // The target at tile size, as the ΔE00 maps compare against it; null before the first tiles.
     const std::shared_ptr<const Image>& targetPicture() const { return targetPicture_; }
-    // The tiles of `genomes`, in order (an Error too when the request's `cancelled` said so).
-    Result<std::vector<CandidateTile>> tiles(std::span<const Genome> genomes);
+    // The tiles of `genomes`, in order; cancelledError() when `cancel` is cancelled before a
+    // submission.
+    Result<std::vector<CandidateTile>> tiles(std::span<const Genome> genomes,
+                                             const CancelToken& cancel = {});
     // "GPU (llvmpipe)" or "CPU", for the status line; empty before the first prepare.
     std::string backendName() const { return renderer_ ? renderer_->name() : std::string(); }
 

@@ -11,7 +11,7 @@ namespace matevo::editor {
 CompareMetricsWorker::CompareMetricsWorker(std::function<void()> onUpdate,
                                            gpu::RendererRequest renderer)
     : rendererRequest_(std::move(renderer)), job_(std::move(onUpdate)) {
-    rendererRequest_.cancelled = [this] { return job_.stopping(); };
+    rendererRequest_.cancel = job_.cancelToken();
 }
 
 CompareMetricsWorker::~CompareMetricsWorker() = default;
@@ -45,9 +45,10 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
     const ExperimentTarget experimentTarget{preset.name, preset.family, preset.target, preset.ga};
     // Progress: the GA runs are the first half, the renders the second.
     // The paper's three genotype metrics only: nothing to render while evolving.
-    auto evolved = evolveRuns(experimentTarget, settings, [&](int done, int total) {
-        job_.reportProgress(0.5f * float(done) / float(total));
-    });
+    auto evolved = evolveRuns(
+        experimentTarget, settings,
+        [&](int done, int total) { job_.reportProgress(0.5f * float(done) / float(total)); }, {},
+        job_.cancelToken());
     if (!evolved) {
         result.error = evolved.error().message;
         return result;
@@ -59,7 +60,8 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
         [&](int done, int total) {
             job_.reportProgress(0.5f + 0.5f * float(done) / float(total));
         },
-        [&](std::size_t index, const Image& image) { result.renders[index] = image; });
+        [&](std::size_t index, const Image& image) { result.renders[index] = image; },
+        job_.cancelToken());
     if (!scored) result = {{}, {}, result.backend, scored.error().message};
     return result;
 }

@@ -52,13 +52,14 @@ DistinctGenomes distinctGenomes(const std::vector<Individual>& ranked, std::size
 // The first `count` distinct genomes and the kept ones, drawn, as update's tiles.
 Status fillTiles(EvolutionUpdate& update, const std::vector<Individual>& ranked,
                  const DistinctGenomes& distinct, std::size_t count,
-                 const std::vector<Genome>& kept, CandidateRenderCache& renderCache) {
+                 const std::vector<Genome>& kept, CandidateRenderCache& renderCache,
+                 const CancelToken& cancel) {
     std::vector<Genome> shown;
     for (std::size_t i = 0; i < count; ++i) shown.push_back(ranked[distinct.first[i]].genome);
     // Kept materials of this family are drawn too, whether or not the run finds them.
     for (std::size_t i = 0; i < kept.size() && i < EvolutionWorker::kKeptTiles; ++i)
         shown.push_back(kept[i]);
-    auto tiles = renderCache.tiles(shown);
+    auto tiles = renderCache.tiles(shown, cancel);
     if (!tiles) return tiles.error();
     update.targetPicture = renderCache.targetPicture();
     update.candidates.clear();
@@ -86,6 +87,7 @@ EvolutionWorker::~EvolutionWorker() {
     {
         std::lock_guard lock(mutex_);
         stopping_ = true;
+        runningJob_.cancel();
     }
     wake_.notify_all();
     thread_.join();
@@ -97,6 +99,7 @@ std::uint64_t EvolutionWorker::submit(EvolutionJob job) {
         std::lock_guard lock(mutex_);
         pending_ = std::move(job);
         id = latestJobId_.fetch_add(1) + 1;
+        runningJob_.cancel();  // superseded
     }
     wake_.notify_all();
     return id;
@@ -147,7 +150,6 @@ void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
     gpu::RendererRequest request;
     request.backend = backend;
     request.who = "matevo edit";
-    request.cancelled = [this] { return cancelled(runningJobId_.load()); };
     gpu::RendererRequest fitnessRenderer = request;
     fitnessRenderer.device = &device;
     CandidateRenderCache renderCache(kTileSize, kTargetSize, kRenderCacheSize, device,
@@ -155,6 +157,7 @@ void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
     for (;;) {
         EvolutionJob job;
         std::uint64_t jobId = 0;
+        CancelToken cancel;
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [this] { return stopping_ || pending_.has_value(); });
@@ -163,12 +166,13 @@ void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
             pending_.reset();
             jobId = latestJobId_.load();
             runningJobId_.store(jobId);
+            runningJob_ = cancel;
             working_ = true;
         }
         // Nothing may escape a thread (std::terminate would end the editor and lose the
         // user's document): a failure becomes the job's error, shown in the window.
         try {
-            evolve(job, jobId, renderCache, fitnessRenderer);
+            evolve(job, jobId, cancel, renderCache, fitnessRenderer);
         } catch (const std::exception& error) {
             publishFailure(jobId, error.what());
         } catch (...) {
@@ -183,8 +187,9 @@ void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
 }
 
 void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
-                             CandidateRenderCache& renderCache,
-                             const gpu::RendererRequest& fitnessRenderer) {
+                             const CancelToken& cancel, CandidateRenderCache& renderCache,
+                             gpu::RendererRequest fitnessRenderer) {
+    fitnessRenderer.cancel = cancel;
     const Preset& preset = job.preset;
     EvolutionUpdate update;
     update.jobId = jobId;
@@ -238,7 +243,7 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
         update.distinctGenomes = distinct.total;
         std::size_t drawn = std::min(distinct.first.size(), std::size_t(kGridTiles));
         for (;;) {
-            if (Status filled = fillTiles(update, ranked, distinct, drawn, kept, renderCache);
+            if (Status filled = fillTiles(update, ranked, distinct, drawn, kept, renderCache, cancel);
                 !filled) {
                 if (cancelled(jobId)) return;
                 update.finished = true;

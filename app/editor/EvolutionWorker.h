@@ -18,6 +18,7 @@
 #include "CandidateRenderCache.h"
 #include "EditorState.h"
 #include "color/ImageDifference.h"
+#include "common/CancelToken.h"
 #include "common/Image.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "io/Preset.h"
@@ -96,8 +97,9 @@ public:
 
 private:
     void run(const gpu::Device& device, RenderBackend backend);
-    void evolve(const EvolutionJob& job, std::uint64_t jobId, CandidateRenderCache& renderCache,
-                const gpu::RendererRequest& fitnessRenderer);
+    // `cancel` is the job's: cancelled once a newer job is submitted or the worker stops.
+    void evolve(const EvolutionJob& job, std::uint64_t jobId, const CancelToken& cancel,
+                CandidateRenderCache& renderCache, gpu::RendererRequest fitnessRenderer);
     bool cancelled(std::uint64_t jobId) const;
     void publish(EvolutionUpdate update);
     void publishFailure(std::uint64_t jobId, const std::string& what);
@@ -111,6 +113,7 @@ private:
     bool stopping_ = false;
     std::atomic<std::uint64_t> latestJobId_{0};
     std::atomic<std::uint64_t> runningJobId_{0};
+    CancelToken runningJob_;  // the running job's token, cancelled when it is superseded
     std::thread thread_;  // last: starts after everything it uses exists
 };
 

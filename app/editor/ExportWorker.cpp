@@ -1,7 +1,6 @@
 #include "ExportWorker.h"
 
 #include <cstdio>
-#include <stdexcept>
 #include <utility>
 
 namespace matevo::editor {
@@ -16,7 +15,7 @@ std::string materialCount(std::size_t count) {
 ExportWorker::ExportWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer,
                            ExportSettings settings)
     : rendererRequest_(std::move(renderer)), settings_(settings), job_(std::move(onUpdate)) {
-    rendererRequest_.cancelled = [this] { return job_.stopping(); };
+    rendererRequest_.cancel = job_.cancelToken();
 }
 
 ExportWorker::~ExportWorker() = default;
@@ -49,14 +48,13 @@ ExportResult ExportWorker::compute(const ui::ExportRequest& request) {
     ExportResult result;
     std::unique_ptr<PopulationRenderer> renderer =
         gpu::createPopulationRenderer(rendererRequest_, SceneTextures{});
-    auto report = exportMaterials(request.materials, *renderer, request.format, request.file,
-                                  settings_, [this](std::size_t done, std::size_t count) {
-                                      // Ends the export between materials when the editor closes;
-                                      // nothing is written.
-                                      if (job_.stopping())
-                                          throw std::runtime_error("stopped as the editor closed");
-                                      job_.reportProgress(float(done) / float(count));
-                                  });
+    // Closing the editor ends the export between materials; nothing is written.
+    auto report = exportMaterials(
+        request.materials, *renderer, request.format, request.file, settings_,
+        [this](std::size_t done, std::size_t count) {
+            job_.reportProgress(float(done) / float(count));
+        },
+        {}, job_.cancelToken());
     if (!report)
         result.error = report.error().message;
     else

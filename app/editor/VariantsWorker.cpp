@@ -10,7 +10,7 @@ namespace matevo::editor {
 
 VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer)
     : rendererRequest_(std::move(renderer)), job_(std::move(onUpdate)) {
-    rendererRequest_.cancelled = [this] { return job_.stopping(); };
+    rendererRequest_.cancel = job_.cancelToken();
 }
 
 VariantsWorker::~VariantsWorker() = default;
@@ -45,14 +45,13 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job) {
     };
     const VariantSearchSettings settings;
     const double wanted = double(job.request.count + settings.spare);
-    VariantSearchHooks hooks;
-    hooks.stop = [this] { return job_.stopping(); };
-    hooks.onGeneration = [&](const VariantSearchProgress& progress) {
-        job_.reportProgress(float(std::max(double(progress.archived) / wanted,
-                                           double(progress.evaluations) / settings.maxEvaluations)));
-    };
-    auto found = findVariants({preset.target, preset.family, preset.baseKappa}, job.request,
-                              settings, renderAt(kFitnessSize), renderAt(kOutputSize), hooks);
+    auto found = findVariants(
+        {preset.target, preset.family, preset.baseKappa}, job.request, settings,
+        renderAt(kFitnessSize), renderAt(kOutputSize), job_.cancelToken(),
+        [&](const VariantSearchProgress& progress) {
+            job_.reportProgress(float(std::max(double(progress.archived) / wanted,
+                                               double(progress.evaluations) / settings.maxEvaluations)));
+        });
     if (job_.stopping()) {
         result.error = "stopped";
         return result;

@@ -11,10 +11,10 @@
 #include "color/Coverage.h"
 #include "color/ImageDifference.h"
 #include "color/detail/FlipFormulas.h"
-#include "color/detail/ForEachChunk.h"
 #include "color/detail/ScratchShelf.h"
 #include "color/detail/VectorisedKernel.h"
 #include "common/HugePages.h"
+#include "common/ParallelFor.h"
 
 namespace matevo {
 namespace {
@@ -380,21 +380,22 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
     const int tileRows = (map.height + kTileRows - 1) / kTileRows;
     const int tileColumns = (map.width + kTileColumns - 1) / kTileColumns;
     static detail::ScratchShelf<TileScratch> shelf;
-    auto scratches = detail::forEachChunkWithScratch(
-        std::size_t(tileRows) * std::size_t(tileColumns), workerCount,
+    auto scratches = parallelForChunksWithScratch(
+        tileRows * tileColumns,
         [] {
             auto scratch = shelf.take();
             scratch->pooling.clear();
             return scratch;
         },
-        [&](detail::ScratchShelf<TileScratch>::Shelved& scratch, std::size_t chunk) {
-            const int row = int(chunk) / tileColumns, column = int(chunk) % tileColumns;
+        [&](detail::ScratchShelf<TileScratch>::Shelved& scratch, int chunk) {
+            const int row = chunk / tileColumns, column = chunk % tileColumns;
             const Tile tile{row * kTileRows, std::min(map.height, (row + 1) * kTileRows),
                             column * kTileColumns,
                             std::min(map.width, (column + 1) * kTileColumns)};
             flipOfTile(reference, test, tile, kernels, *scratch, map.error.data());
             poolTile(reference, test, useAlpha, tile, map, scratch->pooling);
-        });
+        },
+        workerCount);
     FlipPooling& pooling = scratches.front()->pooling;
     for (std::size_t i = 1; i < scratches.size(); ++i) pooling.merge(scratches[i]->pooling);
     map.stats = pooling.finish(map.error, map.pooled, workerCount);

@@ -33,7 +33,7 @@ struct FlipMap {
 };
 
 // Differing sizes give an Error. Multi-threaded over fixed row bands; the result does not
-// depend on the thread count (0: all hardware threads).
+// depend on the thread count (workerCount: at most so many; 0: workerThreadCount()).
 Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useAlpha = true,
                             const FlipSettings& settings = {}, unsigned workerCount = 0);
 

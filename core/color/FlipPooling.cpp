@@ -5,7 +5,7 @@
 #include <bit>
 #include <cmath>
 
-#include "color/detail/ForEachChunk.h"
+#include "common/ParallelFor.h"
 
 namespace matevo {
 namespace {
@@ -81,16 +81,18 @@ FlipStats FlipPooling::finish(std::span<const float> errors, std::span<const std
     using InBucket = std::array<std::vector<float>, 3>;
     const std::size_t chunkCount = (errors.size() + kChunkPixels - 1) / kChunkPixels;
     std::vector<InBucket> chunks(chunkCount);
-    detail::forEachChunk(chunkCount, workerCount, [&](std::size_t chunk) {
-        const std::size_t end = std::min(errors.size(), (chunk + 1) * kChunkPixels);
-        for (std::size_t i = chunk * kChunkPixels; i < end; ++i) {
+    parallelForChunks(int(chunkCount), [&](int chunk) {
+        const std::size_t first = std::size_t(chunk) * kChunkPixels;
+        const std::size_t end = std::min(errors.size(), first + kChunkPixels);
+        for (std::size_t i = first; i < end; ++i) {
             if (pooled[i] == 0) continue;
             const float error = std::clamp(errors[i], 0.0f, 1.0f);
             const std::size_t errorBucket = bucketOf(error);
             for (std::size_t q = 0; q < kFractions.size(); ++q)
-                if (errorBucket == bucketOfQuartile[q]) chunks[chunk][q].push_back(error);
+                if (errorBucket == bucketOfQuartile[q])
+                    chunks[std::size_t(chunk)][q].push_back(error);
         }
-    });
+    }, {}, workerCount);
     InBucket inBucket;
     for (const InBucket& chunk : chunks)
         for (std::size_t q = 0; q < kFractions.size(); ++q)

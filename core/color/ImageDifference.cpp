@@ -9,9 +9,9 @@
 #include "color/DeltaEPooling.h"
 #include "color/detail/ColorFormulas.h"
 #include "color/detail/FastFloatMath.h"
-#include "color/detail/ForEachChunk.h"
 #include "color/detail/VectorisedKernel.h"
 #include "common/HugePages.h"
+#include "common/ParallelFor.h"
 
 namespace matevo {
 namespace {
@@ -105,11 +105,11 @@ Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
     resizeOnHugePages(map.covered, pixelCount);
     const std::size_t chunkCount = (pixelCount + kChunkPixels - 1) / kChunkPixels;
     std::vector<DeltaEPooling> chunks(chunkCount);
-    detail::forEachChunk(chunkCount, workerCount, [&](std::size_t chunk) {
-        const std::size_t begin = chunk * kChunkPixels;
-        chunks[chunk] =
+    parallelForChunks(int(chunkCount), [&](int chunk) {
+        const std::size_t begin = std::size_t(chunk) * kChunkPixels;
+        chunks[std::size_t(chunk)] =
             compareChunk(a, b, useAlpha, begin, std::min(begin + kChunkPixels, pixelCount), map);
-    });
+    }, {}, workerCount);
 
     // Pooled in chunk order, whichever thread did which chunk.
     DeltaEPooling pooling;

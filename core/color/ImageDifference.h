@@ -34,7 +34,7 @@ Status requireComparable(const Image& a, const Image& b);
 
 // Linear RGBA in, clamped to [0, 1] before conversion to L*a*b*. With useAlpha false (images that
 // had no alpha channel) every pixel counts. Differing sizes give an Error. Work is split in fixed
-// chunks over at most workerCount threads (0: all hardware threads); the result, down to the
+// chunks over at most workerCount threads (0: workerThreadCount()); the result, down to the
 // last bit, does not depend on how many threads ran.
 Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha = true,
                                 unsigned workerCount = 0);

@@ -1,13 +1,11 @@
 #include "experiment/Experiment.h"
 
-#include "common/StopRequest.h"
-
 #include <algorithm>
 
 #include "color/ImageDifference.h"
+#include "common/ParallelFor.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "experiment/RunSeeds.h"
-#include "material/ParallelFor.h"
 #include "variants/ImageFitness.h"
 
 namespace matevo {
@@ -41,7 +39,8 @@ GaSettings runGaSettings(const ExperimentTarget& target, const ExperimentSetting
 Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,
                                           const ExperimentSettings& settings,
                                           const ExperimentProgress& progress,
-                                          const RenderGenomes& fitnessRender) {
+                                          const RenderGenomes& fitnessRender,
+                                          const CancelToken& cancel) {
     const int runCount = settings.runs * int(settings.metrics.size());
     std::vector<RunRecord> records(std::size_t(std::max(runCount, 0)));
     std::vector<char> finished(records.size(), 0);
@@ -67,7 +66,7 @@ Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,
     parallelForChunks(
         int(genotypeRuns.size()),
         [&](int index) {
-            if (stopRequested()) return;  // runs started are finished; the rest are skipped
+            if (cancel.cancelled()) return;  // runs started are finished; the rest are skipped
             const int chunk = genotypeRuns[std::size_t(index)];
             const GaSettings ga = gaSettingsOf(chunk);
             GeneticAlgorithm algorithm(target.family, target.genome, ga);
@@ -78,17 +77,21 @@ Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,
             if (progress) progress(done, runCount);
         });
     // The renderer parallelises each generation's batch itself.
-    for (std::size_t index = 0; index < imageRuns.size() && !stopRequested(); ++index) {
+    for (std::size_t index = 0; index < imageRuns.size() && !cancel.cancelled(); ++index) {
         const GaSettings ga = gaSettingsOf(imageRuns[index]);
         auto best = imageFitnessRun(target, ga, fitnessRender);
         if (!best) return best.error();
         record(imageRuns[index], ga, *best);
         if (progress) progress(int(genotypeRuns.size() + index + 1), runCount);
     }
-    if (stopRequested()) {
+    if (cancel.cancelled()) {
         std::size_t kept = 0;
-        for (std::size_t i = 0; i < records.size(); ++i)
-            if (finished[i]) records[kept++] = std::move(records[i]);
+        for (std::size_t i = 0; i < records.size(); ++i) {
+            if (!finished[i]) continue;
+            // Not onto itself: a self-moved record loses its strings (the preset's name).
+            if (kept != i) records[kept] = std::move(records[i]);
+            ++kept;
+        }
         records.resize(kept);
     }
     return records;
@@ -108,7 +111,8 @@ RenderGenomes renderGenomesWith(std::shared_ptr<PopulationRenderer> renderer,
 
 Result<ScoredRuns> scoreRuns(std::span<RunRecord> records, const Image& targetImage,
                              const RenderGenomes& render, std::size_t batchSize,
-                             const ExperimentProgress& progress, const RenderedRun& onRendered) {
+                             const ExperimentProgress& progress, const RenderedRun& onRendered,
+                             const CancelToken& cancel) {
     batchSize = std::max<std::size_t>(batchSize, 1);
     std::vector<Genome> genomes;
     for (std::size_t first = 0; first < records.size(); first += batchSize) {
@@ -128,7 +132,7 @@ Result<ScoredRuns> scoreRuns(std::span<RunRecord> records, const Image& targetIm
             if (onRendered) onRendered(first + i, image);
         }
         if (progress) progress(int(first + count), int(records.size()));
-        if (stopRequested()) return ScoredRuns{first + count};
+        if (cancel.cancelled()) return ScoredRuns{first + count};
     }
     return ScoredRuns{records.size()};
 }
@@ -137,7 +141,8 @@ Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
                                              const ExperimentSettings& settings,
                                              const RenderGenomes& render,
                                              const ExperimentProgress& progress,
-                                             const RenderGenomes& fitnessRender) {
+                                             const RenderGenomes& fitnessRender,
+                                             const CancelToken& cancel) {
     auto targetImages = render(std::span<const Genome>(&target.genome, 1));
     if (!targetImages) return targetImages.error();
     if (targetImages->size() != 1)
@@ -146,13 +151,16 @@ Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
     const int total = 2 * settings.runs * int(settings.metrics.size());
     auto evolved = evolveRuns(
         target, settings, [&](int done, int) { if (progress) progress(done, total); },
-        fitnessRender);
+        fitnessRender, cancel);
     if (!evolved) return evolved.error();
     std::vector<RunRecord> records = std::move(evolved).value();
     const int evolvedCount = int(records.size());
-    auto scored = scoreRuns(records, targetImages->front(), render, 64, [&](int done, int) {
-        if (progress) progress(evolvedCount + done, total);
-    });
+    auto scored = scoreRuns(
+        records, targetImages->front(), render, 64,
+        [&](int done, int) {
+            if (progress) progress(evolvedCount + done, total);
+        },
+        {}, cancel);
     if (!scored) return scored.error();
     records.resize(scored->count);
     return records;

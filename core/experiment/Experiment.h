@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "common/CancelToken.h"
 #include "common/Image.h"
 #include "common/Result.h"
 #include "evolve/GaSettings.h"
@@ -53,32 +54,36 @@ GaSettings runGaSettings(const ExperimentTarget& target, const ExperimentSetting
 // fitness; meanDeltaE00 is left 0. Runs of a genotype metric go in parallel on up to
 // workerThreadCount() threads (common/WorkerThreads.h); runs of the image metric one after
 // another, each generation rendered in one batch by `fitnessRender` (at settings.fitnessSize;
-// needed only for the image metric), on the same seeds. After a stop request (SIGINT, SIGTERM) the runs not yet started
-// are left out, and the experiment returns only the runs that were completed and scored.
-// An Error when the image metric is asked for without a renderer or a render failed.
+// needed only for the image metric), on the same seeds. Once `cancel` is cancelled the runs not
+// yet started are left out: the runs that were completed are returned (the run in progress of
+// the image metric is finished first). An Error when the image metric is asked for without a
+// renderer or a render failed.
 Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,
                                           const ExperimentSettings& settings,
                                           const ExperimentProgress& progress = {},
-                                          const RenderGenomes& fitnessRender = {});
+                                          const RenderGenomes& fitnessRender = {},
+                                          const CancelToken& cancel = {});
 
-// How many records, from the first, scoreRuns scored: all of them unless a stop was requested.
+// How many records, from the first, scoreRuns scored: all of them unless it was cancelled.
 struct ScoredRuns {
     std::size_t count = 0;
 };
 
 // Renders the records' genomes in batches of at most batchSize and stores each one's mean
-// ΔE00 against targetImage. progress counts scored records.
+// ΔE00 against targetImage. progress counts scored records. Once `cancel` is cancelled it stops
+// after the batch in progress.
 Result<ScoredRuns> scoreRuns(std::span<RunRecord> records, const Image& targetImage,
                              const RenderGenomes& render, std::size_t batchSize = 64,
                              const ExperimentProgress& progress = {},
-                             const RenderedRun& onRendered = {});
+                             const RenderedRun& onRendered = {}, const CancelToken& cancel = {});
 
 // Renders the target, evolves and scores every run. progress counts GA runs, then scored runs.
-// `fitnessRender` as for evolveRuns.
+// `fitnessRender` as for evolveRuns. Cancelled, it returns the runs completed and scored.
 Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
                                              const ExperimentSettings& settings,
                                              const RenderGenomes& render,
                                              const ExperimentProgress& progress = {},
-                                             const RenderGenomes& fitnessRender = {});
+                                             const RenderGenomes& fitnessRender = {},
+                                             const CancelToken& cancel = {});
 
 }  // namespace matevo

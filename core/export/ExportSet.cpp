@@ -52,7 +52,7 @@ bool withinExportGoal(const ExportedVariant& variant, const ExportSettings& sett
 
 Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
                                PopulationRenderer& belcour, const ExportSettings& settings,
-                               const ExportProgress& progress) {
+                               const ExportProgress& progress, const CancelToken& cancel) {
     if (materials.empty()) return Error{"nothing to export"};
     const MaterialFile& first = materials.front();
     for (const auto& material : materials)
@@ -67,6 +67,7 @@ Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
 
     FittedSet set{settings, std::move(*textures), {}};
     for (std::size_t i = 0; i < materials.size(); ++i) {
+        if (cancel.cancelled()) return cancelledError("export stopped");
         const MaterialFile& material = materials[i];
         const auto renderAt = [&](int size) {
             return belcour.render(std::span(&material.material, 1), material.scene, size);
@@ -109,9 +110,11 @@ Result<ExportReport> exportMaterials(const std::vector<MaterialFile>& materials,
                                      PopulationRenderer& belcour, ExportFormat format,
                                      const std::filesystem::path& file,
                                      const ExportSettings& settings,
-                                     const ExportProgress& progress, const GltfAsset& asset) {
-    auto set = fitForExport(materials, belcour, settings, progress);
+                                     const ExportProgress& progress, const GltfAsset& asset,
+                                     const CancelToken& cancel) {
+    auto set = fitForExport(materials, belcour, settings, progress, cancel);
     if (!set) return set.error();
+    if (cancel.cancelled()) return cancelledError("export stopped");  // during the last fit
     return writeExport(*set, format, file, asset);
 }
 

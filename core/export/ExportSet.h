@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "color/ImageDifference.h"
+#include "common/CancelToken.h"
 #include "common/Result.h"
 #include "export/GltfFit.h"
 #include "export/GltfWriter.h"
@@ -68,21 +69,23 @@ struct ExportReport {
 using ExportProgress = std::function<void(std::size_t, std::size_t)>;
 
 // Fits every material (errors name the material). `materials` must share textures; `belcour`
-// draws our renders of them (it is given their textures).
+// draws our renders of them (it is given their textures). `cancel` is checked before each
+// material; cancelled, the fit ends with cancelledError().
 Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
                                PopulationRenderer& belcour, const ExportSettings& settings = {},
-                               const ExportProgress& progress = {});
+                               const ExportProgress& progress = {},
+                               const CancelToken& cancel = {});
 // Writes the fitted set in `format` to `file`; glTF arranged as `asset` says (GltfWriter.h),
 // MaterialX only as a list of materials (Spheres).
 Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
                                  const std::filesystem::path& file, const GltfAsset& asset = {});
-// Both steps.
+// Both steps; cancelled while fitting, nothing is written.
 Result<ExportReport> exportMaterials(const std::vector<MaterialFile>& materials,
                                      PopulationRenderer& belcour, ExportFormat format,
                                      const std::filesystem::path& file,
                                      const ExportSettings& settings = {},
                                      const ExportProgress& progress = {},
-                                     const GltfAsset& asset = {});
+                                     const GltfAsset& asset = {}, const CancelToken& cancel = {});
 
 std::string_view toString(GltfArrangement arrangement);  // spheres, variants, instances
 

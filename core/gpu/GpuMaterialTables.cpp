@@ -5,8 +5,8 @@
 #include <tuple>
 #include <vector>
 
+#include "common/ParallelFor.h"
 #include "material/LobeTable.h"
-#include "material/ParallelFor.h"
 
 namespace matevo::gpu {
 namespace {

@@ -1,7 +1,7 @@
 #include "gpu/GpuPopulationRenderer.h"
 
 #include "color/LabImage.h"
-#include "material/ParallelFor.h"
+#include "common/ParallelFor.h"
 
 namespace matevo::gpu {
 namespace {
@@ -25,7 +25,8 @@ Result<TexelBuffer> uploadLab(const Device& device, const Image& image) {
 }  // namespace
 
 Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
-    const Device& device, const FgdTables& tables, const SceneTextures& textures) {
+    const Device& device, const FgdTables& tables, const SceneTextures& textures,
+    CancelToken cancel) {
     auto runner = CommandRunner::create(device);
     if (!runner) return runner.error();
     auto renderer = GpuSphereRenderer::create(device, *runner, tables, textures);
@@ -33,17 +34,19 @@ Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::create(
     std::unique_ptr<GpuPopulationRenderer> result(new GpuPopulationRenderer);
     result->device_ = &device;
     result->tables_ = &tables;
+    result->cancel_ = std::move(cancel);
     result->runner_ = std::move(runner).value();
     result->renderer_ = std::move(renderer).value();
     return result;
 }
 
 Result<std::unique_ptr<GpuPopulationRenderer>> GpuPopulationRenderer::createHeadless(
-    const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures) {
+    const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures,
+    CancelToken cancel) {
     auto context = GpuContext::createHeadless(options);
     if (!context) return context.error();
     auto ownContext = std::make_unique<GpuContext>(std::move(context).value());
-    auto result = create(ownContext->device, tables, textures);
+    auto result = create(ownContext->device, tables, textures, std::move(cancel));
     if (!result) return result.error();
     (*result)->ownContext_ = std::move(ownContext);
     return result;
@@ -137,6 +140,7 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateOnDevice(
     const SceneSettings& scene, int size, const EvaluationOptions& options,
     std::span<const DisplayTile* const> tiles) {
     if (size <= 0) return Error{"GPU render: image size must be positive"};
+    if (cancel_.cancelled()) return cancelledError("rendering cancelled");
     const TargetKey key{target, scene, size};
     if (targetKey_ != key)
         if (auto rendered = renderTarget(key); !rendered) return rendered.error();
@@ -190,6 +194,7 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateOnDevice(
 Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
                                              const SceneSettings& scene, int size,
                                              const TileOutput& tile) {
+    if (cancel_.cancelled()) return cancelledError("rendering cancelled");
     if (tile.tiles.size() != 1) return Error{"GPU render: one tile expected"};
     const ImageBatchShape shape{size, size, 1};
     auto buffer = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
@@ -207,6 +212,7 @@ Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
 Result<std::vector<Image>> GpuPopulationRenderer::render(
     std::span<const MaterialInstance> materials, const SceneSettings& scene, int size) {
     if (size <= 0) return Error{"GPU render: image size must be positive"};
+    if (cancel_.cancelled()) return cancelledError("rendering cancelled");
     return renderer_.render(runner_, materials, scene, size);
 }
 

@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "common/CancelToken.h"
 #include "common/Result.h"
 #include "gpu/DisplayTile.h"
 #include "gpu/FlipPass.h"
@@ -20,12 +21,15 @@ namespace matevo::gpu {
 class GpuPopulationRenderer final : public PopulationRenderer {
 public:
     // Renders on `device`, which must outlive the renderer. `tables` too (the process-wide
-    // defaultFgdTables() does).
+    // defaultFgdTables() does). `cancel` is checked before each submission; once it is
+    // cancelled a call ends with cancelledError().
     static Result<std::unique_ptr<GpuPopulationRenderer>> create(
-        const Device& device, const FgdTables& tables, const SceneTextures& textures);
+        const Device& device, const FgdTables& tables, const SceneTextures& textures,
+        CancelToken cancel = {});
     // Renders on a headless device of its own.
     static Result<std::unique_ptr<GpuPopulationRenderer>> createHeadless(
-        const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures);
+        const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures,
+        CancelToken cancel = {});
 
     std::string name() const override;
     RenderBackend backend() const override { return RenderBackend::Gpu; }
@@ -64,6 +68,7 @@ private:
     std::unique_ptr<GpuContext> ownContext_;
     const Device* device_ = nullptr;
     const FgdTables* tables_ = nullptr;
+    CancelToken cancel_;
     CommandRunner runner_;
     GpuSphereRenderer renderer_;
     std::optional<FlipPass> flipPass_;  // made when first asked for (lavapipe compiles it then)

@@ -12,8 +12,10 @@ namespace {
 Result<std::unique_ptr<GpuPopulationRenderer>> createGpuRenderer(const RendererRequest& request,
                                                                  const SceneTextures& textures) {
     if (request.device)
-        return GpuPopulationRenderer::create(*request.device, defaultFgdTables(), textures);
-    return GpuPopulationRenderer::createHeadless(request.headless, defaultFgdTables(), textures);
+        return GpuPopulationRenderer::create(*request.device, defaultFgdTables(), textures,
+                                             request.cancel);
+    return GpuPopulationRenderer::createHeadless(request.headless, defaultFgdTables(), textures,
+                                                 request.cancel);
 }
 
 }  // namespace
@@ -30,7 +32,7 @@ Result<std::unique_ptr<PopulationRenderer>> tryCreatePopulationRenderer(
                      request.who.c_str(), renderer.error().message.c_str());
     }
     return std::unique_ptr<PopulationRenderer>(
-        std::make_unique<CpuPopulationRenderer>(textures, request.cancelled));
+        std::make_unique<CpuPopulationRenderer>(textures, request.cancel));
 }
 
 std::unique_ptr<PopulationRenderer> createPopulationRenderer(const RendererRequest& asked,

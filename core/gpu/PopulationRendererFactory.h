@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "common/CancelToken.h"
 #include "gpu/GpuContext.h"
 #include "io/Preset.h"
 #include "render/PopulationRenderer.h"
@@ -27,8 +28,9 @@ struct RendererRequest {
     // null: on a headless device of its own, created with `headless`.
     const Device* device = nullptr;
     GpuContextOptions headless;
-    // The CPU renderer asks this between images and stops when it answers true.
-    std::function<bool()> cancelled;
+    // Either renderer stops at its next image (CPU) or submission (GPU) once this is
+    // cancelled, its call ending with cancelledError().
+    CancelToken cancel;
     // No CPU renderer in place of an unusable GPU: tryCreatePopulationRenderer fails instead.
     bool noFallback = false;
 };

@@ -4,9 +4,9 @@
 #include <utility>
 #include <vector>
 
+#include "common/ParallelFor.h"
 #include "material/FgdIntegrals.h"
 #include "material/Fresnel.h"
-#include "material/ParallelFor.h"
 
 namespace matevo {
 

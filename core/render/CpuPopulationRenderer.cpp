@@ -3,15 +3,9 @@
 #include "scene/SphereRenderer.h"
 
 namespace matevo {
-namespace {
 
-const Error kCancelled{"rendering cancelled"};
-
-}  // namespace
-
-CpuPopulationRenderer::CpuPopulationRenderer(SceneTextures textures,
-                                             std::function<bool()> cancelled)
-    : textures_(std::move(textures)), cancelled_(std::move(cancelled)) {}
+CpuPopulationRenderer::CpuPopulationRenderer(SceneTextures textures, CancelToken cancel)
+    : textures_(std::move(textures)), cancel_(std::move(cancel)) {}
 
 Status CpuPopulationRenderer::setTextures(const SceneTextures& textures) {
     textures_ = textures;
@@ -25,7 +19,7 @@ Result<std::vector<Image>> CpuPopulationRenderer::render(
     std::vector<Image> images;
     images.reserve(materials.size());
     for (const MaterialInstance& material : materials) {
-        if (cancelled()) return kCancelled;
+        if (cancel_.cancelled()) return cancelledError("rendering cancelled");
         images.push_back(renderSphereCpu(material, textures_, scene, size));
     }
     return images;
@@ -43,7 +37,7 @@ Result<PopulationEvaluation> CpuPopulationRenderer::evaluate(
     PopulationEvaluation evaluation;
     evaluation.target = target_;
     for (const MaterialInstance& candidate : candidates) {
-        if (cancelled()) return kCancelled;
+        if (cancel_.cancelled()) return cancelledError("rendering cancelled");
         Image image = renderSphereCpu(candidate, textures_, scene, size);
         auto map = compareImages(target_, image);
         if (!map) return map.error();  // cannot happen: both are size x size

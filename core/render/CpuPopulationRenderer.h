@@ -2,18 +2,18 @@
 // The render interface on the CPU reference renderer (renderSphereCpu) and core/color's ΔE00
 // and ꟻLIP: what runs without a usable Vulkan device, and what `--backend cpu` asks
 // for.
-#include <functional>
 #include <optional>
 
+#include "common/CancelToken.h"
 #include "render/PopulationRenderer.h"
 
 namespace matevo {
 
 class CpuPopulationRenderer final : public PopulationRenderer {
 public:
-    // `cancelled` is asked between images; when it answers true the call ends with an Error
-    // (a newer request superseded this one, e.g. in the editor).
-    explicit CpuPopulationRenderer(SceneTextures textures, std::function<bool()> cancelled = {});
+    // `cancel` is checked between images; once it is cancelled a call ends with
+    // cancelledError() (e.g. the editor's job was superseded or the editor closes).
+    explicit CpuPopulationRenderer(SceneTextures textures, CancelToken cancel = {});
 
     std::string name() const override { return "CPU"; }
     RenderBackend backend() const override { return RenderBackend::Cpu; }
@@ -26,10 +26,8 @@ public:
                                           const EvaluationOptions& options = {}) override;
 
 private:
-    bool cancelled() const { return cancelled_ && cancelled_(); }
-
     SceneTextures textures_;
-    std::function<bool()> cancelled_;
+    CancelToken cancel_;
     std::optional<TargetKey> targetKey_;
     Image target_;
 };

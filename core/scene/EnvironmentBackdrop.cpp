@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "material/ParallelFor.h"
+#include "common/ParallelFor.h"
 
 namespace matevo {
 

@@ -7,8 +7,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "common/ParallelFor.h"
 #include "material/Ggx.h"
-#include "material/ParallelFor.h"
 #include "scene/LatLong.h"
 #include "scene/SceneTextures.h"
 

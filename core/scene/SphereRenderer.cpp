@@ -6,10 +6,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "common/ParallelFor.h"
 #include "material/Bsdf.h"
 #include "material/FgdTableCache.h"
 #include "material/LayeredLobes.h"
-#include "material/ParallelFor.h"
 #include "scene/SphereMapping.h"
 #include "scene/SphereSamples.h"
 

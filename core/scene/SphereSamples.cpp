@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "material/ParallelFor.h"
+#include "common/ParallelFor.h"
 
 namespace matevo {
 namespace {

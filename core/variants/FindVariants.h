@@ -1,9 +1,10 @@
 #pragma once
 // A whole variant request, the one way every caller runs it (`matevo variants`, the editor's
 // Variants mode, the bench): the quality-diversity search (VariantSearch::run) at the fitness
-// resolution until it is finished or the caller stops it (hooks), then the set
-// chosen from its archive and checked at the output resolution (chooseVariantSet). A stopped
-// search still gives the set its archive holds, so a caller can deliver it, marked partial.
+// resolution until it is finished or the caller cancels it, then the set
+// chosen from its archive and checked at the output resolution (chooseVariantSet). A search
+// stopped by `cancel` still gives the set its archive holds, so a caller can deliver it, marked
+// partial.
 #include "common/Result.h"
 #include "variants/LightingMeasure.h"
 #include "material/MaterialInstance.h"
@@ -24,6 +25,7 @@ Result<FoundVariants> findVariants(const MaterialInstance& target, const Variant
                                    const VariantSearchSettings& settings,
                                    const LightingRenders& fitnessRender,
                                    const LightingRenders& outputRender,
-                                   const VariantSearchHooks& hooks = {});
+                                   const CancelToken& cancel = {},
+                                   const VariantSearchObserver& onGeneration = {});
 
 }  // namespace matevo

@@ -201,11 +201,10 @@ bool VariantSearch::finished() const {
            cache_.renderCount() >= std::size_t(std::max(settings_.maxEvaluations, 0));
 }
 
-Status VariantSearch::run(const VariantSearchHooks& hooks) {
-    while (!finished()) {
-        if (hooks.stop && hooks.stop()) break;
+Status VariantSearch::run(const CancelToken& cancel, const VariantSearchObserver& onGeneration) {
+    while (!finished() && !cancel.cancelled()) {
         if (auto stepped = step(); !stepped) return stepped;
-        if (hooks.onGeneration) hooks.onGeneration(progress_);
+        if (onGeneration) onGeneration(progress_);
     }
     return Ok{};
 }

@@ -22,6 +22,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "common/CancelToken.h"
 #include "common/Result.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "evolve/RenderGenomes.h"
@@ -80,13 +81,8 @@ struct VariantSearchProgress {
     double closestDeltaE = 0;
 };
 
-// A caller's say in run(): how it stops the search and follows its progress.
-struct VariantSearchHooks {
-    // Asked before every generation; true ends the search there.
-    std::function<bool()> stop;
-    // Told after every generation.
-    std::function<void(const VariantSearchProgress&)> onGeneration;
-};
+// Told after every generation of run().
+using VariantSearchObserver = std::function<void(const VariantSearchProgress&)>;
 
 class VariantSearch {
 public:
@@ -104,8 +100,9 @@ public:
     Status step();
     // Enough archive members, or the evaluations are spent.
     bool finished() const;
-    // step() until finished() or hooks.stop(); the one loop of every caller (FindVariants.h).
-    Status run(const VariantSearchHooks& hooks = {});
+    // step() until finished() or `cancel` is cancelled (checked before every generation), which
+    // ends the search with the archive it has; the one loop of every caller (FindVariants.h).
+    Status run(const CancelToken& cancel = {}, const VariantSearchObserver& onGeneration = {});
 
     const VariantArchive& archive() const { return archive_; }
     const VariantSearchProgress& progress() const { return progress_; }

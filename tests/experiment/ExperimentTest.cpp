@@ -76,6 +76,29 @@ TEST(Experiment, SameSeedGivesIdenticalResultsAndAnotherSeedDifferent) {
     EXPECT_NE(first, resultsCsv(evolveRuns(target, smallSettings(4)).value()));
 }
 
+// Cancelled after the first run ends, the runs not yet started are left out and those completed
+// are returned as an uncancelled experiment has them; cancelled before, nothing runs.
+TEST(Experiment, ACancelledExperimentReturnsTheRunsCompleted) {
+    const ExperimentTarget target = validationMetal();
+    const auto all = evolveRuns(target, smallSettings(3)).value();
+    const CancelToken cancel;
+    auto some = evolveRuns(
+        target, smallSettings(3), [&](int, int) { cancel.cancel(); }, {}, cancel);
+    ASSERT_TRUE(some.ok()) << some.error().message;
+    EXPECT_GE(some->size(), 1u);
+    EXPECT_LT(some->size(), all.size());
+    for (const RunRecord& record : *some) {
+        const auto same = std::find_if(all.begin(), all.end(), [&](const RunRecord& other) {
+            return other.metric == record.metric && other.run == record.run;
+        });
+        ASSERT_NE(same, all.end());
+        EXPECT_EQ(resultsCsvRow(record), resultsCsvRow(*same));
+    }
+    auto none = evolveRuns(target, smallSettings(3), {}, {}, cancel);
+    ASSERT_TRUE(none.ok());
+    EXPECT_TRUE(none->empty());
+}
+
 bool byDeltaE(const RunRecord& a, const RunRecord& b) { return a.meanDeltaE00 < b.meanDeltaE00; }
 
 // The real CPU reference renderer at a small size, injected as the CLI injects it.

@@ -71,6 +71,19 @@ double numberOf(const tinygltf::Value& object, const std::string& key) {
     return object.Get(key).GetNumberAsDouble();
 }
 
+TEST(ExportSet, ACancelledExportEndsCancelledAndWritesNothing) {
+    testing::ScratchFolder folder("export-cancelled");
+    CpuPopulationRenderer belcour({});
+    const CancelToken cancel;
+    cancel.cancel();
+    const fs::path file = folder / "set.gltf";
+    auto report = exportMaterials({presetTarget("validation_metal")}, belcour, ExportFormat::Gltf,
+                                  file, {}, {}, {}, cancel);
+    ASSERT_FALSE(report.ok());
+    EXPECT_EQ(report.error().kind, ErrorKind::Cancelled);
+    EXPECT_FALSE(fs::exists(file));
+}
+
 TEST(ExportSet, GltfFilesReadBackFieldByField) {
     testing::ScratchFolder folder("export");
     for (const char* name : kValidationPresets) {

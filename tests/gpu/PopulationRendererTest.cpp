@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "GpuTestContext.h"
+#include "common/CancelToken.h"
 #include "evolve/GenomeSampling.h"
 #include "genome/FamilyRules.h"
 #include "gpu/GpuPopulationRenderer.h"
@@ -188,13 +189,31 @@ TEST(PopulationRenderer, FlipMapsWhenAsked) {
     test::expectNoValidationMessages(*test::validatedContext());
 }
 
-TEST(PopulationRenderer, CpuStopsWhenCancelled) {
+// Both renderers end a call with cancelledError() once their token is cancelled, and render
+// as usual before.
+TEST(PopulationRenderer, BothStopWhenCancelled) {
     const Population population = makePopulation();
-    int asked = 0;
-    CpuPopulationRenderer cpu{SceneTextures{}, [&] { return ++asked > 2; }};
-    auto evaluation = cpu.evaluate(population.target, population.candidates, {}, kSize);
-    EXPECT_FALSE(evaluation.ok());
-    EXPECT_EQ(asked, 3) << "asked before each candidate until it said stop";
+    const CancelToken cancel;
+    CpuPopulationRenderer cpu{SceneTextures{}, cancel};
+    gpu::GpuContext* context = test::validatedContext();
+    ASSERT_NE(context, nullptr);
+    auto gpu = gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(), {},
+                                                  cancel);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message;
+    for (PopulationRenderer* renderer : {static_cast<PopulationRenderer*>(&cpu),
+                                         static_cast<PopulationRenderer*>(gpu->get())}) {
+        EXPECT_TRUE(renderer->render(population.candidates, {}, kSize).ok()) << renderer->name();
+    }
+    cancel.cancel();
+    for (PopulationRenderer* renderer : {static_cast<PopulationRenderer*>(&cpu),
+                                         static_cast<PopulationRenderer*>(gpu->get())}) {
+        auto evaluation = renderer->evaluate(population.target, population.candidates, {}, kSize);
+        ASSERT_FALSE(evaluation.ok()) << renderer->name();
+        EXPECT_EQ(evaluation.error().kind, ErrorKind::Cancelled) << renderer->name();
+        auto images = renderer->render(population.candidates, {}, kSize);
+        ASSERT_FALSE(images.ok()) << renderer->name();
+        EXPECT_EQ(images.error().kind, ErrorKind::Cancelled) << renderer->name();
+    }
 }
 
 }  // namespace

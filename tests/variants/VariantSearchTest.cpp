@@ -222,16 +222,15 @@ TEST(VariantSearch, AnUnreachableBandEndsWithNothingAndSaysHowCloseItGot) {
 }
 
 // The one function every caller runs: the search, then the set chosen at the output size; the
-// caller follows each generation and may stop early, and still gets the set found so far.
+// caller follows each generation and may cancel early, and still gets the set found so far.
 TEST(VariantSearch, FindVariantsIsTheSearchThenTheChoiceAndStopsWhenAsked) {
     const VariantRequest request = smallRequest();
     int generations = 0;
-    VariantSearchHooks hooks;
-    hooks.onGeneration = [&](const VariantSearchProgress& progress) {
+    auto countGenerations = [&](const VariantSearchProgress& progress) {
         EXPECT_EQ(progress.generation, ++generations);
     };
     auto found = findVariants(kValidationMetal, request, {}, cpuRenderer(kFitnessSize),
-                              cpuRenderer(kOutputSize), hooks);
+                              cpuRenderer(kOutputSize), {}, countGenerations);
     ASSERT_TRUE(found.ok()) << found.error().message;
     EXPECT_EQ(found->progress.generation, generations);
     EXPECT_GT(generations, 0);
@@ -245,10 +244,14 @@ TEST(VariantSearch, FindVariantsIsTheSearchThenTheChoiceAndStopsWhenAsked) {
         EXPECT_EQ(found->set.variants[i].genome, set->variants[i].genome);
     EXPECT_EQ(found->progress.evaluations, search->progress().evaluations);
 
-    hooks.stop = [&] { return generations >= 1; };
+    const CancelToken cancel;
     generations = 0;
     auto stopped = findVariants(kValidationMetal, request, {}, cpuRenderer(kFitnessSize),
-                                cpuRenderer(kOutputSize), hooks);
+                                cpuRenderer(kOutputSize), cancel,
+                                [&](const VariantSearchProgress& progress) {
+                                    countGenerations(progress);
+                                    cancel.cancel();  // seen before the next generation
+                                });
     ASSERT_TRUE(stopped.ok());
     EXPECT_EQ(stopped->progress.generation, 1);
     EXPECT_LT(stopped->progress.evaluations, found->progress.evaluations);
