@@ -7,13 +7,19 @@ namespace matevo {
 Result<FoundVariants> findVariants(const MaterialInstance& target, const VariantRequest& request,
                                    const VariantSearchSettings& settings,
                                    RenderGenomes fitnessRender, const RenderGenomes& outputRender,
-                                   const VariantSearchHooks& hooks) {
+                                   const VariantSearchHooks& hooks,
+                                   const DeliveryFormat* delivery) {
     auto search = VariantSearch::start(target, request, settings, std::move(fitnessRender));
     if (!search) return search.error();
     if (auto ran = (*search)->run(hooks); !ran) return ran.error();
     auto set = chooseVariantSet((*search)->archive(), request, target.genome, outputRender);
     if (!set) return set.error();
-    return FoundVariants{std::move(set).value(), (*search)->progress()};
+    if (!delivery) return FoundVariants{std::move(set).value(), (*search)->progress(), {}};
+    auto delivered = checkDelivery((*search)->archive(), std::move(set).value(), request,
+                                   target.genome, outputRender, *delivery);
+    if (!delivered) return delivered.error();
+    return FoundVariants{std::move(delivered->set), (*search)->progress(),
+                         std::move(delivered->delivered)};
 }
 
 }  // namespace matevo

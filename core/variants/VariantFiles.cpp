@@ -10,6 +10,7 @@
 #include "io/CarriedTextures.h"
 #include "io/GenomeJson.h"
 #include "io/ImageFile.h"
+#include "variants/DeliveredFiles.h"
 
 namespace matevo {
 namespace {
@@ -97,11 +98,13 @@ nlohmann::ordered_json requestJson(const VariantRun& run) {
 }
 
 nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
-                                     const VariantSet& set) {
+                                     const VariantSet& set, const DeliveredSet* delivered) {
     const std::vector<double> nearest = set.nearestSibling();
     nlohmann::ordered_json variants = nlohmann::ordered_json::array();
-    for (std::size_t i = 0; i < set.variants.size(); ++i)
+    for (std::size_t i = 0; i < set.variants.size(); ++i) {
         variants.push_back(variantEntry(preset, set, i, i, 0, nearest));
+        if (delivered) variants.back()["delivered"] = deliveredEntry(*delivered, i, i);
+    }
     const VariantRequest& request = run.request;
     const bool met = fulfils(set, request);
     nlohmann::ordered_json report = {{"preset", preset.name},
@@ -109,12 +112,15 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
                                      {"target", genomeToJson(preset.target)},
                                      {"request", requestJson(run)}};
     if (!run.madeBy.is_null()) report["made_by"] = run.madeBy;
-    report.update(nlohmann::ordered_json{{"met", met},
-                                         {"summary", variantSummary(run, set)},
-                                         {"variants", std::move(variants)},
-                                         {"pairwise_de00", set.pairwise},
-                                         {"smallest_pairwise_de00", set.smallestPairwise},
-                                         {"evaluations", run.evaluations},
+    report.update(nlohmann::ordered_json{
+        {"met", met},
+        {"summary", variantSummary(run, set) +
+                        (delivered ? deliverySummary(*delivered, request) : std::string())},
+        {"variants", std::move(variants)},
+        {"pairwise_de00", set.pairwise},
+        {"smallest_pairwise_de00", set.smallestPairwise}});
+    if (delivered) report["delivery"] = deliveryJson(*delivered);
+    report.update(nlohmann::ordered_json{{"evaluations", run.evaluations},
                                          {"archived", run.archived},
                                          {"output_renders", set.outputRenders},
                                          {"wall_time_s", run.wallSeconds},

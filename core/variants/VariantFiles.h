@@ -24,6 +24,7 @@
 #include "experiment/Font.h"
 #include "io/MaterialFile.h"
 #include "io/Preset.h"
+#include "variants/DeliveryCheck.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
 
@@ -64,8 +65,12 @@ nlohmann::ordered_json requestJson(const VariantRun& run);
 // The report: request, what made it (when known), per variant (file, ΔE00 to the target, to its
 // nearest sibling, genome), the pairwise ΔE00 matrix, the smallest pairwise distance, evaluations,
 // wall time, seed, and whether the request was met with a one-line summary.
+// With `delivered` (a set checked in its delivery format, DeliveryCheck.h), each variant also
+// carries "delivered" (DeliveredFiles.h), the report "delivery", and the summary says how the
+// delivered set holds.
 nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
-                                     const VariantSet& set);
+                                     const VariantSet& set,
+                                     const DeliveredSet* delivered = nullptr);
 
 // "12 of 12 variants in band 2-5, at least 2 apart (smallest pairwise 2.31), 412 evaluations"
 // or, when short, what was achieved.

@@ -8,10 +8,6 @@
 #include "color/LabImage.h"
 
 namespace matevo {
-namespace {
-
-// Pinned members first, then farthest-first: the member nearest the band's centre, then again
-// and again the one whose nearest already-ordered member is farthest (ties: the earlier one).
 std::vector<std::size_t> spreadOrder(const VariantArchive& archive, const DeltaEBand& band) {
     const std::size_t count = archive.size();
     std::vector<std::size_t> order;
@@ -44,26 +40,26 @@ std::vector<std::size_t> spreadOrder(const VariantArchive& archive, const DeltaE
     return order;
 }
 
-void updateSmallestPairwise(VariantSet& set) {
+double smallestPairwise(const std::vector<std::vector<double>>& pairwise) {
     double smallest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < set.variants.size(); ++i)
-        for (std::size_t j = i + 1; j < set.variants.size(); ++j)
-            smallest = std::min(smallest, set.pairwise[i][j]);
-    set.smallestPairwise = std::isinf(smallest) ? 0.0 : smallest;
+    for (std::size_t i = 0; i < pairwise.size(); ++i)
+        for (std::size_t j = i + 1; j < pairwise.size(); ++j)
+            smallest = std::min(smallest, pairwise[i][j]);
+    return std::isinf(smallest) ? 0.0 : smallest;
 }
 
-}  // namespace
-
-std::vector<double> VariantSet::nearestSibling() const {
-    std::vector<double> nearest(variants.size(), 0.0);
-    for (std::size_t i = 0; i < variants.size(); ++i) {
+std::vector<double> nearestSiblings(const std::vector<std::vector<double>>& pairwise) {
+    std::vector<double> nearest(pairwise.size(), 0.0);
+    for (std::size_t i = 0; i < pairwise.size(); ++i) {
         double value = std::numeric_limits<double>::infinity();
-        for (std::size_t j = 0; j < variants.size(); ++j)
+        for (std::size_t j = 0; j < pairwise.size(); ++j)
             if (j != i) value = std::min(value, pairwise[i][j]);
         nearest[i] = std::isinf(value) ? 0.0 : value;
     }
     return nearest;
 }
+
+std::vector<double> VariantSet::nearestSibling() const { return nearestSiblings(pairwise); }
 
 Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const VariantRequest& request,
                                     const Genome& target, const RenderGenomes& outputRender) {
@@ -109,7 +105,7 @@ Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const Variant
         }
         next = batchEnd;
     }
-    updateSmallestPairwise(set);
+    set.smallestPairwise = smallestPairwise(set.pairwise);
     return set;
 }
 
@@ -119,7 +115,7 @@ void removeVariant(VariantSet& set, std::size_t index) {
     set.variants.erase(set.variants.begin() + offset);
     set.pairwise.erase(set.pairwise.begin() + offset);
     for (auto& row : set.pairwise) row.erase(row.begin() + offset);
-    updateSmallestPairwise(set);
+    set.smallestPairwise = smallestPairwise(set.pairwise);
 }
 
 bool fulfils(const VariantSet& set, const VariantRequest& request) {

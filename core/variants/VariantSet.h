@@ -36,6 +36,16 @@ struct VariantSet {
     std::vector<double> nearestSibling() const;
 };
 
+// The archive's members in the order chooseVariantSet tries them: pinned members first, then
+// farthest-first (the member nearest the band's centre, then again and again the one whose
+// nearest already-ordered member is farthest; ties: the earlier one).
+std::vector<std::size_t> spreadOrder(const VariantArchive& archive, const DeltaEBand& band);
+
+// The smallest entry off the diagonal of a pairwise matrix; 0 for fewer than two members.
+double smallestPairwise(const std::vector<std::vector<double>>& pairwise);
+// For each member of a pairwise matrix, the distance to its nearest other member (0 when alone).
+std::vector<double> nearestSiblings(const std::vector<std::vector<double>>& pairwise);
+
 // outputRender draws at the output size; give it the images as they will be stored (e.g.
 // quantised as in a PNG) so that the figures are the ones found in the files.
 Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const VariantRequest& request,
