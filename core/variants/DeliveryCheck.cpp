@@ -1,6 +1,7 @@
 #include "variants/DeliveryCheck.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -53,26 +54,34 @@ public:
         variant.deltaEToTarget = meanDeltaE00(belcourTargetLab_, belcourLab);
         std::vector<double> belcourDistances = distancesTo(belcourLab, belcourLabs_);
         if (!variant.kept && !holds(variant.deltaEToTarget, belcourDistances)) return false;
+        // The first conversion that holds, unless it misses the conversion's own goal and a
+        // later one holds within it.
+        std::optional<Look> chosen;
         for (int attempt = 0; attempt < std::max(format_.attempts, 1); ++attempt) {
             auto look = checkedImages(format_.render(std::span(&variant.genome, 1), attempt), 1,
                                       format_.name);
             if (!look) return look.error();
             ++result_.delivered.conversions;
-            LabImage lab = toLabImage(look->front());
-            const double toTarget = meanDeltaE00(deliveredTargetLab_, lab);
-            std::vector<double> distances = distancesTo(lab, deliveredLabs_);
-            if (!variant.kept && !holds(toTarget, distances)) continue;
-            if (attempt > 0) ++result_.delivered.refitted;
-            result_.delivered.variants.push_back(
-                {std::move(look->front()), toTarget, meanDeltaE00(lab, belcourLab), attempt});
-            appendToPairwise(result_.delivered.pairwise, std::move(distances));
-            deliveredLabs_.push_back(std::move(lab));
-            appendToPairwise(result_.set.pairwise, std::move(belcourDistances));
-            belcourLabs_.push_back(std::move(belcourLab));
-            result_.set.variants.push_back(std::move(variant));
-            return true;
+            Look candidate{{std::move(look->front()), 0.0, 0.0, attempt}, {}, {}};
+            candidate.lab = toLabImage(candidate.variant.image);
+            candidate.variant.deltaEToTarget = meanDeltaE00(deliveredTargetLab_, candidate.lab);
+            candidate.variant.deltaEToMatevo = meanDeltaE00(candidate.lab, belcourLab);
+            candidate.distances = distancesTo(candidate.lab, deliveredLabs_);
+            if (!variant.kept && !holds(candidate.variant.deltaEToTarget, candidate.distances))
+                continue;
+            if (!chosen || candidate.variant.deltaEToMatevo <= format_.goalDeltaE)
+                chosen = std::move(candidate);
+            if (chosen->variant.deltaEToMatevo <= format_.goalDeltaE) break;
         }
-        return false;
+        if (!chosen) return false;
+        if (chosen->variant.attempt > 0) ++result_.delivered.refitted;
+        result_.delivered.variants.push_back(std::move(chosen->variant));
+        appendToPairwise(result_.delivered.pairwise, std::move(chosen->distances));
+        deliveredLabs_.push_back(std::move(chosen->lab));
+        appendToPairwise(result_.set.pairwise, std::move(belcourDistances));
+        belcourLabs_.push_back(std::move(belcourLab));
+        result_.set.variants.push_back(std::move(variant));
+        return true;
     }
 
     bool wasOffered(const Genome& genome) const {
@@ -89,6 +98,13 @@ public:
     }
 
 private:
+    // One conversion of a variant, measured.
+    struct Look {
+        DeliveredVariant variant;
+        LabImage lab;
+        std::vector<double> distances;  // to the delivered looks accepted before
+    };
+
     bool holds(double toTarget, const std::vector<double>& distances) const {
         return request_.band.contains(toTarget) &&
                std::all_of(distances.begin(), distances.end(),

@@ -2,8 +2,10 @@
 // The delivery check of a set (docs/variants.md, "Delivered sets"): the set chosen on matevo's
 // Belcour render (chooseVariantSet) is checked again as its delivery format shows it — for glTF,
 // the fitted glTF parameters rendered with the glTF BRDF (export/GltfDelivery.h). A variant whose
-// delivered look leaves the band, or comes closer than minApart to another variant's, is
-// converted again with more effort (a refit); one that still fails is replaced by the next
+// delivered look leaves the band, or comes closer than minApart to another variant's, or
+// whose conversion misses its own goal (DeliveryFormat::goalDeltaE), is converted again with
+// more effort (a refit; past the goal, the refit is kept only when it holds within the goal);
+// one whose conversions all leave the band or the spacing is replaced by the next
 // member of the search's archive, in chooseVariantSet's order, that holds on both renders. So
 // the set delivered meets the request on the Belcour render and in its delivery format.
 #include <cstddef>

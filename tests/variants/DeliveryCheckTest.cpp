@@ -99,5 +99,50 @@ TEST(DeliveryCheck, ARefitOrAReplacementKeepsTheDeliveredSetInBandAndApart) {
     for (const auto& [key, count] : conversions) EXPECT_LE(count, 2) << key.first;
 }
 
+// A conversion that holds but misses its own goal is tried again: the refit is delivered when it
+// holds within the goal, else the first conversion stays.
+TEST(DeliveryCheck, AConversionPastItsGoalIsRefittedAndKeptOnlyWhenTheRefitIsWithin) {
+    VariantRequest request;
+    request.count = 2;
+    request.band = {2.0, 9.0};
+    request.minApart = 2.0;
+    const Genome target = genomeOfLightness(50.0);
+    const LabImage targetLab = toLabImage(greyOfLightness(50.0));
+    VariantArchive archive(request.minApart);
+    for (double lightness : {56.0, 44.0}) {
+        const LabImage lab = toLabImage(greyOfLightness(lightness));
+        archive.offer(genomeOfLightness(lightness), lab, meanDeltaE00(targetLab, lab),
+                      archive.distancesTo(lab));
+    }
+    auto chosen = chooseVariantSet(archive, request, target, renderGreys);
+    ASSERT_TRUE(chosen.ok());
+    // Both convert 2.5 L* off at first; only 56's refit comes back within 2 of matevo's render.
+    DeliveryFormat format{"grey",
+                          [&](std::span<const Genome> genomes, int attempt)
+                              -> Result<std::vector<Image>> {
+                              std::vector<Image> images;
+                              for (const Genome& genome : genomes) {
+                                  const bool near = genome[0] == 50.0 ||
+                                                    (genome[0] == 56.0 && attempt == 1);
+                                  images.push_back(
+                                      greyOfLightness(genome[0] + (near ? 0.5 : 2.5)));
+                              }
+                              return images;
+                          },
+                          2, 2.0};
+    auto delivered = checkDelivery(archive, std::move(chosen).value(), request, target,
+                                   renderGreys, format);
+    ASSERT_TRUE(delivered.ok()) << delivered.error().message;
+    const DeliveredSet& looks = delivered->delivered;
+    ASSERT_EQ(looks.variants.size(), 2u);
+    EXPECT_EQ(looks.refitted, 1u);
+    EXPECT_EQ(looks.replaced, 0u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const bool brighter = delivered->set.variants[i].genome[0] == 56.0;
+        EXPECT_EQ(looks.variants[i].attempt, brighter ? 1 : 0) << i;
+        EXPECT_EQ(looks.withinGoal(i), brighter) << i;
+    }
+}
+
 }  // namespace
 }  // namespace matevo
