@@ -3,7 +3,7 @@
 # an independent client's renders can be compared with matevo's by `matevo compare`
 # (docs/export.md, "Clients"). Not run in CI: Blender is not a test dependency.
 #
-#   blender -b --factory-startup --python scripts/blender-render-set.py -- \
+#   blender -b --factory-startup --python-exit-code 1 --python scripts/blender-render-set.py -- \
 #       SET/delivered/set.glb OUTDIR [SIZE] [SAMPLES]
 #
 # Writes OUTDIR/target.png (the glTF's first material, the set's target) and
@@ -23,7 +23,13 @@ import struct
 import sys
 
 import bpy
+import numpy
 from mathutils import Vector
+
+# Debian 12's Blender 3.4 glTF importer still uses numpy.bool, which Debian's numpy 1.24 no
+# longer has; it meant the builtin.
+if not hasattr(numpy, "bool"):
+    numpy.bool = bool
 
 
 def gltf_material_names(glb_path):
