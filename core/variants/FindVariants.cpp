@@ -14,7 +14,10 @@ Result<FoundVariants> findVariants(const MaterialInstance& target, const Variant
     if (auto ran = (*search)->run(hooks); !ran) return ran.error();
     auto set = chooseVariantSet((*search)->archive(), request, target.genome, outputRender);
     if (!set) return set.error();
-    if (!delivery) return FoundVariants{std::move(set).value(), (*search)->progress(), {}};
+    // A stopped search is delivered unchecked (marked partial by the caller): the check's fits
+    // would keep the user waiting after they asked to stop.
+    if (!delivery || (hooks.stop && hooks.stop()))
+        return FoundVariants{std::move(set).value(), (*search)->progress(), {}};
     auto delivered = checkDelivery((*search)->archive(), std::move(set).value(), request,
                                    target.genome, outputRender, *delivery);
     if (!delivered) return delivered.error();
