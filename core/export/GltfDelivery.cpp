@@ -11,9 +11,9 @@
 namespace matevo {
 
 GltfDelivery::GltfDelivery(const Genome& target, const MaterialFamily& family,
-                           const std::array<double, 3>& baseKappa, SceneTextures textures, const SceneSettings& scene,
-                           RenderGenomes belcourAtFitSize, int outputSize,
-                           const ExportSettings& settings)
+                           const std::array<double, 3>& baseKappa, SceneTextures textures,
+                           const SceneSettings& scene, RenderGenomes belcourAtFitSize,
+                           int outputSize, const ExportSettings& settings)
     : target_(target),
       family_(family),
       baseKappa_(baseKappa),
@@ -43,7 +43,8 @@ Result<std::vector<Image>> GltfDelivery::render(std::span<const Genome> genomes,
         if (attempt > 0) {
             fitSettings.maxEvaluations *= 3;
             const auto targetFit = conversions_.find({target_.values, 0});
-            if (targetFit != conversions_.end()) moreStarts.push_back(targetFit->second.fit.material);
+            if (targetFit != conversions_.end())
+                moreStarts.push_back(targetFit->second.fit.material);
         }
         std::vector<Conversion> made(missing.size());
         // Each fit writes only its own entry, so the result does not depend on the threads.
@@ -51,14 +52,15 @@ Result<std::vector<Image>> GltfDelivery::render(std::span<const Genome> genomes,
             const MaterialInstance material = materialOf(missing[i], family_, baseKappa_);
             made[i].fit = fitGltfMaterial(material, (*targets)[i], textures_, scene_, fitSettings,
                                           moreStarts);
-            made[i].look =
-                quantizeAsPng(renderGltfSphere(made[i].fit.material, textures_, scene_, outputSize_));
+            made[i].look = quantizeAsPng(
+                renderGltfSphere(made[i].fit.material, textures_, scene_, outputSize_));
         });
         for (std::size_t i = 0; i < missing.size(); ++i)
             conversions_.emplace(Key{missing[i].values, attempt}, std::move(made[i]));
     }
     std::vector<Image> looks;
-    for (const Genome& genome : genomes) looks.push_back(conversions_.at({genome.values, attempt}).look);
+    for (const Genome& genome : genomes)
+        looks.push_back(conversions_.at({genome.values, attempt}).look);
     return looks;
 }
 

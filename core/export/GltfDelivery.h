@@ -33,9 +33,9 @@ public:
     // settings.fit.imageSize, unquantised; `baseKappa` is the preset's (a genome with kappa
     // genes carries its own).
     GltfDelivery(const Genome& target, const MaterialFamily& family,
-                 const std::array<double, 3>& baseKappa,
-                 SceneTextures textures, const SceneSettings& scene,
-                 RenderGenomes belcourAtFitSize, int outputSize, const ExportSettings& settings);
+                 const std::array<double, 3>& baseKappa, SceneTextures textures,
+                 const SceneSettings& scene, RenderGenomes belcourAtFitSize, int outputSize,
+                 const ExportSettings& settings);
 
     // The delivered look of each genome by conversion `attempt` (0 or 1); fits not made yet
     // are made side by side on the worker threads.

@@ -50,8 +50,8 @@ std::string deliverySummary(const DeliveredSet& delivered, const VariantRequest&
         inBand += request.band.contains(delivered.variants[i].deltaEToTarget) ? 1 : 0;
         withinGoal += delivered.withinGoal(i) ? 1 : 0;
     }
-    std::string text = "; delivered as " + delivered.format + ": " + std::to_string(inBand) +
-                       " in band";
+    std::string text =
+        "; delivered as " + delivered.format + ": " + std::to_string(inBand) + " in band";
     if (delivered.variants.size() > 1)
         text += ", smallest pairwise " + fixed2(delivered.smallestPairwise);
     return text + ", " + std::to_string(withinGoal) + " within the export goal (mean dE00 " +

@@ -15,8 +15,8 @@ Result<std::vector<Image>> checkedImages(Result<std::vector<Image>> images, std:
                                          const std::string& what) {
     if (!images) return images.error();
     if (images->size() != wanted)
-        return internalError(what + " returned " + std::to_string(images->size()) +
-                             " images for " + std::to_string(wanted) + " genomes");
+        return internalError(what + " returned " + std::to_string(images->size()) + " images for " +
+                             std::to_string(wanted) + " genomes");
     return images;
 }
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include "color/LabImage.h"
 #include "export/GltfMaterial.h"
@@ -69,8 +69,11 @@ TEST(DeliveredSet, TheExportedGltfHoldsTheBandAndTheSpacing) {
     constexpr double kLow = 2, kHigh = 5, kApart = 2;
     const auto run = testing::runMatevo(
         "variants --preset validation_metal --hue --count 3 --band 2,5 --min-apart 2 --seed 2"
-        " --size " + std::to_string(kSize) + " --fitness-size 16 --max-evaluations 400"
-        " --backend cpu --deliver gltf --json --out " + shellQuoted(set));
+        " --size " +
+        std::to_string(kSize) +
+        " --fitness-size 16 --max-evaluations 400"
+        " --backend cpu --deliver gltf --json --out " +
+        shellQuoted(set));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto report = nlohmann::ordered_json::parse(run.out);
     ASSERT_EQ(report["variants"].size(), 3u);
@@ -84,15 +87,14 @@ TEST(DeliveredSet, TheExportedGltfHoldsTheBandAndTheSpacing) {
               (Keys{"image", "de00_to_target", "de00_to_nearest_sibling", "de00_to_matevo",
                     "within_goal", "refitted"}));
     EXPECT_EQ(keysOf(report["delivery"]),
-              (Keys{"format", "folder", "goal_mean_de00", "target_de00_to_matevo",
-                    "pairwise_de00", "smallest_pairwise_de00", "conversions", "refitted",
-                    "replaced"}));
+              (Keys{"format", "folder", "goal_mean_de00", "target_de00_to_matevo", "pairwise_de00",
+                    "smallest_pairwise_de00", "conversions", "refitted", "replaced"}));
 
     tinygltf::TinyGLTF loader;
     tinygltf::Model model;
     std::string error, warning;
-    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning,
-                                          (set / "delivered/set.glb").string()))
+    ASSERT_TRUE(
+        loader.LoadBinaryFromFile(&model, &error, &warning, (set / "delivered/set.glb").string()))
         << error;
     // The target, then the variants in the report's order (KHR_materials_variants).
     ASSERT_EQ(model.materials.size(), 4u);

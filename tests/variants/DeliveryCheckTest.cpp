@@ -62,21 +62,20 @@ TEST(DeliveryCheck, ARefitOrAReplacementKeepsTheDeliveredSetInBandAndApart) {
     // 55 converts to 50.5 (out of the band) the first time and right when refitted; 52.5 converts
     // to 50.5 every time.
     std::map<std::pair<double, int>, int> conversions;
-    DeliveryFormat format{"grey",
-                          [&](std::span<const Genome> genomes, int attempt)
-                              -> Result<std::vector<Image>> {
-                              std::vector<Image> images;
-                              for (const Genome& genome : genomes) {
-                                  ++conversions[{genome[0], attempt}];
-                                  const bool off = genome[0] == 52.5 ||
-                                                   (genome[0] == 55.0 && attempt == 0);
-                                  images.push_back(greyOfLightness(off ? 50.5 : genome[0]));
-                              }
-                              return images;
-                          },
-                          2, 2.0};
-    auto delivered = checkDelivery(archive, std::move(chosen).value(), request, target,
-                                   renderGreys, format);
+    DeliveryFormat format{
+        "grey",
+        [&](std::span<const Genome> genomes, int attempt) -> Result<std::vector<Image>> {
+            std::vector<Image> images;
+            for (const Genome& genome : genomes) {
+                ++conversions[{genome[0], attempt}];
+                const bool off = genome[0] == 52.5 || (genome[0] == 55.0 && attempt == 0);
+                images.push_back(greyOfLightness(off ? 50.5 : genome[0]));
+            }
+            return images;
+        },
+        2, 2.0};
+    auto delivered =
+        checkDelivery(archive, std::move(chosen).value(), request, target, renderGreys, format);
     ASSERT_TRUE(delivered.ok()) << delivered.error().message;
     const VariantSet& set = delivered->set;
     const DeliveredSet& looks = delivered->delivered;
@@ -117,21 +116,19 @@ TEST(DeliveryCheck, AConversionPastItsGoalIsRefittedAndKeptOnlyWhenTheRefitIsWit
     auto chosen = chooseVariantSet(archive, request, target, renderGreys);
     ASSERT_TRUE(chosen.ok());
     // Both convert 2.5 L* off at first; only 56's refit comes back within 2 of matevo's render.
-    DeliveryFormat format{"grey",
-                          [&](std::span<const Genome> genomes, int attempt)
-                              -> Result<std::vector<Image>> {
-                              std::vector<Image> images;
-                              for (const Genome& genome : genomes) {
-                                  const bool near = genome[0] == 50.0 ||
-                                                    (genome[0] == 56.0 && attempt == 1);
-                                  images.push_back(
-                                      greyOfLightness(genome[0] + (near ? 0.5 : 2.5)));
-                              }
-                              return images;
-                          },
-                          2, 2.0};
-    auto delivered = checkDelivery(archive, std::move(chosen).value(), request, target,
-                                   renderGreys, format);
+    DeliveryFormat format{
+        "grey",
+        [&](std::span<const Genome> genomes, int attempt) -> Result<std::vector<Image>> {
+            std::vector<Image> images;
+            for (const Genome& genome : genomes) {
+                const bool near = genome[0] == 50.0 || (genome[0] == 56.0 && attempt == 1);
+                images.push_back(greyOfLightness(genome[0] + (near ? 0.5 : 2.5)));
+            }
+            return images;
+        },
+        2, 2.0};
+    auto delivered =
+        checkDelivery(archive, std::move(chosen).value(), request, target, renderGreys, format);
     ASSERT_TRUE(delivered.ok()) << delivered.error().message;
     const DeliveredSet& looks = delivered->delivered;
     ASSERT_EQ(looks.variants.size(), 2u);
