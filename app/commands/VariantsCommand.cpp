@@ -15,14 +15,14 @@
 #include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
-#include "export/GltfDelivery.h"
-#include "mesh/MeshFile.h"
 #include "common/StopRequest.h"
 #include "experiment/Experiment.h"
+#include "export/GltfDelivery.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/AtomicFile.h"
 #include "io/ImageFile.h"
 #include "io/OutputFolder.h"
+#include "mesh/MeshFile.h"
 #include "variants/DeliveredFiles.h"
 #include "variants/FindVariants.h"
 #include "variants/ShareResume.h"
@@ -177,14 +177,15 @@ FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
     printProgress("");
     if (!found) throw std::runtime_error(found.error().message);
     const VariantSearchProgress& progress = found->progress;
-    return {std::move(found->set), VariantRun{request,
-                                              job.size,
-                                              job.fitnessSize,
-                                              progress.evaluations,
-                                              progress.archived,
-                                              progress.closestDeltaE,
-                                              0.0,
-                                              {}},
+    return {std::move(found->set),
+            VariantRun{request,
+                       job.size,
+                       job.fitnessSize,
+                       progress.evaluations,
+                       progress.archived,
+                       progress.closestDeltaE,
+                       0.0,
+                       {}},
             std::move(found->delivered)};
 }
 
@@ -203,12 +204,13 @@ void writeDeliveredGltf(const VariantsJob& job, const FoundSet& found) {
     auto sphere = loadMesh("sphere");
     if (!sphere) throw std::runtime_error(sphere.error().message);
     const std::filesystem::path folder = deliveredFolder(job.output->staging());
-    auto exported = writeExport(*fitted, ExportFormat::Glb, folder / "set.glb",
-                                GltfAsset{GltfArrangement::MaterialVariants, std::move(*sphere), {}});
+    auto exported =
+        writeExport(*fitted, ExportFormat::Glb, folder / "set.glb",
+                    GltfAsset{GltfArrangement::MaterialVariants, std::move(*sphere), {}});
     if (!exported) throw UsageError("--out: " + job.output->userFacing(exported.error().message));
     exported->file = "set.glb";  // beside export.json, wherever the set is moved
-    if (auto written = writeFileAtomically(folder / "export.json",
-                                           exportReportJson(*exported).dump(2) + "\n");
+    if (auto written =
+            writeFileAtomically(folder / "export.json", exportReportJson(*exported).dump(2) + "\n");
         !written)
         throw UsageError("--out: " + job.output->userFacing(written.error().message));
 }

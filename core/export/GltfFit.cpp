@@ -154,8 +154,7 @@ double maximumFittedIor(const MaterialFamily& family) {
 
 GltfFit fitGltfMaterial(const MaterialInstance& material, const Image& target,
                         const SceneTextures& textures, const SceneSettings& scene,
-                        const GltfFitSettings& settings,
-                        std::span<const GltfMaterial> moreStarts) {
+                        const GltfFitSettings& settings, std::span<const GltfMaterial> moreStarts) {
     const GltfMaterial guess = physicalGuess(material, textures);
     auto meanDeltaE = [&](const GltfMaterial& candidate) {
         const Image image = renderGltfSphere(candidate, textures, scene, settings.imageSize,

@@ -477,8 +477,8 @@ TEST(ExportSet, MaterialXWritesOnlyTheInputsThatAct) {
         return found;
     };
     EXPECT_EQ(count("metallic"), 2u);
-    for (const char* input : {"ior", "specular", "specular_color", "clearcoat",
-                              "clearcoat_roughness"})
+    for (const char* input :
+         {"ior", "specular", "specular_color", "clearcoat", "clearcoat_roughness"})
         EXPECT_EQ(count(input), 1u) << input << "\n" << document;
 }
 
