@@ -15,11 +15,15 @@
 #include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
+#include "experiment/Experiment.h"
+#include "export/GltfDelivery.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/AtomicFile.h"
 #include "io/ImageFile.h"
 #include "io/OutputFolder.h"
+#include "mesh/MeshFile.h"
 #include "render/LightingScenes.h"
+#include "variants/DeliveredFiles.h"
 #include "variants/FindVariants.h"
 #include "variants/ShareResume.h"
 #include "variants/VariantBlockFiles.h"
@@ -33,7 +37,7 @@ constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
     "                       [--size N] [--fitness-size N] [--max-evaluations N] [--hue]\n"
     "                       [--backend gpu|cpu [--no-fallback]] [--out DIR] [--force]\n"
-    "                       [--heatmap de00|flip] [--env L1,L2,...]\n"
+    "                       [--heatmap de00|flip] [--env L1,L2,...] [--deliver gltf]\n"
     "                       [--json] [--block B [--shard I/K] [--resume]]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
     "whose renders lie LO to HI mean CIEDE2000 from the target's and at least D from each other.\n"
@@ -61,6 +65,14 @@ constexpr const char* kHelp =
     "                       when it is in band and D apart from the others under every one;\n"
     "                       the report gives ΔE00 per lighting, the images show the first\n"
     "                       (default: the preset's own scene alone)\n"
+    "  --deliver gltf       check the set as it is delivered too: each variant's glTF fit (as\n"
+    "                       `matevo export` makes it) rendered with the glTF BRDF must also lie\n"
+    "                       in the band and D apart; a variant whose fit fails is refitted, or\n"
+    "                       replaced from the search. The report gives both measurements per\n"
+    "                       variant and pair; with --out also DIR/delivered/set.glb (the target\n"
+    "                       on a sphere, every variant a KHR_materials_variants variant),\n"
+    "                       DIR/delivered/export.json and the delivered looks as PNGs\n"
+    "                       (docs/variants.md, \"Delivered sets\"); not with --block or --env\n"
     "  --json               print the report as JSON\n"
     "  --block B            cut the set into blocks of B variants, each an independent search\n"
     "                       seeded by the seed and the block's index: variants are at least D\n"
@@ -135,16 +147,29 @@ struct VariantsJob {
     bool asJson = false;
     std::chrono::steady_clock::time_point started;
     nlohmann::ordered_json madeBy;  // RenderBackend.h's madeBy
+    GltfDelivery* gltf = nullptr;   // with --deliver gltf
 };
+
+// --deliver gltf: the check's view of the glTF conversion (variants/DeliveryCheck.h).
+DeliveryFormat gltfFormat(GltfDelivery& gltf, const ExportSettings& settings) {
+    return {"gltf",
+            [&gltf](std::span<const Genome> genomes, int attempt) {
+                return gltf.render(genomes, attempt);
+            },
+            GltfDelivery::kConversions, settings.fit.goalMeanDeltaE00};
+}
 
 // One search and the set chosen from it: the whole set, or one block.
 struct FoundSet {
     VariantSet set;
     VariantRun run;
+    std::optional<DeliveredSet> delivered;
 };
 
 FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
                  const std::string& progressLabel) {
+    std::optional<DeliveryFormat> delivery;
+    if (job.gltf) delivery = gltfFormat(*job.gltf, ExportSettings{});
     auto found = findVariants({job.preset.target, job.preset.family, job.preset.baseKappa}, request,
                               job.settings, job.fitnessRender, job.outputRender, stopToken(),
                               [&progressLabel](const VariantSearchProgress& progress) {
@@ -153,18 +178,61 @@ FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
                                                 " evaluations, " +
                                                 std::to_string(progress.archived) +
                                                 " in the archive");
-                              });
+                              },
+                              delivery ? &*delivery : nullptr);
     printProgress("");
     if (!found) throw std::runtime_error(found.error().message);
     const VariantSearchProgress& progress = found->progress;
-    return {std::move(found->set), VariantRun{request,
-                                              job.size,
-                                              job.fitnessSize,
-                                              progress.evaluations,
-                                              progress.archived,
-                                              progress.closestDeltaE,
-                                              0.0,
-                                              {}}};
+    return {std::move(found->set),
+            VariantRun{request,
+                       job.size,
+                       job.fitnessSize,
+                       progress.evaluations,
+                       progress.archived,
+                       progress.closestDeltaE,
+                       0.0,
+                       {}},
+            std::move(found->delivered)};
+}
+
+// DIR/delivered/set.glb and export.json: the fits the check measured, the target as the default
+// material of a sphere and every variant a named KHR_materials_variants variant.
+void writeDeliveredGltf(const VariantsJob& job, const FoundSet& found) {
+    std::vector<GltfDelivery::Member> members{
+        {job.target.name, job.preset.target, 0, found.set.target}};
+    for (std::size_t i = 0; i < found.set.variants.size(); ++i) {
+        const Variant& variant = found.set.variants[i];
+        members.push_back({variantMaterial(job.target, variant, i).name, variant.genome,
+                           found.delivered->variants[i].attempt, variant.image});
+    }
+    auto fitted = job.gltf->fittedSet(members);
+    if (!fitted) throw std::runtime_error(fitted.error().message);
+    auto sphere = loadMesh("sphere");
+    if (!sphere) throw std::runtime_error(sphere.error().message);
+    const std::filesystem::path folder = deliveredFolder(job.output->staging());
+    auto exported =
+        writeExport(*fitted, ExportFormat::Glb, folder / "set.glb",
+                    GltfAsset{GltfArrangement::MaterialVariants, std::move(*sphere), {}});
+    if (!exported) throw UsageError("--out: " + job.output->userFacing(exported.error().message));
+    exported->file = "set.glb";  // beside export.json, wherever the set is moved
+    if (auto written =
+            writeFileAtomically(folder / "export.json", exportReportJson(*exported).dump(2) + "\n");
+        !written)
+        throw UsageError("--out: " + job.output->userFacing(written.error().message));
+}
+
+// One line per delivered variant whose glTF look is past the export's goal, as export says it.
+void warnPastGoal(const DeliveredSet& delivered) {
+    for (std::size_t i = 0; i < delivered.variants.size(); ++i)
+        if (!delivered.withinGoal(i)) {
+            char text[160];
+            std::snprintf(text, sizeof text,
+                          "%s: not exportable within the goal: its glTF fit is %.2f dE00 from "
+                          "matevo's render (goal %.2f)",
+                          variantStem(i).c_str(), delivered.variants[i].deltaEToMatevo,
+                          delivered.goalDeltaE);
+            printWarning(text);
+        }
 }
 
 void commit(std::optional<OutputFolder>& output) {
@@ -205,17 +273,24 @@ int runOneSet(const VariantsJob& job) {
     FoundSet found = findSet(job, job.request, "");
     found.run.wallSeconds = secondsSince(job.started);
     found.run.madeBy = job.madeBy;
-    nlohmann::ordered_json report = variantReport(job.preset, found.run, found.set);
+    const DeliveredSet* delivered = found.delivered ? &*found.delivered : nullptr;
+    nlohmann::ordered_json report = variantReport(job.preset, found.run, found.set, delivered);
     const int signal = markPartial(report);
     if (job.output) {
         if (auto written = writeVariantFiles(job.output->staging(), job.target, found.set, report,
                                              *job.font, job.heatmapMetric);
             !written)
             throw UsageError("--out: " + job.output->userFacing(written.error().message));
+        if (delivered) {
+            if (auto written = writeDeliveredLooks(job.output->staging(), *delivered); !written)
+                throw UsageError("--out: " + job.output->userFacing(written.error().message));
+            writeDeliveredGltf(job, found);
+        }
         commit(job.output);
     }
+    if (delivered) warnPastGoal(*delivered);
     if (job.asJson) std::printf("%s\n", report.dump(2).c_str());
-    return finish(signal, variantSummary(found.run, found.set), fulfils(found.set, job.request),
+    return finish(signal, report["summary"].get<std::string>(), fulfils(found.set, job.request),
                   job.output.has_value(), job.asJson, found.run.wallSeconds);
 }
 
@@ -321,6 +396,14 @@ int runVariants(CommandLine& args) {
     const bool replaceOutput = args.flag("--force");
     const bool asJson = args.flag("--json");
     const bool resume = args.flag("--resume");
+    const auto deliver = args.option("--deliver");
+    if (deliver && *deliver != "gltf")
+        throw UsageError("--deliver: expected gltf, got '" + *deliver + "'");
+    if (deliver && blockSize)
+        throw UsageError("--deliver checks one set; it does not take --block");
+    if (deliver && !request.lightings.empty())
+        throw UsageError("--deliver checks the set in the preset's own lighting, as the glTF "
+                         "reference renders it; it does not take --env");
     args.onlyWith("--force", "--out");
     args.onlyWith("--shard", "--block");
     args.onlyWith("--shard", "--out");
@@ -390,6 +473,15 @@ int runVariants(CommandLine& args) {
     auto renderAt = [&](int side) {
         return renderUnderEachLighting(*lit, preset.family, preset.baseKappa, side);
     };
+    // With --deliver, the archive keeps as many spare variants as are asked for, to replace
+    // those whose delivered look fails.
+    if (deliver) settings.spare = std::max(settings.spare, request.count);
+    std::optional<GltfDelivery> gltf;
+    if (deliver)
+        gltf.emplace(preset.target, preset.family, preset.baseKappa, *textures, preset.scene,
+                     renderGenomesWith(lit->front().renderer, preset.family, preset.baseKappa, preset.scene,
+                                       ExportSettings{}.fit.imageSize),
+                     size, ExportSettings{});
     const VariantsJob job{preset,
                           materialFromPreset(preset, choice.file, preset.target, preset.name),
                           request,
@@ -403,7 +495,8 @@ int runVariants(CommandLine& args) {
                           *heatmapMetric,
                           asJson,
                           started,
-                          parts.header["made_by"]};
+                          parts.header["made_by"],
+                          gltf ? &*gltf : nullptr};
     return blockSize ? runBlocks(job, plan, blocks, shard, std::move(parts)) : runOneSet(job);
 }
 

@@ -154,7 +154,7 @@ double maximumFittedIor(const MaterialFamily& family) {
 
 GltfFit fitGltfMaterial(const MaterialInstance& material, const Image& target,
                         const SceneTextures& textures, const SceneSettings& scene,
-                        const GltfFitSettings& settings) {
+                        const GltfFitSettings& settings, std::span<const GltfMaterial> moreStarts) {
     const GltfMaterial guess = physicalGuess(material, textures);
     auto meanDeltaE = [&](const GltfMaterial& candidate) {
         const Image image = renderGltfSphere(candidate, textures, scene, settings.imageSize,
@@ -168,8 +168,10 @@ GltfFit fitGltfMaterial(const MaterialInstance& material, const Image& target,
     GltfMaterial swapped = guess;
     swapped.metallic = metal ? 0.0 : 1.0;
     const double maxIor = maximumFittedIor(material.family);
-    const Start starts[] = {metal ? metalStart(guess) : dielectricStart(guess, maxIor),
-                            metal ? dielectricStart(swapped, maxIor) : metalStart(swapped)};
+    std::vector<Start> starts = {metal ? metalStart(guess) : dielectricStart(guess, maxIor),
+                                 metal ? dielectricStart(swapped, maxIor) : metalStart(swapped)};
+    for (const GltfMaterial& more : moreStarts)
+        starts.push_back(more.metallic == 1.0 ? metalStart(more) : dielectricStart(more, maxIor));
     GltfFit best;
     best.meanDeltaE00 = 1e30;
     const Start* bestStart = nullptr;
@@ -189,7 +191,7 @@ GltfFit fitGltfMaterial(const MaterialInstance& material, const Image& target,
             bestPoint = minimum.point;
         }
     };
-    const int budgetPerStart = settings.maxEvaluations / 2;
+    const int budgetPerStart = settings.maxEvaluations / int(starts.size());
     for (const Start& start : starts) minimizeFrom(start, variablesOf(start), budgetPerStart);
     // A fit past the goal gets one more round from its best point: a fresh simplex leaves the
     // flat valley a collapsed one stops in.

@@ -3,6 +3,8 @@
 // Belcour render of the same material, by mean CIEDE2000 over the sphere: glTF cannot express the
 // Belcour stack (its coat IOR is fixed at 1.5, the coat does not absorb, alpha = roughness^2), so
 // a parameter-by-parameter conversion would be wrong by more than it needs to be.
+#include <span>
+
 #include "common/Image.h"
 #include "export/GltfMaterial.h"
 #include "material/MaterialInstance.h"
@@ -33,9 +35,11 @@ struct GltfFit {
 double maximumFittedIor(const MaterialFamily& family);
 
 // `target` is the Belcour render of `material` at settings.imageSize (either back end).
-// Deterministic.
+// `moreStarts`: materials the fit also starts from (e.g. a refit of a variant starts from its
+// target's fit too); the budget is shared evenly by every start. Deterministic.
 GltfFit fitGltfMaterial(const MaterialInstance& material, const Image& target,
                         const SceneTextures& textures, const SceneSettings& scene,
-                        const GltfFitSettings& settings = {});
+                        const GltfFitSettings& settings = {},
+                        std::span<const GltfMaterial> moreStarts = {});
 
 }  // namespace matevo

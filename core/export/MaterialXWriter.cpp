@@ -81,7 +81,7 @@ std::string materialXDocument(const std::vector<NamedGltfMaterial>& materials,
         if (m.roughnessTextured)
             roughnessNode = texturedFactor(out, id + "_roughness", roughnessFile, false,
                                            xmlNumber(m.roughness));
-        if (m.clearcoatRoughnessTextured)
+        if (m.clearcoatRoughnessTextured && clearcoatActs(m))
             clearcoatRoughnessNode = texturedFactor(out, id + "_clearcoat_roughness",
                                                     roughnessFile, false,
                                                     xmlNumber(m.clearcoatRoughness));
@@ -96,14 +96,20 @@ std::string materialXDocument(const std::vector<NamedGltfMaterial>& materials,
             writeInput(out, "roughness", "float", xmlNumber(m.roughness));
         else
             writeConnection(out, "roughness", "float", roughnessNode);
-        writeInput(out, "specular", "float", xmlNumber(m.specular));
-        writeInput(out, "specular_color", "color3", color(m.specularColor));
-        writeInput(out, "ior", "float", xmlNumber(m.ior));
-        writeInput(out, "clearcoat", "float", xmlNumber(m.clearcoat));
-        if (clearcoatRoughnessNode.empty())
-            writeInput(out, "clearcoat_roughness", "float", xmlNumber(m.clearcoatRoughness));
-        else
-            writeConnection(out, "clearcoat_roughness", "float", clearcoatRoughnessNode);
+        // As the glTF writer: only inputs that act on the material (GltfMaterial.h); the others
+        // keep gltf_pbr's defaults, which are glTF's.
+        if (specularActs(m)) {
+            writeInput(out, "specular", "float", xmlNumber(m.specular));
+            writeInput(out, "specular_color", "color3", color(m.specularColor));
+        }
+        if (iorActs(m)) writeInput(out, "ior", "float", xmlNumber(m.ior));
+        if (clearcoatActs(m)) {
+            writeInput(out, "clearcoat", "float", xmlNumber(m.clearcoat));
+            if (clearcoatRoughnessNode.empty())
+                writeInput(out, "clearcoat_roughness", "float", xmlNumber(m.clearcoatRoughness));
+            else
+                writeConnection(out, "clearcoat_roughness", "float", clearcoatRoughnessNode);
+        }
         out << "  </gltf_pbr>\n";
         out << "  <surfacematerial name=\"" << id << "\" type=\"material\">\n";
         writeConnection(out, "surfaceshader", "surfaceshader", shader);

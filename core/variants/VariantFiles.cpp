@@ -11,6 +11,7 @@
 #include "io/CarriedTextures.h"
 #include "io/GenomeJson.h"
 #include "io/ImageFile.h"
+#include "variants/DeliveredFiles.h"
 
 namespace matevo {
 namespace {
@@ -133,11 +134,13 @@ nlohmann::ordered_json pairwiseByLighting(const VariantSet& set) {
 }
 
 nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
-                                     const VariantSet& set) {
+                                     const VariantSet& set, const DeliveredSet* delivered) {
     const std::vector<double> nearest = set.nearestSibling();
     nlohmann::ordered_json variants = nlohmann::ordered_json::array();
-    for (std::size_t i = 0; i < set.variants.size(); ++i)
+    for (std::size_t i = 0; i < set.variants.size(); ++i) {
         variants.push_back(variantEntry(preset, set, i, i, 0, nearest));
+        if (delivered) variants.back()["delivered"] = deliveredEntry(*delivered, i, i);
+    }
     const VariantRequest& request = run.request;
     const bool met = fulfils(set, request);
     nlohmann::ordered_json report = {{"preset", preset.name},
@@ -145,13 +148,16 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
                                      {"target", genomeToJson(preset.target)},
                                      {"request", requestJson(run)}};
     if (!run.madeBy.is_null()) report["made_by"] = run.madeBy;
-    report.update(nlohmann::ordered_json{{"met", met},
-                                         {"summary", variantSummary(run, set)},
-                                         {"variants", std::move(variants)},
-                                         {"pairwise_de00", set.pairwise}});
+    report.update(nlohmann::ordered_json{
+        {"met", met},
+        {"summary", variantSummary(run, set) +
+                        (delivered ? deliverySummary(*delivered, request) : std::string())},
+        {"variants", std::move(variants)},
+        {"pairwise_de00", set.pairwise}});
     if (!set.lightings.empty()) report["pairwise_de00_by_lighting"] = pairwiseByLighting(set);
-    report.update(nlohmann::ordered_json{{"smallest_pairwise_de00", set.smallestPairwise},
-                                         {"evaluations", run.evaluations},
+    report["smallest_pairwise_de00"] = set.smallestPairwise;
+    if (delivered) report["delivery"] = deliveryJson(*delivered);
+    report.update(nlohmann::ordered_json{{"evaluations", run.evaluations},
                                          {"archived", run.archived},
                                          {"output_renders", set.outputRenders},
                                          {"wall_time_s", run.wallSeconds},

@@ -25,6 +25,7 @@
 #include "io/MaterialFile.h"
 #include "io/Preset.h"
 #include "render/LightingScenes.h"
+#include "variants/DeliveryCheck.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
 
@@ -77,9 +78,12 @@ nlohmann::ordered_json pairwiseByLighting(const VariantSet& set);
 // nearest sibling, genome), the pairwise ΔE00 matrix (and with named lightings one per
 // lighting), the smallest pairwise distance under any lighting, evaluations, wall time, seed,
 // and whether the request was met with a one-line summary. The unnamed figures are those of the
-// first lighting, the one the images show.
+// first lighting, the one the images show. With `delivered` (a set checked in its delivery
+// format, DeliveryCheck.h), each variant also carries "delivered" (DeliveredFiles.h), the report
+// "delivery", and the summary says how the delivered set holds.
 nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run,
-                                     const VariantSet& set);
+                                     const VariantSet& set,
+                                     const DeliveredSet* delivered = nullptr);
 
 // "12 of 12 variants in band 2-5, at least 2 apart (smallest pairwise 2.31), 412 evaluations"
 // or, when short, what was achieved.

@@ -8,10 +8,7 @@
 #include "color/LabImage.h"
 
 namespace matevo {
-namespace {
 
-// Pinned members first, then farthest-first: the member nearest the band's centre, then again
-// and again the one whose nearest already-ordered member is farthest (ties: the earlier one).
 std::vector<std::size_t> spreadOrder(const VariantArchive& archive, const DeltaEBand& band) {
     const std::size_t count = archive.size();
     std::vector<std::size_t> order;
@@ -44,15 +41,33 @@ std::vector<std::size_t> spreadOrder(const VariantArchive& archive, const DeltaE
     return order;
 }
 
-void updateSmallestPairwise(VariantSet& set) {
+double smallestPairwise(const DistanceMatrix& pairwise) {
     double smallest = std::numeric_limits<double>::infinity();
-    for (std::size_t lighting = 0; lighting <= set.pairwiseUnderOthers.size(); ++lighting) {
-        const DistanceMatrix& pairwise = set.pairwiseUnder(lighting);
-        for (std::size_t i = 0; i < set.variants.size(); ++i)
-            for (std::size_t j = i + 1; j < set.variants.size(); ++j)
-                smallest = std::min(smallest, pairwise[i][j]);
+    for (std::size_t i = 0; i < pairwise.size(); ++i)
+        for (std::size_t j = i + 1; j < pairwise.size(); ++j)
+            smallest = std::min(smallest, pairwise[i][j]);
+    return std::isinf(smallest) ? 0.0 : smallest;
+}
+
+std::vector<double> nearestSiblings(const DistanceMatrix& pairwise) {
+    std::vector<double> nearest(pairwise.size(), 0.0);
+    for (std::size_t i = 0; i < pairwise.size(); ++i) {
+        double value = std::numeric_limits<double>::infinity();
+        for (std::size_t j = 0; j < pairwise.size(); ++j)
+            if (j != i) value = std::min(value, pairwise[i][j]);
+        nearest[i] = std::isinf(value) ? 0.0 : value;
     }
-    set.smallestPairwise = std::isinf(smallest) ? 0.0 : smallest;
+    return nearest;
+}
+
+namespace {
+
+// The smallest pairwise distance under any of the set's lightings.
+void updateSmallestPairwise(VariantSet& set) {
+    double smallest = smallestPairwise(set.pairwise);
+    for (const DistanceMatrix& matrix : set.pairwiseUnderOthers)
+        smallest = std::min(smallest, smallestPairwise(matrix));
+    set.smallestPairwise = smallest;
 }
 
 // Images of a batch of genomes under one lighting, checked to be one per genome.
@@ -90,15 +105,7 @@ const DistanceMatrix& VariantSet::pairwiseUnder(std::size_t lighting) const {
 }
 
 std::vector<double> VariantSet::nearestSibling(std::size_t lighting) const {
-    const DistanceMatrix& matrix = pairwiseUnder(lighting);
-    std::vector<double> nearest(variants.size(), 0.0);
-    for (std::size_t i = 0; i < variants.size(); ++i) {
-        double value = std::numeric_limits<double>::infinity();
-        for (std::size_t j = 0; j < variants.size(); ++j)
-            if (j != i) value = std::min(value, matrix[i][j]);
-        nearest[i] = std::isinf(value) ? 0.0 : value;
-    }
-    return nearest;
+    return nearestSiblings(pairwiseUnder(lighting));
 }
 
 Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const VariantRequest& request,

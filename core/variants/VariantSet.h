@@ -54,6 +54,16 @@ struct VariantSet {
     std::vector<double> nearestSibling(std::size_t lighting = 0) const;
 };
 
+// The archive's members in the order chooseVariantSet tries them: pinned members first, then
+// farthest-first (the member nearest the band's centre, then again and again the one whose
+// nearest already-ordered member is farthest; ties: the earlier one).
+std::vector<std::size_t> spreadOrder(const VariantArchive& archive, const DeltaEBand& band);
+
+// The smallest entry off the diagonal of a pairwise matrix; 0 for fewer than two members.
+double smallestPairwise(const DistanceMatrix& pairwise);
+// For each member of a pairwise matrix, the distance to its nearest other member (0 when alone).
+std::vector<double> nearestSiblings(const DistanceMatrix& pairwise);
+
 // outputRender draws at the output size, one render per lighting as for VariantSearch::start;
 // give it the images as they will be stored (e.g. quantised as in a PNG) so that the figures
 // are the ones found in the files.

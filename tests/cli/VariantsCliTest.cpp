@@ -303,7 +303,8 @@ TEST(VariantsCli, BadUsageExitsTwoWithOneLine) {
     for (const char* arguments :
          {"--band 2,5", "--count 3", "--count 3 --band 5,2", "--count 3 --band 2",
           "--count 0 --band 2,5", "--count 3 --band 2,5 --min-apart -1",
-          "--count 3 --band 2,5 --backend vulkan", "--count 3 --band 2,5 --bogus"}) {
+          "--count 3 --band 2,5 --backend vulkan", "--count 3 --band 2,5 --bogus",
+          "--count 3 --band 2,5 --deliver fbx", "--count 3 --band 2,5 --deliver gltf --block 2"}) {
         auto result = runMatevo(std::string("variants ") + arguments);
         EXPECT_EQ(result.exitCode, 2) << arguments << ": " << result.err;
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;

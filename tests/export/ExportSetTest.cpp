@@ -23,6 +23,7 @@
 
 #include "export/GltfRenderer.h"
 #include "export/GltfWriter.h"
+#include "export/MaterialXWriter.h"
 #include "io/Preset.h"
 #include "render/CpuPopulationRenderer.h"
 #include "scene/SphereRenderer.h"
@@ -271,7 +272,7 @@ TEST(ExportSet, WritesOnlyExtensionValuesThatAct) {
 }
 
 // What the fit gives the writer: a metal fit holds glTF's defaults for the values that do not act
-// on it (so MaterialX, which writes every input, says the same as the glTF); the ior stays
+// on it (so a client that reads them anyway sees glTF's defaults); the ior stays
 // within the indices Table 2 gives the reference model's base, which for the validation presets'
 // metal bases means none is written. The exported files carry ior and specular exactly where
 // they act.
@@ -450,11 +451,48 @@ TEST(ExportSet, MaterialXIsWellFormedWithMaterialXInputNames) {
         EXPECT_EQ(materials, 1);
         // Painted metal textures its roughnesses, metal depth its base colour.
         EXPECT_EQ(images > 0, std::string(name) != "validation_metal") << name;
-        EXPECT_EQ(shaderInputs.size(), kGltfPbrInputs.size());
+        // Only the inputs that act on the fitted material, as in the glTF (GltfMaterial.h); the
+        // others keep gltf_pbr's defaults, which are glTF's.
+        const GltfMaterial& fitted = report.variants[0].fit.material;
+        std::set<std::string> acting = {"base_color", "metallic", "roughness"};
+        if (specularActs(fitted)) acting.insert({"specular", "specular_color"});
+        if (iorActs(fitted)) acting.insert("ior");
+        if (clearcoatActs(fitted)) acting.insert({"clearcoat", "clearcoat_roughness"});
+        std::set<std::string> written;
+        for (const auto& [input, value] : shaderInputs) written.insert(input);
+        EXPECT_EQ(written, acting) << name;
         EXPECT_NEAR(std::stod(shaderInputs.at("metallic")),
                     report.variants[0].fit.material.metallic, 1e-5);
         xmlFreeDoc(document);
     }
+}
+
+// A document's inputs follow what acts (GltfMaterial.h), whatever values the material holds: a
+// full metal without a coat carries neither ior, specular nor clear coat, a paint all three.
+TEST(ExportSet, MaterialXWritesOnlyTheInputsThatAct) {
+    GltfMaterial metal;
+    metal.metallic = 1.0;
+    metal.ior = 2.6;
+    metal.specular = 0.4;
+    metal.clearcoat = 0.0;
+    metal.clearcoatRoughness = 0.3;
+    GltfMaterial paint;
+    paint.metallic = 0.2;
+    paint.ior = 1.7;
+    paint.specular = 0.8;
+    paint.clearcoat = 0.5;
+    const std::string document = materialXDocument({{"metal", metal}, {"paint", paint}}, "", "");
+    const auto count = [&](const std::string& input) {
+        std::size_t found = 0;
+        for (auto at = document.find("name=\"" + input + "\""); at != std::string::npos;
+             at = document.find("name=\"" + input + "\"", at + 1))
+            ++found;
+        return found;
+    };
+    EXPECT_EQ(count("metallic"), 2u);
+    for (const char* input :
+         {"ior", "specular", "specular_color", "clearcoat", "clearcoat_roughness"})
+        EXPECT_EQ(count(input), 1u) << input << "\n" << document;
 }
 
 }  // namespace
