@@ -1,5 +1,6 @@
 #include "SceneController.h"
 
+#include <string>
 #include <utility>
 
 namespace matevo::editor {
@@ -26,10 +27,15 @@ Status SceneController::showResults(ui::EditorState& state) {
             view.instances = std::move(result->instances);
         }
     }
+    if (!view.open) set_.reset();
     if (!view.open || view.controls.width == 0) return Ok{};
     SceneViewJob job{view.controls, state.preset, state.presetPath, {}};
-    for (const ui::CandidateView& candidate : state.evolution.candidates)
-        job.materials.push_back({candidate.genome, state.preset.family, state.preset.baseKappa});
+    if (set_)
+        job.materials = *set_;
+    else
+        for (const ui::CandidateView& candidate : state.evolution.candidates)
+            job.materials.push_back(
+                {candidate.genome, state.preset.family, state.preset.baseKappa});
     // Orbiting asks for a frame per mouse move; the worker keeps only the newest.
     if (requested_ == job) return Ok{};
     requested_ = job;
@@ -37,6 +43,20 @@ Status SceneController::showResults(ui::EditorState& state) {
     return Ok{};
 }
 
-void SceneController::handleRequests(const ui::FrameRequests&, ui::EditorState&) {}
+void SceneController::handleRequests(const ui::FrameRequests& requests, ui::EditorState& state) {
+    const auto& set = state.preset.variantSet;
+    if (!requests.variants.sendToScene || !set || set->variants.empty()) return;
+    std::vector<MaterialInstance> materials;
+    for (const Genome& genome : set->variants)
+        materials.push_back(materialOf(genome, set->family, set->baseKappa));
+    showSet(std::move(materials), state);
+}
+
+void SceneController::showSet(std::vector<MaterialInstance> materials, ui::EditorState& state) {
+    set_ = std::move(materials);
+    state.sceneView.open = true;
+    state.status.post("The Scene window shows the variant set (" + std::to_string(set_->size()) +
+                      " materials)");
+}
 
 }  // namespace matevo::editor
