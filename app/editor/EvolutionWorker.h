@@ -1,8 +1,9 @@
 #pragma once
 // Runs the GA on a worker thread, one generation at a time, and renders the best candidates
 // and their ΔE00 maps against the target after each. A newer job cancels the running one at
-// the next generation or candidate boundary (BackgroundWorker, latest wins); the UI thread polls for the latest update and is
-// woken through `onUpdate` (which must be thread-safe, e.g. glfwPostEmptyEvent).
+// the next generation or candidate boundary (BackgroundWorker, latest wins); the UI thread
+// polls for the latest update and is woken through `onUpdate` (which must be thread-safe, e.g.
+// glfwPostEmptyEvent).
 #include <cstdint>
 #include <filesystem>
 #include <functional>

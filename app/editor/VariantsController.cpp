@@ -163,7 +163,8 @@ void VariantsController::handleRequests(const ui::FrameRequests& requests,
 void VariantsController::saveFolder(ui::EditorState& state) {
     ui::VariantsView& view = state.variants;
     if (!shown_ || shownFor_ != state.preset.variantSet) {
-        state.status.post("Save as folder: the set is still being measured", ui::StatusKind::Warning);
+        state.status.post("Save as folder: the set is still being measured",
+                          ui::StatusKind::Warning);
         return;
     }
     const VariantsResult& shown = *shown_;

@@ -26,7 +26,8 @@ VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequ
 
 VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& context) {
     const auto started = std::chrono::steady_clock::now();
-    VariantsResult result{job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, false, {}};
+    VariantsResult result{
+        job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, false, {}};
     auto textures = loadSceneTextures(job.preset, job.presetFile);
     if (!textures) {
         result.error = textures.error().message;

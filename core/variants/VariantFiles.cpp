@@ -240,7 +240,8 @@ Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& t
 Status saveVariantFolder(OutputFolder& output, const MaterialFile& target, const VariantSet& set,
                          const nlohmann::ordered_json& report, const Font& font,
                          ImageMetric heatmapMetric) {
-    if (auto written = writeVariantFiles(output.staging(), target, set, report, font, heatmapMetric);
+    if (auto written =
+            writeVariantFiles(output.staging(), target, set, report, font, heatmapMetric);
         !written)
         return Error{output.userFacing(written.error().message)};
     return output.commit();

@@ -28,7 +28,8 @@ protected:
         state.variants.imageSize = 256;
         state.variants.variants.clear();
         for (std::size_t i = 0; i < 3; ++i)
-            state.variants.variants.push_back({set.variants[i], nullptr, 2.0 + double(i), 2.5, false});
+            state.variants.variants.push_back(
+                {set.variants[i], nullptr, 2.0 + double(i), 2.5, false});
         state.variants.pairwise = {{0.0, 2.5, 3.0}, {2.5, 0.0, 2.6}, {3.0, 2.6, 0.0}};
         imgui.frame(draw);
     }
@@ -36,7 +37,8 @@ protected:
     ImVec2 tileButton(int index, const char* label) {
         ImGuiWindow* window = HeadlessImGui::findWindow("Variants");
         EXPECT_NE(window, nullptr);
-        const ImGuiID id = ImHashStr(label, 0, ImHashData(&index, sizeof index, window->IDStack[0]));
+        const ImGuiID id =
+            ImHashStr(label, 0, ImHashData(&index, sizeof index, window->IDStack[0]));
         return imgui.locate(*window, id, draw).value_or(ImVec2(-1, -1));
     }
 };
