@@ -51,7 +51,7 @@ ControlPanelActions drawControlPanel(EditorState& state, bool canUndo, bool canR
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.58f);
     drawLightingChoice(state.preset.scene, state.lighting);
     drawMaterialControls(state.preset.family, state.preset.target, state.status);
-    drawGaControls(state.preset.ga, state.preset.family, state.imageFitness, state.status);
+    drawGaControls(state.preset.ga, state.preset.family, state.preset.imageFitness, state.status);
     ImGui::PopItemWidth();
     if (ImGui::Button("Compare metrics")) state.compareMetrics.open = true;
     hoverHint("The paper's section 5 experiment: the three metrics side by side");

@@ -277,16 +277,15 @@ int runOneSet(const VariantsJob& job) {
     nlohmann::ordered_json report = variantReport(job.preset, found.run, found.set, delivered);
     const int signal = markPartial(report);
     if (job.output) {
-        if (auto written = writeVariantFiles(job.output->staging(), job.target, found.set, report,
-                                             *job.font, job.heatmapMetric);
-            !written)
-            throw UsageError("--out: " + job.output->userFacing(written.error().message));
         if (delivered) {
             if (auto written = writeDeliveredLooks(job.output->staging(), *delivered); !written)
                 throw UsageError("--out: " + job.output->userFacing(written.error().message));
             writeDeliveredGltf(job, found);
         }
-        commit(job.output);
+        if (auto saved = saveVariantFolder(*job.output, job.target, found.set, report, *job.font,
+                                           job.heatmapMetric);
+            !saved)
+            throw UsageError("--out: " + saved.error().message);
     }
     if (delivered) warnPastGoal(*delivered);
     if (job.asJson) std::printf("%s\n", report.dump(2).c_str());

@@ -1,6 +1,7 @@
 #include "CompareMetricsWorker.h"
 
-#include <exception>
+#include <algorithm>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -10,20 +11,26 @@ namespace matevo::editor {
 
 CompareMetricsWorker::CompareMetricsWorker(std::function<void()> onUpdate,
                                            gpu::RendererRequest renderer)
-    : rendererRequest_(std::move(renderer)), job_(std::move(onUpdate)) {
-    rendererRequest_.cancel = job_.cancelToken();
+    : rendererRequest_(std::move(renderer)),
+      worker_(
+          JobPolicy::OneAtATime, std::move(onUpdate),
+          [this](const CompareMetricsJob& job, Worker::Context& context) {
+              context.publish(compute(job, context));
+          },
+          [](std::uint64_t, const std::string& message) {
+              CompareMetricsResult failed;
+              failed.error = "the comparison failed: " + message;
+              return failed;
+          }) {}
 }
 
-CompareMetricsWorker::~CompareMetricsWorker() = default;
-
-bool CompareMetricsWorker::start(CompareMetricsJob job) {
-    return job_.start([this, job = std::move(job)] { return compute(job); }, "the comparison");
-}
-
-CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job) {
+CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job,
+                                                   Worker::Context& context) {
     CompareMetricsResult result;
     const Preset& preset = job.preset;
-    auto created = gpu::createPresetRenderer(rendererRequest_, preset, job.presetFile);
+    gpu::RendererRequest request = rendererRequest_;
+    request.cancel = context.token();
+    auto created = gpu::createPresetRenderer(request, preset, job.presetFile);
     if (!created) {
         result.error = created.error().message;
         return result;
@@ -47,8 +54,9 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
     // The paper's three genotype metrics only: nothing to render while evolving.
     auto evolved = evolveRuns(
         experimentTarget, settings,
-        [&](int done, int total) { job_.reportProgress(0.5f * float(done) / float(total)); }, {},
-        job_.cancelToken());
+        [&](int done, int total) { context.reportProgress(0.5f * float(done) / float(total)); },
+        {}, context.token());
+    if (context.cancelled()) return {{}, {}, result.backend, "stopped", true};
     if (!evolved) {
         result.error = evolved.error().message;
         return result;
@@ -56,13 +64,14 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
     result.records = std::move(evolved).value();
     result.renders.resize(result.records.size());
     const auto scored = scoreRuns(
-        result.records, target->front(), render, 16,
+        result.records, target->front(), render, kScoreBatch,
         [&](int done, int total) {
-            job_.reportProgress(0.5f + 0.5f * float(done) / float(total));
+            context.reportProgress(0.5f + 0.5f * float(done) / float(total));
         },
         [&](std::size_t index, const Image& image) { result.renders[index] = image; },
-        job_.cancelToken());
-    if (!scored) result = {{}, {}, result.backend, scored.error().message};
+        context.token());
+    if (context.cancelled()) return {{}, {}, result.backend, "stopped", true};
+    if (!scored) return {{}, {}, result.backend, scored.error().message, false};
     return result;
 }
 

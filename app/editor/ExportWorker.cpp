@@ -14,17 +14,22 @@ std::string materialCount(std::size_t count) {
 
 ExportWorker::ExportWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer,
                            ExportSettings settings)
-    : rendererRequest_(std::move(renderer)), settings_(settings), job_(std::move(onUpdate)) {
-    rendererRequest_.cancel = job_.cancelToken();
+    : rendererRequest_(std::move(renderer)),
+      settings_(settings),
+      worker_(
+          JobPolicy::OneAtATime, std::move(onUpdate),
+          [this](const ui::ExportRequest& request, Worker::Context& context) {
+              context.publish(compute(request, context));
+          },
+          [](std::uint64_t, const std::string& message) {
+              return ExportResult{std::nullopt, "the export failed: " + message};
+          }) {}
 }
-
-ExportWorker::~ExportWorker() = default;
 
 bool ExportWorker::start(ui::ExportRequest request, ui::EditorState& state) {
     const std::string what = "Exporting " + materialCount(request.materials.size());
     const std::string file = request.file.string();
-    if (!job_.start([this, request = std::move(request)] { return compute(request); },
-                    "the export")) {
+    if (!worker_.submit(std::move(request))) {
         state.status.post("An export is running: wait for it to end", ui::StatusKind::Warning);
         return false;
     }
@@ -34,8 +39,8 @@ bool ExportWorker::start(ui::ExportRequest request, ui::EditorState& state) {
 }
 
 void ExportWorker::update(ui::EditorState& state) {
-    if (state.task) state.task->fraction = job_.progress();
-    std::optional<ExportResult> result = job_.takeResult();
+    if (state.task) state.task->fraction = worker_.progress();
+    std::optional<ExportResult> result = worker_.take();
     if (!result) return;
     state.task.reset();
     if (!result->error.empty() || !result->report)
@@ -44,17 +49,19 @@ void ExportWorker::update(ui::EditorState& state) {
         state.status.post(describeExport(*result->report));
 }
 
-ExportResult ExportWorker::compute(const ui::ExportRequest& request) {
+ExportResult ExportWorker::compute(const ui::ExportRequest& request, Worker::Context& context) {
     ExportResult result;
+    gpu::RendererRequest rendererRequest = rendererRequest_;
+    rendererRequest.cancel = context.token();
     std::unique_ptr<PopulationRenderer> renderer =
-        gpu::createPopulationRenderer(rendererRequest_, SceneTextures{});
+        gpu::createPopulationRenderer(rendererRequest, SceneTextures{});
     // Closing the editor ends the export between materials; nothing is written.
     auto report = exportMaterials(
         request.materials, *renderer, request.format, request.file, settings_,
-        [this](std::size_t done, std::size_t count) {
-            job_.reportProgress(float(done) / float(count));
+        [&context](std::size_t done, std::size_t count) {
+            context.reportProgress(float(done) / float(count));
         },
-        {}, job_.cancelToken());
+        {}, context.token());
     if (!report)
         result.error = report.error().message;
     else

@@ -21,31 +21,6 @@ struct SceneViewRenderer {
     std::size_t triangles = 0;
 };
 
-SceneViewWorker::SceneViewWorker(std::function<void()> onUpdate, const gpu::Device& device)
-    : onUpdate_(std::move(onUpdate)), device_(device), thread_([this] { loop(); }) {}
-
-SceneViewWorker::~SceneViewWorker() {
-    {
-        std::lock_guard lock(mutex_);
-        stopping_ = true;
-    }
-    wake_.notify_one();
-    thread_.join();
-}
-
-void SceneViewWorker::request(SceneViewJob job) {
-    {
-        std::lock_guard lock(mutex_);
-        pending_ = std::move(job);
-    }
-    wake_.notify_one();
-}
-
-std::optional<SceneViewResult> SceneViewWorker::takeResult() {
-    std::lock_guard lock(mutex_);
-    return std::exchange(result_, std::nullopt);
-}
-
 namespace {
 
 Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
@@ -53,35 +28,27 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
 
 }  // namespace
 
-void SceneViewWorker::loop() {
-    std::unique_ptr<SceneViewRenderer> renderer;
-    for (;;) {
-        SceneViewJob job;
-        {
-            std::unique_lock lock(mutex_);
-            wake_.wait(lock, [this] { return stopping_ || pending_.has_value(); });
-            if (stopping_) return;
-            job = std::move(*std::exchange(pending_, std::nullopt));
-        }
-        SceneViewResult result;
-        try {
-            auto rendered = render(renderer, job, device_);
-            if (rendered) {
-                result = std::move(rendered).value();
-            } else {
-                result.status = rendered.error().message;
-            }
-        } catch (const std::exception& error) {  // nothing may escape the thread
-            result.status = std::string("scene view: ") + error.what();
-        }
-        result.controls = job.controls;
-        {
-            std::lock_guard lock(mutex_);
-            result_ = std::move(result);
-        }
-        onUpdate_();
-    }
-}
+SceneViewWorker::SceneViewWorker(std::function<void()> onUpdate, const gpu::Device& device)
+    : device_(device),
+      worker_(
+          JobPolicy::LatestWins, std::move(onUpdate),
+          [this](const SceneViewJob& job, Worker::Context& context) {
+              SceneViewResult result;
+              auto rendered = render(renderer_, job, device_);
+              if (rendered)
+                  result = std::move(rendered).value();
+              else
+                  result.status = rendered.error().message;
+              result.controls = job.controls;
+              context.publish(std::move(result));
+          },
+          [](std::uint64_t, const std::string& message) {
+              SceneViewResult failed;
+              failed.status = "scene view: " + message;
+              return failed;
+          }) {}
+
+SceneViewWorker::~SceneViewWorker() = default;
 
 namespace {
 

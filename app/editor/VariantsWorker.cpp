@@ -9,31 +9,38 @@
 namespace matevo::editor {
 
 VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer)
-    : rendererRequest_(std::move(renderer)), job_(std::move(onUpdate)) {
-    rendererRequest_.cancel = job_.cancelToken();
+    : rendererRequest_(std::move(renderer)),
+      worker_(
+          JobPolicy::OneAtATime, std::move(onUpdate),
+          [this](const VariantsJob& job, Worker::Context& context) {
+              context.publish(compute(job, context));
+          },
+          [](std::uint64_t, const std::string& message) {
+              VariantsResult failed;
+              failed.error = "the variant search failed: " + message;
+              return failed;
+          }) {}
 }
 
-VariantsWorker::~VariantsWorker() = default;
-
-bool VariantsWorker::start(VariantsJob job) {
-    return job_.start([this, job = std::move(job)] { return compute(job); }, "the variant search");
-}
-
-VariantsResult VariantsWorker::compute(const VariantsJob& job) {
+VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& context) {
     const auto started = std::chrono::steady_clock::now();
-    VariantsResult result{job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, {}};
+    VariantsResult result{
+        job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, false, {}};
     const Preset& preset = job.preset;
     auto textures = loadSceneTextures(preset, job.presetFile);
     if (!textures) {
         result.error = textures.error().message;
         return result;
     }
-    // One renderer per lighting's environment (render/LightingScenes.h).
+    // One renderer per lighting's environment (render/LightingScenes.h), stopped by the job's
+    // token.
+    gpu::RendererRequest request = rendererRequest_;
+    request.cancel = context.token();
     auto lit = lightingScenes(job.request.lightings, preset.scene, *textures,
-                              [this](const SceneTextures& lighting)
+                              [&request](const SceneTextures& lighting)
                                   -> Result<std::shared_ptr<PopulationRenderer>> {
                                   return std::shared_ptr<PopulationRenderer>(
-                                      gpu::createPopulationRenderer(rendererRequest_, lighting));
+                                      gpu::createPopulationRenderer(request, lighting));
                               });
     if (!lit) {
         result.error = lit.error().message;
@@ -43,16 +50,28 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job) {
     auto renderAt = [&](int size) {
         return renderUnderEachLighting(*lit, preset.family, preset.baseKappa, size);
     };
+    if (job.measure) {
+        auto measured = measureVariantSet(preset.target, *job.measure,
+                                          renderAt(kOutputSize).perLighting.front());
+        if (!measured) {
+            result.error = measured.error().message;
+            return result;
+        }
+        result.set = std::move(measured).value();
+        result.measured = true;
+        return result;
+    }
     const VariantSearchSettings settings;
     const double wanted = double(job.request.count + settings.spare);
     auto found = findVariants(
         {preset.target, preset.family, preset.baseKappa}, job.request, settings,
-        renderAt(kFitnessSize), renderAt(kOutputSize), job_.cancelToken(),
+        renderAt(kFitnessSize), renderAt(kOutputSize), context.token(),
         [&](const VariantSearchProgress& progress) {
-            job_.reportProgress(float(std::max(double(progress.archived) / wanted,
-                                               double(progress.evaluations) / settings.maxEvaluations)));
+            context.reportProgress(float(std::max(double(progress.archived) / wanted,
+                                                  double(progress.evaluations) /
+                                                      settings.maxEvaluations)));
         });
-    if (job_.stopping()) {
+    if (context.cancelled()) {
         result.error = "stopped";
         return result;
     }

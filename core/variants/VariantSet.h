@@ -7,6 +7,7 @@
 // lightings (LightingMeasure.h) every member is rendered under each and must hold under each;
 // the images are those of the first lighting.
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,12 @@ std::vector<double> nearestSiblings(const DistanceMatrix& pairwise);
 // are the ones found in the files.
 Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const VariantRequest& request,
                                     const Genome& target, const LightingRenders& outputRender);
+
+// Exactly these genomes, in this order, rendered at the output size and measured against the
+// target (ΔE00 to it and pairwise): a saved set shown again, or a set re-measured after its
+// target changed. Nothing is dropped, whether or not it is still inside a band.
+Result<VariantSet> measureVariantSet(const Genome& target, std::span<const Genome> genomes,
+                                     const RenderGenomes& outputRender);
 
 // Drops variant `index` (the user discarded it), keeping the matrix and smallest distance right.
 void removeVariant(VariantSet& set, std::size_t index);
