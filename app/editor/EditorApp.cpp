@@ -27,6 +27,7 @@
 #include "EvolutionWorker.h"
 #include "ExportWorker.h"
 #include "ImageBridge.h"
+#include "SceneViewDisplay.h"
 #include "SceneViewWorker.h"
 #include "ScriptPlayer.h"
 #include "VariantsDisplay.h"
@@ -183,9 +184,8 @@ private:
     std::unique_ptr<ExportWorker> exportWorker_;
     std::optional<VariantsResult> shownVariants_;  // the set in the Variants window
     std::vector<Genome> discardedVariants_;        // since its last fresh run
-    std::shared_ptr<ShownImage> sceneImage_;       // what the Scene window shows
     std::unique_ptr<SceneViewWorker> sceneWorker_;
-    std::optional<SceneViewJob> requestedScene_;
+    std::unique_ptr<SceneViewDisplay> sceneDisplay_;  // after its worker: gone before it
     std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
 };
 
@@ -267,6 +267,7 @@ EditorApp::EditorApp(const EditorOptions& options)
     exportRenderer.who = "matevo edit: Export set";
     exportWorker_ = std::make_unique<ExportWorker>(wake, exportRenderer);
     sceneWorker_ = std::make_unique<SceneViewWorker>(wake, vulkan_->device());
+    sceneDisplay_ = std::make_unique<SceneViewDisplay>(*bridge_, *sceneWorker_);
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
@@ -279,6 +280,7 @@ EditorApp::~EditorApp() {
     io.IniFilename = nullptr;
     exportWorker_.reset();
     variantsWorker_.reset();
+    sceneDisplay_.reset();
     sceneWorker_.reset();
     compareWorker_.reset();
     worker_.reset();
@@ -366,7 +368,10 @@ int EditorApp::run() {
         timings_.resultsShown(display_->shownJob(), display_->shownFinished(), finished);
         if (options_.maxFrames > 0 && ++frames >= options_.maxFrames) break;
     }
-    if (options_.reportTimings) std::printf("editor timings: %s\n", timings_.report().c_str());
+    if (options_.reportTimings) {
+        std::printf("editor timings: %s\n", timings_.report().c_str());
+        std::printf("scene timings: %s\n", sceneDisplay_->timings().report().c_str());
+    }
     if (!failure_.empty()) {
         std::fprintf(stderr, "matevo edit: %s\n", failure_.c_str());
         return 1;
@@ -564,36 +569,9 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
     }
 }
 
-// Shows a finished render of the Scene window, and asks for a new one when the window is open
-// and its controls, the candidates or the preset changed.
 void EditorApp::applySceneView() {
-    ui::EditorState& state = ui_.state();
-    ui::SceneView& view = state.sceneView;
-    if (std::optional<SceneViewResult> result = sceneWorker_->takeResult()) {
-        view.status = result->status;
-        if (result->tile) {
-            // The worker's picture is already on this device: shown as it is, no copy.
-            auto shown = bridge_->show(result->tile);
-            if (!shown) {
-                view.status = shown.error().message;
-                return;
-            }
-            sceneImage_ = std::move(shown).value();
-            view.image = sceneImage_->render();
-            view.imageWidth = result->tile->width;
-            view.imageHeight = result->tile->height;
-            view.camera = result->camera;
-            view.instances = std::move(result->instances);
-        }
-    }
-    if (!view.open || view.controls.width == 0) return;
-    SceneViewJob job{view.controls, state.preset, state.presetPath, {}};
-    for (const ui::CandidateView& candidate : state.evolution.candidates)
-        job.materials.push_back({candidate.genome, state.preset.family, state.preset.baseKappa});
-    // Orbiting asks for a frame per mouse move; the worker keeps only the newest.
-    if (requestedScene_ == job) return;
-    requestedScene_ = job;
-    sceneWorker_->request(std::move(job));
+    if (Status updated = sceneDisplay_->update(ui_.state()); !updated)
+        ui_.state().sceneView.status = updated.error().message;
 }
 
 void EditorApp::submitChangesToWorker(const EditorTimings::Mark& changed) {

@@ -1,10 +1,12 @@
 #include "EditorScript.h"
 
+#include <algorithm>
 #include <charconv>
 #include <limits>
 #include <map>
 #include <sstream>
 
+#include "ScenePanel.h"
 #include "common/ShortText.h"
 #include "evolve/GaSettings.h"
 
@@ -39,6 +41,8 @@ const std::map<std::string, Grammar>& grammar() {
         {"select", {Kind::Select, 1, false, 0, kMaxPopulation - 1}},
         {"scene", {Kind::Scene, 0, true}},
         {"wait-scene", {Kind::WaitScene, 0, false}},
+        {"scene-show", {Kind::SceneShow, 0, true}},
+        {"scene-mesh", {Kind::SceneMesh, 0, true}},
         {"undo", {Kind::Undo, 0, false}},
         {"redo", {Kind::Redo, 0, false}},
         {"resize", {Kind::Resize, 2, false, 64, kMaxWindowSide}},
@@ -79,6 +83,14 @@ std::string validateText(const ScriptAction& action) {
         return "expected on or off, got '" + shortText(action.text, 40) + "'";
     if (action.kind == Kind::Scene && action.text != "open" && action.text != "close")
         return "expected open or close, got '" + shortText(action.text, 40) + "'";
+    if (action.kind == Kind::SceneShow && action.text != "variants" && action.text != "kept" &&
+        action.text != "population")
+        return "expected variants, kept or population, got '" + shortText(action.text, 40) + "'";
+    if (action.kind == Kind::SceneMesh && !ui::isMeshFile(action.text) &&
+        std::find(std::begin(ui::kSceneMeshes), std::end(ui::kSceneMeshes), action.text) ==
+            std::end(ui::kSceneMeshes))
+        return "expected sphere, shaderball, knot or a .obj, .gltf or .glb file, got '" +
+               shortText(action.text, 40) + "'";
     return {};
 }
 

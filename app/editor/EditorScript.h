@@ -11,7 +11,10 @@
 //   heatmap on|off|toggle  the overlay; or heatmap de00|flip: on, showing that metric
 //   select I                inspect candidate I (0 = best)
 //   scene open|close        the Scene window
-//   wait-scene              draw until the Scene window shows a render (gives up after 120 s)
+//   scene-show variants|kept|population   what the Scene window's instances wear
+//   scene-mesh FILE|sphere|shaderball|knot the Scene window's mesh (.obj, .gltf, .glb file)
+//   wait-scene              draw until the Scene window shows the whole picture of its current
+//                           settings (gives up after 120 s; a mesh that fails to load fails)
 //   undo | redo
 //   resize W H              resize the window (pixels)
 //   check-layout            fail (exit 1) if a panel cuts off a control at its right edge
@@ -46,6 +49,8 @@ struct ScriptAction {
         Select,
         Scene,
         WaitScene,
+        SceneShow,
+        SceneMesh,
         Undo,
         Redo,
         Resize,

@@ -1,5 +1,6 @@
 #include "SceneViewWorker.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <utility>
@@ -28,6 +29,7 @@ SceneViewWorker::~SceneViewWorker() {
     {
         std::lock_guard lock(mutex_);
         stopping_ = true;
+        running_.cancel();
     }
     wake_.notify_one();
     thread_.join();
@@ -37,6 +39,7 @@ void SceneViewWorker::request(SceneViewJob job) {
     {
         std::lock_guard lock(mutex_);
         pending_ = std::move(job);
+        running_.cancel();  // latest wins: the running job gives way before its frame
     }
     wake_.notify_one();
 }
@@ -46,10 +49,16 @@ std::optional<SceneViewResult> SceneViewWorker::takeResult() {
     return std::exchange(result_, std::nullopt);
 }
 
+bool SceneViewWorker::busy() {
+    std::lock_guard lock(mutex_);
+    return pending_.has_value() || rendering_;
+}
+
 namespace {
 
 Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
-                               const SceneViewJob& job, const gpu::Device& device);
+                               const SceneViewJob& job, const gpu::Device& device,
+                               const CancelToken& cancel);
 
 }  // namespace
 
@@ -57,53 +66,73 @@ void SceneViewWorker::loop() {
     std::unique_ptr<SceneViewRenderer> renderer;
     for (;;) {
         SceneViewJob job;
+        CancelToken cancel;
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [this] { return stopping_ || pending_.has_value(); });
             if (stopping_) return;
             job = std::move(*std::exchange(pending_, std::nullopt));
+            running_ = cancel;
+            rendering_ = true;
         }
         SceneViewResult result;
+        bool superseded = false;
         try {
-            auto rendered = render(renderer, job, device_);
+            auto rendered = render(renderer, job, device_, cancel);
             if (rendered) {
                 result = std::move(rendered).value();
             } else {
+                superseded = rendered.error().kind == ErrorKind::Cancelled;
                 result.status = rendered.error().message;
             }
         } catch (const std::exception& error) {  // nothing may escape the thread
             result.status = std::string("scene view: ") + error.what();
         }
         result.controls = job.controls;
+        result.materials = std::move(job.materials);
         {
             std::lock_guard lock(mutex_);
-            result_ = std::move(result);
+            rendering_ = false;
+            if (!superseded) result_ = std::move(result);
         }
-        onUpdate_();
+        if (!superseded) onUpdate_();
     }
 }
 
 namespace {
 
+// Names a mesh file by its file name in the status line.
+std::string meshName(const std::string& mesh) {
+    return ui::isMeshFile(mesh) ? std::filesystem::path(mesh).filename().string() : mesh;
+}
+
 Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
-                               const SceneViewJob& job, const gpu::Device& device) {
+                               const SceneViewJob& job, const gpu::Device& device,
+                               const CancelToken& cancel) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const ui::SceneViewControls& controls = job.controls;
-    if (job.materials.empty()) return Error{"no candidates yet"};
+    if (job.materials.empty()) return badInput("nothing to show");
     if (!renderer) {
         auto runner = gpu::CommandRunner::create(device);
         if (!runner) return runner.error();
         renderer.reset(new SceneViewRenderer{std::move(runner).value(), {}, {}, {}, 0});
     }
-    const std::string meshName = ui::kSceneMeshes[controls.mesh];
     const std::string lighting = ui::kSceneLightings[controls.lighting];
-    const std::string key = meshName + "|" + lighting + "|" + job.presetFile.string() + "|" +
-                            job.preset.roughnessTexture + "|" + job.preset.baseColorTexture;
+    const std::string key = controls.mesh + "|" + lighting + "|" + job.presetFile.string() +
+                            "|" + job.preset.roughnessTexture + "|" +
+                            job.preset.baseColorTexture;
     if (!renderer->scene || renderer->key != key) {
+        // A mesh that does not load leaves the scene it had: the window keeps its picture.
+        auto mesh = loadMesh(controls.mesh);
+        if (!mesh) {
+            SceneViewResult failed;
+            failed.meshFailed = true;
+            failed.status = mesh.error().message;
+            return failed;
+        }
         renderer->scene.reset();
-        auto mesh = loadMesh(meshName);
-        if (!mesh) return mesh.error();
+        renderer->key.clear();
         auto textures = loadSceneTextures(job.preset, job.presetFile);
         if (!textures) return textures.error();
         renderer->settings = job.preset.scene;
@@ -116,19 +145,27 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
         renderer->triangles = mesh->triangleCount();
         renderer->key = key;
     }
-    if (auto set = renderer->scene->setMaterials(job.materials); !set) return set.error();
+    if (cancel.cancelled()) return cancelledError("superseded by a newer view");
+    std::vector<MaterialInstance> materials;
+    for (const ui::SceneMaterial& material : job.materials) materials.push_back(material.material);
+    if (auto set = renderer->scene->setMaterials(materials); !set) return set.error();
 
     SceneViewResult result;
+    result.preview = job.previewDivisor > 1;
     result.instances = layoutInstances(controls.instances,
                                        controls.layout == 0 ? InstanceLayout::Grid
                                                             : InstanceLayout::Crowd,
                                        int(job.materials.size()));
     result.camera = ui::sceneCamera(controls, result.instances);
-    auto tile = gpu::DisplayTile::create(device, controls.width, controls.height, false);
+    const int divisor = std::max(1, job.previewDivisor);
+    const int width = std::max(16, controls.width / divisor);
+    const int height = std::max(16, controls.height / divisor);
+    const auto frameStart = Clock::now();
+    auto tile = gpu::DisplayTile::create(device, width, height, false);
     if (!tile) return tile.error();
     auto commands = renderer->runner.begin();
     if (!commands) return commands.error();
-    const gpu::SceneFrame frame{controls.width, controls.height, result.camera, result.instances};
+    const gpu::SceneFrame frame{width, height, result.camera, result.instances};
     if (auto recorded = renderer->scene->record(*commands, frame, renderer->settings); !recorded)
         return recorded.error();
     if (auto shown = renderer->scene->recordDisplay(*commands, tile->render,
@@ -137,14 +174,17 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
         return shown.error();
     if (auto submitted = renderer->runner.submitAndWait(); !submitted) return submitted.error();
     result.tile = std::make_shared<const gpu::DisplayTile>(std::move(tile).value());
-    const auto milliseconds =
-        std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-    char status[200];
+    const auto finished = Clock::now();
+    result.frameMilliseconds =
+        std::chrono::duration<double, std::milli>(finished - frameStart).count();
+    const auto milliseconds = std::chrono::duration<double, std::milli>(finished - start).count();
+    char status[240];
     std::snprintf(status, sizeof status,
-                  "%d instances of %s (%zu triangles each), %zu candidates, %s lighting, "
-                  "ACES tone map; %.0f ms on %s",
-                  controls.instances, meshName.c_str(), renderer->triangles, job.materials.size(),
-                  lighting.c_str(), milliseconds, device.name().c_str());
+                  "%d instances of %s (%zu triangles each), %zu materials, %s lighting, "
+                  "ACES tone map; %dx%d%s in %.0f ms on %s",
+                  controls.instances, meshName(controls.mesh).c_str(), renderer->triangles,
+                  job.materials.size(), lighting.c_str(), width, height,
+                  result.preview ? " (preview)" : "", milliseconds, device.name().c_str());
     result.status = status;
     return result;
 }
