@@ -1,6 +1,7 @@
 #include "CompareMetricsWorker.h"
 
-#include <exception>
+#include <algorithm>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -11,17 +12,22 @@ namespace matevo::editor {
 
 CompareMetricsWorker::CompareMetricsWorker(std::function<void()> onUpdate,
                                            gpu::RendererRequest renderer)
-    : rendererRequest_(std::move(renderer)), job_(std::move(onUpdate)) {
-    rendererRequest_.cancelled = [this] { return job_.stopping(); };
+    : rendererRequest_(std::move(renderer)),
+      worker_(
+          JobPolicy::OneAtATime, std::move(onUpdate),
+          [this](const CompareMetricsJob& job, Worker::Context& context) {
+              context.publish(compute(job, context));
+          },
+          [](std::uint64_t, const std::string& message) {
+              CompareMetricsResult failed;
+              failed.error = "the comparison failed: " + message;
+              return failed;
+          }) {
+    rendererRequest_.cancelled = [this] { return worker_.runningToken().cancelled(); };
 }
 
-CompareMetricsWorker::~CompareMetricsWorker() = default;
-
-bool CompareMetricsWorker::start(CompareMetricsJob job) {
-    return job_.start([this, job = std::move(job)] { return compute(job); }, "the comparison");
-}
-
-CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job) {
+CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job,
+                                                   Worker::Context& context) {
     CompareMetricsResult result;
     auto textures = loadSceneTextures(job.preset, job.presetFile);
     if (!textures) {
@@ -45,24 +51,41 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job)
     settings.size = {preset.ga.population, preset.ga.generations};
     settings.seed = preset.ga.seed;
     const ExperimentTarget experimentTarget{preset.name, preset.family, preset.target, preset.ga};
-    // Progress: the GA runs are the first half, the renders the second.
-    // The paper's three genotype metrics only: nothing to render while evolving.
-    auto evolved = evolveRuns(experimentTarget, settings, [&](int done, int total) {
-        job_.reportProgress(0.5f * float(done) / float(total));
-    });
-    if (!evolved) {
-        result.error = evolved.error().message;
-        return result;
+    const std::vector<ExperimentMetric> metrics = settings.metrics;
+    // Progress: the GA runs are the first half, the renders the second. One metric at a time
+    // (the same seeds and records as all at once), so that a cancel is seen between them.
+    for (std::size_t m = 0; m < metrics.size(); ++m) {
+        if (context.cancelled()) break;
+        settings.metrics = {metrics[m]};
+        // The paper's three genotype metrics only: nothing to render while evolving.
+        auto evolved = evolveRuns(experimentTarget, settings, [&](int done, int total) {
+            context.reportProgress(0.5f * (float(m) + float(done) / float(total)) /
+                                   float(metrics.size()));
+        });
+        if (!evolved) {
+            result.error = evolved.error().message;
+            return result;
+        }
+        result.records.insert(result.records.end(), evolved->begin(), evolved->end());
     }
-    result.records = std::move(evolved).value();
     result.renders.resize(result.records.size());
-    const auto scored = scoreRuns(
-        result.records, target->front(), render, 16,
-        [&](int done, int total) {
-            job_.reportProgress(0.5f + 0.5f * float(done) / float(total));
-        },
-        [&](std::size_t index, const Image& image) { result.renders[index] = image; });
-    if (!scored) result = {{}, {}, result.backend, scored.error().message};
+    // Scored a batch at a time, with a cancel check between batches.
+    const std::span<RunRecord> records(result.records);
+    for (std::size_t first = 0; first < records.size() && !context.cancelled();
+         first += kScoreBatch) {
+        const std::size_t count = std::min(kScoreBatch, records.size() - first);
+        const auto scored = scoreRuns(
+            records.subspan(first, count), target->front(), render, kScoreBatch, {},
+            [&](std::size_t index, const Image& image) {
+                result.renders[first + index] = image;
+            });
+        if (!scored) {
+            if (context.cancelled()) break;
+            return {{}, {}, result.backend, scored.error().message, false};
+        }
+        context.reportProgress(0.5f + 0.5f * float(first + count) / float(records.size()));
+    }
+    if (context.cancelled()) return {{}, {}, result.backend, "stopped", true};
     return result;
 }
 

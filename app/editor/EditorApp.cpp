@@ -16,28 +16,22 @@
 #include <backends/imgui_impl_vulkan.h>
 #include <imgui.h>
 
-#include "CandidateGrid.h"
-#include "CompareMetricsDisplay.h"
-#include "CompareMetricsWorker.h"
+#include "CompareMetricsController.h"
 #include "DrawDataSnapshot.h"
 #include "EditorStyle.h"
 #include "EditorTimings.h"
 #include "EditorUi.h"
-#include "EvolutionDisplay.h"
-#include "EvolutionWorker.h"
-#include "ExportWorker.h"
+#include "EvolutionController.h"
+#include "ExportController.h"
 #include "ImageBridge.h"
-#include "SceneViewDisplay.h"
-#include "SceneViewWorker.h"
+#include "SceneController.h"
 #include "ScriptPlayer.h"
-#include "VariantsDisplay.h"
-#include "VariantsWorker.h"
+#include "VariantsController.h"
 #include "ViewSettings.h"
 #include "VulkanContext.h"
 #include "WindowInput.h"
 #include "WindowRenderer.h"
 #include "io/ImageFile.h"
-#include "io/OutputFolder.h"
 #include "io/PresetCatalog.h"
 #include "io/ResourcePaths.h"
 #include "material/FgdTableCache.h"
@@ -132,15 +126,9 @@ private:
     ui::VariantsActions playScript(std::optional<std::filesystem::path>& screenshotPath);
     // Whether the GA run and the variant search a script may wait for are done and shown.
     ScriptPlayer::Settled scriptSettled();
-    void applyEvolutionResults();
-    void applyCompareMetricsResults();
-    void applyVariantsResults();
-    void handleVariantsActions(const ui::VariantsActions& actions);
-    void showShownVariants();
-    void applySceneView();
-    // Starts a GA job when the preset changed; `changed`: the start of the frame that showed
-    // the change.
-    void submitChangesToWorker(const EditorTimings::Mark& changed);
+    // Registers a feature: called at the same points of every frame as the others.
+    template <typename Controller>
+    Controller& add(std::unique_ptr<Controller> controller);
     void saveScreenshot(const Rgba8Image& frame, const std::filesystem::path& path);
     std::filesystem::path nextSnapshotPath() const;
     bool shouldQuit() const;
@@ -155,15 +143,10 @@ private:
     std::unique_ptr<WindowRenderer> renderer_;
     std::unique_ptr<ImGuiSession> imgui_;
     std::unique_ptr<ImageBridge> bridge_;
-    std::unique_ptr<EvolutionDisplay> display_;
     ui::EditorUi ui_;
     ScriptPlayer script_;
     EditorTimings timings_;
-    std::optional<Preset> submittedPreset_;
-    std::uint64_t submittedJob_ = 0;  // the GA job last asked for
-    bool submittedImageFitness_ = false;
-    std::optional<Preset> previewedPreset_;  // the target shown while a slider is dragged
-    ImageMetric submittedHeatmapMetric_ = ImageMetric::DeltaE00;
+    SceneTimings sceneTimings_;
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
@@ -177,16 +160,11 @@ private:
     // both cores from the job for 10-30 ms.
     static constexpr std::chrono::milliseconds kProgressInterval{100};
     std::atomic<bool> workerPosted_{false};  // a worker has a result or progress to show
-    std::vector<std::shared_ptr<ShownImage>> compareImages_;   // what Compare metrics shows
-    std::vector<std::shared_ptr<ShownImage>> variantsImages_;  // what Variants shows
-    std::unique_ptr<CompareMetricsWorker> compareWorker_;
-    std::unique_ptr<VariantsWorker> variantsWorker_;
-    std::unique_ptr<ExportWorker> exportWorker_;
-    std::optional<VariantsResult> shownVariants_;  // the set in the Variants window
-    std::vector<Genome> discardedVariants_;        // since its last fresh run
-    std::unique_ptr<SceneViewWorker> sceneWorker_;
-    std::unique_ptr<SceneViewDisplay> sceneDisplay_;  // after its worker: gone before it
-    std::unique_ptr<EvolutionWorker> worker_;  // last: stopped first, before what it reports to
+    // Each feature's background work and display, in the order they are shown each frame;
+    // stopped before the window they draw into.
+    std::vector<std::unique_ptr<FeatureController>> features_;
+    EvolutionController* evolution_ = nullptr;
+    VariantsController* variants_ = nullptr;
 };
 
 EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, VulkanContext& vulkan,
@@ -248,26 +226,16 @@ EditorApp::EditorApp(const EditorOptions& options)
     auto bridge = ImageBridge::create(*vulkan_, renderer_->renderPass());
     if (!bridge) throw std::runtime_error(bridge.error().message);
     bridge_ = std::move(bridge).value();
-    display_ = std::make_unique<EvolutionDisplay>(*bridge_);
-    const auto wake = [this] {
-        workerPosted_.store(true);
-        glfwPostEmptyEvent();
-    };
-    // The workers render on the window's device: tiles are shown without leaving the GPU.
-    worker_ = std::make_unique<EvolutionWorker>(wake, vulkan_->device(), options.backend);
-    gpu::RendererRequest compareRenderer;
-    compareRenderer.backend = options.backend;
-    compareRenderer.who = "matevo edit: Compare metrics";
-    compareRenderer.device = &vulkan_->device();
-    compareWorker_ = std::make_unique<CompareMetricsWorker>(wake, compareRenderer);
-    gpu::RendererRequest variantsRenderer = compareRenderer;
-    variantsRenderer.who = "matevo edit: Variants";
-    variantsWorker_ = std::make_unique<VariantsWorker>(wake, variantsRenderer);
-    gpu::RendererRequest exportRenderer = compareRenderer;
-    exportRenderer.who = "matevo edit: Export set";
-    exportWorker_ = std::make_unique<ExportWorker>(wake, exportRenderer);
-    sceneWorker_ = std::make_unique<SceneViewWorker>(wake, vulkan_->device());
-    sceneDisplay_ = std::make_unique<SceneViewDisplay>(*bridge_, *sceneWorker_);
+    const FeatureContext context{*bridge_, vulkan_->device(), options.backend, [this] {
+                                     workerPosted_.store(true);
+                                     glfwPostEmptyEvent();
+                                 }};
+    // The features, one line each.
+    evolution_ = &add(std::make_unique<EvolutionController>(context, timings_));
+    add(std::make_unique<CompareMetricsController>(context));
+    variants_ = &add(std::make_unique<VariantsController>(context));
+    add(std::make_unique<ExportController>(context));
+    add(std::make_unique<SceneController>(context, sceneTimings_));
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
@@ -278,18 +246,22 @@ EditorApp::~EditorApp() {
     ImGuiIO& io = ImGui::GetIO();
     if (io.IniFilename) ImGui::SaveIniSettingsToDisk(io.IniFilename);
     io.IniFilename = nullptr;
-    exportWorker_.reset();
-    variantsWorker_.reset();
-    sceneDisplay_.reset();
-    sceneWorker_.reset();
-    compareWorker_.reset();
-    worker_.reset();
+    // Every job is asked to stop first, so they end together; then each is joined.
+    for (auto& feature : features_) feature->cancel();
+    while (!features_.empty()) features_.pop_back();
     (void)renderer_->waitIdle();  // frames in flight use the images released below
 }
 
+template <typename Controller>
+Controller& EditorApp::add(std::unique_ptr<Controller> controller) {
+    Controller& added = *controller;
+    features_.push_back(std::move(controller));
+    return added;
+}
+
 bool EditorApp::jobsRunning() const {
-    return worker_->running() || compareWorker_->busy() || variantsWorker_->busy() ||
-           exportWorker_->busy();
+    return std::any_of(features_.begin(), features_.end(),
+                       [](const auto& feature) { return feature->running(); });
 }
 
 bool EditorApp::shouldQuit() const {
@@ -337,7 +309,7 @@ int EditorApp::run() {
         // ends, and settles like input.
         const bool running = jobsRunning();
         if (resultWaiting && !running) framesToSettle = std::max(framesToSettle, kSettleFrames);
-        const bool firstResult = resultWaiting && display_->shownJob() != submittedJob_;
+        const bool firstResult = resultWaiting && evolution_->newJobUnshown();
         const bool progressDue =
             running && (firstResult ||
                         std::chrono::steady_clock::now() - lastDrawn >= kProgressInterval);
@@ -351,12 +323,12 @@ int EditorApp::run() {
             continue;
         }
 
-        const bool evolving = worker_->busy();
+        const bool evolving = evolution_->busy();
         const EditorTimings::Mark started = EditorTimings::now();
         const FrameOutcome outcome = frame(screenshotPath);
         // A change starts its job once the frame showing it is on screen: on lavapipe the
         // frame would otherwise wait behind the job's first renders on the one queue.
-        submitChangesToWorker(started);
+        evolution_->submitChanges(ui_.state(), ImGui::IsAnyItemActive(), started);
         if (outcome == FrameOutcome::Skipped) continue;
         resultWaiting = false;  // the frame applied every result posted so far
         lastDrawn = std::chrono::steady_clock::now();
@@ -365,12 +337,12 @@ int EditorApp::run() {
             timings_.addFrame(EditorTimings::between(started, finished), evolving);
         else
             timings_.frameUnchanged();
-        timings_.resultsShown(display_->shownJob(), display_->shownFinished(), finished);
+        timings_.resultsShown(evolution_->shownJob(), evolution_->shownFinished(), finished);
         if (options_.maxFrames > 0 && ++frames >= options_.maxFrames) break;
     }
     if (options_.reportTimings) {
         std::printf("editor timings: %s\n", timings_.report().c_str());
-        std::printf("scene timings: %s\n", sceneDisplay_->timings().report().c_str());
+        std::printf("scene timings: %s\n", sceneTimings_.report().c_str());
     }
     if (!failure_.empty()) {
         std::fprintf(stderr, "matevo edit: %s\n", failure_.c_str());
@@ -391,11 +363,9 @@ EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& s
     ui::VariantsActions scriptedVariants;
     if (!captureNow) scriptedVariants = playScript(screenshotPath);
 
-    applyEvolutionResults();
-    applyCompareMetricsResults();
-    applyVariantsResults();
-    exportWorker_->update(ui_.state());
-    applySceneView();
+    for (auto& feature : features_)
+        if (Status shown = feature->showResults(ui_.state()); !shown)
+            failure_ = shown.error().message;
     ui_.state().evolution.tableBuildProgress = tableBuildProgress();
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -405,12 +375,10 @@ EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& s
     ImGui::Render();
     if (requests.quit) quitRequested_ = true;
     if (requests.snapshot) screenshotPath = nextSnapshotPath();
-    if (requests.runCompareMetrics)
-        compareWorker_->start(
-            {ui_.state().preset, ui_.state().presetPath, ui_.state().compareMetrics.runs});
-    handleVariantsActions(requests.variants);
-    handleVariantsActions(scriptedVariants);
-    if (requests.exportSet) exportWorker_->start(std::move(*requests.exportSet), ui_.state());
+    ui::FrameRequests scripted;
+    scripted.variants = scriptedVariants;
+    for (const ui::FrameRequests* asked : {&requests, static_cast<const ui::FrameRequests*>(&scripted)})
+        for (auto& feature : features_) feature->handleRequests(*asked, ui_.state());
     if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
         glfwSetWindowTitle(window_.get(), title.c_str());
         title_ = std::move(title);
@@ -454,8 +422,7 @@ EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& s
 }
 
 ScriptPlayer::Settled EditorApp::scriptSettled() {
-    return {!worker_->busy() && display_->shownFinished(),
-            !variantsWorker_->busy() && !variantsWorker_->hasResult()};
+    return {evolution_->settled(), variants_->settled()};
 }
 
 ui::VariantsActions EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
@@ -467,146 +434,6 @@ ui::VariantsActions EditorApp::playScript(std::optional<std::filesystem::path>& 
     if (effects.redraw) redrawRequested_ = true;
     screenshotPath = effects.screenshot;
     return effects.variants;
-}
-
-void EditorApp::applyEvolutionResults() {
-    ui::EditorState& state = ui_.state();
-    std::optional<EvolutionUpdate> update = worker_->takeLatest();
-    if (!update) return;
-    if (!update->error.empty()) state.status.post(update->error, ui::StatusKind::Error);
-    const bool runDone = update->finished && !update->targetOnly && update->error.empty();
-    if (Status shown = display_->show(std::move(*update), state.evolution); !shown)
-        failure_ = shown.error().message;
-    if (runDone)
-        if (auto advice = ui::adviceForFarCandidates(state.evolution, state.preset.ga))
-            state.status.post(advice->text, ui::StatusKind::Warning);
-}
-
-void EditorApp::applyCompareMetricsResults() {
-    ui::CompareMetricsView& view = ui_.state().compareMetrics;
-    view.running = compareWorker_->busy();
-    view.progress = compareWorker_->progress();
-    std::optional<CompareMetricsResult> result = compareWorker_->takeResult();
-    if (!result) return;
-    auto shown = showCompareMetrics(*result, *bridge_, view);
-    if (!shown) {
-        failure_ = shown.error().message;
-        return;
-    }
-    compareImages_ = std::move(shown).value();
-}
-
-void EditorApp::applyVariantsResults() {
-    ui::VariantsView& view = ui_.state().variants;
-    view.running = variantsWorker_->busy();
-    view.progress = variantsWorker_->progress();
-    std::optional<VariantsResult> result = variantsWorker_->takeResult();
-    if (!result) return;
-    shownVariants_ = std::move(result);
-    showShownVariants();
-}
-
-void EditorApp::showShownVariants() {
-    auto shown = showVariants(*shownVariants_, *bridge_, ui_.state().variants);
-    if (!shown) {
-        failure_ = shown.error().message;
-        return;
-    }
-    variantsImages_ = std::move(shown).value();
-}
-
-void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
-    ui::EditorState& state = ui_.state();
-    ui::VariantsView& view = state.variants;
-    VariantRequest request;
-    request.count = view.count;
-    request.band = {double(view.low), double(view.high)};
-    request.minApart = double(view.minApart);
-    request.seed = std::uint64_t(view.seed);
-    if (view.hueVariety) request.kappaGenes = KappaGenes::On;
-    if (actions.run) {
-        // The kept bin is where a set starts: its materials join as they are.
-        if (view.startFromKept) request.keep = keptGenomesOfFamily(state.preset);
-        discardedVariants_.clear();
-        if (variantsWorker_->start({state.preset, state.presetPath, request})) view.running = true;
-    }
-    if (!shownVariants_) return;
-    VariantSet& set = shownVariants_->set;
-    if (actions.discard >= 0 && std::size_t(actions.discard) < set.variants.size()) {
-        discardedVariants_.push_back(set.variants[std::size_t(actions.discard)].genome);
-        removeVariant(set, std::size_t(actions.discard));
-        showShownVariants();
-    }
-    if (actions.refill) {
-        // The same target as the shown set, the variants shown kept, the discarded ones barred.
-        for (const Variant& variant : set.variants) request.keep.push_back(variant.genome);
-        request.exclude = discardedVariants_;
-        if (variantsWorker_->start({shownVariants_->preset, state.presetPath, request}))
-            view.running = true;
-    }
-    if (actions.save) {
-        const VariantsResult& shown = *shownVariants_;
-        // One whole set in the folder: an earlier saved set there is replaced as a whole, a
-        // folder holding files matevo did not write is refused.
-        auto saveSet = [&]() -> Status {
-            auto output = OutputFolder::claim(view.savePath, true);
-            if (!output) return output.error();
-            auto font = Font::dejaVuSans();  // the contact sheet's
-            if (!font) return font.error();
-            if (auto written = writeVariantFiles(
-                    output->staging(),
-                    materialFromPreset(shown.preset, shown.presetFile, shown.preset.target,
-                                       shown.preset.name),
-                    set, variantReport(shown.preset, shown.run, set), *font);
-                !written)
-                return Error{output->userFacing(written.error().message)};
-            return output->commit();
-        };
-        const Status saved = saveSet();
-        view.summary = saved ? "Saved the set to " + view.savePath
-                             : "Save set failed: " + saved.error().message;
-        state.status.post(view.summary, saved ? ui::StatusKind::Info : ui::StatusKind::Error);
-    }
-}
-
-void EditorApp::applySceneView() {
-    if (Status updated = sceneDisplay_->update(ui_.state()); !updated)
-        ui_.state().sceneView.status = updated.error().message;
-}
-
-void EditorApp::submitChangesToWorker(const EditorTimings::Mark& changed) {
-    const Preset& preset = ui_.state().preset;
-    const ImageMetric heatmapMetric = ui_.state().heatmap.metric;
-    // During a drag the GA waits for the release (every intermediate value would cancel the
-    // run before it), but the target follows the slider: one render per new value.
-    if (ImGui::IsAnyItemActive() && submittedPreset_) {
-        const Preset& shown = previewedPreset_ ? *previewedPreset_ : *submittedPreset_;
-        if (preset.target == shown.target && preset.baseKappa == shown.baseKappa) return;
-        previewedPreset_ = preset;
-        submittedJob_ =
-            worker_->submit({preset, ui_.state().presetPath, true, false, heatmapMetric});
-        return;
-    }
-    // A preview replaced the target and stopped the run: a full job follows even when the
-    // slider came back to where it started.
-    const bool previewed = std::exchange(previewedPreset_, std::nullopt).has_value();
-    // Keeping, naming or removing a kept material changes nothing the GA does.
-    const auto withoutKept = [](Preset p) {
-        p.kept.clear();
-        return p;
-    };
-    const bool imageFitness = ui_.state().imageFitness;
-    if (!previewed && submittedPreset_ && withoutKept(*submittedPreset_) == withoutKept(preset) &&
-        submittedImageFitness_ == imageFitness && submittedHeatmapMetric_ == heatmapMetric)
-        return;  // (a ꟻLIP heatmap needs ꟻLIP maps: a changed choice draws the tiles again)
-    submittedPreset_ = preset;
-    submittedImageFitness_ = imageFitness;
-    submittedHeatmapMetric_ = heatmapMetric;
-    const std::uint64_t jobId = worker_->submit(
-        {preset, ui_.state().presetPath, false, imageFitness, heatmapMetric});
-    submittedJob_ = jobId;
-    ui_.state().evolution.running = true;
-    timings_.changeSubmitted(jobId, changed);
 }
 
 std::filesystem::path EditorApp::nextSnapshotPath() const {

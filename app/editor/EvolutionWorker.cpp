@@ -81,120 +81,46 @@ Status fillTiles(EvolutionUpdate& update, const std::vector<Individual>& ranked,
 
 EvolutionWorker::EvolutionWorker(std::function<void()> onUpdate, const gpu::Device& device,
                                  RenderBackend backend)
-    : onUpdate_(std::move(onUpdate)), thread_([this, &device, backend] { run(device, backend); }) {}
+    : device_(device),
+      backend_(backend),
+      worker_(
+          JobPolicy::LatestWins, std::move(onUpdate),
+          [this](const EvolutionJob& job, Worker::Context& context) { evolve(job, context); },
+          [](std::uint64_t jobId, const std::string& message) {
+              EvolutionUpdate update;
+              update.jobId = jobId;
+              update.finished = true;
+              update.error = "the run failed: " + message;
+              return update;
+          }) {}
 
-EvolutionWorker::~EvolutionWorker() {
-    {
-        std::lock_guard lock(mutex_);
-        stopping_ = true;
+EvolutionWorker::~EvolutionWorker() = default;
+
+void EvolutionWorker::evolve(const EvolutionJob& job, Worker::Context& context) {
+    if (!renderCache_) {
+        // Below the UI thread, so frames stay smooth while the GA runs. Render and ΔE00 helper
+        // threads inherit the niceness from this thread.
+        setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), kWorkerNiceness);
+        gpu::RendererRequest request;
+        request.backend = backend_;
+        request.who = "matevo edit";
+        request.cancelled = [this] { return worker_.runningToken().cancelled(); };
+        fitnessRenderer_ = request;
+        fitnessRenderer_.device = &device_;
+        renderCache_.emplace(kTileSize, kTargetSize, kRenderCacheSize, device_,
+                             std::move(request));
     }
-    wake_.notify_all();
-    thread_.join();
-}
-
-std::uint64_t EvolutionWorker::submit(EvolutionJob job) {
-    std::uint64_t id = 0;
-    {
-        std::lock_guard lock(mutex_);
-        pending_ = std::move(job);
-        id = latestJobId_.fetch_add(1) + 1;
-    }
-    wake_.notify_all();
-    return id;
-}
-
-std::optional<EvolutionUpdate> EvolutionWorker::takeLatest() {
-    std::lock_guard lock(mutex_);
-    std::optional<EvolutionUpdate> update = std::move(latest_);
-    latest_.reset();
-    return update;
-}
-
-bool EvolutionWorker::busy() const {
-    std::lock_guard lock(mutex_);
-    return working_ || pending_.has_value() || latest_.has_value();
-}
-
-bool EvolutionWorker::running() const {
-    std::lock_guard lock(mutex_);
-    return working_ || pending_.has_value();
-}
-
-bool EvolutionWorker::cancelled(std::uint64_t jobId) const {
-    std::lock_guard lock(mutex_);
-    return stopping_ || latestJobId_.load() != jobId;
-}
-
-void EvolutionWorker::publish(EvolutionUpdate update) {
-    {
-        std::lock_guard lock(mutex_);
-        latest_ = std::move(update);
-    }
-    onUpdate_();
-}
-
-void EvolutionWorker::publishFailure(std::uint64_t jobId, const std::string& what) {
-    EvolutionUpdate update;
-    update.jobId = jobId;
-    update.finished = true;
-    update.error = "the run failed: " + what;
-    publish(std::move(update));
-}
-
-void EvolutionWorker::run(const gpu::Device& device, RenderBackend backend) {
-    // Below the UI thread, so frames stay smooth while the GA runs. Render and ΔE00 helper
-    // threads inherit the niceness from this thread.
-    setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), kWorkerNiceness);
-    gpu::RendererRequest request;
-    request.backend = backend;
-    request.who = "matevo edit";
-    request.cancelled = [this] { return cancelled(runningJobId_.load()); };
-    gpu::RendererRequest fitnessRenderer = request;
-    fitnessRenderer.device = &device;
-    CandidateRenderCache renderCache(kTileSize, kTargetSize, kRenderCacheSize, device,
-                                     std::move(request));
-    for (;;) {
-        EvolutionJob job;
-        std::uint64_t jobId = 0;
-        {
-            std::unique_lock lock(mutex_);
-            wake_.wait(lock, [this] { return stopping_ || pending_.has_value(); });
-            if (stopping_) return;
-            job = std::move(*pending_);
-            pending_.reset();
-            jobId = latestJobId_.load();
-            runningJobId_.store(jobId);
-            working_ = true;
-        }
-        // Nothing may escape a thread (std::terminate would end the editor and lose the
-        // user's document): a failure becomes the job's error, shown in the window.
-        try {
-            evolve(job, jobId, renderCache, fitnessRenderer);
-        } catch (const std::exception& error) {
-            publishFailure(jobId, error.what());
-        } catch (...) {
-            publishFailure(jobId, "unknown failure");
-        }
-        {
-            std::lock_guard lock(mutex_);
-            working_ = false;
-        }
-        onUpdate_();
-    }
-}
-
-void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
-                             CandidateRenderCache& renderCache,
-                             const gpu::RendererRequest& fitnessRenderer) {
+    CandidateRenderCache& renderCache = *renderCache_;
+    const gpu::RendererRequest& fitnessRenderer = fitnessRenderer_;
     const Preset& preset = job.preset;
     EvolutionUpdate update;
-    update.jobId = jobId;
+    update.jobId = context.jobId();
     update.totalGenerations = preset.ga.generations;
     update.heatmapMetric = job.heatmapMetric;
     if (Status ready = renderCache.prepare(preset, job.presetFile, job.heatmapMetric); !ready) {
         update.finished = true;
         update.error = ready.error().message;
-        publish(std::move(update));
+        context.publish(std::move(update));
         return;
     }
     update.target = renderCache.target();
@@ -202,14 +128,14 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
     if (job.targetOnly) {
         update.targetOnly = true;
         update.finished = true;
-        publish(std::move(update));
+        context.publish(std::move(update));
         return;
     }
 
     auto failed = [&](const std::string& what) {
         update.finished = true;
         update.error = what;
-        publish(std::move(update));
+        context.publish(std::move(update));
     };
     std::optional<ImageSpaceFitness> fitness;
     if (job.imageFitness) {
@@ -219,7 +145,7 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
             renderGenomesWith(gpu::createPopulationRenderer(fitnessRenderer, *textures),
                               preset.family, preset.baseKappa, preset.scene, kImageFitnessSize),
             preset.target);
-        if (!cache) return cancelled(jobId) ? void() : failed(cache.error().message);
+        if (!cache) return context.cancelled() ? void() : failed(cache.error().message);
         fitness.emplace(std::move(cache).value());
     }
     GeneticAlgorithm ga = fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga,
@@ -228,7 +154,7 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
     ga.initialize();
     const std::vector<Genome> kept = keptGenomesOfFamily(preset);
     for (;;) {
-        if (cancelled(jobId)) return;
+        if (context.cancelled()) return;
         if (fitness && fitness->failure()) return failed(fitness->failure()->message);
         const std::vector<Individual> ranked = ga.rankedPopulation();
         const bool last = ga.finished();
@@ -241,20 +167,20 @@ void EvolutionWorker::evolve(const EvolutionJob& job, std::uint64_t jobId,
         for (;;) {
             if (Status filled = fillTiles(update, ranked, distinct, drawn, kept, renderCache);
                 !filled) {
-                if (cancelled(jobId)) return;
+                if (context.cancelled()) return;
                 update.finished = true;
                 update.error = filled.error().message;
-                publish(std::move(update));
+                context.publish(std::move(update));
                 return;
             }
-            if (cancelled(jobId)) return;
+            if (context.cancelled()) return;
             if (drawn <= std::size_t(kGridTiles)) {  // once per generation, over the grid's best
                 const GenerationStats& stats = ga.history().back();
                 update.history.push_back({stats.generation, stats.best, stats.mean,
                                           meanOf(update.candidates), stats.diversity});
             }
             update.finished = last && drawn == distinct.first.size();
-            publish(update);
+            context.publish(update);
             if (drawn == distinct.first.size()) break;
             drawn = std::min(drawn + std::size_t(kGridTiles), distinct.first.size());
         }

@@ -1,20 +1,17 @@
 #pragma once
 // Runs the GA on a worker thread, one generation at a time, and renders the best candidates
 // and their ΔE00 maps against the target after each. A newer job cancels the running one at
-// the next generation or candidate boundary; the UI thread polls for the latest update and is
+// the next generation or candidate boundary (BackgroundWorker, latest wins); the UI thread polls for the latest update and is
 // woken through `onUpdate` (which must be thread-safe, e.g. glfwPostEmptyEvent).
-#include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "BackgroundWorker.h"
 #include "CandidateRenderCache.h"
 #include "EditorState.h"
 #include "color/ImageDifference.h"
@@ -86,32 +83,25 @@ public:
     EvolutionWorker& operator=(const EvolutionWorker&) = delete;
 
     // Replaces any queued or running job; returns the new job's id.
-    std::uint64_t submit(EvolutionJob job);
+    std::uint64_t submit(EvolutionJob job) { return worker_.submit(std::move(job)).value_or(0); }
     // The newest update not yet taken, if any.
-    std::optional<EvolutionUpdate> takeLatest();
+    std::optional<EvolutionUpdate> takeLatest() { return worker_.take(); }
     // A job is queued or running, or its last update is not taken yet.
-    bool busy() const;
+    bool busy() const { return worker_.busy() || worker_.hasUpdate(); }
     // A job is queued or running (its last update may still wait to be taken).
-    bool running() const;
+    bool running() const { return worker_.busy(); }
+    void cancel() { worker_.cancel(); }
 
 private:
-    void run(const gpu::Device& device, RenderBackend backend);
-    void evolve(const EvolutionJob& job, std::uint64_t jobId, CandidateRenderCache& renderCache,
-                const gpu::RendererRequest& fitnessRenderer);
-    bool cancelled(std::uint64_t jobId) const;
-    void publish(EvolutionUpdate update);
-    void publishFailure(std::uint64_t jobId, const std::string& what);
+    using Worker = BackgroundWorker<EvolutionJob, EvolutionUpdate>;
+    void evolve(const EvolutionJob& job, Worker::Context& context);
 
-    std::function<void()> onUpdate_;
-    mutable std::mutex mutex_;
-    std::condition_variable wake_;
-    std::optional<EvolutionJob> pending_;
-    std::optional<EvolutionUpdate> latest_;
-    bool working_ = false;
-    bool stopping_ = false;
-    std::atomic<std::uint64_t> latestJobId_{0};
-    std::atomic<std::uint64_t> runningJobId_{0};
-    std::thread thread_;  // last: starts after everything it uses exists
+    const gpu::Device& device_;
+    const RenderBackend backend_;
+    // Made by the first job, on the worker thread, and used only there.
+    std::optional<CandidateRenderCache> renderCache_;
+    gpu::RendererRequest fitnessRenderer_;
+    Worker worker_;  // last: stopped first
 };
 
 }  // namespace matevo::editor

@@ -15,17 +15,23 @@ std::string materialCount(std::size_t count) {
 
 ExportWorker::ExportWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer,
                            ExportSettings settings)
-    : rendererRequest_(std::move(renderer)), settings_(settings), job_(std::move(onUpdate)) {
-    rendererRequest_.cancelled = [this] { return job_.stopping(); };
+    : rendererRequest_(std::move(renderer)),
+      settings_(settings),
+      worker_(
+          JobPolicy::OneAtATime, std::move(onUpdate),
+          [this](const ui::ExportRequest& request, Worker::Context& context) {
+              context.publish(compute(request, context));
+          },
+          [](std::uint64_t, const std::string& message) {
+              return ExportResult{std::nullopt, "the export failed: " + message};
+          }) {
+    rendererRequest_.cancelled = [this] { return worker_.runningToken().cancelled(); };
 }
-
-ExportWorker::~ExportWorker() = default;
 
 bool ExportWorker::start(ui::ExportRequest request, ui::EditorState& state) {
     const std::string what = "Exporting " + materialCount(request.materials.size());
     const std::string file = request.file.string();
-    if (!job_.start([this, request = std::move(request)] { return compute(request); },
-                    "the export")) {
+    if (!worker_.submit(std::move(request))) {
         state.status.post("An export is running: wait for it to end", ui::StatusKind::Warning);
         return false;
     }
@@ -35,8 +41,8 @@ bool ExportWorker::start(ui::ExportRequest request, ui::EditorState& state) {
 }
 
 void ExportWorker::update(ui::EditorState& state) {
-    if (state.task) state.task->fraction = job_.progress();
-    std::optional<ExportResult> result = job_.takeResult();
+    if (state.task) state.task->fraction = worker_.progress();
+    std::optional<ExportResult> result = worker_.take();
     if (!result) return;
     state.task.reset();
     if (!result->error.empty() || !result->report)
@@ -45,17 +51,17 @@ void ExportWorker::update(ui::EditorState& state) {
         state.status.post(describeExport(*result->report));
 }
 
-ExportResult ExportWorker::compute(const ui::ExportRequest& request) {
+ExportResult ExportWorker::compute(const ui::ExportRequest& request, Worker::Context& context) {
     ExportResult result;
     std::unique_ptr<PopulationRenderer> renderer =
         gpu::createPopulationRenderer(rendererRequest_, SceneTextures{});
     auto report = exportMaterials(request.materials, *renderer, request.format, request.file,
-                                  settings_, [this](std::size_t done, std::size_t count) {
+                                  settings_, [&context](std::size_t done, std::size_t count) {
                                       // Ends the export between materials when the editor closes;
                                       // nothing is written.
-                                      if (job_.stopping())
+                                      if (context.cancelled())
                                           throw std::runtime_error("stopped as the editor closed");
-                                      job_.reportProgress(float(done) / float(count));
+                                      context.reportProgress(float(done) / float(count));
                                   });
     if (!report)
         result.error = report.error().message;

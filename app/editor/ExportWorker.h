@@ -1,5 +1,5 @@
 #pragma once
-// Runs the editor's "Export set…" on a worker thread (BackgroundJob: one job at a time,
+// Runs the editor's "Export set…" on a worker thread (BackgroundWorker, one job at a time;
 // `onUpdate` wakes the UI) with core/export, the code `matevo export` runs: each kept material
 // rendered by our renderer, its glTF parameters fitted by ΔE00, the file written atomically.
 // While it runs the status bar shows its progress; at the end, where it went and the fitted
@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "BackgroundJob.h"
+#include "BackgroundWorker.h"
 #include "EditorState.h"
 #include "ExportDialog.h"
 #include "export/ExportSet.h"
@@ -27,21 +27,23 @@ public:
     // the fit's (the defaults of `matevo export` unless a test asks for a quicker fit).
     ExportWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer,
                  ExportSettings settings = {});
-    ~ExportWorker();  // a running export stops after the material being fitted; nothing written
+    // Destroying it stops a running export after the material being fitted; nothing is written.
 
     // Starts the export unless one is running, and says so in `state` (status bar and task).
     bool start(ui::ExportRequest request, ui::EditorState& state);
     // Each frame: the running export's progress into `state.task`; once it ends, its outcome in
     // the status bar and the task cleared.
     void update(ui::EditorState& state);
-    bool busy() const { return job_.busy(); }
+    bool busy() const { return worker_.busy(); }
+    void cancel() { worker_.cancel(); }
 
 private:
-    ExportResult compute(const ui::ExportRequest& request);
+    using Worker = BackgroundWorker<ui::ExportRequest, ExportResult>;
+    ExportResult compute(const ui::ExportRequest& request, Worker::Context& context);
 
     gpu::RendererRequest rendererRequest_;
     ExportSettings settings_;
-    BackgroundJob<ExportResult> job_;  // last: stopped first
+    Worker worker_;  // last: stopped first
 };
 
 // "Exported 3 materials to sets/rust.gltf (glTF 2.0): fitted ΔE00 rust 1: 0.84, …; mean 1.12".

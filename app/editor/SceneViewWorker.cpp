@@ -22,38 +22,6 @@ struct SceneViewRenderer {
     std::size_t triangles = 0;
 };
 
-SceneViewWorker::SceneViewWorker(std::function<void()> onUpdate, const gpu::Device& device)
-    : onUpdate_(std::move(onUpdate)), device_(device), thread_([this] { loop(); }) {}
-
-SceneViewWorker::~SceneViewWorker() {
-    {
-        std::lock_guard lock(mutex_);
-        stopping_ = true;
-        running_.cancel();
-    }
-    wake_.notify_one();
-    thread_.join();
-}
-
-void SceneViewWorker::request(SceneViewJob job) {
-    {
-        std::lock_guard lock(mutex_);
-        pending_ = std::move(job);
-        running_.cancel();  // latest wins: the running job gives way before its frame
-    }
-    wake_.notify_one();
-}
-
-std::optional<SceneViewResult> SceneViewWorker::takeResult() {
-    std::lock_guard lock(mutex_);
-    return std::exchange(result_, std::nullopt);
-}
-
-bool SceneViewWorker::busy() {
-    std::lock_guard lock(mutex_);
-    return pending_.has_value() || rendering_;
-}
-
 namespace {
 
 Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
@@ -62,42 +30,30 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
 
 }  // namespace
 
-void SceneViewWorker::loop() {
-    std::unique_ptr<SceneViewRenderer> renderer;
-    for (;;) {
-        SceneViewJob job;
-        CancelToken cancel;
-        {
-            std::unique_lock lock(mutex_);
-            wake_.wait(lock, [this] { return stopping_ || pending_.has_value(); });
-            if (stopping_) return;
-            job = std::move(*std::exchange(pending_, std::nullopt));
-            running_ = cancel;
-            rendering_ = true;
-        }
-        SceneViewResult result;
-        bool superseded = false;
-        try {
-            auto rendered = render(renderer, job, device_, cancel);
-            if (rendered) {
-                result = std::move(rendered).value();
-            } else {
-                superseded = rendered.error().kind == ErrorKind::Cancelled;
-                result.status = rendered.error().message;
-            }
-        } catch (const std::exception& error) {  // nothing may escape the thread
-            result.status = std::string("scene view: ") + error.what();
-        }
-        result.controls = job.controls;
-        result.materials = std::move(job.materials);
-        {
-            std::lock_guard lock(mutex_);
-            rendering_ = false;
-            if (!superseded) result_ = std::move(result);
-        }
-        if (!superseded) onUpdate_();
-    }
-}
+SceneViewWorker::SceneViewWorker(std::function<void()> onUpdate, const gpu::Device& device)
+    : device_(device),
+      worker_(
+          JobPolicy::LatestWins, std::move(onUpdate),
+          [this](const SceneViewJob& job, Worker::Context& context) {
+              SceneViewResult result;
+              auto rendered = render(renderer_, job, device_, context.token());
+              if (rendered)
+                  result = std::move(rendered).value();
+              else if (rendered.error().kind == ErrorKind::Cancelled)
+                  return;  // a newer view replaced it
+              else
+                  result.status = rendered.error().message;
+              result.controls = job.controls;
+              result.materials = job.materials;
+              context.publish(std::move(result));
+          },
+          [](std::uint64_t, const std::string& message) {
+              SceneViewResult failed;
+              failed.status = "scene view: " + message;
+              return failed;
+          }) {}
+
+SceneViewWorker::~SceneViewWorker() = default;
 
 namespace {
 

@@ -2,22 +2,20 @@
 // Renders the Scene window (ui/ScenePanel.h) on a worker thread with the raster scene renderer
 // (core/gpu/GpuSceneRenderer) on the window's device, so that orbiting never blocks the UI. The
 // picture stays on that device: the renderer's display pass writes it into a DisplayTile that
-// the window samples, with no copy through the host. Only the newest request matters (latest
-// wins): one queued while a render runs replaces any older one, and cancels the running one
-// before its frame is recorded (a mesh being loaded is kept for the next). The UI thread takes
-// the finished render and is woken through `onUpdate` (which must be thread-safe).
-#include <condition_variable>
+// the window samples, with no copy through the host. Only the newest request matters
+// (BackgroundWorker, latest wins): one queued while a render runs replaces any older one and
+// cancels the running one before its frame is recorded (a mesh being loaded is kept for the
+// next). The UI thread takes the finished render and is woken through `onUpdate` (which must be
+// thread-safe).
 #include <filesystem>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "BackgroundWorker.h"
 #include "ScenePanel.h"
-#include "common/CancelToken.h"
 #include "gpu/Device.h"
 #include "gpu/DisplayTile.h"
 #include "io/Preset.h"
@@ -59,24 +57,16 @@ public:
     SceneViewWorker(const SceneViewWorker&) = delete;
     SceneViewWorker& operator=(const SceneViewWorker&) = delete;
 
-    void request(SceneViewJob job);
-    std::optional<SceneViewResult> takeResult();
-    // A request is queued or being rendered.
-    bool busy();
+    void request(SceneViewJob job) { worker_.submit(std::move(job)); }
+    std::optional<SceneViewResult> takeResult() { return worker_.take(); }
+    void cancel() { worker_.cancel(); }
+    bool busy() const { return worker_.busy(); }
 
 private:
-    void loop();
-
-    std::function<void()> onUpdate_;
     const gpu::Device& device_;
-    std::mutex mutex_;
-    std::condition_variable wake_;
-    std::optional<SceneViewJob> pending_;
-    CancelToken running_;  // the job being rendered; cancelled by a newer request
-    bool rendering_ = false;
-    std::optional<SceneViewResult> result_;
-    bool stopping_ = false;
-    std::thread thread_;
+    std::unique_ptr<SceneViewRenderer> renderer_;  // made and used on the worker thread
+    using Worker = BackgroundWorker<SceneViewJob, SceneViewResult>;
+    Worker worker_;  // last: stopped first
 };
 
 }  // namespace matevo::editor

@@ -10,17 +10,21 @@
 namespace matevo::editor {
 
 VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer)
-    : rendererRequest_(std::move(renderer)), job_(std::move(onUpdate)) {
-    rendererRequest_.cancelled = [this] { return job_.stopping(); };
+    : rendererRequest_(std::move(renderer)),
+      worker_(
+          JobPolicy::OneAtATime, std::move(onUpdate),
+          [this](const VariantsJob& job, Worker::Context& context) {
+              context.publish(compute(job, context));
+          },
+          [](std::uint64_t, const std::string& message) {
+              VariantsResult failed;
+              failed.error = "the variant search failed: " + message;
+              return failed;
+          }) {
+    rendererRequest_.cancelled = [this] { return worker_.runningToken().cancelled(); };
 }
 
-VariantsWorker::~VariantsWorker() = default;
-
-bool VariantsWorker::start(VariantsJob job) {
-    return job_.start([this, job = std::move(job)] { return compute(job); }, "the variant search");
-}
-
-VariantsResult VariantsWorker::compute(const VariantsJob& job) {
+VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& context) {
     const auto started = std::chrono::steady_clock::now();
     VariantsResult result{job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, {}};
     auto textures = loadSceneTextures(job.preset, job.presetFile);
@@ -39,14 +43,14 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job) {
     const VariantSearchSettings settings;
     const double wanted = double(job.request.count + settings.spare);
     VariantSearchHooks hooks;
-    hooks.stop = [this] { return job_.stopping(); };
+    hooks.stop = [&context] { return context.cancelled(); };
     hooks.onGeneration = [&](const VariantSearchProgress& progress) {
-        job_.reportProgress(float(std::max(double(progress.archived) / wanted,
+        context.reportProgress(float(std::max(double(progress.archived) / wanted,
                                            double(progress.evaluations) / settings.maxEvaluations)));
     };
     auto found = findVariants({preset.target, preset.family, preset.baseKappa}, job.request,
                               settings, renderAt(kFitnessSize), renderAt(kOutputSize), hooks);
-    if (job_.stopping()) {
+    if (context.cancelled()) {
         result.error = "stopped";
         return result;
     }

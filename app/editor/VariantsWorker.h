@@ -1,13 +1,13 @@
 #pragma once
 // Runs the Variants mode's search (core/variants: the quality-diversity search at the fitness
 // resolution, then the set chosen and checked at the output resolution) on a worker thread, so
-// the editor stays responsive (BackgroundJob: one job at a time, `onUpdate` wakes the UI).
+// the editor stays responsive (BackgroundWorker, one job at a time; `onUpdate` wakes the UI).
 #include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
 
-#include "BackgroundJob.h"
+#include "BackgroundWorker.h"
 
 #include "gpu/PopulationRendererFactory.h"
 #include "io/Preset.h"
@@ -36,24 +36,26 @@ public:
     static constexpr int kFitnessSize = 64;
 
     // `renderer` says where the search renders (the editor's --backend).
+    // Destroying it stops a running job at its next generation.
     VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer);
-    ~VariantsWorker();  // stops a running job at its next generation
     VariantsWorker(const VariantsWorker&) = delete;
     VariantsWorker& operator=(const VariantsWorker&) = delete;
 
     // Starts the job unless one is running; returns whether it started.
-    bool start(VariantsJob job);
-    bool busy() const { return job_.busy(); }
-    float progress() const { return job_.progress(); }
-    std::optional<VariantsResult> takeResult() { return job_.takeResult(); }
+    bool start(VariantsJob job) { return worker_.submit(std::move(job)).has_value(); }
+    void cancel() { worker_.cancel(); }
+    bool busy() const { return worker_.busy(); }
+    float progress() const { return worker_.progress(); }
+    std::optional<VariantsResult> takeResult() { return worker_.take(); }
     // A result is waiting to be taken.
-    bool hasResult() { return job_.hasResult(); }
+    bool hasResult() const { return worker_.hasUpdate(); }
 
 private:
-    VariantsResult compute(const VariantsJob& job);
+    using Worker = BackgroundWorker<VariantsJob, VariantsResult>;
+    VariantsResult compute(const VariantsJob& job, Worker::Context& context);
 
     gpu::RendererRequest rendererRequest_;
-    BackgroundJob<VariantsResult> job_;  // last: stopped first
+    Worker worker_;  // last: stopped first
 };
 
 }  // namespace matevo::editor

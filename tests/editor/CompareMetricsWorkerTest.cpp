@@ -50,5 +50,32 @@ TEST(CompareMetricsWorker, HonoursTheBackend) {
     }
 }
 
+// Closing the editor cancels every worker, then joins it: a Compare metrics job far too long to
+// finish stops between render batches and says it was stopped, keeping nothing half scored.
+TEST(CompareMetricsWorker, CancelStopsARunningJob) {
+    auto loaded = loadPreset(MATEVO_SOURCE_DIR "/presets/validation_metal.json");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    // Quick GA runs, then 3 x 3000 renders to score: minutes on lavapipe.
+    CompareMetricsJob job{loaded->preset, MATEVO_SOURCE_DIR "/presets/validation_metal.json", 3000};
+    job.preset.ga.population = 6;
+    job.preset.ga.generations = 2;
+    gpu::RendererRequest request;
+    request.backend = RenderBackend::Gpu;
+    request.who = "test";
+    CompareMetricsWorker worker([] {}, request);
+    ASSERT_TRUE(worker.start(job));
+    EXPECT_FALSE(worker.start(job)) << "one job at a time";
+    // Once scoring has begun (the second half of the progress).
+    while (worker.busy() && worker.progress() <= 0.5f)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    worker.cancel();
+    while (worker.busy()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    auto result = worker.takeResult();
+    ASSERT_TRUE(result.has_value());
+    EXPECT_TRUE(result->cancelled);
+    EXPECT_TRUE(result->records.empty());
+    EXPECT_FALSE(worker.start(job)) << "a cancelled worker starts nothing more";
+}
+
 }  // namespace
 }  // namespace matevo::editor

@@ -1,4 +1,4 @@
-#include "SceneViewDisplay.h"
+#include "SceneController.h"
 
 #include <algorithm>
 #include <utility>
@@ -7,10 +7,10 @@
 
 namespace matevo::editor {
 
-SceneViewDisplay::SceneViewDisplay(ImageBridge& bridge, SceneViewWorker& worker)
-    : bridge_(bridge), worker_(worker) {}
+SceneController::SceneController(const FeatureContext& context, SceneTimings& timings)
+    : bridge_(context.bridge), timings_(timings), worker_(context.wake, context.device) {}
 
-Status SceneViewDisplay::update(ui::EditorState& state) {
+Status SceneController::showResults(ui::EditorState& state) {
     ui::SceneView& view = state.sceneView;
     const auto now = SceneTimings::Clock::now();
     if (view.open && !wasOpen_) timings_.windowOpened(now);
@@ -40,7 +40,7 @@ Status SceneViewDisplay::update(ui::EditorState& state) {
     return Ok{};
 }
 
-Status SceneViewDisplay::show(SceneViewResult& result, ui::SceneView& view) {
+Status SceneController::show(SceneViewResult& result, ui::SceneView& view) {
     if (result.meshFailed) {
         view.meshError = result.status;
         auto& recent = view.recentMeshes;
@@ -54,7 +54,10 @@ Status SceneViewDisplay::show(SceneViewResult& result, ui::SceneView& view) {
     if (!result.tile) return Ok{};  // the status says why; the picture on screen stays
     // The worker's picture is already on this device: shown as it is, no copy.
     auto shown = bridge_.show(result.tile);
-    if (!shown) return shown.error();
+    if (!shown) {
+        view.status = shown.error().message;
+        return Ok{};
+    }
     image_ = std::move(shown).value();
     view.image = image_->render();
     view.imageWidth = result.tile->width;
@@ -66,9 +69,11 @@ Status SceneViewDisplay::show(SceneViewResult& result, ui::SceneView& view) {
     shownMesh_ = result.controls.mesh;
     if (!result.preview)
         planner_.wholePictureTook(result.frameMilliseconds,
-                                  (long long)result.tile->width * result.tile->height);
+                                  static_cast<long long>(result.tile->width) * result.tile->height);
     timings_.pictureShown(result.preview, view.cameraHeld, SceneTimings::Clock::now());
     return Ok{};
 }
+
+void SceneController::handleRequests(const ui::FrameRequests&, ui::EditorState&) {}
 
 }  // namespace matevo::editor

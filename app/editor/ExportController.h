@@ -1,0 +1,21 @@
+#pragma once
+// "Export set…": runs the confirmed export and reports it in the status bar.
+#include "ExportWorker.h"
+#include "FeatureController.h"
+
+namespace matevo::editor {
+
+class ExportController final : public FeatureController {
+public:
+    explicit ExportController(const FeatureContext& context);
+
+    Status showResults(ui::EditorState& state) override;
+    void handleRequests(const ui::FrameRequests& requests, ui::EditorState& state) override;
+    bool running() const override { return worker_.busy(); }
+    void cancel() override { worker_.cancel(); }
+
+private:
+    ExportWorker worker_;
+};
+
+}  // namespace matevo::editor
