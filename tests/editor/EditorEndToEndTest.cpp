@@ -315,17 +315,17 @@ TEST(EditorSceneWindow, ShowsAMeshFileWithThePopulationThenTheKeptBin) {
     std::ofstream(dir / "tetra.obj") << "v 1 1 1\nv -1 -1 1\nv -1 1 -1\nv 1 -1 -1\n"
                                         "f 1 2 4\nf 1 3 2\nf 1 4 3\nf 2 3 4\n";
     // The validation metal with two kept materials far from its near-clone population: a
-    // rough base and a mirror-like one.
+    // rough base and a satin one (the target's base is as smooth as the family allows).
     nlohmann::json preset;
     std::ifstream(fs::path(MATEVO_SOURCE_DIR) / "presets/validation_metal.json") >> preset;
     const nlohmann::json family = preset["family"];
     preset["kept"] = {
         {{"name", "rough"},
          {"family", family},
-         {"genome", {{"eta1", 1.2}, {"eta2", 0.8}, {"alpha1", 0.03}, {"alpha2", 0.7}}}},
-        {{"name", "mirror"},
+         {"genome", {{"eta1", 1.2}, {"eta2", 0.8}, {"alpha1", 0.03}, {"alpha2", 0.9}}}},
+        {{"name", "satin"},
          {"family", family},
-         {"genome", {{"eta1", 1.2}, {"eta2", 0.8}, {"alpha1", 0.03}, {"alpha2", 0.02}}}}};
+         {"genome", {{"eta1", 1.2}, {"eta2", 0.8}, {"alpha1", 0.03}, {"alpha2", 0.4}}}}};
     std::ofstream(dir / "preset.json") << preset.dump(2);
     std::ofstream(dir / "script.txt") << "wait 2\n"
                                          "population 12\n"
@@ -356,16 +356,19 @@ TEST(EditorSceneWindow, ShowsAMeshFileWithThePopulationThenTheKeptBin) {
     const PixelRect image{50, 140, 790, 550};
     EXPECT_GE(populationShot.litBlobs(image, 30, 170).size(), 12u) << "not a blank picture";
     EXPECT_GE(keptShot.litBlobs(image, 30, 170).size(), 12u) << "not a blank picture";
-    // Other materials on the same instances: the pictures differ.
-    long long difference = 0;
+    // Other materials on the same instances: their highlights differ (the same materials
+    // would give the same pixels; the clear coat's reflection is alike in both).
+    int differing = 0;
     for (int y = image.y0; y < image.y1; ++y)
         for (int x = image.x0; x < image.x1; ++x)
             for (int c = 0; c < 3; ++c)
-                difference += std::abs(int(populationShot.pixel(x, y)[c]) -
-                                       int(keptShot.pixel(x, y)[c]));
-    const double meanDifference =
-        double(difference) / (3.0 * (image.x1 - image.x0) * (image.y1 - image.y0));
-    EXPECT_GT(meanDifference, 4.0) << "the kept bin looks like the population";
+                if (std::abs(int(populationShot.pixel(x, y)[c]) - int(keptShot.pixel(x, y)[c])) >
+                    20) {
+                    ++differing;
+                    break;
+                }
+    EXPECT_GT(differing, (image.x1 - image.x0) * (image.y1 - image.y0) / 50)
+        << "the kept bin looks like the population";
 
     std::ifstream ini(dir / "config/matevo/imgui.ini");
     const std::string settings((std::istreambuf_iterator<char>(ini)), {});
