@@ -59,8 +59,8 @@ void drawControls(SceneView& view) {
                 controls.source = SceneSource(i);
         ImGui::EndCombo();
     }
-    hoverHint("what the instances wear: the GA population (best first), the variant set sent "
-              "from the Variants window, or the kept bin");
+    hoverHint("what the instances wear: the GA population (best first), the variant set of "
+              "the Variants window, or the kept bin");
     sameLineIfFits(labelledWidth(kItemWidth + 30.0f, "mesh"));
     drawMeshChoice(view);
     sameLineIfFits(labelledWidth(kItemWidth, "instances"));
@@ -145,8 +145,7 @@ SceneCamera sceneCamera(const SceneViewControls& controls,
                        framed.fieldOfViewDegrees);
 }
 
-void showVariantSet(SceneView& view, std::vector<SceneMaterial> variants) {
-    view.variantSet = std::move(variants);
+void showVariantSet(SceneView& view) {
     view.controls.source = SceneSource::Variants;
     view.open = true;
 }

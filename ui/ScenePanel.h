@@ -1,7 +1,7 @@
 #pragma once
 // The Scene window (the paper's §6 application): N instances of a mesh, each wearing one
-// material of what the user chose to show (the GA population, the variant set sent from the
-// Variants window, or the kept bin; instance i wears material i mod count), lit like the rest
+// material of what the user chose to show (the GA population, the variant set of the Variants
+// window, or the kept bin; instance i wears material i mod count), lit like the rest
 // of matevo, with an orbit / zoom camera. The mesh is a built-in one or an OBJ/glTF/GLB file.
 // Hovering an instance names its material; clicking selects it in the inspector. The app
 // renders when the controls or the materials change (app/editor/SceneViewWorker) and fills the
@@ -58,7 +58,6 @@ inline constexpr std::size_t kMaxRecentMeshes = 8;
 struct SceneView {
     bool open = false;
     SceneViewControls controls;
-    std::vector<SceneMaterial> variantSet;  // the set last sent from the Variants window
     std::vector<std::string> recentMeshes;  // mesh files, newest first, remembered in imgui.ini
     PathDialog meshDialog;
     // The last render and what it shows (for picking); filled by the app. A new render replaces
@@ -81,8 +80,9 @@ struct SceneView {
 SceneCamera sceneCamera(const SceneViewControls& controls,
                         const std::vector<SceneInstance>& instances);
 
-// Opens the Scene window showing `variants` (the Variants window's "Send to Scene window").
-void showVariantSet(SceneView& view, std::vector<SceneMaterial> variants);
+// Opens the Scene window showing the Variants window's set (its "Send to Scene window"); the
+// instances follow the set as it changes (discard, refill, a new search).
+void showVariantSet(SceneView& view);
 
 // Shows `nameOrFile` (a kSceneMeshes name or a mesh file) on the instances; a file joins the
 // recent meshes. Whether it loads is known when it is rendered (SceneView::meshError).

@@ -20,6 +20,22 @@ std::vector<SceneMaterial> populationMaterials(const EditorState& state) {
     return materials;
 }
 
+// In the open preset's family (a variant carrying kappa genes wears its own kappa).
+std::vector<SceneMaterial> variantMaterials(const EditorState& state) {
+    std::vector<SceneMaterial> materials;
+    const std::vector<VariantTileView>& variants = state.variants.variants;
+    for (std::size_t i = 0; i < variants.size(); ++i) {
+        char label[120];
+        std::snprintf(label, sizeof label,
+                      "variant %zu: ΔE00 %.2f to the target, %.2f to the nearest variant", i + 1,
+                      variants[i].deltaEToTarget, variants[i].nearestSibling);
+        materials.push_back(
+            {materialOf(variants[i].genome, state.preset.family, state.preset.baseKappa),
+             variants[i].genome, label});
+    }
+    return materials;
+}
+
 std::vector<SceneMaterial> keptMaterials(const EditorState& state) {
     std::vector<SceneMaterial> materials;
     for (const KeptMaterial& kept : state.preset.kept)
@@ -33,32 +49,17 @@ std::vector<SceneMaterial> keptMaterials(const EditorState& state) {
 std::vector<SceneMaterial> sceneMaterials(const EditorState& state) {
     switch (state.sceneView.controls.source) {
         case SceneSource::Population: return populationMaterials(state);
-        case SceneSource::Variants: return state.sceneView.variantSet;
+        case SceneSource::Variants: return variantMaterials(state);
         case SceneSource::Kept: return keptMaterials(state);
     }
     return {};
-}
-
-std::vector<SceneMaterial> variantSceneMaterials(const VariantSet& set, const Preset& preset) {
-    const std::vector<double> nearest = set.nearestSibling();
-    std::vector<SceneMaterial> materials;
-    for (std::size_t i = 0; i < set.variants.size(); ++i) {
-        const Variant& variant = set.variants[i];
-        char label[120];
-        std::snprintf(label, sizeof label,
-                      "variant %zu: ΔE00 %.2f to the target, %.2f to the nearest variant", i + 1,
-                      variant.deltaEToTarget, nearest[i]);
-        materials.push_back(
-            {materialOf(variant.genome, preset.family, preset.baseKappa), variant.genome, label});
-    }
-    return materials;
 }
 
 std::string emptySourceNote(SceneSource source) {
     switch (source) {
         case SceneSource::Population: return "No candidates yet: the GA run fills the population";
         case SceneSource::Variants:
-            return "No variant set: find one in the Variants window and send it here";
+            return "No variant set: find one in the Variants window";
         case SceneSource::Kept: return "The kept bin is empty: keep candidates from the grid";
     }
     return {};

@@ -13,12 +13,15 @@
 namespace matevo::editor {
 
 // Rebuilt when the mesh, the lighting or the preset's textures change; materials are set per
-// job.
+// job. The textures and the environment stay across mesh changes: making the studio
+// environment takes seconds on a CPU device.
 struct SceneViewRenderer {
     gpu::CommandRunner runner;
+    std::optional<SceneTextures> textures;
+    std::string texturesKey;  // lighting and texture files of `textures`
+    SceneSettings settings;   // the preset's, lit as `textures` are
     std::optional<gpu::GpuSceneRenderer> scene;
-    std::string key;  // mesh, lighting and texture files of `scene`
-    SceneSettings settings;
+    std::string key;  // mesh and texturesKey of `scene`
     std::size_t triangles = 0;
 };
 
@@ -72,12 +75,13 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
     if (!renderer) {
         auto runner = gpu::CommandRunner::create(device);
         if (!runner) return runner.error();
-        renderer.reset(new SceneViewRenderer{std::move(runner).value(), {}, {}, {}, 0});
+        renderer.reset(new SceneViewRenderer{std::move(runner).value(), {}, {}, {}, {}, {}, 0});
     }
     const std::string lighting = ui::kSceneLightings[controls.lighting];
-    const std::string key = controls.mesh + "|" + lighting + "|" + job.presetFile.string() +
-                            "|" + job.preset.roughnessTexture + "|" +
-                            job.preset.baseColorTexture;
+    const std::string texturesKey = lighting + "|" + job.presetFile.string() + "|" +
+                                    job.preset.roughnessTexture + "|" +
+                                    job.preset.baseColorTexture;
+    const std::string key = controls.mesh + "|" + texturesKey;
     if (!renderer->scene || renderer->key != key) {
         // A mesh that does not load leaves the scene it had: the window keeps its picture.
         auto mesh = loadMesh(controls.mesh);
@@ -89,13 +93,18 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
         }
         renderer->scene.reset();
         renderer->key.clear();
-        auto textures = loadSceneTextures(job.preset, job.presetFile);
-        if (!textures) return textures.error();
-        renderer->settings = job.preset.scene;
-        if (auto lit = applyLightingChoice(lighting, renderer->settings, *textures); !lit)
-            return lit.error();
-        auto scene = gpu::GpuSceneRenderer::create(device, renderer->runner,
-                                                   defaultFgdTables(), *textures, *mesh);
+        if (!renderer->textures || renderer->texturesKey != texturesKey) {
+            renderer->textures.reset();
+            auto textures = loadSceneTextures(job.preset, job.presetFile);
+            if (!textures) return textures.error();
+            renderer->settings = job.preset.scene;
+            if (auto lit = applyLightingChoice(lighting, renderer->settings, *textures); !lit)
+                return lit.error();
+            renderer->textures.emplace(std::move(textures).value());
+            renderer->texturesKey = texturesKey;
+        }
+        auto scene = gpu::GpuSceneRenderer::create(device, renderer->runner, defaultFgdTables(),
+                                                   *renderer->textures, *mesh);
         if (!scene) return scene.error();
         renderer->scene.emplace(std::move(scene).value());
         renderer->triangles = mesh->triangleCount();

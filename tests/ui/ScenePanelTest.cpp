@@ -46,13 +46,11 @@ TEST_F(ScenePanel, ShowsThePopulationTheVariantSetOrTheKeptBin) {
     EXPECT_EQ(shownGenomes(), (std::vector<Genome>{best, second})) << "the population first";
     EXPECT_NE(ui::sceneMaterials(ui.state())[0].label.find("candidate #1"), std::string::npos);
 
-    // "Send to Scene window" from the Variants window.
-    VariantSet set;
-    set.variants = {{variant(0.2), {}, 3.1, false}, {variant(0.3), {}, 4.2, false}};
-    set.pairwise = {{0.0, 2.5}, {2.5, 0.0}};
+    // "Send to Scene window" from the Variants window: its set, as it changes.
+    ui.state().variants.variants = {{variant(0.2), nullptr, 3.1, 2.5, false},
+                                    {variant(0.3), nullptr, 4.2, 2.5, false}};
     ui.state().sceneView.open = false;
-    ui::showVariantSet(ui.state().sceneView,
-                       ui::variantSceneMaterials(set, ui.state().preset));
+    ui::showVariantSet(ui.state().sceneView);
     EXPECT_TRUE(ui.state().sceneView.open);
     EXPECT_EQ(ui.state().sceneView.controls.source, ui::SceneSource::Variants);
     EXPECT_EQ(shownGenomes(), (std::vector<Genome>{variant(0.2), variant(0.3)}));
@@ -60,6 +58,8 @@ TEST_F(ScenePanel, ShowsThePopulationTheVariantSetOrTheKeptBin) {
     EXPECT_NE(label.find("variant 2: ΔE00 4.20 to the target, 2.50 to the nearest"),
               std::string::npos)
         << label;
+    ui.state().variants.variants.erase(ui.state().variants.variants.begin());  // discarded
+    EXPECT_EQ(shownGenomes(), std::vector<Genome>{variant(0.3)});
     imgui.frame(draw);
 
     // The kept bin, chosen in the window: empty, then with a kept material.
