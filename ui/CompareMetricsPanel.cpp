@@ -124,7 +124,7 @@ void drawRenderGrid(const MetricRunsView& metric) {
 CompareMetricsActions drawCompareMetricsWindow(CompareMetricsView& view) {
     CompareMetricsActions actions;
     if (!view.open) return actions;
-    ImGui::SetNextWindowSize(ImVec2(900, 640), ImGuiCond_FirstUseEver);
+    placeFloatingWindow(ImVec2(900, 640));
     if (!ImGui::Begin("Compare metrics", &view.open)) {
         ImGui::End();
         return actions;

@@ -49,7 +49,7 @@ ControlPanelActions drawControlPanel(EditorState& state, bool canUndo, bool canR
     const ControlPanelActions actions = drawFileRow(state, canUndo, canRedo);
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.58f);
     drawMaterialControls(state.preset.family, state.preset.target, state.status);
-    drawGaControls(state.preset.ga, state.preset.family, state.imageFitness, state.status);
+    drawGaControls(state.preset.ga, state.preset.family, state.preset.imageFitness, state.status);
     ImGui::PopItemWidth();
     if (ImGui::Button("Compare metrics")) state.compareMetrics.open = true;
     hoverHint("The paper's section 5 experiment: the three metrics side by side");

@@ -107,9 +107,6 @@ struct EditorState {
     bool plotFromZero = true;  // the fitness plot's y axes start at zero
     bool enlarged = false;     // the inspected candidate shown at the target's size
     EvolutionView evolution;
-    // The GA view's fitness, beyond the paper: each candidate's rendered mean ΔE00 from the
-    // target instead of the preset's genotype metric. A view choice, not saved with the preset.
-    bool imageFitness = false;
     CompareMetricsView compareMetrics;  // the "Compare metrics" window
     VariantsView variants;              // the "Variants" window
     SceneView sceneView;                // the "Scene" window

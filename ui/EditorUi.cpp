@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <utility>
 
-#include <imgui_internal.h>  // MarkIniSettingsDirty
+#include <imgui_internal.h>  // MarkIniSettingsDirty, the popup stack
 
 #include "CandidateGrid.h"
 #include "CompareMetricsPanel.h"
@@ -28,6 +28,18 @@ std::string documentName(const EditorState& state) {
                                     : state.presetPath.filename().string();
 }
 
+// Esc closes an open dropdown (any popup but a modal dialog, which answers Esc itself). Done
+// before the panels, so the combo that owned it draws closed this very frame.
+void closeDropdownOnEscape() {
+    ImGuiContext& context = *ImGui::GetCurrentContext();
+    const int escape = ImGui::GetKeyIndex(ImGuiKey_Escape);
+    if (context.OpenPopupStack.empty() || escape < 0 || !ImGui::IsKeyPressed(escape, false))
+        return;
+    const ImGuiWindow* top = context.OpenPopupStack.back().Window;
+    if (top && (top->Flags & ImGuiWindowFlags_Modal)) return;
+    ImGui::ClosePopupToLevel(context.OpenPopupStack.Size - 1, true);
+}
+
 }  // namespace
 
 EditorUi::EditorUi(Preset preset, std::filesystem::path presetPath, PresetFolders folders,
@@ -41,6 +53,7 @@ EditorUi::EditorUi(Preset preset, std::filesystem::path presetPath, PresetFolder
 
 FrameRequests EditorUi::draw() {
     FrameRequests requests;
+    closeDropdownOnEscape();
     const PanelLayout layout = layoutPanels(ImGui::GetIO().DisplaySize, state_.splits);
 
     if (beginPanel("Controls", layout.controls)) {
@@ -72,7 +85,9 @@ FrameRequests EditorUi::draw() {
 
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
     state_.variants.keptInFamily = int(keptGenomesOfFamily(state_.preset).size());
-    requests.variants = drawVariantsWindow(state_.variants);
+    requests.variants = drawVariantsWindow(state_);
+    if (requests.variants.exportSet)
+        exportDialog_.open(state_, folders_.exports, ExportSource::VariantSet);
     drawSceneWindow(state_);
     drawDialogs();
     requests.exportSet = exportDialog_.draw(state_);

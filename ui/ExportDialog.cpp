@@ -4,6 +4,7 @@
 
 #include "PresetFiles.h"
 #include "io/Preset.h"
+#include "variants/VariantFiles.h"
 
 namespace matevo::ui {
 std::vector<MaterialFile> keptMaterialFiles(const EditorState& state) {
@@ -15,8 +16,36 @@ std::vector<MaterialFile> keptMaterialFiles(const EditorState& state) {
     return files;
 }
 
-void ExportDialog::open(EditorState& state, const std::filesystem::path& folder) {
-    const std::size_t count = keptMaterialFiles(state).size();
+std::vector<MaterialFile> variantSetMaterialFiles(const EditorState& state) {
+    std::vector<MaterialFile> files;
+    const auto& set = state.preset.variantSet;
+    if (!set) return files;
+    Preset madeFor = state.preset;  // the set's own target, family and kappa
+    madeFor.family = set->family;
+    madeFor.target = set->target;
+    madeFor.baseKappa = set->baseKappa;
+    const MaterialFile target =
+        materialFromPreset(madeFor, state.presetPath, set->target, state.preset.name);
+    for (std::size_t i = 0; i < set->variants.size(); ++i)
+        files.push_back(
+            variantMaterial(target, Variant{set->variants[i], {}, 0.0, false}, i,
+                            set->variants.size()));
+    return files;
+}
+
+std::vector<MaterialFile> exportedMaterials(const EditorState& state, ExportSource source) {
+    return source == ExportSource::KeptBin ? keptMaterialFiles(state)
+                                           : variantSetMaterialFiles(state);
+}
+
+void ExportDialog::open(EditorState& state, const std::filesystem::path& folder,
+                        ExportSource source) {
+    source_ = source;
+    if (source == ExportSource::VariantSet && variantSetMaterialFiles(state).empty()) {
+        state.status.post("Nothing to export: find variants first", StatusKind::Warning);
+        return;
+    }
+    const std::size_t count = exportedMaterials(state, source).size();
     if (count == 0) {
         state.status.post(
             state.preset.kept.empty()
@@ -27,7 +56,9 @@ void ExportDialog::open(EditorState& state, const std::filesystem::path& folder)
         return;
     }
     const std::string stem = exportFileStem(state.preset.name);
-    const std::filesystem::path name = (stem.empty() ? "materials" : stem) + ".gltf";
+    const std::filesystem::path name =
+        (stem.empty() ? "materials" : stem) +
+        (source == ExportSource::VariantSet ? "-variants.gltf" : ".gltf");
     path_.open(kTitle, folder.empty() ? name : folder / name,
                PathDialog::Existing::AskBeforeReplacing);
 }
@@ -47,7 +78,7 @@ std::optional<ExportRequest> ExportDialog::draw(EditorState& state) {
         state.status.post("Export failed: " + folder.error().message, StatusKind::Error);
         return std::nullopt;
     }
-    return ExportRequest{keptMaterialFiles(state), *format, *file};
+    return ExportRequest{exportedMaterials(state, source_), *format, *file};
 }
 
 }  // namespace matevo::ui

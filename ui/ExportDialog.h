@@ -1,5 +1,6 @@
 #pragma once
-// "Export set…": the kept materials of the preset's family, written for engines (glTF or
+// "Export set…": the kept materials of the preset's family, or the Variants window's set, written
+// for engines (glTF or
 // MaterialX, fitted by ΔE00; core/export does the work on the app's worker). The dialog follows
 // Save as: it starts in the user's export folder, takes the format from the extension, creates
 // missing folders or says why, and asks before replacing a file.
@@ -23,12 +24,20 @@ struct ExportRequest {
 
 // The kept materials of the preset's family as material files, named as in the bin.
 std::vector<MaterialFile> keptMaterialFiles(const EditorState& state);
+// The document's variant set as material files, named as `matevo variants --out` names them
+// ("<preset> variant_000", …): what `matevo export --variants` exports from that folder.
+std::vector<MaterialFile> variantSetMaterialFiles(const EditorState& state);
+
+// What "Export set…" exports.
+enum class ExportSource { KeptBin, VariantSet };
+std::vector<MaterialFile> exportedMaterials(const EditorState& state, ExportSource source);
 
 class ExportDialog {
 public:
-    // Asks where to export the kept materials (from `folder`, the user's export folder); says
-    // in the status bar why not when there is nothing to export.
-    void open(EditorState& state, const std::filesystem::path& folder);
+    // Asks where to export `source` (from `folder`, the user's export folder); says in the
+    // status bar why not when there is nothing to export.
+    void open(EditorState& state, const std::filesystem::path& folder,
+              ExportSource source = ExportSource::KeptBin);
     // The confirmed request, once; its folder exists.
     std::optional<ExportRequest> draw(EditorState& state);
     bool isOpen() const { return path_.isOpen(); }
@@ -37,6 +46,7 @@ public:
 
 private:
     PathDialog path_;
+    ExportSource source_ = ExportSource::KeptBin;
 };
 
 }  // namespace matevo::ui

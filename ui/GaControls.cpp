@@ -1,6 +1,7 @@
 #include "GaControls.h"
 
 #include <algorithm>
+#include <random>
 #include <string>
 
 #include <imgui.h>
@@ -79,12 +80,11 @@ void drawWeights(std::array<double, kPaperChromosomeCount>& weights, const Mater
 
 }  // namespace
 
-std::uint64_t nextSeed(std::uint64_t seed) {
-    // splitmix64's finaliser: consecutive seeds land far apart.
-    std::uint64_t z = seed + 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
+std::uint64_t drawSeed() {
+    // From the system's entropy: each press (and each session) gives another seed; the preset
+    // stores it, so the run stays reproducible.
+    std::random_device device;
+    return (std::uint64_t(device()) << 32) ^ std::uint64_t(device());
 }
 
 void drawGaControls(GaSettings& settings, const MaterialFamily& family, bool& imageFitness,
@@ -116,10 +116,14 @@ void drawGaControls(GaSettings& settings, const MaterialFamily& family, bool& im
 
     ImGui::InputScalar("Seed", ImGuiDataType_U64, &settings.seed);
     sameLineIfFits(buttonWidth("New seed"));
-    if (ImGui::Button("New seed")) settings.seed = nextSeed(settings.seed);
+    if (ImGui::Button("New seed")) settings.seed = drawSeed();
 
     sectionHeader("Fitness weights");
+    if (imageFitness)
+        mutedText("Not used: the Image ΔE00 metric compares renders, not genotypes.");
+    ImGui::BeginDisabled(imageFitness);
     drawWeights(settings.weights, family, status);
+    ImGui::EndDisabled();
 }
 
 }  // namespace matevo::ui

@@ -14,12 +14,13 @@ inline constexpr int kSliderMaxGenerations = 100;
 
 // Typed values beyond a slider's drag range are kept when presets allow them; values no preset
 // allows are clamped, and `status` says what was changed.
-// `imageFitness`: the GA view's image-space fitness instead of settings.metric (EditorState).
+// `imageFitness`: the preset's image-space fitness instead of settings.metric; the weights then
+// play no part and their sliders are disabled.
 void drawGaControls(GaSettings& settings, const MaterialFamily& family, bool& imageFitness,
                     StatusLog& status);
 
-// The seed that "new seed" picks: a fixed scramble of the current one, so a session can be
-// replayed (no clock, no hardware randomness).
-std::uint64_t nextSeed(std::uint64_t seed);
+// The seed that "New seed" picks: a fresh one each time (the preset keeps it, so the run it
+// starts can be replayed).
+std::uint64_t drawSeed();
 
 }  // namespace matevo::ui

@@ -20,14 +20,15 @@ PanelLayout layoutPanels(ImVec2 displaySize, const PanelSplits& splits) {
     const float height = std::max(displaySize.y, 400.0f) - kStatusBarHeight;
     const float maxControls = std::max(kMinControlsWidth, width - kMinMiddleWidth - kMinGridWidth);
     const float controlsWidth = std::round(
-        std::clamp(splits.controlsWidth > 0.0f ? splits.controlsWidth
-                                               : std::clamp(width * 0.22f, 300.0f, 400.0f),
+        std::clamp(splits.controlsFraction > 0.0f ? splits.controlsFraction * width
+                                                  : std::clamp(width * 0.22f, 300.0f, 400.0f),
                    kMinControlsWidth, maxControls));
     const float rest = width - controlsWidth;
     // The target is the reference everything is judged against: keep it large and square.
     const float defaultTarget = std::clamp(std::min(rest * 0.42f, height * 0.58f), 220.0f, 560.0f);
     const float targetWidth =
-        std::round(std::clamp(splits.targetWidth > 0.0f ? splits.targetWidth : defaultTarget,
+        std::round(std::clamp(splits.targetFraction > 0.0f ? splits.targetFraction * width
+                                                           : defaultTarget,
                               kMinMiddleWidth, std::max(kMinMiddleWidth, rest - kMinGridWidth)));
     const float targetHeight = std::min(targetWidth + 52.0f, height - kMinPanelHeight);
     const float gridX = controlsWidth + targetWidth;
@@ -77,18 +78,20 @@ bool splitter(const char* name, ImVec2 position, ImVec2 size, bool vertical, flo
 bool drawSplitters(const PanelLayout& layout, PanelSplits& splits) {
     const float half = kSplitterThickness * 0.5f;
     const float height = layout.statusBar.position.y;
+    const float width = layout.statusBar.size.x;
     float moved = 0.0f;
     bool active = false;
     if (splitter("##split_controls", ImVec2(layout.target.position.x - half, 0),
                  ImVec2(kSplitterThickness, height), true, moved)) {
         active = true;
-        splits.controlsWidth = layout.controls.size.x + moved;
-        splits.targetWidth = layout.target.size.x - moved;  // the grid stays where it is
+        splits.controlsFraction = (layout.controls.size.x + moved) / width;
+        // The grid stays where it is.
+        splits.targetFraction = (layout.target.size.x - moved) / width;
     }
     if (splitter("##split_grid", ImVec2(layout.grid.position.x - half, 0),
                  ImVec2(kSplitterThickness, height), true, moved)) {
         active = true;
-        splits.targetWidth = layout.target.size.x + moved;
+        splits.targetFraction = (layout.target.size.x + moved) / width;
     }
     if (splitter("##split_inspect",
                  ImVec2(layout.grid.position.x, layout.inspect.position.y - half),

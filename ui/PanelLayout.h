@@ -27,9 +27,11 @@ inline constexpr float kStatusBarHeight = 46.0f;
 // Where the user dragged the splitters between panels; 0 = the default for the window size.
 // Kept within limits that leave every panel usable.
 struct PanelSplits {
-    float controlsWidth = 0.0f;  // pixels
-    float targetWidth = 0.0f;    // pixels
-    float gridFraction = 0.0f;   // of the height above the status bar
+    // Fractions of the window, so that a layout made in a large window keeps its proportions in
+    // a small one; 0: the default.
+    float controlsFraction = 0.0f;  // of the width
+    float targetFraction = 0.0f;    // of the width
+    float gridFraction = 0.0f;      // of the height above the status bar
 
     bool operator==(const PanelSplits&) const = default;
 };

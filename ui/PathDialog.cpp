@@ -6,6 +6,8 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "FolderBrowser.h"
+
 namespace matevo::ui {
 
 void PathDialog::open(std::string title, const std::filesystem::path& suggestion, Existing existing,
@@ -60,7 +62,9 @@ std::optional<std::filesystem::path> PathDialog::draw() {
         ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(std::min(640.0f, display.x - 80.0f));
     const bool entered = ImGui::InputText("##path", &path_, ImGuiInputTextFlags_EnterReturnsTrue);
-    const bool confirmed = ImGui::Button("OK", ImVec2(100, 0)) || entered;
+    // Browsing: the folder the path points into, as tall as the window allows.
+    const bool picked = drawFolderBrowser(path_, std::clamp(display.y - 260.0f, 80.0f, 280.0f));
+    const bool confirmed = ImGui::Button("OK", ImVec2(100, 0)) || entered || picked;
     ImGui::SameLine();
     const bool cancelled = ImGui::Button("Cancel", ImVec2(100, 0)) || escape;
     if (confirmed && !path_.empty() && !cancelled && mustAsk()) {

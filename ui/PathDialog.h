@@ -1,7 +1,7 @@
 #pragma once
-// A small modal that asks for a file path (open or save-as). Plain text entry: Debian's imgui
-// has no file browser, and typing a path is what a technical artist does in a terminal anyway.
-// A dialog that writes can ask before replacing an existing file.
+// A small modal that asks for a file path (open or save-as): a text entry, and below it the
+// folder it points into to browse (FolderBrowser.h). A dialog that writes can ask before
+// replacing an existing file.
 #include <filesystem>
 #include <optional>
 #include <string>

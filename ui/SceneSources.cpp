@@ -20,18 +20,23 @@ std::vector<SceneMaterial> populationMaterials(const EditorState& state) {
     return materials;
 }
 
-// In the open preset's family (a variant carrying kappa genes wears its own kappa).
+// The document's set, in the family and kappa it was made for; the Variants window's tiles,
+// when they show that set, give the labels their distances.
 std::vector<SceneMaterial> variantMaterials(const EditorState& state) {
     std::vector<SceneMaterial> materials;
-    const std::vector<VariantTileView>& variants = state.variants.variants;
-    for (std::size_t i = 0; i < variants.size(); ++i) {
+    if (!state.preset.variantSet) return materials;
+    const SavedVariantSet& set = *state.preset.variantSet;
+    const std::vector<VariantTileView>& tiles = state.variants.variants;
+    for (std::size_t i = 0; i < set.variants.size(); ++i) {
         char label[120];
-        std::snprintf(label, sizeof label,
-                      "variant %zu: ΔE00 %.2f to the target, %.2f to the nearest variant", i + 1,
-                      variants[i].deltaEToTarget, variants[i].nearestSibling);
-        materials.push_back(
-            {materialOf(variants[i].genome, state.preset.family, state.preset.baseKappa),
-             variants[i].genome, label});
+        if (i < tiles.size() && tiles[i].genome == set.variants[i])
+            std::snprintf(label, sizeof label,
+                          "variant %zu: ΔE00 %.2f to the target, %.2f to the nearest variant",
+                          i + 1, tiles[i].deltaEToTarget, tiles[i].nearestSibling);
+        else
+            std::snprintf(label, sizeof label, "variant %zu", i + 1);
+        materials.push_back({materialOf(set.variants[i], set.family, set.baseKappa),
+                             set.variants[i], label});
     }
     return materials;
 }

@@ -1,9 +1,12 @@
 #include "VariantsPanel.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdio>
 
+#include "EditorState.h"
 #include "ImageView.h"
+#include "KeptBin.h"
 #include "Widgets.h"
 #include "color/Colormap.h"
 #include "variants/DeltaEBand.h"
@@ -60,8 +63,8 @@ void drawRequest(VariantsView& view, VariantsActions& actions) {
             "Start from the kept bin (" + std::to_string(view.keptInFamily) + ")";
         ImGui::Checkbox(label.c_str(), &view.startFromKept);
         hoverHint(
-            "The kept materials of this family join the set as they are; the search "
-            "finds the rest");
+            "The kept materials of this family join the set as they are, in band or not; the "
+            "search finds the rest");
     }
     actions.run = ImGui::Button("Find variants");
     ImGui::SameLine();
@@ -69,19 +72,78 @@ void drawRequest(VariantsView& view, VariantsActions& actions) {
     actions.refill = ImGui::Button("Refill");
     hoverHint("Keep the variants shown and find new ones for the rest");
     ImGui::EndDisabled();
+}
+
+// What to do with the whole set: keep, export, show on meshes, save as a folder.
+void drawSetActions(EditorState& state, VariantsActions& actions) {
+    VariantsView& view = state.variants;
+    ImGui::BeginDisabled(view.variants.empty() || view.running);
+    if (ImGui::Button("Keep all")) keepVariants(state, std::nullopt);
+    hoverHint("Put every variant of the set in the kept bin");
     ImGui::SameLine();
-    ImGui::BeginDisabled(view.variants.empty());
-    actions.save = ImGui::Button("Save set");
-    ImGui::EndDisabled();
+    actions.exportSet = ImGui::Button("Export set…");
+    hoverHint("glTF, GLB or MaterialX (from the extension), fitted by ΔE00 as matevo export");
+    ImGui::SameLine();
+    actions.sendToScene = ImGui::Button("Send to Scene window");
+    ImGui::SameLine();
+    actions.save = ImGui::Button("Save as folder");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     char path[512];
     std::snprintf(path, sizeof path, "%s", view.savePath.c_str());
     if (ImGui::InputText("##savePath", path, sizeof path)) view.savePath = path;
     hoverHint("Folder for report.json, the contact sheet and variants/ (as matevo variants --out)");
+    ImGui::EndDisabled();
 }
 
-void drawTiles(const VariantsView& view, VariantsActions& actions) {
+// The target changed under the set: its figures are for the old one.
+void drawOtherTargetNotice(VariantsView& view, VariantsActions& actions) {
+    ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f),
+                       "This set was made for another target: its ΔE00 figures are not this "
+                       "target's.");
+    ImGui::BeginDisabled(view.running);
+    actions.remeasure = ImGui::Button("Re-measure");
+    hoverHint("Measure the same variants against the present target");
+    ImGui::SameLine();
+    actions.refill = ImGui::Button("Refill for this target") || actions.refill;
+    hoverHint("Keep these variants and search the present target's band for the rest");
+    ImGui::EndDisabled();
+}
+
+// The nearest other variant of `index` by the pairwise matrix; -1 when alone.
+int nearestOf(const VariantsView& view, std::size_t index) {
+    int nearest = -1;
+    for (std::size_t j = 0; j < view.variants.size(); ++j)
+        if (j != index && (nearest < 0 || view.pairwise[index][j] <
+                                              view.pairwise[index][std::size_t(nearest)]))
+            nearest = int(j);
+    return nearest;
+}
+
+// The selected variant beside the target, both at the size they were rendered at (or smaller
+// when the window is narrower): never enlarged.
+void drawSelected(const VariantsView& view) {
+    if (view.selected < 0 || std::size_t(view.selected) >= view.variants.size()) return;
+    const VariantTileView& tile = view.variants[std::size_t(view.selected)];
+    const float side = std::min(float(view.imageSize),
+                                (ImGui::GetContentRegionAvail().x - 8.0f) / 2.0f);
+    ImDrawList& drawList = *ImGui::GetWindowDrawList();
+    ImGui::BeginGroup();
+    ImGui::TextColored(kMutedTextColor, "target");
+    drawImage(drawList, ImGui::GetCursorScreenPos(), side, view.target);
+    ImGui::Dummy(ImVec2(side, side));
+    ImGui::EndGroup();
+    ImGui::SameLine(0.0f, 8.0f);
+    ImGui::BeginGroup();
+    ImGui::TextColored(kMutedTextColor, "variant %03d: ΔE00 %.2f to the target", view.selected,
+                       tile.deltaEToTarget);
+    drawImage(drawList, ImGui::GetCursorScreenPos(), side, tile.image);
+    ImGui::Dummy(ImVec2(side, side));
+    ImGui::EndGroup();
+}
+
+void drawTiles(EditorState& state) {
+    VariantsView& view = state.variants;
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
     const float width = ImGui::GetContentRegionAvail().x;
     const int perRow = std::max(1, int(width / (kTileSize + 8.0f)));
@@ -90,6 +152,7 @@ void drawTiles(const VariantsView& view, VariantsActions& actions) {
     drawImage(drawList, ImGui::GetCursorScreenPos(), kTileSize, view.target);
     ImGui::Dummy(ImVec2(kTileSize, kTileSize));
     ImGui::EndGroup();
+    std::optional<std::size_t> discard;
     for (std::size_t i = 0; i < view.variants.size(); ++i) {
         const VariantTileView& tile = view.variants[i];
         if ((i + 1) % std::size_t(perRow) != 0) ImGui::SameLine(0.0f, 8.0f);
@@ -97,13 +160,32 @@ void drawTiles(const VariantsView& view, VariantsActions& actions) {
         ImGui::PushID(int(i));
         ImGui::TextColored(tile.kept ? kAccentColor : kMutedTextColor, "%03zu  %.2f / %.2f", i,
                            tile.deltaEToTarget, tile.nearestSibling);
-        hoverHint("ΔE00 to the target / to the nearest sibling");
-        drawImage(drawList, ImGui::GetCursorScreenPos(), kTileSize, tile.image);
-        ImGui::Dummy(ImVec2(kTileSize, kTileSize));
-        if (ImGui::SmallButton("Discard")) actions.discard = int(i);
+        const ImVec2 corner = ImGui::GetCursorScreenPos();
+        drawImage(drawList, corner, kTileSize, tile.image);
+        if (ImGui::InvisibleButton("tile", ImVec2(kTileSize, kTileSize)))
+            view.selected = view.selected == int(i) ? -1 : int(i);
+        if (ImGui::IsItemHovered()) {
+            const int nearest = nearestOf(view, i);
+            if (nearest >= 0)
+                ImGui::SetTooltip("variant %03zu: ΔE00 %.2f to the target; nearest: variant %03d "
+                                  "at %.2f\nClick to see it beside the target",
+                                  i, tile.deltaEToTarget, nearest, tile.nearestSibling);
+            else
+                ImGui::SetTooltip("variant %03zu: ΔE00 %.2f to the target", i,
+                                  tile.deltaEToTarget);
+        }
+        if (view.selected == int(i))
+            drawList.AddRect(corner, ImVec2(corner.x + kTileSize, corner.y + kTileSize),
+                             ImGui::GetColorU32(kAccentColor), 0.0f, 0, 2.0f);
+        ImGui::BeginDisabled(view.running);
+        if (ImGui::SmallButton("Keep")) keepVariants(state, i);
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Discard")) discard = i;
+        ImGui::EndDisabled();
         ImGui::PopID();
         ImGui::EndGroup();
     }
+    if (discard) discardVariant(state, *discard);
 }
 
 // Each cell coloured like the heatmap (0-10 through viridis), red-outlined below minApart.
@@ -141,10 +223,30 @@ void drawMatrix(const VariantsView& view) {
 
 }  // namespace
 
-VariantsActions drawVariantsWindow(VariantsView& view) {
+void discardVariant(EditorState& state, std::size_t index) {
+    auto& set = state.preset.variantSet;
+    if (!set || index >= set->variants.size()) return;
+    set->variants.erase(set->variants.begin() + std::ptrdiff_t(index));
+    state.variants.selected = -1;
+}
+
+void keepVariants(EditorState& state, std::optional<std::size_t> index) {
+    const auto& set = state.preset.variantSet;
+    if (!set || set->variants.empty() || (index && *index >= set->variants.size())) return;
+    const std::vector<Genome> picked =
+        index ? std::vector<Genome>{set->variants[*index]} : set->variants;
+    const int added = keepMaterials(state.preset, picked);
+    const int already = int(picked.size()) - added;
+    state.status.post("Kept " + std::to_string(added) + (added == 1 ? " variant" : " variants") +
+                      (already > 0 ? " (" + std::to_string(already) + " already kept)" : "") +
+                      "; the kept bin holds " + std::to_string(state.preset.kept.size()));
+}
+
+VariantsActions drawVariantsWindow(EditorState& state) {
+    VariantsView& view = state.variants;
     VariantsActions actions;
     if (!view.open) return actions;
-    ImGui::SetNextWindowSize(ImVec2(960, 700), ImGuiCond_FirstUseEver);
+    placeFloatingWindow(ImVec2(960, 700));  // the tiles scroll
     if (!ImGui::Begin("Variants", &view.open)) {
         ImGui::End();
         return actions;
@@ -156,7 +258,10 @@ VariantsActions drawVariantsWindow(VariantsView& view) {
     if (!view.summary.empty())
         ImGui::TextColored(view.met ? kMutedTextColor : ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s",
                            view.summary.c_str());
-    drawTiles(view, actions);
+    if (variantSetMadeForAnotherTarget(state.preset)) drawOtherTargetNotice(view, actions);
+    drawSetActions(state, actions);
+    drawSelected(view);
+    drawTiles(state);
     drawMatrix(view);
     ImGui::End();
     return actions;

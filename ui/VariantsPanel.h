@@ -3,8 +3,11 @@
 // mean ΔE00 from the target with the paper's bands as one-click choices, a count and a minimum
 // distance between variants) and shows the set: each tile with its ΔE00 to the target and to
 // its nearest sibling, the pairwise ΔE00 matrix, discard single variants and refill the rest,
-// and save the set as `matevo variants --out` writes it. The app runs the search (core/variants)
-// on a worker and fills the view; the panel only reads it and asks.
+// keep them in the kept bin, export them, send them to the Scene window, and save the set as
+// `matevo variants --out` writes it. The set is part of the document (Preset::variantSet):
+// discarding and keeping edit the preset here, so they are undone and saved like any edit. The
+// app runs the search and the measuring (core/variants) on a worker and fills the view.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,21 +40,33 @@ struct VariantsView {
     std::string summary;    // what the last run achieved, or why it failed
     bool met = false;
     ImTextureID target = nullptr;
+    int imageSize = 0;  // what the target and variants were rendered at, in pixels
     std::vector<VariantTileView> variants;
+    int selected = -1;  // the variant shown beside the target at imageSize (a click on its tile)
     std::vector<std::vector<double>> pairwise;
     std::string savePath = "variants-out";
     int keptInFamily = 0;       // kept materials of the preset's family (the editor's kept bin)
-    bool startFromKept = true;  // a fresh set starts from them: they join it as they are
+    // A fresh set starts from them: they join it as they are, in band or not, apart or not.
+    bool startFromKept = false;
 };
 
 struct VariantsActions {
-    bool run = false;     // a fresh set
-    bool refill = false;  // keep the shown variants, find the missing ones
-    bool save = false;    // to view.savePath
-    int discard = -1;     // the index of a variant to drop from the set
+    bool run = false;        // a fresh set
+    bool refill = false;     // keep the shown variants, find the missing ones
+    bool remeasure = false;  // the set's genomes measured against the present target
+    bool save = false;       // to view.savePath
+    bool exportSet = false;  // "Export set…": the export dialog for the set
+    bool sendToScene = false;  // the Scene window shows the set
 };
 
-// A floating window, drawn while view.open; its close button clears view.open.
-VariantsActions drawVariantsWindow(VariantsView& view);
+struct EditorState;
+
+// Drops variant `index` from the document's set (undoable, like any preset edit).
+void discardVariant(EditorState& state, std::size_t index);
+// Puts variant `index` (nothing: all of them) into the kept bin; says so in the status bar.
+void keepVariants(EditorState& state, std::optional<std::size_t> index);
+
+// A floating window, drawn while state.variants.open; its close button clears it.
+VariantsActions drawVariantsWindow(EditorState& state);
 
 }  // namespace matevo::ui

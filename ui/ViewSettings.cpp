@@ -43,10 +43,11 @@ void readLine(ImGuiContext*, ImGuiSettingsHandler*, void* entry, const char* lin
         state.grid.band = std::clamp(flag, -1, kPerceptualBandCount - 1);
     if (std::sscanf(line, "hide_duplicates=%d", &flag) == 1) state.grid.hideDuplicates = flag != 0;
     if (std::sscanf(line, "plot_from_zero=%d", &flag) == 1) state.plotFromZero = flag != 0;
-    if (std::sscanf(line, "split_controls=%f", &number) == 1)
-        state.splits.controlsWidth = std::max(0.0f, number);
-    if (std::sscanf(line, "split_target=%f", &number) == 1)
-        state.splits.targetWidth = std::max(0.0f, number);
+    // (Pixel widths of earlier versions, "split_controls=", are passed over.)
+    if (std::sscanf(line, "split_controls_fraction=%f", &number) == 1)
+        state.splits.controlsFraction = std::clamp(number, 0.0f, 1.0f);
+    if (std::sscanf(line, "split_target_fraction=%f", &number) == 1)
+        state.splits.targetFraction = std::clamp(number, 0.0f, 1.0f);
     if (std::sscanf(line, "split_grid=%f", &number) == 1)
         state.splits.gridFraction = std::clamp(number, 0.0f, 1.0f);
     if (std::strncmp(line, "recent=", 7) == 0 && line[7] != '\0' &&
@@ -81,8 +82,8 @@ void writeAll(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out
                  kCompare[int(state.compareMode)]);
     out->appendf("hide_duplicates=%d\nplot_from_zero=%d\n", int(state.grid.hideDuplicates),
                  int(state.plotFromZero));
-    out->appendf("split_controls=%g\nsplit_target=%g\nsplit_grid=%g\n",
-                 double(state.splits.controlsWidth), double(state.splits.targetWidth),
+    out->appendf("split_controls_fraction=%g\nsplit_target_fraction=%g\nsplit_grid=%g\n",
+                 double(state.splits.controlsFraction), double(state.splits.targetFraction),
                  double(state.splits.gridFraction));
     for (const auto& file : state.recentFiles) out->appendf("recent=%s\n", file.c_str());
     const SceneView& scene = state.sceneView;

@@ -105,4 +105,13 @@ bool editFinished(bool changed) {
     return changed && !ImGui::TempInputIsActive(ImGui::GetItemID());
 }
 
+void placeFloatingWindow(ImVec2 wanted) {
+    constexpr float kMargin = 40.0f;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(kMargin, kMargin), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(std::min(wanted.x, display.x - 2.0f * kMargin),
+                                    std::min(wanted.y, display.y - 2.0f * kMargin)),
+                             ImGuiCond_FirstUseEver);
+}
+
 }  // namespace matevo::ui

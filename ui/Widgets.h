@@ -35,6 +35,10 @@ float buttonWidth(const char* label);
 // wrap in narrow windows instead of cutting controls off.
 void sameLineIfFits(float width);
 
+// Where a floating window (Variants, Compare metrics) first opens: near the top left, `wanted`
+// in size or less, so that it fits inside the editor's window (1024x640 at the smallest).
+void placeFloatingWindow(ImVec2 wanted);
+
 inline const ImVec4 kAccentColor = {0.45f, 0.72f, 1.0f, 1.0f};
 inline const ImVec4 kMutedTextColor = {0.62f, 0.64f, 0.68f, 1.0f};
 inline const ImVec4 kWarningColor = {1.0f, 0.78f, 0.35f, 1.0f};

@@ -202,13 +202,11 @@ int runOneSet(const VariantsJob& job) {
     found.run.madeBy = job.madeBy;
     nlohmann::ordered_json report = variantReport(job.preset, found.run, found.set);
     const int signal = markPartial(report);
-    if (job.output) {
-        if (auto written = writeVariantFiles(job.output->staging(), job.target, found.set, report,
-                                             *job.font, job.heatmapMetric);
-            !written)
-            throw UsageError("--out: " + job.output->userFacing(written.error().message));
-        commit(job.output);
-    }
+    if (job.output)
+        if (auto saved = saveVariantFolder(*job.output, job.target, found.set, report, *job.font,
+                                           job.heatmapMetric);
+            !saved)
+            throw UsageError("--out: " + saved.error().message);
     if (job.asJson) std::printf("%s\n", report.dump(2).c_str());
     return finish(signal, variantSummary(found.run, found.set), fulfils(found.set, job.request),
                   job.output.has_value(), job.asJson, found.run.wallSeconds);

@@ -48,6 +48,10 @@ struct HeatmapDisplay {
 static_assert(sizeof(HeatmapDisplay) == sizeof(ImageMetric) + 2 * sizeof(float),
               "no padding: a snapshot compares its bytes");
 
+// Every command that works without a window, for the messages that say the editor cannot open.
+constexpr const char* kHeadlessCommands =
+    "matevo evolve, render, compare, experiment, variants, scene, export, merge, bench, presets";
+
 // Signal handlers can only set a flag; the frame loop reads it.
 std::atomic<bool> terminationRequested{false};
 
@@ -123,7 +127,8 @@ private:
         Skipped,    // nothing drawn (the swapchain is being rebuilt, or a failure)
     };
     FrameOutcome frame(std::optional<std::filesystem::path>& screenshotPath);
-    ui::VariantsActions playScript(std::optional<std::filesystem::path>& screenshotPath);
+    // What the script's actions ask of the features this frame, as if from the panels.
+    ui::FrameRequests playScript(std::optional<std::filesystem::path>& screenshotPath);
     // Whether the GA run and the variant search a script may wait for are done and shown.
     ScriptPlayer::Settled scriptSettled();
     // Registers a feature: called at the same points of every frame as the others.
@@ -165,6 +170,7 @@ private:
     std::vector<std::unique_ptr<FeatureController>> features_;
     EvolutionController* evolution_ = nullptr;
     VariantsController* variants_ = nullptr;
+    ExportController* export_ = nullptr;
 };
 
 EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, VulkanContext& vulkan,
@@ -234,7 +240,7 @@ EditorApp::EditorApp(const EditorOptions& options)
     evolution_ = &add(std::make_unique<EvolutionController>(context, timings_));
     add(std::make_unique<CompareMetricsController>(context));
     variants_ = &add(std::make_unique<VariantsController>(context));
-    add(std::make_unique<ExportController>(context));
+    export_ = &add(std::make_unique<ExportController>(context));
     add(std::make_unique<SceneController>(context, sceneTimings_));
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
@@ -360,8 +366,8 @@ EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& s
     // A screenshot shows the frame after the one that asked, so the request has settled; the
     // script waits for it.
     const std::optional<std::filesystem::path> captureNow = std::exchange(screenshotPath, {});
-    ui::VariantsActions scriptedVariants;
-    if (!captureNow) scriptedVariants = playScript(screenshotPath);
+    ui::FrameRequests scripted;
+    if (!captureNow) scripted = playScript(screenshotPath);
 
     for (auto& feature : features_)
         if (Status shown = feature->showResults(ui_.state()); !shown)
@@ -375,9 +381,7 @@ EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& s
     ImGui::Render();
     if (requests.quit) quitRequested_ = true;
     if (requests.snapshot) screenshotPath = nextSnapshotPath();
-    ui::FrameRequests scripted;
-    scripted.variants = scriptedVariants;
-    for (const ui::FrameRequests* asked : {&requests, static_cast<const ui::FrameRequests*>(&scripted)})
+    for (const ui::FrameRequests* asked : {&std::as_const(requests), &std::as_const(scripted)})
         for (auto& feature : features_) feature->handleRequests(*asked, ui_.state());
     if (std::string title = ui::windowTitle(ui_.state()); title != title_) {
         glfwSetWindowTitle(window_.get(), title.c_str());
@@ -422,10 +426,10 @@ EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& s
 }
 
 ScriptPlayer::Settled EditorApp::scriptSettled() {
-    return {evolution_->settled(), variants_->settled()};
+    return {evolution_->settled(), variants_->settled(ui_.state()), export_->settled()};
 }
 
-ui::VariantsActions EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
+ui::FrameRequests EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {
     const ScriptEffects effects = script_.step(ui_, scriptSettled());
     if (!effects.error.empty()) failure_ = effects.error;
     if (effects.quit) quitRequested_ = true;
@@ -433,7 +437,10 @@ ui::VariantsActions EditorApp::playScript(std::optional<std::filesystem::path>& 
         glfwSetWindowSize(window_.get(), effects.resize->first, effects.resize->second);
     if (effects.redraw) redrawRequested_ = true;
     screenshotPath = effects.screenshot;
-    return effects.variants;
+    ui::FrameRequests scripted;
+    scripted.variants = effects.variants;
+    scripted.exportSet = effects.exportSet;
+    return scripted;
 }
 
 std::filesystem::path EditorApp::nextSnapshotPath() const {
@@ -461,8 +468,8 @@ int runEditor(const EditorOptions& options) {
     if (!glfw.ok()) {
         std::fprintf(stderr,
                      "matevo edit: no display to open a window on (is DISPLAY set?); the "
-                     "headless commands work without one: matevo evolve, render, compare, "
-                     "experiment\n");
+                     "headless commands work without one: %s\n",
+                     kHeadlessCommands);
         return 2;
     }
     try {
@@ -471,10 +478,17 @@ int runEditor(const EditorOptions& options) {
     } catch (const WindowUnavailable& error) {
         // The window itself needs a Vulkan device that can present; the headless commands
         // do not, and fall back to the CPU renderer.
+        const std::string reason = error.what();
+        // Where the Vulkan loader looks, unless the reason already says it.
+        const char* drivers =
+            reason.find("icd.d") == std::string::npos
+                ? " (Vulkan drivers are looked for through VK_DRIVER_FILES or VK_ICD_FILENAMES, "
+                  "else in vulkan/icd.d under each of $XDG_DATA_DIRS)"
+                : "";
         std::fprintf(stderr,
-                     "matevo edit: cannot show the editor: %s; the headless commands render on "
-                     "the CPU without Vulkan: matevo evolve, render, compare, experiment\n",
-                     error.what());
+                     "matevo edit: cannot show the editor: %s%s; the headless commands render on "
+                     "the CPU without Vulkan: %s\n",
+                     reason.c_str(), drivers, kHeadlessCommands);
         return 2;
     }
 }

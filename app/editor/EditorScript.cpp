@@ -9,6 +9,7 @@
 #include "ScenePanel.h"
 #include "common/ShortText.h"
 #include "evolve/GaSettings.h"
+#include "export/ExportSet.h"
 
 namespace matevo::editor {
 namespace {
@@ -51,11 +52,17 @@ const std::map<std::string, Grammar>& grammar() {
         {"redraw", {Kind::Redraw, 0, false}},
         {"save", {Kind::Save, 0, true}},
         {"variants-hue", {Kind::VariantsHue, 0, true}},
+        {"variants-from-kept", {Kind::VariantsFromKept, 0, true}},
         {"variants", {Kind::Variants, 1, false, 1, 48}},
         {"wait-variants", {Kind::WaitVariants, 0, false}},
         {"discard-variant", {Kind::DiscardVariant, 1, false, 0, 47}},
         {"refill-variants", {Kind::RefillVariants, 0, false}},
         {"save-variants", {Kind::SaveVariants, 0, true}},
+        {"variants-keep", {Kind::KeepVariants, 0, true}},
+        {"export-set", {Kind::ExportSet, 0, true}},
+        // The document is the preset with its kept bin and variant set: one save.
+        {"save-document", {Kind::Save, 0, true}},
+        {"open", {Kind::Open, 0, true}},
         {"quit", {Kind::Quit, 0, false}},
     };
     return table;
@@ -79,8 +86,16 @@ std::string validateText(const ScriptAction& action) {
     if (action.kind == Kind::Heatmap && action.text != "on" && action.text != "off" &&
         action.text != "toggle" && action.text != "de00" && action.text != "flip")
         return "expected on, off, toggle, de00 or flip, got '" + shortText(action.text, 40) + "'";
-    if (action.kind == Kind::VariantsHue && action.text != "on" && action.text != "off")
+    if ((action.kind == Kind::VariantsHue || action.kind == Kind::VariantsFromKept) &&
+        action.text != "on" && action.text != "off")
         return "expected on or off, got '" + shortText(action.text, 40) + "'";
+    if (action.kind == Kind::KeepVariants && action.text != "all" &&
+        !variantIndexOf(action.text))
+        return "expected all or a variant index in [0, 47], got '" + shortText(action.text, 40) +
+               "'";
+    if (action.kind == Kind::ExportSet && !exportFormatOfFile(action.text))
+        return "expected a file ending in .gltf, .glb or .mtlx, got '" +
+               shortText(action.text, 40) + "'";
     if (action.kind == Kind::Scene && action.text != "open" && action.text != "close")
         return "expected open or close, got '" + shortText(action.text, 40) + "'";
     if (action.kind == Kind::SceneShow && action.text != "variants" && action.text != "kept" &&
@@ -95,6 +110,13 @@ std::string validateText(const ScriptAction& action) {
 }
 
 }  // namespace
+
+std::optional<std::size_t> variantIndexOf(const std::string& word) {
+    long long value = 0;
+    const Grammar rule{Kind::KeepVariants, 1, false, 0, 47};
+    if (!parseNumber(word, rule, value).empty()) return std::nullopt;
+    return std::size_t(value);
+}
 
 Result<std::vector<ScriptAction>> parseEditorScript(const std::string& text,
                                                     const std::string& sourceName) {

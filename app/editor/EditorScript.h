@@ -23,12 +23,19 @@
 //                           otherwise redraw only the windows that changed)
 //   save PATH               save the preset
 //   variants-hue on|off     the Variants window's "Hue variety" (evolve the metal's kappa too)
+//   variants-from-kept on|off  "Start from the kept bin" (off by default)
 //   variants N              open the Variants window and find N variants (its band and spacing)
 //   wait-variants           draw until the variant search is finished and shown (120 s at most)
 //   discard-variant I       drop variant I from the set
 //   refill-variants         keep the set and find the missing variants
 //   save-variants PATH      save the set into the folder PATH, as `matevo variants --out`
+//   variants-keep all|I     put the whole set (or variant I) into the kept bin
+//   export-set PATH         export the set shown in the Variants window (glTF, GLB or MaterialX
+//                           from the extension of PATH) and wait for the export to end
+//   save-document PATH      save the document (the preset with its kept bin and variant set)
+//   open PATH               open a document (asks first if there are unsaved changes)
 //   quit
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,11 +66,15 @@ struct ScriptAction {
         Redraw,
         Save,
         VariantsHue,
+        VariantsFromKept,
         Variants,
         WaitVariants,
         DiscardVariant,
         RefillVariants,
         SaveVariants,
+        KeepVariants,
+        ExportSet,
+        Open,
         Quit
     };
     Kind kind = Kind::Wait;
@@ -72,6 +83,9 @@ struct ScriptAction {
     std::string text;      // path, metric name or heatmap mode
     int line = 0;
 };
+
+// The variant index of a script word ("3"), if it is one in [0, 47].
+std::optional<std::size_t> variantIndexOf(const std::string& word);
 
 // Errors name the source and line: "demo.txt:3: population: expected an integer, got 'x'".
 Result<std::vector<ScriptAction>> parseEditorScript(const std::string& text,

@@ -40,19 +40,25 @@ void EvolutionController::submitChanges(ui::EditorState& state, bool sliderHeld,
     // A preview replaced the target and stopped the run: a full job follows even when the
     // slider came back to where it started.
     const bool previewed = std::exchange(previewed_, std::nullopt).has_value();
-    // Keeping, naming or removing a kept material changes nothing the GA does.
-    const auto withoutKept = [](Preset p) {
+    // Keeping, naming or removing a kept material, or editing the variant set, changes nothing
+    // the GA does; nor do the genotype metric and weights under the image fitness.
+    const auto whatTheGaUses = [](Preset p) {
         p.kept.clear();
+        p.variantSet.reset();
+        if (p.imageFitness) {
+            p.ga.metric = GaSettings{}.metric;
+            p.ga.weights = GaSettings{}.weights;
+            p.ga.normalizeByRange = GaSettings{}.normalizeByRange;
+        }
         return p;
     };
-    const bool imageFitness = state.imageFitness;
-    if (!previewed && submitted_ && withoutKept(*submitted_) == withoutKept(preset) &&
-        submittedImageFitness_ == imageFitness && submittedHeatmapMetric_ == heatmapMetric)
+    if (!previewed && submitted_ && whatTheGaUses(*submitted_) == whatTheGaUses(preset) &&
+        submittedHeatmapMetric_ == heatmapMetric)
         return;  // (a ꟻLIP heatmap needs ꟻLIP maps: a changed choice draws the tiles again)
     submitted_ = preset;
-    submittedImageFitness_ = imageFitness;
     submittedHeatmapMetric_ = heatmapMetric;
-    submittedJob_ = worker_.submit({preset, state.presetPath, false, imageFitness, heatmapMetric});
+    submittedJob_ =
+        worker_.submit({preset, state.presetPath, false, preset.imageFitness, heatmapMetric});
     state.evolution.running = true;
     timings_.changeSubmitted(submittedJob_, changed);
 }

@@ -39,7 +39,6 @@ private:
     EvolutionDisplay display_;
     std::optional<Preset> submitted_;
     std::uint64_t submittedJob_ = 0;  // the job last asked for
-    bool submittedImageFitness_ = false;
     ImageMetric submittedHeatmapMetric_ = ImageMetric::DeltaE00;
     std::optional<Preset> previewed_;  // the target shown while a slider is dragged
     EvolutionWorker worker_;           // last: stopped first, before what it reports to

@@ -13,6 +13,8 @@ public:
     void handleRequests(const ui::FrameRequests& requests, ui::EditorState& state) override;
     bool running() const override { return worker_.busy(); }
     void cancel() override { worker_.cancel(); }
+    // No export running or waiting to be reported (what a script's export-set waits for).
+    bool settled() const { return worker_.settled(); }
 
 private:
     ExportWorker worker_;

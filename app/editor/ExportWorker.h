@@ -35,6 +35,8 @@ public:
     // the status bar and the task cleared.
     void update(ui::EditorState& state);
     bool busy() const { return worker_.busy(); }
+    // No export running or waiting to be reported.
+    bool settled() const { return !worker_.busy() && !worker_.hasUpdate(); }
     void cancel() { worker_.cancel(); }
 
 private:

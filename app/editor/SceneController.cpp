@@ -1,6 +1,7 @@
 #include "SceneController.h"
 
 #include <algorithm>
+#include <string>
 #include <utility>
 
 #include "SceneSources.h"
@@ -74,6 +75,12 @@ Status SceneController::show(SceneViewResult& result, ui::SceneView& view) {
     return Ok{};
 }
 
-void SceneController::handleRequests(const ui::FrameRequests&, ui::EditorState&) {}
+void SceneController::handleRequests(const ui::FrameRequests& requests, ui::EditorState& state) {
+    const auto& set = state.preset.variantSet;
+    if (!requests.variants.sendToScene || !set || set->variants.empty()) return;
+    ui::showVariantSet(state.sceneView);
+    state.status.post("The Scene window shows the variant set (" +
+                      std::to_string(set->variants.size()) + " materials)");
+}
 
 }  // namespace matevo::editor

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 
+#include "ExportDialog.h"
 #include "LayoutCheck.h"
+#include "PresetFiles.h"
+#include "VariantsPanel.h"
 
 namespace matevo::editor {
 namespace {
@@ -53,6 +56,9 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::VariantsHue:
             state.variants.hueVariety = action.text == "on";
             return true;
+        case Kind::VariantsFromKept:
+            state.variants.startFromKept = action.text == "on";
+            return true;
         case Kind::Idle:
             if (!idleUntil_) {
                 idleUntil_ =
@@ -68,7 +74,37 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
             effects.variants.run = true;
             return true;
         case Kind::DiscardVariant:
-            effects.variants.discard = int(action.first);
+            ui::discardVariant(state, std::size_t(action.first));
+            return true;
+        case Kind::KeepVariants:
+            ui::keepVariants(state, action.text == "all" ? std::nullopt
+                                                         : variantIndexOf(action.text));
+            return true;
+        case Kind::ExportSet: {
+            if (!exportAsked_) {
+                const std::filesystem::path file = action.text;
+                std::vector<MaterialFile> materials = ui::variantSetMaterialFiles(state);
+                if (materials.empty()) {
+                    effects.error = "script line " + std::to_string(action.line) +
+                                    ": export-set: no variant set to export";
+                    return true;
+                }
+                if (Status folder = ui::createParentFolder(file); !folder) {
+                    effects.error = "script line " + std::to_string(action.line) +
+                                    ": export-set: " + folder.error().message;
+                    return true;
+                }
+                effects.exportSet =
+                    ui::ExportRequest{std::move(materials), *exportFormatOfFile(file), file};
+                exportAsked_ = true;
+                return false;
+            }
+            if (!waitFor(settled.exported, action, "export-set: the export", effects)) return false;
+            exportAsked_ = false;
+            return true;
+        }
+        case Kind::Open:
+            ui.requestOpen(action.text);
             return true;
         case Kind::RefillVariants:
             effects.variants.refill = true;

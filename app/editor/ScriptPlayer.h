@@ -18,6 +18,7 @@ struct ScriptEffects {
     std::optional<std::pair<int, int>> resize;
     bool redraw = false;  // the whole window, on the next frame
     ui::VariantsActions variants;  // as if pressed in the Variants window
+    std::optional<ui::ExportRequest> exportSet;  // as if confirmed in the export dialog
     std::string error;  // a failed action (e.g. wait-evolution timed out); the app exits 1
 };
 
@@ -30,7 +31,8 @@ public:
     // results arrive.
     bool waitingForEvolution() const {
         return !finished() && (actions_[next_].kind == ScriptAction::Kind::WaitEvolution ||
-                               actions_[next_].kind == ScriptAction::Kind::WaitVariants);
+                               actions_[next_].kind == ScriptAction::Kind::WaitVariants ||
+                               actions_[next_].kind == ScriptAction::Kind::ExportSet);
     }
     // An `idle` action is under way: the app draws only what something else asks for, and
     // polls idleOver() to resume the script.
@@ -39,7 +41,8 @@ public:
     // What the script waits for: the GA run is done and shown; the variant search likewise.
     struct Settled {
         bool evolution = false;
-        bool variants = false;
+        bool variants = false;  // the search or measuring, and the set shown is the document's
+        bool exported = false;  // no export running or waiting to be reported
     };
     // The next action waits for work that has settled: it needs a frame or two to finish.
     bool awaitedWorkSettled(Settled settled) const {
@@ -47,6 +50,7 @@ public:
         switch (actions_[next_].kind) {
             case ScriptAction::Kind::WaitEvolution: return settled.evolution;
             case ScriptAction::Kind::WaitVariants: return settled.variants;
+            case ScriptAction::Kind::ExportSet: return settled.exported;
             default: return false;
         }
     }
@@ -66,6 +70,7 @@ private:
     long long framesWaited_ = 0;
     std::optional<std::chrono::steady_clock::time_point> waitingSince_;
     std::optional<std::chrono::steady_clock::time_point> idleUntil_;
+    bool exportAsked_ = false;  // the running export-set action has asked for its export
 };
 
 }  // namespace matevo::editor

@@ -1,11 +1,13 @@
 #include "VariantsController.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "VariantsDisplay.h"
 #include "experiment/Font.h"
 #include "io/MaterialFile.h"
 #include "io/OutputFolder.h"
+#include "variants/VariantFiles.h"
 
 namespace matevo::editor {
 namespace {
@@ -18,22 +20,105 @@ gpu::RendererRequest variantsRenderer(const FeatureContext& context) {
     return request;
 }
 
+// The document's record of a set: its members and the target they were measured against.
+SavedVariantSet savedSetOf(const VariantsResult& result) {
+    SavedVariantSet saved{result.preset.family, result.preset.target, result.preset.baseKappa, {}};
+    for (const Variant& variant : result.set.variants) saved.variants.push_back(variant.genome);
+    return saved;
+}
+
+// The preset with the set's own target, family and kappa: what its figures are measured against.
+Preset presetOfSet(Preset preset, const SavedVariantSet& set) {
+    preset.family = set.family;
+    preset.target = set.target;
+    preset.baseKappa = set.baseKappa;
+    return preset;
+}
+
+// Whether `fewer` is `more` with some members left out, the rest in order.
+bool isSubsequence(const std::vector<Genome>& fewer, const std::vector<Genome>& more) {
+    std::size_t next = 0;
+    for (const Genome& genome : more)
+        if (next < fewer.size() && fewer[next] == genome) ++next;
+    return next == fewer.size();
+}
+
 }  // namespace
 
 VariantsController::VariantsController(const FeatureContext& context)
     : bridge_(context.bridge), worker_(context.wake, variantsRenderer(context)) {}
 
+VariantRequest VariantsController::request(const ui::VariantsView& view) const {
+    VariantRequest request;
+    request.count = view.count;
+    request.band = {double(view.low), double(view.high)};
+    request.minApart = double(view.minApart);
+    request.seed = std::uint64_t(view.seed);
+    if (view.hueVariety) request.kappaGenes = KappaGenes::On;
+    return request;
+}
+
 Status VariantsController::showResults(ui::EditorState& state) {
     ui::VariantsView& view = state.variants;
     view.running = worker_.busy();
     view.progress = worker_.progress();
-    std::optional<VariantsResult> result = worker_.takeResult();
-    if (!result) return Ok{};
-    shown_ = std::move(result);
-    return showSet(state);
+    if (std::optional<VariantsResult> result = worker_.takeResult()) {
+        if (!result->error.empty()) {
+            // Shown as the window's summary; the document's set stays as it was.
+            shown_.reset();
+            shownFor_ = state.preset.variantSet;
+            auto shown = showVariants(*result, bridge_, view);
+            if (!shown) return shown.error();
+            images_.clear();
+            return Ok{};
+        }
+        shownFor_ = savedSetOf(*result);
+        // A search's set becomes the document's (an edit: undone like any other).
+        if (!result->measured) state.preset.variantSet = shownFor_;
+        shown_ = std::move(result);
+        if (Status shown = show(state); !shown) return shown;
+    }
+    return follow(state);
 }
 
-Status VariantsController::showSet(ui::EditorState& state) {
+Status VariantsController::follow(ui::EditorState& state) {
+    const std::optional<SavedVariantSet>& document = state.preset.variantSet;
+    if (worker_.busy() || document == shownFor_) return Ok{};
+    ui::VariantsView& view = state.variants;
+    if (!document || document->variants.empty()) {
+        shown_.reset();
+        shownFor_ = document;
+        images_.clear();
+        view.variants.clear();
+        view.pairwise.clear();
+        view.target = nullptr;
+        view.selected = -1;
+        view.summary.clear();
+        return Ok{};
+    }
+    // Members discarded: the measured set loses them, nothing is rendered.
+    if (shown_ && shownFor_ && document->family == shownFor_->family &&
+        document->target == shownFor_->target && document->baseKappa == shownFor_->baseKappa &&
+        isSubsequence(document->variants, shownFor_->variants)) {
+        VariantSet& set = shown_->set;
+        for (std::size_t i = set.variants.size(); i-- > 0;)
+            if (std::find(document->variants.begin(), document->variants.end(),
+                          set.variants[i].genome) == document->variants.end()) {
+                discarded_.push_back(set.variants[i].genome);
+                removeVariant(set, i);
+            }
+        shownFor_ = document;
+        return show(state);
+    }
+    VariantRequest measuring = request(view);
+    measuring.count = int(document->variants.size());
+    if (worker_.start({presetOfSet(state.preset, *document), state.presetPath, measuring,
+                       document->variants}))
+        view.running = true;
+    return Ok{};
+}
+
+Status VariantsController::show(ui::EditorState& state) {
     auto shown = showVariants(*shown_, bridge_, state.variants);
     if (!shown) return shown.error();
     images_ = std::move(shown).value();
@@ -44,57 +129,61 @@ void VariantsController::handleRequests(const ui::FrameRequests& requests,
                                         ui::EditorState& state) {
     const ui::VariantsActions& actions = requests.variants;
     ui::VariantsView& view = state.variants;
-    VariantRequest request;
-    request.count = view.count;
-    request.band = {double(view.low), double(view.high)};
-    request.minApart = double(view.minApart);
-    request.seed = std::uint64_t(view.seed);
-    if (view.hueVariety) request.kappaGenes = KappaGenes::On;
     if (actions.run) {
-        // The kept bin is where a set starts: its materials join as they are.
-        if (view.startFromKept) request.keep = keptGenomesOfFamily(state.preset);
+        VariantRequest fresh = request(view);
+        // The kept bin is where a set may start: its materials join as they are.
+        if (view.startFromKept) fresh.keep = keptGenomesOfFamily(state.preset);
         discarded_.clear();
-        if (worker_.start({state.preset, state.presetPath, request})) view.running = true;
+        if (worker_.start({state.preset, state.presetPath, fresh, std::nullopt}))
+            view.running = true;
     }
-    if (!shown_) return;
-    VariantSet& set = shown_->set;
-    if (actions.discard >= 0 && std::size_t(actions.discard) < set.variants.size()) {
-        discarded_.push_back(set.variants[std::size_t(actions.discard)].genome);
-        removeVariant(set, std::size_t(actions.discard));
-        if (Status shown = showSet(state); !shown)
-            state.status.post(shown.error().message, ui::StatusKind::Error);
+    auto& document = state.preset.variantSet;
+    if (!document) return;
+    if (actions.remeasure) {
+        // The same members against the present target: an edit of the document, which
+        // follow() then measures.
+        document->family = state.preset.family;
+        document->target = state.preset.target;
+        document->baseKappa = state.preset.baseKappa;
     }
     if (actions.refill) {
-        // The same target as the shown set, the variants shown kept, the discarded ones barred.
-        for (const Variant& variant : set.variants) request.keep.push_back(variant.genome);
-        request.exclude = discarded_;
-        if (worker_.start({shown_->preset, state.presetPath, request})) view.running = true;
+        // The set's members kept, the discarded ones barred; for the set's own target, or for
+        // the present one when the set was made for another.
+        VariantRequest refill = request(view);
+        refill.keep = document->variants;
+        refill.exclude = discarded_;
+        const Preset preset = variantSetMadeForAnotherTarget(state.preset)
+                                  ? state.preset
+                                  : presetOfSet(state.preset, *document);
+        if (worker_.start({preset, state.presetPath, refill, std::nullopt})) view.running = true;
     }
-    if (actions.save) saveSet(state);
+    if (actions.save) saveFolder(state);
 }
 
-void VariantsController::saveSet(ui::EditorState& state) {
+void VariantsController::saveFolder(ui::EditorState& state) {
     ui::VariantsView& view = state.variants;
+    if (!shown_ || shownFor_ != state.preset.variantSet) {
+        state.status.post("Save as folder: the set is still being measured", ui::StatusKind::Warning);
+        return;
+    }
     const VariantsResult& shown = *shown_;
-    // One whole set in the folder: an earlier saved set there is replaced as a whole, a
-    // folder holding files matevo did not write is refused.
     auto save = [&]() -> Status {
+        // One whole set in the folder: an earlier saved set there is replaced as a whole, a
+        // folder holding files matevo did not write is refused.
         auto output = OutputFolder::claim(view.savePath, true);
         if (!output) return output.error();
         auto font = Font::dejaVuSans();  // the contact sheet's
         if (!font) return font.error();
-        if (auto written = writeVariantFiles(
-                output->staging(),
-                materialFromPreset(shown.preset, shown.presetFile, shown.preset.target,
-                                   shown.preset.name),
-                shown.set, variantReport(shown.preset, shown.run, shown.set), *font);
-            !written)
-            return Error{output->userFacing(written.error().message)};
-        return output->commit();
+        return saveVariantFolder(
+            *output,
+            materialFromPreset(shown.preset, shown.presetFile, shown.preset.target,
+                               shown.preset.name),
+            shown.set, variantReport(shown.preset, shown.run, shown.set), *font,
+            state.heatmap.metric);
     };
     const Status saved = save();
     view.summary = saved ? "Saved the set to " + view.savePath
-                         : "Save set failed: " + saved.error().message;
+                         : "Save as folder failed: " + saved.error().message;
     state.status.post(view.summary, saved ? ui::StatusKind::Info : ui::StatusKind::Error);
 }
 

@@ -1,6 +1,9 @@
 #pragma once
-// The Variants window's background work: the variant search (fresh or refill), the set it
-// found, discards from it, and saving it as a folder.
+// The Variants window's background work. The set itself is part of the document
+// (Preset::variantSet, edited by the panel and undone like any edit); this controller keeps
+// what the window shows in step with it: a search's set becomes the document's, and a document
+// set it does not show yet (opened, undone, re-measured for a new target) is measured on the
+// worker. It also saves the set as a folder.
 #include <memory>
 #include <optional>
 #include <vector>
@@ -19,16 +22,24 @@ public:
     void handleRequests(const ui::FrameRequests& requests, ui::EditorState& state) override;
     bool running() const override { return worker_.busy(); }
     void cancel() override { worker_.cancel(); }
-    // The search is done and its result shown (what a script's wait-variants waits for).
-    bool settled() const { return !worker_.busy() && !worker_.hasResult(); }
+    // The search or measuring is done and its result shown (what a script's wait-variants
+    // waits for).
+    bool settled(const ui::EditorState& state) const {
+        return !worker_.busy() && !worker_.hasResult() && shownFor_ == state.preset.variantSet;
+    }
 
 private:
-    Status showSet(ui::EditorState& state);
-    void saveSet(ui::EditorState& state);
+    // Brings the window in step with the document's set: at once when it only lost members,
+    // else by measuring it on the worker.
+    Status follow(ui::EditorState& state);
+    Status show(ui::EditorState& state);
+    void saveFolder(ui::EditorState& state);
+    VariantRequest request(const ui::VariantsView& view) const;
 
     ImageBridge& bridge_;
-    std::optional<VariantsResult> shown_;  // the set in the window
-    std::vector<Genome> discarded_;        // since its last fresh run
+    std::optional<VariantsResult> shown_;        // the measured set in the window
+    std::optional<SavedVariantSet> shownFor_;    // the document's set it shows
+    std::vector<Genome> discarded_;              // since the last fresh search
     std::vector<std::shared_ptr<ShownImage>> images_;  // what the window shows
     VariantsWorker worker_;                            // last: stopped first
 };

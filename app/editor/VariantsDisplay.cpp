@@ -23,6 +23,8 @@ Result<std::vector<std::shared_ptr<ShownImage>>> showVariants(const VariantsResu
     view.summary = variantSummary(result.run, set);
     view.met = fulfils(set, result.run.request);
     view.target = (*shown)[0]->render();
+    view.imageSize = set.target.width;
+    if (view.selected >= int(set.variants.size())) view.selected = -1;
     const std::vector<double> nearest = set.nearestSibling();
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         const Variant& variant = set.variants[i];

@@ -26,7 +26,7 @@ VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequ
 
 VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& context) {
     const auto started = std::chrono::steady_clock::now();
-    VariantsResult result{job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, {}};
+    VariantsResult result{job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, false, {}};
     auto textures = loadSceneTextures(job.preset, job.presetFile);
     if (!textures) {
         result.error = textures.error().message;
@@ -40,6 +40,16 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& 
         return asStoredInPng(
             renderGenomesWith(renderer, preset.family, preset.baseKappa, preset.scene, size));
     };
+    if (job.measure) {
+        auto measured = measureVariantSet(preset.target, *job.measure, renderAt(kOutputSize));
+        if (!measured) {
+            result.error = measured.error().message;
+            return result;
+        }
+        result.set = std::move(measured).value();
+        result.measured = true;
+        return result;
+    }
     const VariantSearchSettings settings;
     const double wanted = double(job.request.count + settings.spare);
     VariantSearchHooks hooks;

@@ -20,6 +20,9 @@ struct VariantsJob {
     Preset preset;
     std::filesystem::path presetFile;  // its textures are relative to its folder
     VariantRequest request;
+    // No search: these genomes, as they are, rendered and measured against the preset's target
+    // (a saved set reopened, a set after undo, or one re-measured for a changed target).
+    std::optional<std::vector<Genome>> measure;
 };
 
 struct VariantsResult {
@@ -27,6 +30,7 @@ struct VariantsResult {
     std::filesystem::path presetFile;
     VariantRun run;
     VariantSet set;
+    bool measured = false;  // a set measured as it was (VariantsJob::measure), not searched
     std::string error;  // the job could not run (e.g. a missing texture)
 };
 

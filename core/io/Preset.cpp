@@ -25,6 +25,24 @@ KeptMaterial readKept(JsonReader& reader) {
     return kept;
 }
 
+SavedVariantSet readVariantSet(JsonReader& reader) {
+    SavedVariantSet set;
+    set.family = readFamily(reader, "family");
+    set.target = readFamilyGenome(reader, "target", set.family);
+    set.baseKappa = readBaseKappa(reader, set.family);
+    for (JsonReader entry : reader.objects("variants")) {
+        Genome genome = readFamilyGenome(entry, "genome", set.family);
+        if (entry.has("kappa")) {
+            const auto kappa = entry.numbers<3>("kappa", 0.0, 100.0);
+            for (std::size_t c = 0; c < 3; ++c) genome[kKappaR + c] = kappa[c];
+        }
+        entry.warnAboutUnknownFields();
+        set.variants.push_back(genome);
+    }
+    reader.warnAboutUnknownFields();
+    return set;
+}
+
 Preset readPreset(JsonReader& root) {
     const int version =
         root.has("format_version") ? readFormatVersion(root, kPresetFormatVersion) : 1;
@@ -39,9 +57,19 @@ Preset readPreset(JsonReader& root) {
     preset.roughnessTexture = std::move(textures.roughness);
     preset.baseColorTexture = std::move(textures.baseColor);
     preset.ga = readGaSettings(root.object("ga"));
+    if (root.has("fitness")) {
+        const std::string fitness = root.string("fitness");
+        if (fitness != "genotype" && fitness != "image")
+            root.fail("fitness", "unknown value '" + fitness + "' (expected genotype or image)");
+        preset.imageFitness = fitness == "image";
+    }
     if (root.has("scene")) preset.scene = readScene(root.object("scene"), version == 1);
     if (root.has("kept"))
         for (JsonReader entry : root.objects("kept")) preset.kept.push_back(readKept(entry));
+    if (root.has("variant_set")) {
+        JsonReader set = root.object("variant_set");
+        preset.variantSet = readVariantSet(set);
+    }
     root.warnAboutUnknownFields();
     return preset;
 }
@@ -102,6 +130,7 @@ std::string serializePreset(const Preset& preset) {
     if (!textures.empty()) json["textures"] = std::move(textures);
     json["ga"] = changedFields(gaSettingsToJson(preset.ga), gaSettingsToJson(defaults.ga),
                                {"population", "generations"});
+    if (preset.imageFitness) json["fitness"] = "image";
     if (auto scene = changedFields(sceneToJson(preset.scene), sceneToJson(defaults.scene));
         !scene.empty())
         json["scene"] = std::move(scene);
@@ -113,6 +142,19 @@ std::string serializePreset(const Preset& preset) {
                             {"genome", minimalGenomeJson(material.genome)}});
         json["kept"] = std::move(kept);
     }
+    if (const auto& set = preset.variantSet) {
+        nlohmann::ordered_json saved = {{"family", minimalFamilyJson(set->family)},
+                                        {"target", minimalGenomeJson(set->target)}};
+        if (set->family.base == Base::Conductor) saved["base_kappa"] = set->baseKappa;
+        nlohmann::ordered_json variants = nlohmann::ordered_json::array();
+        for (const Genome& genome : set->variants) {
+            nlohmann::ordered_json variant = {{"genome", minimalGenomeJson(genome)}};
+            if (genome.carriesKappa()) variant["kappa"] = genome.kappa();
+            variants.push_back(std::move(variant));
+        }
+        saved["variants"] = std::move(variants);
+        json["variant_set"] = std::move(saved);
+    }
     return json.dump(2) + "\n";
 }
 
@@ -121,6 +163,12 @@ std::vector<Genome> keptGenomesOfFamily(const Preset& preset) {
     for (const KeptMaterial& kept : preset.kept)
         if (kept.family == preset.family) genomes.push_back(kept.genome);
     return genomes;
+}
+
+bool variantSetMadeForAnotherTarget(const Preset& preset) {
+    const auto& set = preset.variantSet;
+    return set && (set->family != preset.family || set->target != preset.target ||
+                   (preset.family.base == Base::Conductor && set->baseKappa != preset.baseKappa));
 }
 
 Status savePreset(const Preset& preset, const std::filesystem::path& file) {

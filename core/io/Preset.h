@@ -3,6 +3,7 @@
 // conductor base's fixed extinction kappa, the GA settings and the scene.
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,19 @@ struct KeptMaterial {
     bool operator==(const KeptMaterial&) const = default;
 };
 
+// The editor's working variant set, saved with the document as "variant_set": its members in
+// order and the target they were measured against, so that a reopened document shows the same
+// set and can say when the target has changed under it. The measurements (ΔE00, pairwise) are
+// made again from the genomes.
+struct SavedVariantSet {
+    MaterialFamily family;  // the family and target the set was made for
+    Genome target;
+    std::array<double, 3> baseKappa = {0.0, 0.0, 0.0};
+    std::vector<Genome> variants;  // kappa genes included (hue variety)
+
+    bool operator==(const SavedVariantSet&) const = default;
+};
+
 // The preset format this matevo writes ("format_version"). 1: no version field, every field
 // written. 2: only what differs from the defaults of GaSettings, SceneSettings, MaterialFamily
 // and Genome (the defaults of format 2; a change of a default is a new format), and a scene
@@ -43,8 +57,12 @@ struct Preset {
     std::string roughnessTexture;  // for the textured layer of the family
     std::string baseColorTexture;  // tints the base layer
     GaSettings ga;
+    // Beyond the paper: the GA ranks by each candidate's rendered mean ΔE00 from the target
+    // (the editor's "Image ΔE00" metric) instead of ga.metric; saved as "fitness": "image".
+    bool imageFitness = false;
     SceneSettings scene;
     std::vector<KeptMaterial> kept;  // saved as "kept": [{"name", "family", "genome"}, …]
+    std::optional<SavedVariantSet> variantSet;
 
     bool operator==(const Preset&) const = default;
 };
@@ -52,6 +70,9 @@ struct Preset {
 // The genomes of the kept materials evolved in the preset's current family, in the bin's
 // order: what the editor draws beside a run and what a variant set starts from.
 std::vector<Genome> keptGenomesOfFamily(const Preset& preset);
+
+// The saved set was made for another target than the preset's present one (or family, kappa).
+bool variantSetMadeForAnotherTarget(const Preset& preset);
 
 struct LoadedPreset {
     Preset preset;

@@ -124,12 +124,23 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
 
 std::string variantSummary(const VariantRun& run, const VariantSet& set) {
     const VariantRequest& request = run.request;
+    // Kept materials join a set as they are: the line says what holds, never more.
+    const auto inBand =
+        std::count_if(set.variants.begin(), set.variants.end(), [&](const Variant& variant) {
+            return request.band.contains(variant.deltaEToTarget);
+        });
     std::string text = std::to_string(set.variants.size()) + " of " +
-                       std::to_string(request.count) + " variants in band " +
-                       describe(request.band) + ", at least " + format("%g", request.minApart) +
-                       " apart";
+                       std::to_string(request.count) + " variants";
+    if (std::size_t(inBand) == set.variants.size())
+        text += " in band " + describe(request.band);
+    else
+        text += ", " + std::to_string(inBand) + " in band " + describe(request.band);
+    const bool apart = set.variants.size() < 2 || set.smallestPairwise >= request.minApart;
+    if (apart) text += ", at least " + format("%g", request.minApart) + " apart";
     if (set.variants.size() > 1)
-        text += " (smallest pairwise " + format("%.2f", set.smallestPairwise) + ")";
+        text += apart ? " (smallest pairwise " + format("%.2f", set.smallestPairwise) + ")"
+                      : ", smallest pairwise " + format("%.2f", set.smallestPairwise) +
+                            " (asked at least " + format("%g", request.minApart) + ")";
     text += ", " + std::to_string(run.evaluations) + " evaluations";
     if (set.variants.empty())
         text += "; the render nearest the band was " + format("%.2f", run.closestDeltaE) +
@@ -224,6 +235,15 @@ Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& t
     if (auto written = writeImage(contactSheet(set, font), dir / "contact_sheet.png"); !written)
         return written;
     return writeFileAtomically(dir / "report.json", report.dump(2) + "\n");
+}
+
+Status saveVariantFolder(OutputFolder& output, const MaterialFile& target, const VariantSet& set,
+                         const nlohmann::ordered_json& report, const Font& font,
+                         ImageMetric heatmapMetric) {
+    if (auto written = writeVariantFiles(output.staging(), target, set, report, font, heatmapMetric);
+        !written)
+        return Error{output.userFacing(written.error().message)};
+    return output.commit();
 }
 
 }  // namespace matevo

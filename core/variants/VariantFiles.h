@@ -23,6 +23,7 @@
 #include "evolve/RenderGenomes.h"
 #include "experiment/Font.h"
 #include "io/MaterialFile.h"
+#include "io/OutputFolder.h"
 #include "io/Preset.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
@@ -101,5 +102,13 @@ Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile&
 Status writeVariantFiles(const std::filesystem::path& dir, const MaterialFile& target,
                          const VariantSet& set, const nlohmann::ordered_json& report,
                          const Font& font, ImageMetric heatmapMetric = ImageMetric::DeltaE00);
+
+// A whole set into a claimed output folder: every file above written into its staging folder,
+// then put in place of the folder (OutputFolder::commit). The one way a set becomes a folder:
+// `matevo variants --out` and the editor's "Save as folder…" both write through it. An Error
+// names the file in the folder the user asked for.
+Status saveVariantFolder(OutputFolder& output, const MaterialFile& target, const VariantSet& set,
+                         const nlohmann::ordered_json& report, const Font& font,
+                         ImageMetric heatmapMetric);
 
 }  // namespace matevo

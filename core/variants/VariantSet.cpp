@@ -113,6 +113,32 @@ Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const Variant
     return set;
 }
 
+Result<VariantSet> measureVariantSet(const Genome& target, std::span<const Genome> genomes,
+                                     const RenderGenomes& outputRender) {
+    std::vector<Genome> all{target};
+    all.insert(all.end(), genomes.begin(), genomes.end());
+    auto images = outputRender(all);
+    if (!images) return images.error();
+    if (images->size() != all.size())
+        return Error{"the renderer returned " + std::to_string(images->size()) + " images for " +
+                     std::to_string(all.size()) + " genomes"};
+    std::vector<LabImage> labs;
+    for (const Image& image : *images) labs.push_back(toLabImage(image));
+    VariantSet set;
+    set.target = std::move(images->front());
+    set.outputRenders = genomes.size();
+    const std::size_t count = genomes.size();
+    set.pairwise.assign(count, std::vector<double>(count, 0.0));
+    for (std::size_t i = 0; i < count; ++i) {
+        set.variants.push_back(
+            {genomes[i], std::move((*images)[i + 1]), meanDeltaE00(labs[0], labs[i + 1]), false});
+        for (std::size_t j = 0; j < i; ++j)
+            set.pairwise[i][j] = set.pairwise[j][i] = meanDeltaE00(labs[i + 1], labs[j + 1]);
+    }
+    updateSmallestPairwise(set);
+    return set;
+}
+
 void removeVariant(VariantSet& set, std::size_t index) {
     if (index >= set.variants.size()) return;
     const auto offset = std::ptrdiff_t(index);

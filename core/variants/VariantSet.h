@@ -5,6 +5,7 @@
 // the output size and kept only if it holds there (inside the band, at least minApart from
 // every variant kept before it); one that fails is replaced by the next member.
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "common/Image.h"
@@ -40,6 +41,12 @@ struct VariantSet {
 // quantised as in a PNG) so that the figures are the ones found in the files.
 Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const VariantRequest& request,
                                     const Genome& target, const RenderGenomes& outputRender);
+
+// Exactly these genomes, in this order, rendered at the output size and measured against the
+// target (ΔE00 to it and pairwise): a saved set shown again, or a set re-measured after its
+// target changed. Nothing is dropped, whether or not it is still inside a band.
+Result<VariantSet> measureVariantSet(const Genome& target, std::span<const Genome> genomes,
+                                     const RenderGenomes& outputRender);
 
 // Drops variant `index` (the user discarded it), keeping the matrix and smallest distance right.
 void removeVariant(VariantSet& set, std::size_t index);

@@ -14,6 +14,8 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include <tiny_gltf.h>
+
 #include "PanelLayout.h"
 #include "ScreenshotAnalysis.h"
 #include "io/ImageFile.h"
@@ -234,6 +236,57 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     fs::remove_all(dir);
 }
 
+// The goal session, in the editor alone: find a set, keep all of it, export it to GLB, save the
+// document, reopen it; then a new editor process restores the set from the saved document.
+// Checked in the files: the document holds the set and the kept bin, the GLB (read back with
+// tinygltf) holds the set's materials by name, and the restored set saves the same members.
+TEST(EditorVariantDocument, FindKeepExportSaveAndReopen) {
+    const fs::path dir = freshDirectory("document");
+    const std::string preset = std::string(MATEVO_SOURCE_DIR) + "/presets/validation_metal.json";
+    const CommandOutput run = playSession(dir,
+                                          "variants 4\n"
+                                          "wait-variants\n"
+                                          "variants-keep all\n"
+                                          "export-set " + (dir / "set.glb").string() + "\n"
+                                          "save-document " + (dir / "doc.json").string() + "\n"
+                                          "open " + (dir / "doc.json").string() + "\n"
+                                          "wait-variants\n",
+                                          preset);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+
+    std::ifstream documentFile(dir / "doc.json");
+    const auto document = nlohmann::json::parse(documentFile);
+    ASSERT_TRUE(document.contains("variant_set")) << document.dump(2);
+    const auto& variants = document.at("variant_set").at("variants");
+    ASSERT_EQ(variants.size(), 4u);
+    EXPECT_EQ(document.at("kept").size(), 4u) << "keep all";
+    EXPECT_EQ(document.at("variant_set").at("target"), document.at("target"));
+
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, (dir / "set.glb").string()))
+        << error;
+    ASSERT_EQ(model.materials.size(), 4u);
+    const std::string name = document.at("name").get<std::string>();
+    for (std::size_t i = 0; i < 4; ++i)
+        EXPECT_EQ(model.materials[i].name, name + " variant_00" + std::to_string(i));
+
+    // A new session on the saved document shows the same set: saved as a folder, the same
+    // four members in order.
+    const CommandOutput reopened = playSession(
+        dir, "wait-variants\nsave-variants " + (dir / "again").string() + "\nwait 2\n",
+        (dir / "doc.json").string());
+    ASSERT_EQ(reopened.exitCode, 0) << reopened.err;
+    std::ifstream reportFile(dir / "again/report.json");
+    const auto report = nlohmann::json::parse(reportFile);
+    ASSERT_EQ(report.at("variants").size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i)
+        EXPECT_DOUBLE_EQ(report.at("variants")[i].at("genome").at("eta2").get<double>(),
+                         variants[i].at("genome").value("eta2", 0.0));
+    fs::remove_all(dir);
+}
+
 // The kept bin is where a variant set starts: the preset's kept materials of its family join
 // the set as they are (marked kept in the report); one kept in another family does not.
 TEST(EditorVariants, ASetStartsFromTheKeptBin) {
@@ -253,6 +306,7 @@ TEST(EditorVariants, ASetStartsFromTheKeptBin) {
      "textured_layer": "none"}, "genome": {"eta1": 1.4, "eta2": 0.8, "alpha1": 0.2, "alpha2": 0.05}}
   ]})";
     std::ofstream(dir / "script.txt") << "wait 2\n"
+                                         "variants-from-kept on\n"
                                          "variants 3\n"
                                          "wait-variants\n"
                                          "save-variants "
@@ -465,7 +519,8 @@ TEST(EditorWithoutDisplay, SaysSoNamesTheHeadlessCommandsAndExits2) {
     const CommandOutput run = runCommand(std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") +
                                          MATEVO_BINARY_DIR + "/matevo' edit");
     EXPECT_EQ(run.exitCode, 2);
-    for (const char* command : {"evolve", "render", "compare", "experiment"})
+    for (const char* command : {"evolve", "render", "compare", "experiment", "variants", "scene",
+                                "export", "merge", "bench", "presets"})
         EXPECT_NE(run.err.find(command), std::string::npos) << run.err;
     EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << "one line: " << run.err;
 }

@@ -75,6 +75,39 @@ TEST(Preset, RoundTripsThroughText) {
     EXPECT_TRUE(reparsed->warnings.empty());
 }
 
+// The editor's variant set is part of the document: its members (a hue-variety member with its
+// own kappa too) and the target it was made for come back as they were saved.
+TEST(Preset, TheVariantSetRoundTripsWithTheTargetItWasMadeFor) {
+    Preset preset = parsePreset(kValidPreset, "p.json")->preset;
+    SavedVariantSet set{preset.family, preset.target, preset.baseKappa, {}};
+    Genome grey = preset.target;
+    grey[kAlpha1] = 0.06;
+    Genome hued = preset.target;
+    hued[kEta2] = 0.6;
+    hued[kKappaR] = 2.5;
+    hued[kKappaG] = 1.5;
+    hued[kKappaB] = 3.0;
+    set.variants = {grey, hued};
+    preset.variantSet = set;
+    EXPECT_FALSE(variantSetMadeForAnotherTarget(preset));
+    const std::string text = serializePreset(preset);
+    EXPECT_NE(text.find("\"variant_set\""), std::string::npos) << text;
+    auto reparsed = parsePreset(text, "again.json");
+    ASSERT_TRUE(reparsed.ok()) << reparsed.error().message;
+    EXPECT_TRUE(reparsed->warnings.empty());
+    ASSERT_TRUE(reparsed->preset.variantSet.has_value());
+    EXPECT_EQ(reparsed->preset.variantSet->variants, set.variants);
+    EXPECT_EQ(reparsed->preset, preset);
+    // The target moved on: the set says it was made for another.
+    preset.target[kAlpha1] = 0.2;
+    EXPECT_TRUE(variantSetMadeForAnotherTarget(preset));
+    // A member outside the set's family is bad input naming the field.
+    auto json = nlohmann::ordered_json::parse(text);
+    json["variant_set"]["variants"][0]["genome"]["eta1"] = -1;
+    const std::string problem = errorOf(json.dump());
+    EXPECT_NE(problem.find("variant_set.variants[0].genome"), std::string::npos) << problem;
+}
+
 TEST(Preset, EnvironmentModeNamesItsEnvironment) {
     auto parsed = parsePreset(
         replaced(kValidPreset, R"("base_kappa")",

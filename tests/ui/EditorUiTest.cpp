@@ -63,14 +63,22 @@ TEST_F(EditorUiTest, ClickingAMetricSwitchesIt) {
     ui.undo();
     EXPECT_EQ(ui.state().preset.ga.metric, DistanceMetric::Manhattan);
 
-    // The image-space fitness beside them: a view choice, off by default, not a preset edit.
-    EXPECT_FALSE(ui.state().imageFitness);
-    const Preset before = ui.state().preset;
+    // The image-space fitness beside them: off by default, saved with the preset, and with it
+    // the weights (which it ignores) are disabled.
+    EXPECT_FALSE(ui.state().preset.imageFitness);
     imgui.click(locate("Controls", "Image ΔE00"), draw);
-    EXPECT_TRUE(ui.state().imageFitness);
-    EXPECT_EQ(ui.state().preset, before);
+    EXPECT_TRUE(ui.state().preset.imageFitness);
+    EXPECT_TRUE(ui.state().hasUnsavedChanges());
+    auto reparsed = parsePreset(serializePreset(ui.state().preset), "saved.json");
+    ASSERT_TRUE(reparsed.ok()) << reparsed.error().message;
+    EXPECT_TRUE(reparsed->preset.imageFitness);
+    // The weights cannot be changed under it: "Reset weights" does nothing.
+    ui.state().preset.ga.weights.fill(0.5);
+    imgui.frame(draw);
+    imgui.click(locate("Controls", "Reset weights"), draw);
+    EXPECT_EQ(ui.state().preset.ga.weights[0], 0.5);
     imgui.click(locate("Controls", "Euclidean"), draw);
-    EXPECT_FALSE(ui.state().imageFitness);
+    EXPECT_FALSE(ui.state().preset.imageFitness);
     EXPECT_EQ(ui.state().preset.ga.metric, DistanceMetric::Euclidean);
 }
 
@@ -83,11 +91,24 @@ TEST_F(EditorUiTest, TargetSlidersStayInsideTable2) {
         << *validateGenome(preset.target, preset.family);
 }
 
-TEST_F(EditorUiTest, NewSeedButtonPicksAnotherSeedReproducibly) {
+// Not a function of the present seed: pressed again from the same seed, another one.
+TEST_F(EditorUiTest, NewSeedButtonDrawsANewSeed) {
     const std::uint64_t before = ui.state().preset.ga.seed;
     imgui.click(locate("Controls", "New seed"), draw);
-    EXPECT_EQ(ui.state().preset.ga.seed, nextSeed(before));
+    const std::uint64_t first = ui.state().preset.ga.seed;
+    EXPECT_NE(first, before);
+    ui.undo();
+    ASSERT_EQ(ui.state().preset.ga.seed, before);
+    imgui.click(locate("Controls", "New seed"), draw);
     EXPECT_NE(ui.state().preset.ga.seed, before);
+    EXPECT_NE(ui.state().preset.ga.seed, first);
+}
+
+TEST_F(EditorUiTest, EscapeClosesAnOpenDropdown) {
+    imgui.click(locate("Candidates (best first)", "Sort"), draw);
+    ASSERT_TRUE(ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) << "the dropdown opened";
+    imgui.pressKey(ImGui::GetIO().KeyMap[ImGuiKey_Escape], false, false, draw);
+    EXPECT_FALSE(ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId));
 }
 
 TEST_F(EditorUiTest, HeatmapToggleIsAViewSettingNotAnEdit) {

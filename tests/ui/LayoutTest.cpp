@@ -3,6 +3,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <imgui_internal.h>
 
 #include "EditorStyle.h"
 #include "EditorUiFixture.h"
@@ -42,12 +43,30 @@ TEST_P(EditorLayout, NoControlIsCutOff) {
         "Save failed: /home/someone/.local/share/matevo/presets/a/b/c/d/a rather "
         "long name for a preset.json: cannot create the folder (Permission denied)",
         ui::StatusKind::Error);
+    // The floating windows too: each must fit in the smallest window.
+    state.variants.open = true;
+    state.compareMetrics.open = true;
     const auto draw = [&] { ui.draw(); };
     for (int frame = 0; frame < 3; ++frame) imgui.frame(draw);
+    for (const char* name : {"Variants", "Compare metrics"}) {
+        const ImGuiWindow* window = HeadlessImGui::findWindow(name);
+        ASSERT_NE(window, nullptr) << name;
+        EXPECT_LE(window->Pos.y + window->Size.y, size.height) << name << " is too tall";
+        EXPECT_LE(window->Pos.x + window->Size.x, size.width) << name << " is too wide";
+    }
 
     std::string problems;
     for (const std::string& problem : ui::findCutOffContent()) problems += problem + "\n";
     EXPECT_TRUE(problems.empty()) << size.width << "x" << size.height << ":\n" << problems;
+}
+
+// A layout dragged in a large window keeps its proportions in a smaller one.
+TEST(PanelSplits, AreFractionsOfTheWindow) {
+    const ui::PanelSplits splits{0.3f, 0.25f, 0.6f};
+    const ui::PanelLayout large = ui::layoutPanels(ImVec2(1920, 1080), splits);
+    const ui::PanelLayout small = ui::layoutPanels(ImVec2(1280, 800), splits);
+    EXPECT_NEAR(large.controls.size.x / 1920.0f, small.controls.size.x / 1280.0f, 0.002f);
+    EXPECT_NEAR(large.grid.size.x / 1920.0f, small.grid.size.x / 1280.0f, 0.002f);
 }
 
 INSTANTIATE_TEST_SUITE_P(WindowSizes, EditorLayout,

@@ -47,6 +47,10 @@ TEST_F(ScenePanel, ShowsThePopulationTheVariantSetOrTheKeptBin) {
     EXPECT_NE(ui::sceneMaterials(ui.state())[0].label.find("candidate #1"), std::string::npos);
 
     // "Send to Scene window" from the Variants window: its set, as it changes.
+    ui.state().preset.variantSet = SavedVariantSet{ui.state().preset.family,
+                                                   ui.state().preset.target,
+                                                   ui.state().preset.baseKappa,
+                                                   {variant(0.2), variant(0.3)}};
     ui.state().variants.variants = {{variant(0.2), nullptr, 3.1, 2.5, false},
                                     {variant(0.3), nullptr, 4.2, 2.5, false}};
     ui.state().sceneView.open = false;
@@ -58,8 +62,11 @@ TEST_F(ScenePanel, ShowsThePopulationTheVariantSetOrTheKeptBin) {
     EXPECT_NE(label.find("variant 2: ΔE00 4.20 to the target, 2.50 to the nearest"),
               std::string::npos)
         << label;
-    ui.state().variants.variants.erase(ui.state().variants.variants.begin());  // discarded
+    // Discarded: the document's set and the window's tiles lose it.
+    ui.state().preset.variantSet->variants.erase(ui.state().preset.variantSet->variants.begin());
+    ui.state().variants.variants.erase(ui.state().variants.variants.begin());
     EXPECT_EQ(shownGenomes(), std::vector<Genome>{variant(0.3)});
+    EXPECT_EQ(ui::sceneMaterials(ui.state())[0].label.substr(0, 9), "variant 1");
     imgui.frame(draw);
 
     // The kept bin, chosen in the window: empty, then with a kept material.
