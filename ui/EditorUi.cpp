@@ -214,6 +214,11 @@ void EditorUi::requestOpen(const std::filesystem::path& file) {
 }
 
 void EditorUi::dropFile(const std::filesystem::path& file) {
+    if (isMeshFile(file)) {  // shown on the Scene window's instances
+        chooseSceneMesh(state_.sceneView, file.string());
+        state_.sceneView.open = true;
+        return;
+    }
     if (loadPreset(file)) {
         requestOpen(file);
         return;

@@ -49,7 +49,7 @@ public:
     void requestOpen(const std::filesystem::path& file);  // a dropped or recent file
     void requestQuit();                                   // Ctrl+Q, the window's close button
     // A file dropped on the window: a preset opens (asking first); a genome file becomes the
-    // target (an undoable edit).
+    // target (an undoable edit); a mesh file (.obj, .gltf, .glb) goes on the Scene window.
     void dropFile(const std::filesystem::path& file);
 
     // File and history actions, also reachable from buttons and shortcuts. They report

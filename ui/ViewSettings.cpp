@@ -53,6 +53,16 @@ void readLine(ImGuiContext*, ImGuiSettingsHandler*, void* entry, const char* lin
     if (std::strncmp(line, "recent=", 7) == 0 && line[7] != '\0' &&
         state.recentFiles.size() < kMaxRecentFiles)
         state.recentFiles.emplace_back(line + 7);
+    SceneView& scene = state.sceneView;
+    if (std::strncmp(line, "scene_mesh=", 11) == 0 && line[11] != '\0')
+        scene.controls.mesh = line + 11;
+    if (std::sscanf(line, "scene_instances=%d", &flag) == 1)
+        scene.controls.instances = std::clamp(flag, 1, kMaxSceneInstances);
+    if (std::sscanf(line, "scene_layout=%d", &flag) == 1)
+        scene.controls.layout = std::clamp(flag, 0, 1);
+    if (std::strncmp(line, "scene_recent_mesh=", 18) == 0 && line[18] != '\0' &&
+        scene.recentMeshes.size() < kMaxRecentMeshes)
+        scene.recentMeshes.emplace_back(line + 18);
     if (std::sscanf(line, "compare=%31s", word) == 1)
         state.compareMode = std::strcmp(word, "wipe") == 0   ? CompareMode::Wipe
                             : std::strcmp(word, "flip") == 0 ? CompareMode::Flip
@@ -76,14 +86,22 @@ void writeAll(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out
                  double(state.splits.controlsFraction), double(state.splits.targetFraction),
                  double(state.splits.gridFraction));
     for (const auto& file : state.recentFiles) out->appendf("recent=%s\n", file.c_str());
+    const SceneView& scene = state.sceneView;
+    out->appendf("scene_mesh=%s\nscene_instances=%d\nscene_layout=%d\n",
+                 scene.controls.mesh.c_str(), scene.controls.instances, scene.controls.layout);
+    for (const auto& file : scene.recentMeshes)
+        out->appendf("scene_recent_mesh=%s\n", file.c_str());
     out->append("\n");
 }
 
 }  // namespace
 
 ViewSettings viewSettingsOf(const EditorState& state) {
-    return {state.heatmap, state.grid,        state.compareMode,
-            state.splits,  state.recentFiles, state.plotFromZero};
+    const SceneViewControls& scene = state.sceneView.controls;
+    return {state.heatmap,      state.grid,        state.compareMode,
+            state.splits,       state.recentFiles, state.plotFromZero,
+            scene.mesh,         scene.instances,   scene.layout,
+            state.sceneView.recentMeshes};
 }
 
 void rememberViewSettings(EditorState& state) {

@@ -1,5 +1,6 @@
 #pragma once
-// The view settings (heatmap, tile size, sort and filters, the inspector's comparison) are kept
+// The view settings (heatmap, tile size, sort and filters, the inspector's comparison, the Scene
+// window's mesh, instance count and layout, and its recent meshes) are kept
 // in imgui.ini beside the window layout, so the editor opens as the user left it. They are not
 // part of the preset and not undoable.
 #include "EditorState.h"
@@ -13,6 +14,10 @@ struct ViewSettings {
     PanelSplits splits;
     std::vector<std::filesystem::path> recentFiles;
     bool plotFromZero = true;
+    std::string sceneMesh;
+    int sceneInstances = 0;
+    int sceneLayout = 0;
+    std::vector<std::string> recentMeshes;
 
     bool operator==(const ViewSettings&) const = default;
 };

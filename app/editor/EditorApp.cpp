@@ -151,6 +151,7 @@ private:
     ui::EditorUi ui_;
     ScriptPlayer script_;
     EditorTimings timings_;
+    SceneTimings sceneTimings_;
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
@@ -240,7 +241,7 @@ EditorApp::EditorApp(const EditorOptions& options)
     add(std::make_unique<CompareMetricsController>(context));
     variants_ = &add(std::make_unique<VariantsController>(context));
     export_ = &add(std::make_unique<ExportController>(context));
-    add(std::make_unique<SceneController>(context));
+    add(std::make_unique<SceneController>(context, sceneTimings_));
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
@@ -345,7 +346,10 @@ int EditorApp::run() {
         timings_.resultsShown(evolution_->shownJob(), evolution_->shownFinished(), finished);
         if (options_.maxFrames > 0 && ++frames >= options_.maxFrames) break;
     }
-    if (options_.reportTimings) std::printf("editor timings: %s\n", timings_.report().c_str());
+    if (options_.reportTimings) {
+        std::printf("editor timings: %s\n", timings_.report().c_str());
+        std::printf("scene timings: %s\n", sceneTimings_.report().c_str());
+    }
     if (!failure_.empty()) {
         std::fprintf(stderr, "matevo edit: %s\n", failure_.c_str());
         return 1;

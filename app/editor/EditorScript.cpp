@@ -1,10 +1,12 @@
 #include "EditorScript.h"
 
+#include <algorithm>
 #include <charconv>
 #include <limits>
 #include <map>
 #include <sstream>
 
+#include "ScenePanel.h"
 #include "common/ShortText.h"
 #include "evolve/GaSettings.h"
 #include "render/LightingScenes.h"
@@ -43,6 +45,8 @@ const std::map<std::string, Grammar>& grammar() {
         {"lighting", {Kind::Lighting, 0, true}},
         {"variants-hold", {Kind::VariantsHold, 0, true}},
         {"wait-scene", {Kind::WaitScene, 0, false}},
+        {"scene-show", {Kind::SceneShow, 0, true}},
+        {"scene-mesh", {Kind::SceneMesh, 0, true}},
         {"undo", {Kind::Undo, 0, false}},
         {"redo", {Kind::Redo, 0, false}},
         {"resize", {Kind::Resize, 2, false, 64, kMaxWindowSide}},
@@ -99,6 +103,14 @@ std::string validateText(const ScriptAction& action) {
         return "expected open or close, got '" + shortText(action.text, 40) + "'";
     if (action.kind == Kind::VariantsHold && action.text != "none")
         if (auto names = parseLightingList(action.text); !names) return names.error().message;
+    if (action.kind == Kind::SceneShow && action.text != "variants" && action.text != "kept" &&
+        action.text != "population")
+        return "expected variants, kept or population, got '" + shortText(action.text, 40) + "'";
+    if (action.kind == Kind::SceneMesh && !ui::isMeshFile(action.text) &&
+        std::find(std::begin(ui::kSceneMeshes), std::end(ui::kSceneMeshes), action.text) ==
+            std::end(ui::kSceneMeshes))
+        return "expected sphere, shaderball, knot or a .obj, .gltf or .glb file, got '" +
+               shortText(action.text, 40) + "'";
     return {};
 }
 

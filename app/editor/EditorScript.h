@@ -15,7 +15,10 @@
 //                           studio or an .hdr/.exr FILE
 //   variants-hold L1,L2     the lightings the variant set must hold under besides the chosen
 //                           one ("hold under several lightings"); "none" clears them
-//   wait-scene              draw until the Scene window shows a render (gives up after 120 s)
+//   scene-show variants|kept|population   what the Scene window's instances wear
+//   scene-mesh FILE|sphere|shaderball|knot the Scene window's mesh (.obj, .gltf, .glb file)
+//   wait-scene              draw until the Scene window shows the whole picture of its current
+//                           settings (gives up after 120 s; a mesh that fails to load fails)
 //   undo | redo
 //   resize W H              resize the window (pixels)
 //   check-layout            fail (exit 1) if a panel cuts off a control at its right edge
@@ -59,6 +62,8 @@ struct ScriptAction {
         Lighting,
         VariantsHold,
         WaitScene,
+        SceneShow,
+        SceneMesh,
         Undo,
         Redo,
         Resize,

@@ -3,8 +3,10 @@
 // (core/gpu/GpuSceneRenderer) on the window's device, so that orbiting never blocks the UI. The
 // picture stays on that device: the renderer's display pass writes it into a DisplayTile that
 // the window samples, with no copy through the host. Only the newest request matters
-// (BackgroundWorker, latest wins): one queued while a render runs replaces any older one. The UI
-// thread takes the finished render and is woken through `onUpdate` (which must be thread-safe).
+// (BackgroundWorker, latest wins): one queued while a render runs replaces any older one and
+// cancels the running one before its frame is recorded (a mesh being loaded is kept for the
+// next). The UI thread takes the finished render and is woken through `onUpdate` (which must be
+// thread-safe).
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -17,7 +19,6 @@
 #include "gpu/Device.h"
 #include "gpu/DisplayTile.h"
 #include "io/Preset.h"
-#include "material/MaterialInstance.h"
 
 namespace matevo::editor {
 
@@ -25,7 +26,10 @@ struct SceneViewJob {
     ui::SceneViewControls controls;
     Preset preset;                      // lighting, textures (relative to presetFile)
     std::filesystem::path presetFile;
-    std::vector<MaterialInstance> materials;  // instance i wears materials[i mod count]
+    std::vector<ui::SceneMaterial> materials;  // instance i wears materials[i mod count]
+    // A preview while the camera moves: width and height divided by this (1: the whole
+    // picture).
+    int previewDivisor = 1;
 
     bool operator==(const SceneViewJob&) const = default;
 };
@@ -34,9 +38,13 @@ struct SceneViewResult {
     // Tone mapped, opaque where an environment shows behind; null when nothing was drawn.
     std::shared_ptr<const gpu::DisplayTile> tile;
     ui::SceneViewControls controls;
+    std::vector<ui::SceneMaterial> materials;  // the job's: what instances[i].material indexes
+    bool preview = false;                      // drawn at a reduced resolution
+    double frameMilliseconds = 0.0;  // recording and rendering the frame (no mesh loading)
     SceneCamera camera;
     std::vector<SceneInstance> instances;
     std::string status;  // what was drawn and how long it took, or why not
+    bool meshFailed = false;  // the mesh could not be loaded: `status` says why in one line
 };
 
 struct SceneViewRenderer;  // the Vulkan side, owned by the worker thread only

@@ -154,13 +154,28 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
             if (action.text != "none")
                 state.variants.holdAlsoUnder = *parseLightingList(action.text);
             return true;
+        case Kind::SceneShow:
+            state.sceneView.controls.source = action.text == "variants" ? ui::SceneSource::Variants
+                                              : action.text == "kept"   ? ui::SceneSource::Kept
+                                                                      : ui::SceneSource::Population;
+            return true;
+        case Kind::SceneMesh:
+            ui::chooseSceneMesh(state.sceneView, action.text);
+            return true;
         case Kind::WaitScene: {
+            const ui::SceneView& view = state.sceneView;
             if (!waitingSince_) waitingSince_ = std::chrono::steady_clock::now();
-            if (state.sceneView.image && framesWaited_++ >= 1) return true;
+            if (!view.meshError.empty()) {
+                effects.error = "script line " + std::to_string(action.line) +
+                                ": wait-scene: " + view.meshError;
+                return false;
+            }
+            // Not in the first frame: it asks for the render of settings changed just before.
+            const bool shown = view.image && !view.rendering && !view.preview;
+            if (framesWaited_++ >= 1 && shown) return true;
             if (std::chrono::steady_clock::now() - *waitingSince_ > kEvolutionTimeout)
                 effects.error = "script line " + std::to_string(action.line) +
-                                ": wait-scene: no scene render in 120 s (" +
-                                state.sceneView.status + ")";
+                                ": wait-scene: no scene render in 120 s (" + view.status + ")";
             return false;
         }
         case Kind::Undo:

@@ -360,6 +360,77 @@ TEST(EditorSceneWindow, ShowsTheCandidatesAsInstancesOfAMesh) {
     fs::remove_all(dir);
 }
 
+// The Scene window shows what the user chooses: a mesh file instead of the built-ins, the
+// population, then the kept bin; the mesh is remembered for the next session.
+TEST(EditorSceneWindow, ShowsAMeshFileWithThePopulationThenTheKeptBin) {
+    const fs::path dir = freshDirectory("scene_choice");
+    fs::create_directories(dir / "config");
+    // A tetrahedron, counter-clockwise seen from outside.
+    std::ofstream(dir / "tetra.obj") << "v 1 1 1\nv -1 -1 1\nv -1 1 -1\nv 1 -1 -1\n"
+                                        "f 1 2 4\nf 1 3 2\nf 1 4 3\nf 2 3 4\n";
+    // The validation metal with two kept materials far from its near-clone population: a
+    // rough base and a satin one (the target's base is as smooth as the family allows).
+    nlohmann::json preset;
+    std::ifstream(fs::path(MATEVO_SOURCE_DIR) / "presets/validation_metal.json") >> preset;
+    const nlohmann::json family = preset["family"];
+    preset["kept"] = {
+        {{"name", "rough"},
+         {"family", family},
+         {"genome", {{"eta1", 1.2}, {"eta2", 0.8}, {"alpha1", 0.03}, {"alpha2", 0.9}}}},
+        {{"name", "satin"},
+         {"family", family},
+         {"genome", {{"eta1", 1.2}, {"eta2", 0.8}, {"alpha1", 0.03}, {"alpha2", 0.4}}}}};
+    std::ofstream(dir / "preset.json") << preset.dump(2);
+    std::ofstream(dir / "script.txt") << "wait 2\n"
+                                         "population 12\n"
+                                         "generations 2\n"
+                                         "wait-evolution\n"
+                                         "scene-mesh "
+                                      << (dir / "tetra.obj").string()
+                                      << "\nscene open\n"
+                                         "wait-scene\n"
+                                         "screenshot "
+                                      << (dir / "population.png").string()
+                                      << "\nscene-show kept\n"
+                                         "wait-scene\n"
+                                         "screenshot "
+                                      << (dir / "kept.png").string() << "\nquit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+        "/matevo' edit '" + (dir / "preset.json").string() + "' --validate --size " +
+        std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --script '" +
+        (dir / "script.txt").string() + "' --frames 100000");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    auto population = readImage(dir / "population.png");
+    ASSERT_TRUE(population.ok()) << population.error().message;
+    auto kept = readImage(dir / "kept.png");
+    ASSERT_TRUE(kept.ok()) << kept.error().message;
+    const Screenshot populationShot(*population), keptShot(*kept);
+    // The window's image area, as in the test above: 24 tetrahedra, each a blob of its own.
+    const PixelRect image{50, 140, 790, 550};
+    EXPECT_GE(populationShot.litBlobs(image, 30, 170).size(), 12u) << "not a blank picture";
+    EXPECT_GE(keptShot.litBlobs(image, 30, 170).size(), 12u) << "not a blank picture";
+    // Other materials on the same instances: their highlights differ (the same materials
+    // would give the same pixels; the clear coat's reflection is alike in both).
+    int differing = 0;
+    for (int y = image.y0; y < image.y1; ++y)
+        for (int x = image.x0; x < image.x1; ++x)
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(int(populationShot.pixel(x, y)[c]) - int(keptShot.pixel(x, y)[c])) >
+                    20) {
+                    ++differing;
+                    break;
+                }
+    EXPECT_GT(differing, (image.x1 - image.x0) * (image.y1 - image.y0) / 50)
+        << "the kept bin looks like the population";
+
+    std::ifstream ini(dir / "config/matevo/imgui.ini");
+    const std::string settings((std::istreambuf_iterator<char>(ini)), {});
+    EXPECT_NE(settings.find("scene_mesh=" + (dir / "tetra.obj").string()), std::string::npos)
+        << settings;
+    fs::remove_all(dir);
+}
+
 // A frame redraws only the windows whose draw lists changed since the swapchain image's picture
 // (and none when nothing changed): after a session of such frames, the picture must equal a
 // whole redraw of the same state. (The status bar differs: it names the first screenshot.)
