@@ -8,7 +8,7 @@ namespace matevo::cli {
 RenderGenomes makeExperimentRenderer(const PresetChoice& choice, std::optional<int> imageSize,
                                      const gpu::RendererRequest& rendererRequest) {
     auto textures = loadSceneTextures(choice.preset, choice.file);
-    if (!textures) throw UsageError(textures.error().message);
+    if (!textures) throw CommandFailure(textures.error());
     const Preset& preset = choice.preset;
     std::shared_ptr<PopulationRenderer> renderer =
         createCommandRenderer(rendererRequest, *textures);

@@ -8,6 +8,7 @@
 
 #include "EditorState.h"
 #include "Widgets.h"
+#include "scene/LightingChoice.h"
 
 namespace matevo::ui {
 namespace {
@@ -21,7 +22,9 @@ void drawControls(SceneViewControls& controls) {
     ImGui::SameLine();
     const char* layouts[] = {"grid", "crowd"};
     ImGui::Combo("layout", &controls.layout, layouts, IM_ARRAYSIZE(layouts));
-    ImGui::Combo("lighting", &controls.lighting, kSceneLightings, IM_ARRAYSIZE(kSceneLightings));
+    const char* lightings[kLightings.size()];
+    for (std::size_t i = 0; i < kLightings.size(); ++i) lightings[i] = kLightings[i].label.data();
+    ImGui::Combo("lighting", &controls.lighting, lightings, int(kLightings.size()));
     hoverHint("paper: the single light; ambient: plus a uniform environment; studio: plus the "
               "generated studio environment (image-based lighting)");
     ImGui::SameLine();

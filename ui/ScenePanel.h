@@ -20,7 +20,7 @@ struct SceneViewControls {
     int mesh = 1;        // kSceneMeshes: sphere, shaderball, knot
     int instances = 24;
     int layout = 0;      // grid, crowd
-    int lighting = 2;    // kSceneLightings: paper, ambient, studio
+    int lighting = 2;    // in kLightings (scene/LightingChoice.h): paper, ambient, studio
     float exposure = 0.0f;  // stops, before the ACES tone map
     float yawDegrees = 0.0f;
     float pitchDegrees = 25.0f;
@@ -32,7 +32,6 @@ struct SceneViewControls {
 };
 
 inline constexpr const char* kSceneMeshes[] = {"sphere", "shaderball", "knot"};
-inline constexpr const char* kSceneLightings[] = {"paper", "ambient", "studio"};
 
 struct SceneView {
     bool open = false;

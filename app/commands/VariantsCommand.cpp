@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ChoiceHelp.h"
 #include "Messages.h"
 #include "OutputNeeds.h"
 #include "PresetOption.h"
@@ -33,8 +34,8 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
     "                       [--size N] [--fitness-size N] [--max-evaluations N] [--hue]\n"
-    "                       [--backend gpu|cpu [--no-fallback]] [--out DIR] [--force]\n"
-    "                       [--heatmap de00|flip]\n"
+    "                       [--backend {backends} [--no-fallback]] [--out DIR] [--force]\n"
+    "                       [--heatmap {image-metrics}]\n"
     "                       [--json] [--block B [--shard I/K] [--resume]]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
     "whose renders lie LO to HI mean CIEDE2000 from the target's and at least D from each other.\n"
@@ -104,7 +105,7 @@ std::optional<ResumableBlocks> resumableBlocks(const std::string& folder, const 
         return std::nullopt;
     auto kept = readResumableBlocks(folder, header, shard);
     if (!kept) {
-        if (insist) throw UsageError("--resume: " + kept.error().message);
+        if (insist) throw CommandFailure(withContext(kept.error(), "--resume"));
         return std::nullopt;
     }
     if (kept->missing.empty() && !insist) return std::nullopt;
@@ -150,7 +151,7 @@ FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
     auto found = findVariants({job.preset.target, job.preset.family, job.preset.baseKappa}, request,
                               job.settings, job.fitnessRender, job.outputRender, hooks);
     printProgress("");
-    if (!found) throw std::runtime_error(found.error().message);
+    if (!found) throw CommandFailure(found.error());
     const VariantSearchProgress& progress = found->progress;
     return {std::move(found->set), VariantRun{request,
                                               job.size,
@@ -165,7 +166,7 @@ FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
 void commit(std::optional<OutputFolder>& output) {
     if (!output) return;
     if (auto committed = output->commit(); !committed)
-        throw UsageError("--out: " + committed.error().message);
+        throw CommandFailure(withContext(committed.error(), "--out"));
 }
 
 // The exit: stopped by `signal` (0: none), request not met (3), or met.
@@ -206,7 +207,7 @@ int runOneSet(const VariantsJob& job) {
         if (auto written = writeVariantFiles(job.output->staging(), job.target, found.set, report,
                                              *job.font, job.heatmapMetric);
             !written)
-            throw UsageError("--out: " + job.output->userFacing(written.error().message));
+            throw CommandFailure(withContext(job.output->userFacing(written.error()), "--out"));
         commit(job.output);
     }
     if (job.asJson) std::printf("%s\n", report.dump(2).c_str());
@@ -217,7 +218,7 @@ int runOneSet(const VariantsJob& job) {
 void writeReport(const OutputFolder& output, const nlohmann::ordered_json& report) {
     if (auto written = writeFileAtomically(output.staging() / "report.json", report.dump(2) + "\n");
         !written)
-        throw UsageError("--out: " + output.userFacing(written.error().message));
+        throw CommandFailure(withContext(output.userFacing(written.error()), "--out"));
 }
 
 // The set in blocks (VariantBlocks.h): `blocks` are the ones this process is to deliver, all of
@@ -230,12 +231,12 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
     for (const auto& entry : parts.blocks) kept.push_back(entry.at("index").get<int>());
     // Rendered here, not taken from a block: a share may have no block at all.
     auto target = job.outputRender(std::span(&job.preset.target, 1));
-    if (!target) throw std::runtime_error(target.error().message);
+    if (!target) throw CommandFailure(target.error());
     std::optional<StepwiseOutput> steps;
     if (job.output) {
         if (auto written = writeImage(target->front(), job.output->staging() / "target.png");
             !written)
-            throw UsageError("--out: " + job.output->userFacing(written.error().message));
+            throw CommandFailure(withContext(job.output->userFacing(written.error()), "--out"));
         steps.emplace(job.output);
     }
     for (const int block : blocks) {
@@ -252,7 +253,7 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
             if (auto written = writeVariantBlock(job.output->staging(), job.target, found.set, plan,
                                                  block, *job.font, job.heatmapMetric);
                 !written)
-                throw UsageError("--out: " + job.output->userFacing(written.error().message));
+                throw CommandFailure(withContext(job.output->userFacing(written.error()), "--out"));
             writeReport(*job.output, assembleBlockReport(parts, shard));
             steps->step();
         }
@@ -272,7 +273,7 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
 
 int runVariants(CommandLine& args) {
     if (args.wantsHelp()) {
-        std::fputs(kHelp, stdout);
+        std::fputs(withChoiceNames(kHelp).c_str(), stdout);
         return 0;
     }
     const auto started = std::chrono::steady_clock::now();
@@ -303,10 +304,8 @@ int runVariants(CommandLine& args) {
     const gpu::RendererRequest rendererRequest = backendOptions(args, "matevo variants");
     if (args.flag("--hue")) request.kappaGenes = KappaGenes::On;
     const auto outDir = args.option("--out");
-    const std::string heatmapName = args.option("--heatmap").value_or("de00");
-    const auto heatmapMetric = parseImageMetric(heatmapName);
-    if (!heatmapMetric)
-        throw UsageError("--heatmap: expected de00 or flip, got '" + heatmapName + "'");
+    const ImageMetric heatmapMetric = parseChoiceOption(
+        kImageMetrics, args.option("--heatmap").value_or("de00"), "--heatmap", "metric");
     args.onlyWith("--heatmap", "--out");
     const bool replaceOutput = args.flag("--force");
     const bool asJson = args.flag("--json");
@@ -352,7 +351,7 @@ int runVariants(CommandLine& args) {
 
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);
-    if (!textures) throw UsageError(textures.error().message);
+    if (!textures) throw CommandFailure(textures.error());
     // One renderer for the search and the check, so tables and textures are uploaded once.
     const std::shared_ptr<PopulationRenderer> renderer =
         createCommandRenderer(rendererRequest, *textures);
@@ -381,7 +380,7 @@ int runVariants(CommandLine& args) {
                           renderAt(size),
                           output,
                           font,
-                          *heatmapMetric,
+                          heatmapMetric,
                           asJson,
                           started,
                           parts.header["made_by"]};

@@ -156,7 +156,7 @@ void CandidateRenderCache::evictBeyondCapacity() {
 }
 
 Result<std::vector<CandidateTile>> CandidateRenderCache::tiles(std::span<const Genome> genomes) {
-    if (!preset_) return Error{"no preset prepared"};
+    if (!preset_) return internalError("no preset prepared");
     ++useCounter_;
     std::vector<Genome> missing;
     for (const Genome& genome : genomes) {
@@ -166,7 +166,8 @@ Result<std::vector<CandidateTile>> CandidateRenderCache::tiles(std::span<const G
             missing.push_back(genome);
     }
     for (std::size_t first = 0; first < missing.size(); first += kTilesPerSubmission) {
-        if (request_.cancelled && request_.cancelled()) return Error{"rendering cancelled"};
+        if (request_.cancelled && request_.cancelled())
+            return cancelledError("rendering cancelled");
         const std::size_t count = std::min(kTilesPerSubmission, missing.size() - first);
         if (Status drawn = draw(std::span(missing).subspan(first, count)); !drawn)
             return drawn.error();

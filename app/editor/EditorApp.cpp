@@ -554,7 +554,7 @@ void EditorApp::handleVariantsActions(const ui::VariantsActions& actions) {
                                        shown.preset.name),
                     set, variantReport(shown.preset, shown.run, set), *font);
                 !written)
-                return Error{output->userFacing(written.error().message)};
+                return Error(output->userFacing(written.error().message), written.error().kind);
             return output->commit();
         };
         const Status saved = saveSet();

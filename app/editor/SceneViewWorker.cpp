@@ -90,14 +90,14 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const ui::SceneViewControls& controls = job.controls;
-    if (job.materials.empty()) return Error{"no candidates yet"};
+    if (job.materials.empty()) return badInput("no candidates yet");
     if (!renderer) {
         auto runner = gpu::CommandRunner::create(device);
         if (!runner) return runner.error();
         renderer.reset(new SceneViewRenderer{std::move(runner).value(), {}, {}, {}, 0});
     }
     const std::string meshName = ui::kSceneMeshes[controls.mesh];
-    const std::string lighting = ui::kSceneLightings[controls.lighting];
+    const std::string lighting(kLightings[std::size_t(controls.lighting)].name);
     const std::string key = meshName + "|" + lighting + "|" + job.presetFile.string() + "|" +
                             job.preset.roughnessTexture + "|" + job.preset.baseColorTexture;
     if (!renderer->scene || renderer->key != key) {

@@ -142,7 +142,7 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     const MaterialInstance& target, std::span<const MaterialInstance> candidates,
     const SceneSettings& scene, int size, const EvaluationOptions& options,
     std::span<const DisplayTile* const> tiles) {
-    if (size <= 0) return Error{"GPU render: image size must be positive"};
+    if (size <= 0) return internalError("GPU render: image size must be positive");
     const TargetKey key{target, scene, size};
     if (targetKey_ != key)
         if (auto rendered = renderTarget(key); !rendered) return rendered.error();
@@ -151,7 +151,7 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     if (candidates.empty()) return evaluation;
 
     if (!tiles.empty() && tiles.size() != candidates.size())
-        return Error{"GPU render: one tile per candidate expected"};
+        return internalError("GPU render: one tile per candidate expected");
     const ImageBatchShape shape{size, size, uint32_t(candidates.size())};
     const bool flip = options.wantsFlip();
     if (auto ready = ensureBuffers(shape, flip); !ready) return ready.error();
@@ -221,7 +221,7 @@ Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
 
 Result<std::vector<Image>> GpuPopulationRenderer::render(
     std::span<const MaterialInstance> materials, const SceneSettings& scene, int size) {
-    if (size <= 0) return Error{"GPU render: image size must be positive"};
+    if (size <= 0) return internalError("GPU render: image size must be positive");
     return renderer_.render(runner_, materials, scene, size);
 }
 

@@ -27,8 +27,8 @@ Result<std::unique_ptr<PopulationRenderer>> tryCreatePopulationRenderer(
         auto renderer = createGpuRenderer(request, textures);
         if (renderer) return std::unique_ptr<PopulationRenderer>(std::move(renderer).value());
         if (request.noFallback)
-            return Error{"no usable Vulkan device (" + renderer.error().message +
-                         "), and --no-fallback forbids falling back to the CPU"};
+            return environmentError("no usable Vulkan device (" + renderer.error().message +
+                         "), and --no-fallback forbids falling back to the CPU");
         std::fprintf(stderr, "%s: no usable Vulkan device (%s); rendering on the CPU instead\n",
                      request.who.c_str(), renderer.error().message.c_str());
     }

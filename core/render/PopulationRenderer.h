@@ -5,6 +5,7 @@
 // pictures to within the cross-check of tests/gpu: CpuPopulationRenderer (the reference) and
 // gpu::GpuPopulationRenderer. Callers get one from gpu::createPopulationRenderer, the only place
 // that chooses between them. An instance is used from one thread at a time.
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/ImageMetric.h"
+#include "common/Choice.h"
 #include "common/Image.h"
 #include "common/Result.h"
 #include "material/MaterialInstance.h"
@@ -22,6 +24,11 @@
 namespace matevo {
 
 enum class RenderBackend { Gpu, Cpu };
+// The back ends by name: --backend, reports' "made_by".
+inline constexpr std::array<Choice<RenderBackend>, 2> kRenderBackends{{
+    {RenderBackend::Gpu, "gpu", "GPU"},
+    {RenderBackend::Cpu, "cpu", "CPU"},
+}};
 
 struct PopulationEvaluation {
     Image target;

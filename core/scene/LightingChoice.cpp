@@ -7,8 +7,9 @@ namespace matevo {
 Status applyLightingChoice(const std::string& choice, SceneSettings& scene,
                            SceneTextures& textures, const PrefilterSettings& prefilter) {
     textures.environment = {};
-    if (choice == "paper" || choice == "ambient") {
-        scene.mode = *parseSceneMode(choice);
+    const SceneMode mode = parseChoice(kLightings, choice).value_or(SceneMode::Environment);
+    if (mode != SceneMode::Environment) {
+        scene.mode = mode;
         return Ok{};
     }
     auto environment = loadEnvironment(choice, prefilter);

@@ -70,7 +70,8 @@ Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const Variant
     VariantSet set;
     auto targetImages = outputRender(std::span(&target, 1));
     if (!targetImages) return targetImages.error();
-    if (targetImages->size() != 1) return Error{"the renderer returned no image for the target"};
+    if (targetImages->size() != 1)
+        return internalError("the renderer returned no image for the target");
     set.target = std::move(targetImages->front());
     const LabImage targetLab = toLabImage(set.target);
 
@@ -87,8 +88,8 @@ Result<VariantSet> chooseVariantSet(const VariantArchive& archive, const Variant
         auto images = outputRender(genomes);
         if (!images) return images.error();
         if (images->size() != genomes.size())
-            return Error{"the renderer returned " + std::to_string(images->size()) +
-                         " images for " + std::to_string(genomes.size()) + " genomes"};
+            return internalError("the renderer returned " + std::to_string(images->size()) +
+                                 " images for " + std::to_string(genomes.size()) + " genomes");
         set.outputRenders += genomes.size();
         for (std::size_t k = 0; k < genomes.size() && set.variants.size() < wanted; ++k) {
             const ArchivedVariant& member = archive.members()[order[next + k]];
