@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <string>
 
 #include "support/RunCommand.h"
@@ -68,7 +69,7 @@ const FailurePath kFailurePaths[] = {
      "--no-fallback",
      1, "Vulkan", true},
 
-    {"variants", "unknown_option", "--bogus", 2, "'--bogus'"},
+    {"variants", "unknown_option", "--count 2 --band 1,2 --bogus", 2, "'--bogus'"},
     {"variants", "bad_value", "--count x --band 1,2", 2, "--count"},
     {"variants", "missing_input", "--preset /nonexistent/matevo/p.json --count 2 --band 1,2", 2,
      "p.json"},
@@ -92,8 +93,8 @@ const FailurePath kFailurePaths[] = {
     {"export", "bad_value", "--format obj --out {dir}/x.obj", 2, "--format"},
     {"export", "missing_input", "--genome /nonexistent/matevo/g.json --out {dir}/x.gltf", 2,
      "g.json"},
-    {"export", "unwritable_output", "--backend cpu --fit-size 8 --out {file}/x.gltf", 2, "--out"},
-    {"export", "no_vulkan", "--backend gpu --no-fallback --fit-size 8 --out {dir}/x.gltf", 1,
+    {"export", "unwritable_output", "--backend cpu --fit-size 16 --out {file}/x.gltf", 2, "--out"},
+    {"export", "no_vulkan", "--backend gpu --no-fallback --fit-size 16 --out {dir}/x.gltf", 1,
      "Vulkan", true},
 
     {"scene", "unknown_option", "--bogus --out {dir}/x.png", 2, "'--bogus'"},
@@ -102,6 +103,10 @@ const FailurePath kFailurePaths[] = {
     {"scene", "unwritable_output", "--size 16x16 --out {file}/x.png", 2, "--out"},
     {"scene", "no_vulkan", "--size 16x16 --out {dir}/x.png", 1, "Vulkan", true},
 };
+
+void PrintTo(const FailurePath& path, std::ostream* out) {
+    *out << "matevo " << path.command << " " << path.arguments;
+}
 
 std::string replaced(std::string text, const std::string& placeholder, const std::string& by) {
     for (auto at = text.find(placeholder); at != std::string::npos;
@@ -152,8 +157,8 @@ TEST_P(FailurePathsCli, OneLineAndTheDocumentedStatus) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryCommand, FailurePathsCli, ::testing::ValuesIn(kFailurePaths),
-                         [](const ::testing::TestParamInfo<FailurePath>& info) {
-                             return std::string(info.param.command) + "_" + info.param.what;
+                         [](const ::testing::TestParamInfo<FailurePath>& row) {
+                             return std::string(row.param.command) + "_" + row.param.what;
                          });
 
 // Every command `matevo --help` lists has rows above.
