@@ -147,6 +147,13 @@ std::vector<double> parseNumberList(const std::string& text, const std::string& 
     return values;
 }
 
+std::string unknownChoice(const std::string& option, const std::string& what,
+                          const std::string& text, const std::vector<std::string>& names) {
+    const std::string unknown = option + ": unknown " + what + " '" + shortText(text) + "'";
+    if (closestWord(text, names)) return unknown + didYouMean(text, names);
+    return unknown + " (expected " + inWords(names) + ")";
+}
+
 DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what) {
     const auto values = parseNumberList(text, what);
     if (values.size() != 2)
@@ -167,7 +174,7 @@ std::string imageOutputPath(CommandLine& args) {
 
 OutputFolder claimOutputFolder(const std::filesystem::path& folder, bool replace) {
     auto claimed = OutputFolder::claim(folder, replace);
-    if (!claimed) throw UsageError("--out: " + claimed.error().message);
+    if (!claimed) throw CommandFailure(withContext(claimed.error(), "--out"));
     return std::move(*claimed);
 }
 

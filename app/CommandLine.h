@@ -2,8 +2,10 @@
 // The command-line reader every subcommand uses. A command asks for its options by name
 // (flag, option, ...), then for its positionals, then calls finish(): whatever is left is an
 // unknown option (answered with the closest option it asked for) or a stray argument.
-// Bad usage and bad input throw UsageError; main() prints it in the one message format
-// ("matevo COMMAND: TEXT", Messages.h) and exits 2. TEXT does not repeat the command.
+// Bad usage and bad input throw UsageError; a failure born elsewhere is thrown as the
+// CommandFailure of its Error, kind kept. main() prints either in the one message format
+// ("matevo COMMAND: TEXT", Messages.h) and exits with the status of its kind. TEXT does not
+// repeat the command.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -12,22 +14,26 @@
 #include <string>
 #include <vector>
 
+#include "common/Choice.h"
+#include "common/Result.h"
 #include "common/ShortText.h"
 #include "io/OutputFolder.h"
 #include "variants/DeltaEBand.h"
 
 namespace matevo::cli {
 
-// The message is kept visible (common/ShortText.h): what() is a C string, which a NUL in a quoted
-// value would cut.
-struct UsageError : std::runtime_error {
-    explicit UsageError(const std::string& message) : std::runtime_error(visibleText(message)) {}
+// A failure that ends the command, with the kind it was born with (common/Result.h), which
+// decides the exit status. The message is kept visible (common/ShortText.h): what() is a C
+// string, which a NUL in a quoted value would cut.
+struct CommandFailure : std::runtime_error {
+    explicit CommandFailure(const Error& error)
+        : std::runtime_error(visibleText(error.message)), kind(error.kind) {}
+    ErrorKind kind;
 };
 
-// A failure of the machine, not of the user's input nor a bug: e.g. no usable Vulkan device
-// where --no-fallback requires one. main() prints it as it is and exits 1.
-struct MachineFailure : std::runtime_error {
-    using std::runtime_error::runtime_error;
+// Bad usage or input that the command line itself finds: a mistyped option, a bad value.
+struct UsageError : CommandFailure {
+    explicit UsageError(const std::string& message) : CommandFailure(badInput(message)) {}
 };
 
 class CommandLine {
@@ -72,6 +78,20 @@ double parseNumber(const std::string& text, const std::string& what);
 // An amount of memory such as "512M" or "16G" (common/ByteSize.h).
 std::uint64_t parseByteSizeOption(const std::string& text, const std::string& what);
 std::vector<double> parseNumberList(const std::string& text, const std::string& what);
+// "OPTION: unknown WHAT 'TEXT'" and the closest of `names` when one is near (a typo), else
+// the list of them in words ("(expected a, b or c)").
+std::string unknownChoice(const std::string& option, const std::string& what,
+                          const std::string& text, const std::vector<std::string>& names);
+
+// The value `text` names in a choice table (common/Choice.h); a UsageError (unknownChoice)
+// otherwise. `what` is the kind of thing chosen: "metric", "format".
+template <typename Table>
+auto parseChoiceOption(const Table& table, const std::string& text, const std::string& option,
+                       const std::string& what) {
+    if (auto value = parseChoice(table, text)) return *value;
+    throw UsageError(unknownChoice(option, what, text, choiceNames(table)));
+}
+
 // "LO,HI": a band of mean ΔE00 (0 <= LO <= HI).
 DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what);
 

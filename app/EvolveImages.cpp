@@ -15,7 +15,7 @@ namespace {
 
 void writeOrThrow(const Image& image, const std::filesystem::path& file) {
     auto status = writeImage(image, file);
-    if (!status) throw UsageError(status.error().message);
+    if (!status) throw CommandFailure(status.error());
 }
 
 std::string rankedName(const char* prefix, std::size_t rank, const std::string& extension) {
@@ -67,7 +67,7 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
         for (std::size_t i = first; i < first + count; ++i)
             candidates.push_back(materialOf(ranked[i].genome, preset.family, preset.baseKappa));
         auto evaluation = renderer->evaluate(target, candidates, preset.scene, size, options);
-        if (!evaluation) throw std::runtime_error(evaluation.error().message);
+        if (!evaluation) throw CommandFailure(evaluation.error());
         if (first == 0) {
             writeOrThrow(evaluation->target, outDir / ("target" + extension));
             storedTarget = asStored(evaluation->target);
@@ -80,12 +80,12 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
             // is then the one `compare --heatmap` draws (with --metric flip for ꟻLIP).
             const Image storedCandidate = asStored(evaluation->candidates[i]);
             auto map = compareImages(storedTarget, storedCandidate);
-            if (!map) throw std::runtime_error(map.error().message);
+            if (!map) throw CommandFailure(map.error());
             CandidateImageStats entry{map->stats, std::nullopt};
             Image heatmap;
             if (heatmapMetric == ImageMetric::Flip) {
                 auto flip = computeFlip(storedTarget, storedCandidate);
-                if (!flip) throw std::runtime_error(flip.error().message);
+                if (!flip) throw CommandFailure(flip.error());
                 entry.flip = flip->stats;
                 heatmap = flipHeatmapImage(*flip);
             } else {

@@ -25,7 +25,7 @@ MaterialFile MaterialSource::load(const std::filesystem::path& file) const {
     // own) is read again in the preset's context.
     auto loaded = loadMaterial(file, MaterialFile{});
     if (!loaded || loaded->fromContext) loaded = loadMaterial(file, presetMaterial());
-    if (!loaded) throw UsageError(loaded.error().message);
+    if (!loaded) throw CommandFailure(loaded.error());
     if (presetOption_ && !loaded->fromContext)
         throw UsageError("--preset: not used: " + file.string() +
                          " names its own family, kappa, textures and scene");

@@ -57,4 +57,14 @@ bool quiet() { return quietOutput; }
 
 void installStatusSinks() { matevo::setStatusSinks(printNotice, printProgress); }
 
+ExitStatus exitStatusOf(ErrorKind kind) {
+    switch (kind) {
+        case ErrorKind::BadInput: return ExitStatus::BadUsage;
+        case ErrorKind::Environment:
+        case ErrorKind::Internal: return ExitStatus::InternalFailure;
+        case ErrorKind::Cancelled: return ExitStatus::Interrupted;
+    }
+    return ExitStatus::InternalFailure;
+}
+
 }  // namespace matevo::cli

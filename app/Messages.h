@@ -6,7 +6,8 @@
 //   matevo COMMAND: warning: TEXT    something the user should know; the command goes on
 //
 // TEXT is one line and names the file, field or option at fault. Commands never print the
-// prefix themselves: they throw UsageError("--out: ...") or call these functions.
+// prefix themselves: they throw UsageError("--out: ...") or CommandFailure(error), or call
+// these functions.
 //
 // Notices (what a command is doing, e.g. building tables or resuming) and progress are for the
 // person watching: progress is redrawn in place only when stderr is a terminal (a log gets the
@@ -14,6 +15,8 @@
 // the outcome of a command are always said.
 #include <string>
 #include <string_view>
+
+#include "common/Result.h"
 
 namespace matevo::cli {
 
@@ -24,9 +27,14 @@ enum class ExitStatus : int {
     BadUsage = 2,         // bad usage or input: a mistyped option, a bad file, a missing folder
     AboveThreshold = 3,   // compare --fail-above: the difference is above the threshold
     RequestNotMet = 3,    // variants: the set asked for cannot be made (what was found is kept)
+    Interrupted = 130,    // stopped by SIGINT (128 + 2; SIGTERM's 143 is StopSignals.h's)
 };
 
 inline int exitCode(ExitStatus status) { return int(status); }
+
+// The one mapping from where a failure was born (common/Result.h) to the exit status; main()
+// applies it to every failure a command throws.
+ExitStatus exitStatusOf(ErrorKind kind);
 
 // main() names the command once it is chosen; every later message carries it.
 void setMessageCommand(std::string_view command);

@@ -7,13 +7,13 @@ namespace matevo::cli {
 
 Font requireChartFont() {
     auto font = Font::dejaVuSans();
-    if (!font) throw UsageError(font.error().message);
+    if (!font) throw CommandFailure(font.error());
     return std::move(font).value();
 }
 
 void requireImageEncoder(const std::filesystem::path& file, const std::string& option) {
     if (Status ready = checkImageEncoder(file); !ready)
-        throw UsageError(option + ": " + ready.error().message);
+        throw CommandFailure(withContext(ready.error(), option));
 }
 
 }  // namespace matevo::cli

@@ -10,7 +10,7 @@ namespace matevo::cli {
 std::filesystem::path resolvePreset(const std::string& pathOrName) {
     if (looksLikePresetPath(pathOrName)) return pathOrName;
     auto presets = listPresets();
-    if (!presets) throw UsageError(presets.error().message);
+    if (!presets) throw CommandFailure(presets.error());
     std::vector<std::string> names;
     for (const PresetEntry& entry : *presets) {
         if (entry.name == pathOrName) return entry.file;
@@ -25,14 +25,14 @@ std::filesystem::path resolvePreset(const std::string& pathOrName) {
 
 PresetChoice loadPresetFile(const std::filesystem::path& file) {
     auto loaded = loadPreset(file);
-    if (!loaded) throw UsageError(loaded.error().message);
+    if (!loaded) throw CommandFailure(loaded.error());
     for (const auto& warning : loaded->warnings) printWarning(warning);
     return {std::move(loaded->preset), file};
 }
 
 PresetChoice loadDefaultPreset() {
     auto defaultFile = defaultPresetPath();
-    if (!defaultFile) throw UsageError(defaultFile.error().message);
+    if (!defaultFile) throw CommandFailure(defaultFile.error());
     return loadPresetFile(*defaultFile);
 }
 

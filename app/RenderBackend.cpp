@@ -5,9 +5,7 @@
 namespace matevo::cli {
 
 RenderBackend parseRenderBackend(const std::string& text, const std::string& option) {
-    if (text == "gpu") return RenderBackend::Gpu;
-    if (text == "cpu") return RenderBackend::Cpu;
-    throw UsageError(option + ": expected gpu or cpu, got " + text);
+    return parseChoiceOption(kRenderBackends, text, option, "back end");
 }
 
 gpu::RendererRequest backendOptions(CommandLine& args, const std::string& who) {
@@ -23,7 +21,7 @@ gpu::RendererRequest backendOptions(CommandLine& args, const std::string& who) {
 std::unique_ptr<PopulationRenderer> createCommandRenderer(const gpu::RendererRequest& request,
                                                           const SceneTextures& textures) {
     auto renderer = gpu::tryCreatePopulationRenderer(request, textures);
-    if (!renderer) throw MachineFailure(renderer.error().message);
+    if (!renderer) throw CommandFailure(renderer.error());
     return std::move(renderer).value();
 }
 
@@ -41,7 +39,7 @@ std::unique_ptr<PopulationRenderer> createCommandRenderer(const gpu::RendererReq
 
 nlohmann::ordered_json madeBy(const PopulationRenderer& renderer) {
     return {{"matevo", MATEVO_VERSION},
-            {"backend", renderer.backend() == RenderBackend::Gpu ? "gpu" : "cpu"},
+            {"backend", choiceName(kRenderBackends, renderer.backend())},
             {"device", renderer.name()}};
 }
 

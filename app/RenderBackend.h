@@ -14,7 +14,7 @@ namespace matevo::cli {
 
 class CommandLine;
 
-// Throws UsageError naming the option for anything but "gpu" or "cpu".
+// Throws UsageError naming the option for a name not in kRenderBackends.
 RenderBackend parseRenderBackend(const std::string& text, const std::string& option);
 
 // --backend (default gpu) and --no-fallback (only with the GPU, which it makes strict) of a
@@ -22,7 +22,7 @@ RenderBackend parseRenderBackend(const std::string& text, const std::string& opt
 gpu::RendererRequest backendOptions(CommandLine& args, const std::string& who);
 
 // The renderer `request` asks for; a GPU that --no-fallback requires and that is not usable is
-// a MachineFailure (exit 1).
+// a CommandFailure of kind Environment (exit 1).
 std::unique_ptr<PopulationRenderer> createCommandRenderer(const gpu::RendererRequest& request,
                                                           const SceneTextures& textures);
 // The same for a preset, its textures loaded (gpu::createPresetRenderer); a texture that cannot

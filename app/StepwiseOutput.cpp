@@ -40,7 +40,7 @@ void StepwiseOutput::step() {
     const Clock::time_point started = Clock::now();
     if (started - lastStep_ < 20 * lastStepCost_) return;
     if (auto committed = output_->commit(); !committed)
-        throw UsageError("--out: " + committed.error().message);
+        throw CommandFailure(withContext(committed.error(), "--out"));
     const fs::path folder = output_->target();
     output_.reset();
     output_.emplace(claimOutputFolder(folder, true));

@@ -122,7 +122,7 @@ std::string describeDuration(double seconds) {
 
 void checkWorkEstimate(const WorkEstimate& estimate) {
     if (auto fits = checkMemoryEstimate(estimate.bytes, estimate.what); !fits)
-        throw UsageError(fits.error().message);
+        throw CommandFailure(fits.error());
     if (estimate.bytes >= kLargeBytes || estimate.seconds >= kLargeSeconds)
         printMessage(estimate.what + ": about " + describeBytes(estimate.bytes) +
                      " of memory and " + describeDuration(estimate.seconds) +

@@ -1,6 +1,7 @@
-// matevo: evolve variants of a layered material. Dispatches to one subcommand and maps failures
-// to the documented exit statuses (Messages.h): 0 ok, 1 internal failure, 2 bad usage or input,
-// 3 compare --fail-above exceeded. Every message has the form "matevo COMMAND: TEXT".
+// matevo: evolve variants of a layered material. Dispatches to one subcommand and maps the kind
+// of every failure it throws to the documented exit statuses, once (Messages.h): 0 ok,
+// 1 internal or machine failure, 2 bad usage or input, 3 compare --fail-above exceeded, 130 a
+// stop request. Every message has the form "matevo COMMAND: TEXT".
 #include <csignal>
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -8,6 +9,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <new>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -152,12 +154,14 @@ int main(int argc, char** argv) {
     installStatusSinks();
     try {
         return dispatch(std::vector<std::string>(argv + 1, argv + argc));
-    } catch (const UsageError& error) {
-        printMessage(error.what());
-        return exitCode(ExitStatus::BadUsage);
-    } catch (const MachineFailure& error) {
-        printMessage(error.what());
-        return exitCode(ExitStatus::InternalFailure);
+    } catch (const CommandFailure& failure) {
+        // A bug says so; every other failure's message already names what went wrong.
+        const bool bug = failure.kind == matevo::ErrorKind::Internal;
+        printMessage((bug ? std::string("internal error: ") : std::string()) + failure.what());
+        return exitCode(exitStatusOf(failure.kind));
+    } catch (const std::bad_alloc&) {
+        printMessage("out of memory");
+        return exitCode(exitStatusOf(matevo::ErrorKind::Environment));
     } catch (const std::exception& error) {
         printMessage(std::string("internal error: ") + error.what());
         return exitCode(ExitStatus::InternalFailure);

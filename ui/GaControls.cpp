@@ -28,15 +28,15 @@ void clampAndReport(int& value, int low, int high, const char* name, StatusLog& 
     value = clamped;
 }
 
-// The paper's three genotype distances, then the image-space fitness (beyond the paper).
+// The genotype distances (the paper's three), then the image-space fitness (beyond the paper).
 void drawMetric(DistanceMetric& metric, bool& imageFitness) {
-    constexpr DistanceMetric kMetrics[] = {DistanceMetric::Chebyshev, DistanceMetric::Euclidean,
-                                           DistanceMetric::Manhattan};
-    constexpr const char* kLabels[] = {"Chebyshev", "Euclidean", "Manhattan"};
-    for (int i = 0; i < 3; ++i) {
-        if (i > 0) sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), kLabels[i]));
-        if (ImGui::RadioButton(kLabels[i], !imageFitness && metric == kMetrics[i])) {
-            metric = kMetrics[i];
+    bool first = true;
+    for (const auto& choice : kDistanceMetrics) {
+        const char* label = choice.label.data();  // a literal: ends in a NUL (Choice.h)
+        if (!first) sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), label));
+        first = false;
+        if (ImGui::RadioButton(label, !imageFitness && metric == choice.value)) {
+            metric = choice.value;
             imageFitness = false;
         }
     }

@@ -122,10 +122,12 @@ void drawBandNames(const HeatmapView& heatmap) {
 
 void drawHeatmapControls(HeatmapView& heatmap) {
     int metric = int(heatmap.metric);
-    ImGui::RadioButton("ΔE00", &metric, int(ImageMetric::DeltaE00));
+    ImGui::RadioButton(choiceLabel(kImageMetrics, ImageMetric::DeltaE00).data(), &metric,
+                       int(ImageMetric::DeltaE00));
     hoverHint("Per-pixel CIEDE2000 between target and candidate (the paper's measure).");
     ImGui::SameLine();
-    ImGui::RadioButton("FLIP", &metric, int(ImageMetric::Flip));
+    ImGui::RadioButton(choiceLabel(kImageMetrics, ImageMetric::Flip).data(), &metric,
+                       int(ImageMetric::Flip));
     hoverHint(
         "Per-pixel LDR-FLIP: what a viewer flipping between the two images notices, edges and "
         "texture included; fixed range 0-1.");

@@ -175,7 +175,7 @@ std::optional<ImVec2> drawComparison(EditorState& state, const CandidateView& ca
             drawLabel(drawList, origin, size, "target");
             drawLabel(drawList, second, size, "candidate");
             drawLabel(drawList, third, size,
-                      state.evolution.heatmapMetric == ImageMetric::Flip ? "FLIP" : "ΔE00");
+                      choiceLabel(kImageMetrics, state.evolution.heatmapMetric).data());
             ImGui::Dummy(ImVec2(3.0f * size + 2.0f * kGap, size));
             return pointerOver(third, size,
                                pointerOver(second, size, pointerOver(origin, size, {})));

@@ -59,8 +59,8 @@ Status createParentFolder(const fs::path& file) {
     std::error_code error;
     fs::create_directories(file.parent_path(), error);
     if (error)
-        return Error{"cannot create the folder " + file.parent_path().string() + " (" +
-                     error.message() + ")"};
+        return badInput("cannot create the folder " + file.parent_path().string() + " (" +
+                     error.message() + ")");
     return Ok{};
 }
 

@@ -8,6 +8,7 @@
 
 #include "EditorState.h"
 #include "Widgets.h"
+#include "scene/LightingChoice.h"
 
 namespace matevo::ui {
 namespace {

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ChoiceHelp.h"
 #include "Messages.h"
 #include "color/Colormap.h"
 #include "color/Flip.h"
@@ -18,7 +19,7 @@ namespace matevo::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: matevo compare A B [--metric de00|flip] [--ppd N] [--heatmap OUT.png\n"
+    "usage: matevo compare A B [--metric {image-metrics}] [--ppd N] [--heatmap OUT.png\n"
     "                      [--range MIN,MAX]] [--json] [--fail-above X]\n\n"
     "The difference between images A and B of the same size, pooled over the pixels both\n"
     "images cover (alpha >= 0.5), or over all pixels when neither has alpha. A and B may be\n"
@@ -45,7 +46,7 @@ constexpr const char* kHelp =
     "image, the sizes differ, or no pixel is covered in both images.\n";
 
 ImageFileContents valueOrThrow(Result<ImageFileContents> contents) {
-    if (!contents) throw UsageError(contents.error().message);
+    if (!contents) throw CommandFailure(contents.error());
     return std::move(*contents);
 }
 
@@ -61,8 +62,7 @@ HeatmapSettings parseRange(const std::string& text) {
 
 ImageMetric parseMetric(const std::optional<std::string>& text) {
     if (!text) return ImageMetric::DeltaE00;
-    if (auto metric = parseImageMetric(*text)) return *metric;
-    throw UsageError("--metric: unknown metric '" + *text + "' (expected de00 or flip)");
+    return parseChoiceOption(kImageMetrics, *text, "--metric", "metric");
 }
 
 // The two images, named for the error when they share no covered pixel.
@@ -82,7 +82,7 @@ template <typename MakeHeatmap>
 void writeHeatmap(const MakeHeatmap& makeHeatmap, const std::optional<std::string>& file) {
     if (!file) return;
     auto written = writeImage(makeHeatmap(), *file);
-    if (!written) throw UsageError("--heatmap: " + written.error().message);
+    if (!written) throw CommandFailure(withContext(written.error(), "--heatmap"));
 }
 
 // Prints the figures; returns the pooled mean for --fail-above.
@@ -90,7 +90,7 @@ double reportDeltaE(const Inputs& inputs, const HeatmapSettings& settings,
                     const std::optional<std::string>& heatmapFile, bool asJson) {
     // An image without alpha reads as fully covered, so coverage always comes from alpha.
     auto map = compareImages(inputs.a, inputs.b);
-    if (!map) throw UsageError(map.error().message);
+    if (!map) throw CommandFailure(map.error());
     const DeltaEStats& stats = map->stats;
     if (stats.pixels == 0) throw nothingCovered(inputs);
     writeHeatmap([&] { return heatmapImage(*map, settings); }, heatmapFile);
@@ -111,7 +111,7 @@ double reportDeltaE(const Inputs& inputs, const HeatmapSettings& settings,
 double reportFlip(const Inputs& inputs, const FlipSettings& settings,
                   const std::optional<std::string>& heatmapFile, bool asJson) {
     auto map = computeFlip(inputs.a, inputs.b, true, settings);
-    if (!map) throw UsageError(map.error().message);
+    if (!map) throw CommandFailure(map.error());
     const FlipStats& stats = map->stats;
     if (stats.pixels == 0) throw nothingCovered(inputs);
     writeHeatmap([&] { return flipHeatmapImage(*map); }, heatmapFile);
@@ -138,7 +138,7 @@ double reportFlip(const Inputs& inputs, const FlipSettings& settings,
 
 int runCompare(CommandLine& args) {
     if (args.wantsHelp()) {
-        std::printf("%s", kHelp);
+        std::fputs(withChoiceNames(kHelp).c_str(), stdout);
         return 0;
     }
     const bool asJson = args.flag("--json");

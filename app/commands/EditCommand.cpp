@@ -1,5 +1,6 @@
 #include <cstdio>
 
+#include "ChoiceHelp.h"
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "commands/Commands.h"
@@ -11,7 +12,7 @@ namespace {
 
 constexpr const char* kHelp =
     "usage: matevo [edit] [PRESET] [--script FILE] [--frames N] [--size WxH]\n"
-    "                     [--backend gpu|cpu] [--validate] [--report-timings]\n\n"
+    "                     [--backend {backends}] [--validate] [--report-timings]\n\n"
     "Opens the editor on PRESET, a file or a name from matevo presets (default:\n"
     "validation_metal): the target sphere, a live grid of GA candidates with a CIEDE2000\n"
     "heatmap, the GA controls and per-generation fitness. Needs a display; without one it says\n"
@@ -25,14 +26,14 @@ constexpr const char* kHelp =
     "options:\n"
     "  --script FILE      play scripted actions, one per line: wait N, wait-evolution,\n"
     "                     idle MS, population N, generations N, seed N, metric NAME,\n"
-    "                     heatmap on|off|toggle|de00|flip, select I, scene open|close,\n"
+    "                     heatmap on|off|toggle|{image-metrics}, select I, scene open|close,\n"
     "                     wait-scene, undo, redo, resize W H, check-layout,\n"
     "                     screenshot PATH, redraw, save PATH, variants-hue on|off,\n"
     "                     variants N, wait-variants, discard-variant I, refill-variants,\n"
     "                     save-variants PATH, quit\n"
     "  --frames N         quit after N frames\n"
     "  --size WxH         initial window size (default 1280x800)\n"
-    "  --backend gpu|cpu  where candidate tiles and Compare metrics render (default gpu;\n"
+    "  --backend {backends}  where candidate tiles and Compare metrics render (default gpu;\n"
     "                     the CPU reference renderer when no Vulkan device is usable)\n"
     "  --validate         enable VK_LAYER_KHRONOS_validation; any message makes the exit\n"
     "                     status 1\n"
@@ -42,7 +43,7 @@ constexpr const char* kHelp =
 
 std::string readScript(const std::string& file) {
     auto text = readTextFile(file);
-    if (!text) throw UsageError("--script: " + text.error().message);
+    if (!text) throw CommandFailure(withContext(text.error(), "--script"));
     return std::move(text).value();
 }
 
@@ -50,13 +51,13 @@ std::string readScript(const std::string& file) {
 
 int runEdit(CommandLine& args) {
     if (args.wantsHelp()) {
-        std::printf("%s", kHelp);
+        std::fputs(withChoiceNames(kHelp).c_str(), stdout);
         return 0;
     }
     editor::EditorOptions options;
     if (auto file = args.option("--script")) {
         auto script = editor::parseEditorScript(readScript(*file), *file);
-        if (!script) throw UsageError("--script: " + script.error().message);
+        if (!script) throw CommandFailure(withContext(script.error(), "--script"));
         options.script = std::move(*script);
     }
     if (auto frames = args.integerOption("--frames", 1, 100000000))

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ChoiceHelp.h"
 #include "EvolveImages.h"
 #include "EvolveReport.h"
 #include "Messages.h"
@@ -27,10 +28,10 @@ namespace {
 
 constexpr const char* kHelp =
     "usage: matevo evolve [--preset P] [--population N] [--generations N]\n"
-    "                     [--metric chebyshev|euclidean|manhattan] [--weights w1,...,w12]\n"
+    "                     [--metric {distances}] [--weights w1,...,w12]\n"
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
-    "                     [--size N] [--format png|exr] [--heatmap de00|flip]\n"
-    "                     [--backend gpu|cpu [--no-fallback]] [--force]\n"
+    "                     [--size N] [--format png|exr] [--heatmap {image-metrics}]\n"
+    "                     [--backend {backends} [--no-fallback]] [--force]\n"
     "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N] [--hue]\n"
     "                     [--checkpoint FILE [--checkpoint-every N]] [--resume FILE]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
@@ -82,11 +83,7 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
     if (auto generations = args.integerOption("--generations", 0, kMaxGenerations))
         ga.generations = int(*generations);
     if (auto metric = args.option("--metric")) {
-        auto parsed = parseDistanceMetric(*metric);
-        if (!parsed)
-            throw UsageError("--metric: unknown metric '" + *metric +
-                             "' (expected chebyshev, euclidean or manhattan)");
-        ga.metric = *parsed;
+        ga.metric = parseChoiceOption(kDistanceMetrics, *metric, "--metric", "metric");
     }
     if (auto weights = args.option("--weights")) {
         auto values = parseNumberList(*weights, "--weights");
@@ -112,7 +109,7 @@ GaSettings applyOverrides(CommandLine& args, GaSettings ga) {
 
 void resume(GeneticAlgorithm& ga, const Preset& preset, const std::string& file) {
     auto checkpoint = loadCheckpoint(file);
-    if (!checkpoint) throw UsageError("--resume: " + checkpoint.error().message);
+    if (!checkpoint) throw CommandFailure(withContext(checkpoint.error(), "--resume"));
     if (auto mismatch = checkpointMismatch(*checkpoint, preset.family, preset.target,
                                            preset.baseKappa, preset.ga))
         throw UsageError("--resume: " + file + ": " + *mismatch);
@@ -125,7 +122,7 @@ void resume(GeneticAlgorithm& ga, const Preset& preset, const std::string& file)
 
 int runEvolve(CommandLine& args) {
     if (args.wantsHelp()) {
-        std::fputs(kHelp, stdout);
+        std::fputs(withChoiceNames(kHelp).c_str(), stdout);
         return 0;
     }
     PresetChoice choice = loadPresetOption(args);
@@ -145,10 +142,8 @@ int runEvolve(CommandLine& args) {
     const bool imageFitness = fitnessName != "genotype";
     const ImageMetric fitnessMetric =
         fitnessName == "flip" ? ImageMetric::Flip : ImageMetric::DeltaE00;
-    const std::string heatmapName = args.option("--heatmap").value_or("de00");
-    const auto heatmapMetric = parseImageMetric(heatmapName);
-    if (!heatmapMetric)
-        throw UsageError("--heatmap: expected de00 or flip, got '" + heatmapName + "'");
+    const ImageMetric heatmapMetric = parseChoiceOption(
+        kImageMetrics, args.option("--heatmap").value_or("de00"), "--heatmap", "metric");
     const auto bandText = args.option("--band");
     const auto fitnessSizeOption = args.integerOption("--fitness-size", 8, 1024);
     const bool hue = args.flag("--hue");
@@ -200,7 +195,7 @@ int runEvolve(CommandLine& args) {
             renderGenomesWith(std::move(renderer), preset.family, preset.baseKappa, preset.scene,
                               fitnessSize),
             preset.target, fitnessMetric);
-        if (!cache) throw std::runtime_error(cache.error().message);
+        if (!cache) throw CommandFailure(cache.error());
         fitness.emplace(std::move(cache).value(), band);
     }
     GeneticAlgorithm ga = fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga,
@@ -220,7 +215,7 @@ int runEvolve(CommandLine& args) {
         const GaCheckpoint checkpoint{preset.family, preset.target, preset.baseKappa, preset.ga,
                                       ga.state()};
         if (auto saved = saveCheckpoint(checkpoint, *checkpointFile); !saved)
-            throw UsageError("--checkpoint: " + saved.error().message);
+            throw CommandFailure(withContext(saved.error(), "--checkpoint"));
         savedGeneration = ga.generation();
         lastSave = std::chrono::steady_clock::now();
     };
@@ -239,7 +234,7 @@ int runEvolve(CommandLine& args) {
     }
     saveState();
     printProgress("");
-    if (fitness && fitness->failure()) throw std::runtime_error(fitness->failure()->message);
+    if (fitness && fitness->failure()) throw CommandFailure(*fitness->failure());
 
     const auto ranked = ga.rankedPopulation();
     nlohmann::ordered_json report = evolveReport(preset, choice.file, ga, ranked);
@@ -252,13 +247,13 @@ int runEvolve(CommandLine& args) {
     if (output) {
         try {
             const auto written = writeEvolveImages(choice, ranked, imageSize, rendererRequest,
-                                                   "." + format, *heatmapMetric, output->staging(),
+                                                   "." + format, heatmapMetric, output->staging(),
                                                    stopToken());
             addImageStatistics(report, written.candidates);
             report["candidates_written"] = written.candidates.size();
             renderedBy = written.madeBy;
-        } catch (const UsageError& error) {
-            throw UsageError(output->userFacing(error.what()));
+        } catch (const CommandFailure& failure) {
+            throw CommandFailure(output->userFacing(Error(failure.what(), failure.kind)));
         }
     }
     if (!renderedBy.is_null()) report["made_by"] = renderedBy;
@@ -268,9 +263,9 @@ int runEvolve(CommandLine& args) {
     }
     if (output) {
         auto status = writeFileAtomically(output->staging() / "result.json", report.dump(2) + "\n");
-        if (!status) throw UsageError(output->userFacing(status.error().message));
+        if (!status) throw CommandFailure(output->userFacing(status.error()));
         if (auto committed = output->commit(); !committed)
-            throw UsageError("--out: " + committed.error().message);
+            throw CommandFailure(withContext(committed.error(), "--out"));
     }
     if (asJson)
         std::printf("%s\n", report.dump(2).c_str());

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ChoiceHelp.h"
 #include "ExperimentRenderer.h"
 #include "Messages.h"
 #include "OutputNeeds.h"
@@ -34,7 +35,7 @@ constexpr const char* kHelp =
     "                         [--generations N] [--sweep] [--metric M|all] [--seed S]\n"
     "                         [--runs-per-seed N] [--size N] [--scene paper|ambient]\n"
     "                         [--fitness-size N]\n"
-    "                         [--backend gpu|cpu [--no-fallback]] [--out DIR] [--force]\n\n"
+    "                         [--backend {backends} [--no-fallback]] [--out DIR] [--force]\n\n"
     "The experiment of Bernardi et al. (2020) section 5: for the target material and each\n"
     "distance metric, N GA runs (default 36) at a population and generation count (default 50\n"
     "and 5); the best individual of each run is rendered and scored by its mean CIEDE2000\n"
@@ -79,9 +80,11 @@ const char* const kValidationPresets[] = {"validation_metal.json", "validation_p
 std::vector<ExperimentMetric> parseMetrics(const std::optional<std::string>& text) {
     if (!text || *text == "all") return paperMetrics();
     auto metric = parseExperimentMetric(*text);
-    if (!metric)
-        throw UsageError("--metric: unknown metric '" + *text +
-                         "' (expected chebyshev, euclidean, manhattan, image or all)");
+    if (!metric) {
+        std::vector<std::string> names = choiceNames(kDistanceMetrics);
+        names.insert(names.end(), {std::string(toString(ExperimentMetric::Image)), "all"});
+        throw UsageError(unknownChoice("--metric", "metric", *text, names));
+    }
     return {*metric};
 }
 
@@ -95,7 +98,7 @@ std::vector<PresetChoice> choosePresets(CommandLine& args) {
     if (args.option("--preset"))
         throw UsageError("--preset and --all exclude each other");
     auto folder = findResourceDirectory("presets");
-    if (!folder) throw UsageError(folder.error().message);
+    if (!folder) throw CommandFailure(folder.error());
     std::vector<PresetChoice> presets;
     for (const char* file : kValidationPresets) presets.push_back(loadPresetFile(*folder / file));
     return presets;
@@ -137,10 +140,12 @@ Request parseRequest(CommandLine& args) {
     if (auto seed = args.unsignedOption("--seed")) settings.seed = *seed;
     if (auto size = args.integerOption("--size", 8, 4096)) request.imageSize = int(*size);
     if (auto text = args.option("--scene")) {
+        // The §5 scene has no environment: the modes without one.
         auto mode = parseSceneMode(*text);
         if (!mode || *mode == SceneMode::Environment)
-            throw UsageError("--scene: unknown mode '" + *text +
-                             "' (expected paper or ambient)");
+            throw UsageError(unknownChoice("--scene", "mode", *text,
+                                           {std::string(toString(SceneMode::Paper)),
+                                            std::string(toString(SceneMode::Ambient))}));
         request.sceneMode = *mode;
     }
     // The §5 protocol is defined in its own scene: the option, not the preset, decides.
@@ -198,7 +203,7 @@ std::string sizeLabel(const GaSize& size) {
 
 // A file that cannot be written is the output folder's fault: bad input, exit 2.
 void writeOrThrow(const Status& status) {
-    if (!status) throw UsageError(status.error().message);
+    if (!status) throw CommandFailure(status.error());
 }
 
 // One chart per metric for one preset and size, sharing their axes: SVG, and PNG drawn in the
@@ -267,7 +272,7 @@ int runInto(const Request& request, OutputFolder& output, const Font& font) {
                     target, settings, render,
                     [&](int done, int) { progress.update(finishedWork + done, label); },
                     fitnessRender, stopToken());
-                if (!records) throw std::runtime_error(records.error().message);
+                if (!records) throw CommandFailure(records.error());
                 finishedWork += int(records->size()) * 2;
                 allRecords.insert(allRecords.end(), records->begin(), records->end());
                 writeOrThrow(writeFileAtomically(outDir / "results.csv", resultsCsv(allRecords)));
@@ -305,7 +310,7 @@ int runInto(const Request& request, OutputFolder& output, const Font& font) {
 
 int runExperiment(CommandLine& args) {
     if (args.wantsHelp()) {
-        std::fputs(kHelp, stdout);
+        std::fputs(withChoiceNames(kHelp).c_str(), stdout);
         return 0;
     }
     const Request request = parseRequest(args);
@@ -317,8 +322,8 @@ int runExperiment(CommandLine& args) {
     checkWorkEstimate(estimateWork(request));
     try {
         return runInto(request, output, font);
-    } catch (const UsageError& error) {
-        throw UsageError(output.userFacing(error.what()));
+    } catch (const CommandFailure& failure) {
+        throw CommandFailure(output.userFacing(Error(failure.what(), failure.kind)));
     }
 }
 

@@ -3,12 +3,13 @@
 #include <string>
 #include <vector>
 
+#include "ChoiceHelp.h"
 #include "MaterialOption.h"
+#include "Messages.h"
 #include "ProgressBar.h"
 #include "RenderBackend.h"
-#include "Messages.h"
-#include "commands/Commands.h"
 #include "color/Colormap.h"
+#include "commands/Commands.h"
 #include "export/ExportSet.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "io/ImageFile.h"
@@ -25,9 +26,9 @@ namespace fs = std::filesystem;
 
 constexpr const char* kHelp =
     "usage: matevo export [--genome FILE.json | --variants DIR] [--preset P]\n"
-    "                     [--format gltf|glb|mtlx] --out PATH [--json] [--fit-size N]\n"
+    "                     [--format {formats}] --out PATH [--json] [--fit-size N]\n"
     "                     [--fit-renders N] [--report-size N]\n"
-    "                     [--backend gpu|cpu [--no-fallback]]\n"
+    "                     [--backend {backends} [--no-fallback]]\n"
     "                     [--images DIR] [--arrange spheres|variants|crowd]\n"
     "                     [--mesh FILE|sphere|shaderball|knot] [--instances N] [--seed S]\n\n"
     "Writes materials for engines. glTF cannot express the layered Belcour model, so each\n"
@@ -92,24 +93,22 @@ MaterialFile targetOf(const std::optional<std::string>& variantsFolder,
 // The set's material files, as every command reads a set (io/VariantFolder.h).
 std::vector<fs::path> variantFiles(const fs::path& folder) {
     auto files = variantFolderFiles(folder);
-    if (!files) throw UsageError("--variants: " + files.error().message);
+    if (!files) throw CommandFailure(withContext(files.error(), "--variants"));
     return std::move(files).value();
 }
 
 ExportFormat chooseFormat(const std::optional<std::string>& option, const fs::path& out) {
     if (option) {
-        const auto format = parseExportFormat(*option);
-        if (!format)
-            throw UsageError("--format: unknown format '" + *option +
-                             "' (expected gltf, glb or mtlx)");
-        if (out.extension() != fileExtension(*format))
-            throw UsageError("--out: " + out.string() + ": a " + *option +
-                             " file ends in " + std::string(fileExtension(*format)));
-        return *format;
+        const ExportFormat format =
+            parseChoiceOption(kExportFormats, *option, "--format", "format");
+        if (out.extension() != fileExtension(format))
+            throw UsageError("--out: " + out.string() + ": a " + *option + " file ends in " +
+                             fileExtension(format));
+        return format;
     }
     if (const auto format = exportFormatOfFile(out)) return *format;
-    throw UsageError("--out: " + out.string() +
-                     ": the extension must be .gltf, .glb or .mtlx (or give --format)");
+    throw UsageError("--out: " + out.string() + ": the extension must be " +
+                     exportExtensionsInWords() + " (or give --format)");
 }
 
 std::string fixed(double value, int decimals) {
@@ -170,7 +169,7 @@ void writeImages(const ExportReport& report, const fs::path& folder) {
               std::pair{"_gltf.png", variant.gltfRender},
               std::pair{"_heatmap.png", heatmapImage(variant.deltaE, HeatmapSettings{})}})
             if (auto written = writeImage(image, folder / (stem + suffix)); !written)
-                throw UsageError("--images: " + written.error().message);
+                throw CommandFailure(withContext(written.error(), "--images"));
     }
 }
 
@@ -178,7 +177,7 @@ void writeImages(const ExportReport& report, const fs::path& folder) {
 
 int runExport(CommandLine& args) {
     if (args.wantsHelp()) {
-        std::fputs(kHelp, stdout);
+        std::fputs(withChoiceNames(kHelp).c_str(), stdout);
         return 0;
     }
     const MaterialSource source(args);
@@ -234,7 +233,7 @@ int runExport(CommandLine& args) {
     GltfAsset asset{arrangement, {}, {}};
     if (arrangement != GltfArrangement::Spheres) {
         auto mesh = loadMesh(meshName);
-        if (!mesh) throw UsageError("--mesh: " + mesh.error().message);
+        if (!mesh) throw CommandFailure(withContext(mesh.error(), "--mesh"));
         asset.mesh = std::move(*mesh);
     }
     if (arrangement == GltfArrangement::Instances)
@@ -244,7 +243,7 @@ int runExport(CommandLine& args) {
     auto report = exportMaterials(
         materials, *renderer, format, *out, settings,
         [&](std::size_t done, std::size_t) { progress.update(int(done), "fitting"); }, asset);
-    if (!report) throw UsageError(report.error().message);
+    if (!report) throw CommandFailure(report.error());
     if (imageFolder) writeImages(*report, *imageFolder);
     warnPastGoal(*report);
     if (asJson)

@@ -43,9 +43,9 @@ int runMerge(CommandLine& args) {
 
     OutputFolder output = claimOutputFolder(*outDir, replaceOutput);
     auto report = mergeShards(shares, output.staging());
-    if (!report) throw UsageError(output.userFacing(report.error().message));
+    if (!report) throw CommandFailure(output.userFacing(report.error()));
     if (auto committed = output.commit(); !committed)
-        throw UsageError("--out: " + committed.error().message);
+        throw CommandFailure(withContext(committed.error(), "--out"));
 
     if (asJson) std::printf("%s\n", report->dump(2).c_str());
     const std::string summary = (*report)["summary"].get<std::string>();

@@ -21,7 +21,7 @@ int runPresets(CommandLine& args) {
     }
     args.finish();
     auto presets = listPresets();
-    if (!presets) throw UsageError(presets.error().message);
+    if (!presets) throw CommandFailure(presets.error());
     for (const PresetEntry& entry : *presets) {
         // A preset that does not load is listed with its error rather than hidden.
         auto loaded = loadPreset(entry.file);

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "ChoiceHelp.h"
 #include "Messages.h"
 #include "PresetOption.h"
 #include "StopSignals.h"
@@ -24,7 +25,7 @@ namespace {
 
 constexpr const char* kHelp =
     "usage: matevo scene [--preset P] [--mesh FILE|sphere|shaderball|knot] [--variants DIR]\n"
-    "                    [--instances N] [--layout grid|crowd] [--env FILE|studio|ambient|paper]\n"
+    "                    [--instances N] [--layout grid|crowd] [--env {lightings}|FILE]\n"
     "                    [--exposure STOPS] [--tonemap aces|none] [--size WxH] [--seed S]\n"
     "                    [--visibility auto|raster|compute] --out FILE.png|FILE.exr\n\n"
     "Renders N instances of a mesh, each wearing one variant, with the Vulkan scene renderer\n"
@@ -58,7 +59,7 @@ std::vector<MaterialInstance> loadMaterials(const std::optional<std::string>& fo
     const MaterialFile target = materialFromPreset(preset, choice.file, preset.target, preset.name);
     if (!folder) return {target.material};
     auto variants = loadVariantFolder(*folder, target);
-    if (!variants) throw UsageError("--variants: " + variants.error().message);
+    if (!variants) throw CommandFailure(withContext(variants.error(), "--variants"));
     std::vector<MaterialInstance> materials;
     for (const VariantFile& variant : *variants) {
         for (const auto& warning : variant.warnings) printWarning(warning);
@@ -76,7 +77,7 @@ std::vector<MaterialInstance> loadMaterials(const std::optional<std::string>& fo
 
 int runScene(CommandLine& args) {
     if (args.wantsHelp()) {
-        std::printf("%s", kHelp);
+        std::fputs(withChoiceNames(kHelp).c_str(), stdout);
         return 0;
     }
     const PresetChoice choice = loadPresetOption(args);
@@ -106,39 +107,35 @@ int runScene(CommandLine& args) {
 
     const std::vector<MaterialInstance> materials = loadMaterials(variantFolder, choice);
     auto mesh = loadMesh(meshName);
-    if (!mesh) throw UsageError("--mesh: " + mesh.error().message);
+    if (!mesh) throw CommandFailure(withContext(mesh.error(), "--mesh"));
     auto textures = loadSceneTextures(choice.preset, choice.file);
-    if (!textures) throw UsageError(textures.error().message);
+    if (!textures) throw CommandFailure(textures.error());
     SceneSettings scene = choice.preset.scene;
     if (auto lit = applyLightingChoice(environmentName, scene, *textures); !lit)
-        throw UsageError("--env: " + lit.error().message);
+        throw CommandFailure(withContext(lit.error(), "--env"));
 
     const std::vector<SceneInstance> instances = layoutInstances(
         int(instanceCount.value_or(std::max<long long>(1, (long long)materials.size()))), *layout,
         int(materials.size()), seed);
     const SceneCamera camera = frameInstances(instances, double(size.width) / size.height);
 
-    auto failed = [](const Error& error) {
-        printMessage(error.message);
-        return exitCode(ExitStatus::InternalFailure);
-    };
     auto context = gpu::GpuContext::createHeadless();
-    if (!context) return failed({"needs a Vulkan device: " + context.error().message});
+    if (!context) throw CommandFailure(withContext(context.error(), "needs a Vulkan device"));
     auto runner = gpu::CommandRunner::create(context->device);
-    if (!runner) return failed(runner.error());
+    if (!runner) throw CommandFailure(runner.error());
     auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
                                                   *textures, *mesh, *visibility);
-    if (!renderer) return failed(renderer.error());
-    if (auto ok = renderer->setMaterials(materials); !ok) return failed(ok.error());
+    if (!renderer) throw CommandFailure(renderer.error());
+    if (auto ok = renderer->setMaterials(materials); !ok) throw CommandFailure(ok.error());
     // Over the environment's backdrop; a PNG is exposed and tone mapped, an EXR stays linear.
     const gpu::SceneDisplay display = lowerCaseExtension(out) == ".png"
                                           ? gpu::SceneDisplay{exposure, *toneMap}
                                           : gpu::SceneDisplay{0.0, ToneMap::None};
     auto image =
         renderer->render(*runner, {size.width, size.height, camera, instances}, scene, display);
-    if (!image) return failed(image.error());
+    if (!image) throw CommandFailure(image.error());
     if (auto written = writeImage(*image, out); !written)
-        throw UsageError("--out: " + written.error().message);
+        throw CommandFailure(withContext(written.error(), "--out"));
     std::printf(
         "%zu instances of %s (%zu triangles each), %zu materials, %s lighting, %s visibility "
         "pass: %s\n",

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ChoiceHelp.h"
 #include "Messages.h"
 #include "OutputNeeds.h"
 #include "PresetOption.h"
@@ -36,8 +37,8 @@ namespace {
 constexpr const char* kHelp =
     "usage: matevo variants [--preset P] --count N --band LO,HI [--min-apart D] [--seed S]\n"
     "                       [--size N] [--fitness-size N] [--max-evaluations N] [--hue]\n"
-    "                       [--backend gpu|cpu [--no-fallback]] [--out DIR] [--force]\n"
-    "                       [--heatmap de00|flip] [--env L1,L2,...] [--deliver gltf]\n"
+    "                       [--backend {backends} [--no-fallback]] [--out DIR] [--force]\n"
+    "                       [--heatmap {image-metrics}] [--env L1,L2,...] [--deliver gltf]\n"
     "                       [--json] [--block B [--shard I/K] [--resume]]\n\n"
     "Finds N variants of the preset's target material (default: presets/validation_metal.json)\n"
     "whose renders lie LO to HI mean CIEDE2000 from the target's and at least D from each other.\n"
@@ -120,7 +121,7 @@ std::optional<ResumableBlocks> resumableBlocks(const std::string& folder, const 
         return std::nullopt;
     auto kept = readResumableBlocks(folder, header, shard);
     if (!kept) {
-        if (insist) throw UsageError("--resume: " + kept.error().message);
+        if (insist) throw CommandFailure(withContext(kept.error(), "--resume"));
         return std::nullopt;
     }
     if (kept->missing.empty() && !insist) return std::nullopt;
@@ -181,7 +182,7 @@ FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
                               },
                               delivery ? &*delivery : nullptr);
     printProgress("");
-    if (!found) throw std::runtime_error(found.error().message);
+    if (!found) throw CommandFailure(found.error());
     const VariantSearchProgress& progress = found->progress;
     return {std::move(found->set),
             VariantRun{request,
@@ -206,19 +207,19 @@ void writeDeliveredGltf(const VariantsJob& job, const FoundSet& found) {
                            found.delivered->variants[i].attempt, variant.image});
     }
     auto fitted = job.gltf->fittedSet(members);
-    if (!fitted) throw std::runtime_error(fitted.error().message);
+    if (!fitted) throw CommandFailure(fitted.error());
     auto sphere = loadMesh("sphere");
-    if (!sphere) throw std::runtime_error(sphere.error().message);
+    if (!sphere) throw CommandFailure(sphere.error());
     const std::filesystem::path folder = deliveredFolder(job.output->staging());
     auto exported =
         writeExport(*fitted, ExportFormat::Glb, folder / "set.glb",
                     GltfAsset{GltfArrangement::MaterialVariants, std::move(*sphere), {}});
-    if (!exported) throw UsageError("--out: " + job.output->userFacing(exported.error().message));
+    if (!exported) throw CommandFailure(withContext(job.output->userFacing(exported.error()), "--out"));
     exported->file = "set.glb";  // beside export.json, wherever the set is moved
     if (auto written =
             writeFileAtomically(folder / "export.json", exportReportJson(*exported).dump(2) + "\n");
         !written)
-        throw UsageError("--out: " + job.output->userFacing(written.error().message));
+        throw CommandFailure(withContext(job.output->userFacing(written.error()), "--out"));
 }
 
 // One line per delivered variant whose glTF look is past the export's goal, as export says it.
@@ -238,7 +239,7 @@ void warnPastGoal(const DeliveredSet& delivered) {
 void commit(std::optional<OutputFolder>& output) {
     if (!output) return;
     if (auto committed = output->commit(); !committed)
-        throw UsageError("--out: " + committed.error().message);
+        throw CommandFailure(withContext(committed.error(), "--out"));
 }
 
 // The exit: stopped by `signal` (0: none), request not met (3), or met.
@@ -279,13 +280,13 @@ int runOneSet(const VariantsJob& job) {
     if (job.output) {
         if (delivered) {
             if (auto written = writeDeliveredLooks(job.output->staging(), *delivered); !written)
-                throw UsageError("--out: " + job.output->userFacing(written.error().message));
+                throw CommandFailure(withContext(job.output->userFacing(written.error()), "--out"));
             writeDeliveredGltf(job, found);
         }
         if (auto saved = saveVariantFolder(*job.output, job.target, found.set, report, *job.font,
                                            job.heatmapMetric);
             !saved)
-            throw UsageError("--out: " + saved.error().message);
+            throw CommandFailure(withContext(saved.error(), "--out"));
     }
     if (delivered) warnPastGoal(*delivered);
     if (job.asJson) std::printf("%s\n", report.dump(2).c_str());
@@ -296,7 +297,7 @@ int runOneSet(const VariantsJob& job) {
 void writeReport(const OutputFolder& output, const nlohmann::ordered_json& report) {
     if (auto written = writeFileAtomically(output.staging() / "report.json", report.dump(2) + "\n");
         !written)
-        throw UsageError("--out: " + output.userFacing(written.error().message));
+        throw CommandFailure(withContext(output.userFacing(written.error()), "--out"));
 }
 
 // The set in blocks (VariantBlocks.h): `blocks` are the ones this process is to deliver, all of
@@ -309,12 +310,12 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
     for (const auto& entry : parts.blocks) kept.push_back(entry.at("index").get<int>());
     // Rendered here, not taken from a block: a share may have no block at all.
     auto target = job.outputRender.perLighting.front()(std::span(&job.preset.target, 1));
-    if (!target) throw std::runtime_error(target.error().message);
+    if (!target) throw CommandFailure(target.error());
     std::optional<StepwiseOutput> steps;
     if (job.output) {
         if (auto written = writeImage(target->front(), job.output->staging() / "target.png");
             !written)
-            throw UsageError("--out: " + job.output->userFacing(written.error().message));
+            throw CommandFailure(withContext(job.output->userFacing(written.error()), "--out"));
         steps.emplace(job.output);
     }
     for (const int block : blocks) {
@@ -331,7 +332,7 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
             if (auto written = writeVariantBlock(job.output->staging(), job.target, found.set, plan,
                                                  block, *job.font, job.heatmapMetric);
                 !written)
-                throw UsageError("--out: " + job.output->userFacing(written.error().message));
+                throw CommandFailure(withContext(job.output->userFacing(written.error()), "--out"));
             writeReport(*job.output, assembleBlockReport(parts, shard));
             steps->step();
         }
@@ -351,7 +352,7 @@ int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vect
 
 int runVariants(CommandLine& args) {
     if (args.wantsHelp()) {
-        std::fputs(kHelp, stdout);
+        std::fputs(withChoiceNames(kHelp).c_str(), stdout);
         return 0;
     }
     const auto started = std::chrono::steady_clock::now();
@@ -382,10 +383,8 @@ int runVariants(CommandLine& args) {
     const gpu::RendererRequest rendererRequest = backendOptions(args, "matevo variants");
     if (args.flag("--hue")) request.kappaGenes = KappaGenes::On;
     const auto outDir = args.option("--out");
-    const std::string heatmapName = args.option("--heatmap").value_or("de00");
-    const auto heatmapMetric = parseImageMetric(heatmapName);
-    if (!heatmapMetric)
-        throw UsageError("--heatmap: expected de00 or flip, got '" + heatmapName + "'");
+    const ImageMetric heatmapMetric = parseChoiceOption(
+        kImageMetrics, args.option("--heatmap").value_or("de00"), "--heatmap", "metric");
     args.onlyWith("--heatmap", "--out");
     if (auto lightings = args.option("--env")) {
         auto names = parseLightingList(*lightings);
@@ -445,7 +444,7 @@ int runVariants(CommandLine& args) {
 
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);
-    if (!textures) throw UsageError(textures.error().message);
+    if (!textures) throw CommandFailure(textures.error());
     // One renderer per lighting's textures for the search and the check, so tables and
     // textures are uploaded once.
     // Renderers after the first ask for the back end it got: a fallback is announced once.
@@ -457,7 +456,7 @@ int runVariants(CommandLine& args) {
             asked.backend = made->backend();
             return made;
         });
-    if (!lit) throw UsageError("--env: " + lit.error().message);
+    if (!lit) throw CommandFailure(withContext(lit.error(), "--env"));
     parts.header["made_by"] = madeBy(*lit->front().renderer);
     if (kept) {
         if (auto conflict = madeByConflict(kept->madeBy, parts.header["made_by"]))
@@ -491,7 +490,7 @@ int runVariants(CommandLine& args) {
                           renderAt(size),
                           output,
                           font,
-                          *heatmapMetric,
+                          heatmapMetric,
                           asJson,
                           started,
                           parts.header["made_by"],

@@ -153,7 +153,7 @@ void CandidateRenderCache::evictBeyondCapacity() {
 
 Result<std::vector<CandidateTile>> CandidateRenderCache::tiles(std::span<const Genome> genomes,
                                                                const CancelToken& cancel) {
-    if (!preset_) return Error{"no preset prepared"};
+    if (!preset_) return internalError("no preset prepared");
     ++useCounter_;
     std::vector<Genome> missing;
     for (const Genome& genome : genomes) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "ScenePanel.h"
+#include "color/ImageMetric.h"
 #include "common/ShortText.h"
 #include "evolve/GaSettings.h"
 #include "render/LightingScenes.h"
@@ -84,11 +85,14 @@ std::string parseNumber(const std::string& word, const Grammar& rule, long long&
 
 std::string validateText(const ScriptAction& action) {
     if (action.kind == Kind::Metric && !parseDistanceMetric(action.text))
-        return "expected chebyshev, euclidean or manhattan, got '" + shortText(action.text, 40) +
-               "'";
+        return "expected " + choiceNamesInWords(kDistanceMetrics) + ", got '" +
+               shortText(action.text, 40) + "'";
     if (action.kind == Kind::Heatmap && action.text != "on" && action.text != "off" &&
-        action.text != "toggle" && action.text != "de00" && action.text != "flip")
-        return "expected on, off, toggle, de00 or flip, got '" + shortText(action.text, 40) + "'";
+        action.text != "toggle" && !parseImageMetric(action.text)) {
+        std::vector<std::string> words = {"on", "off", "toggle"};
+        for (const auto& metric : kImageMetrics) words.emplace_back(metric.name);
+        return "expected " + inWords(words) + ", got '" + shortText(action.text, 40) + "'";
+    }
     if ((action.kind == Kind::VariantsHue || action.kind == Kind::VariantsFromKept) &&
         action.text != "on" && action.text != "off")
         return "expected on or off, got '" + shortText(action.text, 40) + "'";
@@ -137,8 +141,8 @@ Result<std::vector<ScriptAction>> parseEditorScript(const std::string& text,
             sourceName + ":" + std::to_string(number) + ": " + shortText(name, 40) + ": ";
         const auto found = grammar().find(name);
         if (found == grammar().end())
-            return Error{sourceName + ":" + std::to_string(number) + ": unknown action '" +
-                         shortText(name, 40) + "'"};
+            return badInput(sourceName + ":" + std::to_string(number) + ": unknown action '" +
+                         shortText(name, 40) + "'");
         const Grammar& rule = found->second;
         ScriptAction action{rule.kind, 0, 0, {}, number};
         for (int i = 0; i < rule.numbers; ++i) {
@@ -146,13 +150,13 @@ Result<std::vector<ScriptAction>> parseEditorScript(const std::string& text,
             long long& slot = i == 0 ? action.first : action.second;
             words >> word;
             if (std::string problem = parseNumber(word, rule, slot); !problem.empty())
-                return Error{where + problem};
+                return badInput(where + problem);
         }
-        if (rule.text && !(words >> action.text)) return Error{where + "missing argument"};
+        if (rule.text && !(words >> action.text)) return badInput(where + "missing argument");
         if (std::string extra; words >> extra)
-            return Error{where + "unexpected argument '" + shortText(extra, 40) + "'"};
+            return badInput(where + "unexpected argument '" + shortText(extra, 40) + "'");
         if (std::string problem = validateText(action); !problem.empty())
-            return Error{where + problem};
+            return badInput(where + problem);
         actions.push_back(std::move(action));
     }
     return actions;

@@ -7,8 +7,9 @@
 //   idle MS                 do nothing for MS milliseconds: frames are drawn only if something
 //                           asks for one (an idle editor draws none)
 //   population N | generations N | seed N
-//   metric chebyshev|euclidean|manhattan
-//   heatmap on|off|toggle  the overlay; or heatmap de00|flip: on, showing that metric
+//   metric NAME             a genotype distance by name (kDistanceMetrics)
+//   heatmap on|off|toggle  the overlay; or heatmap METRIC (kImageMetrics' names): on, showing
+//                           that metric
 //   select I                inspect candidate I (0 = best)
 //   scene open|close        the Scene window
 //   lighting L              the lighting every view uses (the preset's scene): paper, ambient,

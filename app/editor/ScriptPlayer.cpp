@@ -130,10 +130,9 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
             ga.metric = *parseDistanceMetric(action.text);
             return true;
         case Kind::Heatmap:
-            if (action.text == "de00" || action.text == "flip") {
+            if (const auto metric = parseImageMetric(action.text)) {
                 state.heatmap.enabled = true;
-                state.heatmap.metric = action.text == "flip" ? ImageMetric::Flip
-                                                             : ImageMetric::DeltaE00;
+                state.heatmap.metric = *metric;
             } else {
                 state.heatmap.enabled =
                     action.text == "toggle" ? !state.heatmap.enabled : action.text == "on";

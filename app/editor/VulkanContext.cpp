@@ -19,7 +19,8 @@ constexpr std::uint32_t kDescriptorSets = 1024;
 Result<std::unique_ptr<VulkanContext>> VulkanContext::create(GLFWwindow* window, bool validation) {
     std::uint32_t glfwCount = 0;
     const char** glfwExtensions = glfwGetRequiredInstanceExtensions(&glfwCount);
-    if (!glfwExtensions) return Error{"GLFW found no Vulkan surface support on this display"};
+    if (!glfwExtensions)
+        return environmentError("GLFW found no Vulkan surface support on this display");
     std::unique_ptr<VulkanContext> context(new VulkanContext());
     auto instance = gpu::InstanceBuilder()
                         .applicationName("matevo editor")

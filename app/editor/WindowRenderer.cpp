@@ -34,7 +34,7 @@ Result<std::unique_ptr<WindowRenderer>> WindowRenderer::create(const VulkanConte
     renderer->device_ = context.device().handle();
     renderer->surfaceFormat_ = chooseSurfaceFormat(context);
     if (renderer->surfaceFormat_.format == VK_FORMAT_UNDEFINED)
-        return Error{"the window's surface offers no image format"};
+        return environmentError("the window's surface offers no image format");
     if (Status s = renderer->createRenderPasses(); !s) return s.error();
     if (Status s = renderer->createFrames(); !s) return s.error();
     if (Status s = renderer->createSwapchain(size); !s) return s.error();

@@ -367,7 +367,7 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
         return comparable.error();
     const std::size_t pixelCount = reference.pixelCount();
     if (!(settings.pixelsPerDegree > 0.0) || settings.pixelsPerDegree > 1000.0)
-        return Error{"pixels per degree must be in (0, 1000]"};
+        return badInput("pixels per degree must be in (0, 1000]");
 
     FlipMap map;
     map.width = reference.width;

@@ -85,11 +85,11 @@ DeltaEPooling compareChunk(const Image& a, const Image& b, bool useAlpha, std::s
 
 Status requireComparable(const Image& a, const Image& b) {
     if (a.width != b.width || a.height != b.height)
-        return Error{"image sizes differ: " + std::to_string(a.width) + "x" +
+        return badInput("image sizes differ: " + std::to_string(a.width) + "x" +
                      std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
-                     std::to_string(b.height)};
+                     std::to_string(b.height));
     if (a.rgba.size() != a.pixelCount() * 4 || b.rgba.size() != b.pixelCount() * 4)
-        return Error{"malformed image: pixel data does not match its size"};
+        return internalError("malformed image: pixel data does not match its size");
     return Ok{};
 }
 

@@ -7,14 +7,22 @@
 
 namespace matevo {
 
-// Where a failure was born, which decides the exit status once, in app/Messages.h: bad input
-// (options, files, folders the user named), the machine or environment (no Vulkan device, out
-// of memory, a full disk), an internal fault (a bug), or work stopped on request.
+// Where a failure was born, which decides the exit status once, in app/Messages.h:
+//   BadInput     what the user named or can fix: options, files and folders (unreadable,
+//                malformed, unwritable, a full disk or a file size limit while writing them),
+//                work past --max-memory, the shipped resources not found where MATEVO_DATA_DIR
+//                or the install says (the message lists the folders tried)          -> exit 2
+//   Environment  the machine: no usable Vulkan device or driver, a device or host out of
+//                memory, a failed system call that no input of the user's caused    -> exit 1
+//   Internal     a broken invariant: a bug                                          -> exit 1
+//   Cancelled    work stopped on request (SIGINT, SIGTERM, the editor closing)      -> 130/143
 enum class ErrorKind { BadInput, Environment, Internal, Cancelled };
 
+// Made only through the factories below, so every error says where it was born.
 struct Error {
+    Error(std::string text, ErrorKind how) : message(std::move(text)), kind(how) {}
     std::string message;
-    ErrorKind kind = ErrorKind::BadInput;
+    ErrorKind kind;
 };
 
 inline Error badInput(std::string message) { return {std::move(message), ErrorKind::BadInput}; }
@@ -26,6 +34,12 @@ inline Error internalError(std::string message) {
 }
 inline Error cancelledError(std::string message = "stopped on request") {
     return {std::move(message), ErrorKind::Cancelled};
+}
+
+// The same failure seen from one level up: `context` (a file name, an option) goes before the
+// message, and the kind stays the one it was born with.
+inline Error withContext(const Error& error, const std::string& context) {
+    return {context + ": " + error.message, error.kind};
 }
 
 template <typename T>

@@ -5,12 +5,20 @@
 #include <optional>
 #include <string_view>
 
+#include "common/Choice.h"
 #include "genome/FamilyRules.h"
 #include "genome/Genome.h"
 
 namespace matevo {
 
 enum class DistanceMetric { Chebyshev, Euclidean, Manhattan };
+
+// The genotype distances by name: presets, --metric, the editor's combo, the preset schema.
+inline constexpr std::array<Choice<DistanceMetric>, 3> kDistanceMetrics{{
+    {DistanceMetric::Chebyshev, "chebyshev", "Chebyshev"},
+    {DistanceMetric::Euclidean, "euclidean", "Euclidean"},
+    {DistanceMetric::Manhattan, "manhattan", "Manhattan"},
+}};
 
 std::string_view toString(DistanceMetric metric);
 std::optional<DistanceMetric> parseDistanceMetric(std::string_view text);

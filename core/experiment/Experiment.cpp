@@ -61,7 +61,7 @@ Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,
                                                                               : imageRuns)
             .push_back(chunk);
     if (!imageRuns.empty() && !fitnessRender)
-        return Error{"experiment: the image metric needs a renderer"};
+        return internalError("experiment: the image metric needs a renderer");
     // One chunk per run: a run is a whole GA, far heavier than the scheduling.
     parallelForChunks(
         int(genotypeRuns.size()),
@@ -122,8 +122,9 @@ Result<ScoredRuns> scoreRuns(std::span<RunRecord> records, const Image& targetIm
         auto images = render(genomes);
         if (!images) return images.error();
         if (images->size() != count)
-            return Error{"experiment: the renderer returned " + std::to_string(images->size()) +
-                         " images for " + std::to_string(count) + " genomes"};
+            return internalError("experiment: the renderer returned " +
+                                 std::to_string(images->size()) + " images for " +
+                                 std::to_string(count) + " genomes");
         for (std::size_t i = 0; i < count; ++i) {
             const Image& image = (*images)[i];
             auto difference = compareImages(targetImage, image);
@@ -146,7 +147,7 @@ Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
     auto targetImages = render(std::span<const Genome>(&target.genome, 1));
     if (!targetImages) return targetImages.error();
     if (targetImages->size() != 1)
-        return Error{"experiment: the renderer returned no image for the target"};
+        return internalError("experiment: the renderer returned no image for the target");
 
     const int total = 2 * settings.runs * int(settings.metrics.size());
     auto evolved = evolveRuns(

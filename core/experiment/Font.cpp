@@ -74,7 +74,7 @@ Result<Font> Font::load(const std::filesystem::path& file) {
     const auto* data = reinterpret_cast<const unsigned char*>(face->bytes.data());
     const int offset = stbtt_GetFontOffsetForIndex(data, 0);
     if (offset < 0 || !stbtt_InitFont(&face->info, data, offset))
-        return Error{displayPath(file) + ": not a TrueType font"};
+        return badInput(displayPath(file) + ": not a TrueType font");
     return Font(std::move(face));
 }
 
@@ -87,8 +87,8 @@ Result<Font> Font::dejaVuSans() {
         if (std::filesystem::is_regular_file(file, error)) return load(file);
         looked += (looked.empty() ? "" : ", ") + file.string();
     }
-    return Error{"cannot find the DejaVu Sans font (Debian: fonts-dejavu-core); looked in " +
-                 looked};
+    return badInput("cannot find the DejaVu Sans font (Debian: fonts-dejavu-core); looked in " +
+                 looked);
 }
 
 bool Font::hasGlyph(char32_t codePoint) const {

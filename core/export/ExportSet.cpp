@@ -10,28 +10,21 @@
 namespace matevo {
 
 std::optional<ExportFormat> parseExportFormat(std::string_view text) {
-    if (text == "gltf") return ExportFormat::Gltf;
-    if (text == "glb") return ExportFormat::Glb;
-    if (text == "mtlx") return ExportFormat::MaterialX;
-    return std::nullopt;
+    return parseChoice(kExportFormats, text);
 }
 
-std::string_view toString(ExportFormat format) {
-    switch (format) {
-        case ExportFormat::Gltf: return "gltf";
-        case ExportFormat::Glb: return "glb";
-        case ExportFormat::MaterialX: return "mtlx";
-    }
-    return "gltf";
+std::string_view toString(ExportFormat format) { return choiceName(kExportFormats, format); }
+
+std::string fileExtension(ExportFormat format) {
+    std::string extension = ".";
+    extension += toString(format);
+    return extension;
 }
 
-std::string_view fileExtension(ExportFormat format) {
-    switch (format) {
-        case ExportFormat::Gltf: return ".gltf";
-        case ExportFormat::Glb: return ".glb";
-        case ExportFormat::MaterialX: return ".mtlx";
-    }
-    return ".gltf";
+std::string exportExtensionsInWords() {
+    std::vector<std::string> extensions;
+    for (const auto& format : kExportFormats) extensions.push_back(fileExtension(format.value));
+    return inWords(extensions);
 }
 
 std::string exportFileStem(std::string_view name) {
@@ -41,8 +34,8 @@ std::string exportFileStem(std::string_view name) {
 }
 
 std::optional<ExportFormat> exportFormatOfFile(const std::filesystem::path& file) {
-    for (ExportFormat format : {ExportFormat::Gltf, ExportFormat::Glb, ExportFormat::MaterialX})
-        if (file.extension() == fileExtension(format)) return format;
+    for (const auto& format : kExportFormats)
+        if (file.extension() == fileExtension(format.value)) return format.value;
     return std::nullopt;
 }
 
@@ -53,13 +46,13 @@ bool withinExportGoal(const ExportedVariant& variant, const ExportSettings& sett
 Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
                                PopulationRenderer& belcour, const ExportSettings& settings,
                                const ExportProgress& progress, const CancelToken& cancel) {
-    if (materials.empty()) return Error{"nothing to export"};
+    if (materials.empty()) return badInput("nothing to export");
     const MaterialFile& first = materials.front();
     for (const auto& material : materials)
         if (material.roughnessTexture != first.roughnessTexture ||
             material.baseColorTexture != first.baseColorTexture)
-            return Error{material.name + ": its textures differ from " + first.name +
-                         "'s; export the materials of one preset at a time"};
+            return badInput(material.name + ": its textures differ from " + first.name +
+                         "'s; export the materials of one preset at a time");
     auto textures = loadSceneTextures(first, first.name);
     if (!textures) return textures.error();
 
@@ -73,15 +66,15 @@ Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
             return belcour.render(std::span(&material.material, 1), material.scene, size);
         };
         auto target = renderAt(settings.fit.imageSize);
-        if (!target) return Error{material.name + ": " + target.error().message};
+        if (!target) return withContext(target.error(), material.name);
         GltfFit fit = fitGltfMaterial(material.material, target->front(), set.textures,
                                       material.scene, settings.fit);
         auto reference = renderAt(settings.reportSize);
-        if (!reference) return Error{material.name + ": " + reference.error().message};
+        if (!reference) return withContext(reference.error(), material.name);
         const Image approximation =
             renderGltfSphere(fit.material, set.textures, material.scene, settings.reportSize);
         auto difference = compareImages(approximation, reference->front());
-        if (!difference) return Error{material.name + ": " + difference.error().message};
+        if (!difference) return withContext(difference.error(), material.name);
         set.variants.push_back({material.name, std::move(fit), std::move(*difference),
                                 std::move(reference->front()), approximation});
         if (progress) progress(i + 1, materials.size());
@@ -92,8 +85,8 @@ Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
 Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
                                  const std::filesystem::path& file, const GltfAsset& asset) {
     if (format == ExportFormat::MaterialX && asset.arrangement != GltfArrangement::Spheres)
-        return Error{file.string() + ": MaterialX holds materials only; a " +
-                     std::string(toString(asset.arrangement)) + " arrangement needs glTF"};
+        return badInput(file.string() + ": MaterialX holds materials only; a " +
+                     std::string(toString(asset.arrangement)) + " arrangement needs glTF");
     std::vector<NamedGltfMaterial> materials;
     for (const auto& variant : set.variants)
         materials.push_back({variant.name, variant.fit.material});

@@ -3,6 +3,7 @@
 // each material is rendered with our Belcour model (through the one render interface), the glTF parameters are fitted to
 // that render (GltfFit.h), the fit is rendered again at the report size and compared, and the
 // file is written (GltfWriter.h, MaterialXWriter.h). Shared by `matevo export` and the editor.
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -14,6 +15,7 @@
 
 #include "color/ImageDifference.h"
 #include "common/CancelToken.h"
+#include "common/Choice.h"
 #include "common/Result.h"
 #include "export/GltfFit.h"
 #include "export/GltfWriter.h"
@@ -23,9 +25,17 @@
 namespace matevo {
 
 enum class ExportFormat { Gltf, Glb, MaterialX };
+// The export formats by name, which is also the file extension: --format, the editor's dialog.
+inline constexpr std::array<Choice<ExportFormat>, 3> kExportFormats{{
+    {ExportFormat::Gltf, "gltf", "glTF"},
+    {ExportFormat::Glb, "glb", "glTF binary"},
+    {ExportFormat::MaterialX, "mtlx", "MaterialX"},
+}};
 std::optional<ExportFormat> parseExportFormat(std::string_view text);  // gltf, glb, mtlx
 std::string_view toString(ExportFormat format);
-std::string_view fileExtension(ExportFormat format);  // ".gltf", ".glb", ".mtlx"
+std::string fileExtension(ExportFormat format);  // ".gltf", ".glb", ".mtlx"
+// ".gltf, .glb or .mtlx", for messages.
+std::string exportExtensionsInWords();
 // A material or preset name made safe for a file name: letters, digits, '-' and '_' are kept,
 // anything else becomes '_'.
 std::string exportFileStem(std::string_view name);

@@ -332,16 +332,16 @@ Status writeGltf(const std::vector<NamedGltfMaterial>& materials, const SceneTex
                  const std::filesystem::path& file, const GltfAsset& asset) {
     const std::string extension = lowercaseExtension(file);
     if (extension != ".gltf" && extension != ".glb")
-        return Error{file.string() + ": the extension must be .gltf or .glb"};
-    if (materials.empty()) return Error{file.string() + ": no materials to write"};
+        return badInput(file.string() + ": the extension must be .gltf or .glb");
+    if (materials.empty()) return badInput(file.string() + ": no materials to write");
     auto model = buildModel(materials, textures, asset);
-    if (!model) return Error{file.string() + ": " + model.error().message};
+    if (!model) return withContext(model.error(), file.string());
 
     tinygltf::TinyGLTF writer;
     std::ostringstream stream;
     const bool binary = extension == ".glb";
     if (!writer.WriteGltfSceneToStream(&*model, stream, true, binary))
-        return Error{file.string() + ": tinygltf could not serialise the asset"};
+        return internalError(file.string() + ": tinygltf could not serialise the asset");
     if (binary) return writeFileAtomically(file, stream.str());
 
     // tinygltf streams the buffer as a data URI; a .gltf keeps it in a .bin beside the JSON,

@@ -136,13 +136,13 @@ Status writeMaterialX(const std::vector<NamedGltfMaterial>& materials,
     CompanionFile roughness{"_roughness", ".png", {}};
     if (anyBaseColor) {
         auto png = encodePng(textures.baseColor, PngValues::Srgb);
-        if (!png) return Error{file.string() + ": " + png.error().message};
+        if (!png) return withContext(png.error(), file.string());
         baseColor.contents.assign(png->begin(), png->end());
     }
     if (anyRoughness) {
         auto png = encodePng(gltfRoughnessTexture(textures.roughness, roughnessTexelScale),
                              PngValues::Linear);
-        if (!png) return Error{file.string() + ": " + png.error().message};
+        if (!png) return withContext(png.error(), file.string());
         roughness.contents.assign(png->begin(), png->end());
     }
     return writeWithCompanions(

@@ -102,7 +102,7 @@ Result<uint32_t> Device::memoryTypeFor(uint32_t typeBits, MemoryUse use) const {
         if (!fallback) fallback = index;
     }
     if (fallback) return *fallback;
-    return Error{"Vulkan: no suitable memory type on " + name_};
+    return environmentError("Vulkan: no suitable memory type on " + name_);
 }
 
 DeviceBuilder& DeviceBuilder::requireExtensions(const std::vector<std::string>& extensions) {
@@ -141,9 +141,9 @@ Result<Device> DeviceBuilder::build() const {
         device.maxTexelBufferElements_ = properties.limits.maxTexelBufferElements;
     }
     if (device.physicalDevice_ == VK_NULL_HANDLE)
-        return Error{count == 0 ? "Vulkan: no device found"
+        return environmentError(count == 0 ? "Vulkan: no device found"
                                 : "Vulkan: no device supports Vulkan 1.2 with a graphics and "
-                                  "compute queue and the needed extensions"};
+                                  "compute queue and the needed extensions");
     vkGetPhysicalDeviceMemoryProperties(device.physicalDevice_, &device.memory_);
     const auto uploadType = device.memoryTypeFor(~0u, MemoryUse::Upload);
     device.uploadsAreDeviceLocal_ =

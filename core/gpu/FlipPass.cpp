@@ -74,8 +74,9 @@ void recordCombination(VkCommandBuffer commands, const ComputeKernel& combine,
 
 Result<FlipPass> FlipPass::create(const Device& device) {
     if (!device.int64())
-        return Error{"FLIP on the GPU needs 64-bit integers in shaders (shaderInt64), which " +
-                     device.name() + " does not have"};
+        return environmentError(
+            "FLIP on the GPU needs 64-bit integers in shaders (shaderInt64), which " +
+            device.name() + " does not have");
     FlipPass pass;
     pass.device_ = &device;
     // The kernels follow the viewing condition: prepare() makes them for the first batch.
@@ -113,20 +114,22 @@ Result<const FlipPass::Kernels*> FlipPass::kernelsFor(int csfRadius, int feature
 Result<UniqueBufferView> FlipPass::pixelView(const Buffer& buffer) const {
     constexpr VkDeviceSize kTexelBytes = 4 * sizeof(float);
     if (buffer.size() / kTexelBytes > device_->maxTexelBufferElements())
-        return Error{"FLIP on the GPU: a batch of " + std::to_string(buffer.size() >> 20) +
-                     " MiB is more than " + device_->name() + " reads as one texel buffer"};
+        return environmentError("FLIP on the GPU: a batch of " +
+                                std::to_string(buffer.size() >> 20) + " MiB is more than " +
+                                device_->name() + " reads as one texel buffer");
     return createTexelView(*device_, buffer, VK_FORMAT_R32G32B32A32_SFLOAT);
 }
 
 Status FlipPass::prepare(const FlipBatch& batch, const FlipSettings& settings) {
     if (!(settings.pixelsPerDegree > 0.0) || settings.pixelsPerDegree > 1000.0)
-        return Error{"pixels per degree must be in (0, 1000]"};
+        return badInput("pixels per degree must be in (0, 1000]");
     if (!taps_.handle() || settings.pixelsPerDegree != tapsPixelsPerDegree_) {
         auto csf = flip::makeCsfKernels(settings.pixelsPerDegree);
         auto feature = flip::makeFeatureKernels(settings.pixelsPerDegree);
         if (std::max(csf.radius, feature.radius) > kMaxFlipFilterRadius)
-            return Error{"FLIP on the GPU takes at most " + std::to_string(kMaxFlipFilterRadius) +
-                         "-pixel filters (about 148 pixels per degree)"};
+            return badInput("FLIP on the GPU takes at most " +
+                            std::to_string(kMaxFlipFilterRadius) +
+                            "-pixel filters (about 148 pixels per degree)");
         std::vector<float> taps = tapsOf(csf, feature);
         taps.resize(kTapBufferFloats, 0.0f);  // the whole uniform block the shaders declare
         auto buffer = Buffer::create(*device_, taps.size() * sizeof(float),

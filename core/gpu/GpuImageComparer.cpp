@@ -40,7 +40,8 @@ Result<ImageBatchShape> GpuImageComparer::upload(const Image& reference,
     const ImageBatchShape shape{reference.width, reference.height, uint32_t(candidates.size())};
     for (const Image& candidate : candidates)
         if (candidate.width != shape.width || candidate.height != shape.height)
-            return Error{"GPU image comparison: candidate size differs from the reference's"};
+            return internalError(
+                "GPU image comparison: candidate size differs from the reference's");
     const ImageBatchShape referenceShape{shape.width, shape.height, 1};
     for (const Status& held :
          {holdBatch(*device_, buffers_.reference, referenceShape, 4, MemoryUse::Upload),

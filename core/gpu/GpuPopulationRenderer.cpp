@@ -139,7 +139,7 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateOnDevice(
     const MaterialInstance& target, std::span<const MaterialInstance> candidates,
     const SceneSettings& scene, int size, const EvaluationOptions& options,
     std::span<const DisplayTile* const> tiles) {
-    if (size <= 0) return Error{"GPU render: image size must be positive"};
+    if (size <= 0) return internalError("GPU render: image size must be positive");
     if (cancel_.cancelled()) return cancelledError("rendering cancelled");
     const TargetKey key{target, scene, size};
     if (targetKey_ != key)
@@ -211,7 +211,7 @@ Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
 
 Result<std::vector<Image>> GpuPopulationRenderer::render(
     std::span<const MaterialInstance> materials, const SceneSettings& scene, int size) {
-    if (size <= 0) return Error{"GPU render: image size must be positive"};
+    if (size <= 0) return internalError("GPU render: image size must be positive");
     if (cancel_.cancelled()) return cancelledError("rendering cancelled");
     return renderer_.render(runner_, materials, scene, size);
 }

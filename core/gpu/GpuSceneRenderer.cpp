@@ -254,9 +254,9 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
     renderer.visibilityPass_ = resolve(device, visibility);
     const bool raster = renderer.visibilityPass_ == SceneVisibilityPass::Raster;
     if (!raster && !device.int64Atomics())
-        return Error{"Vulkan: " + device.name() +
+        return environmentError("Vulkan: " + device.name() +
                      " lacks 64-bit integer atomics on storage buffers, which the scene's "
-                     "compute visibility pass needs"};
+                     "compute visibility pass needs");
     auto uploaded = GpuSceneTextures::create(device, runner, textures);
     if (!uploaded) return uploaded.error();
     renderer.textures_ = std::move(uploaded).value();
@@ -348,7 +348,7 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
 }
 
 Status GpuSceneRenderer::setMaterials(std::span<const MaterialInstance> materials) {
-    if (materials.empty()) return Error{"the scene needs at least one material"};
+    if (materials.empty()) return internalError("the scene needs at least one material");
     if (auto uploaded = materials_.upload(*device_, *tables_, materials); !uploaded)
         return uploaded.error();
     materialCount_ = uint32_t(materials.size());
@@ -409,9 +409,9 @@ Status GpuSceneRenderer::prepareInstances(const SceneFrame& frame) {
     for (std::size_t i = 0; i < instances.size(); ++i) {
         const SceneInstance& instance = instances[i];
         if (instance.material >= materialCount_)
-            return Error{"scene instance " + std::to_string(i) + " names material " +
+            return internalError("scene instance " + std::to_string(i) + " names material " +
                          std::to_string(instance.material) + " of " +
-                         std::to_string(materialCount_)};
+                         std::to_string(materialCount_));
         GpuInstance& gpu = gpuInstances[i];
         std::memcpy(gpu.transform, glm::value_ptr(instance.transform), sizeof gpu.transform);
         gpu.material[0] = float(instance.material);
@@ -430,8 +430,8 @@ Status GpuSceneRenderer::prepareInstances(const SceneFrame& frame) {
                                      uint32_t(firstEntry), uint32_t(entries.size() - firstEntry)});
     }
     if (entries.size() > std::numeric_limits<uint32_t>::max() / kClusterTriangles)
-        return Error{"the scene has too many instances of too large a mesh (" +
-                     std::to_string(entries.size()) + " clusters in view)"};
+        return badInput("the scene has too many instances of too large a mesh (" +
+                     std::to_string(entries.size()) + " clusters in view)");
     trianglesSubmitted_ = 0;
     for (const glm::uvec2& entry : entries)
         trianglesSubmitted_ += std::min<uint64_t>(
@@ -467,8 +467,8 @@ Status GpuSceneRenderer::upload(TexelBuffer& target, std::span<const std::byte> 
 
 Status GpuSceneRenderer::record(VkCommandBuffer commands, const SceneFrame& frame,
                                 const SceneSettings& scene) {
-    if (frame.width <= 0 || frame.height <= 0) return Error{"the scene image is empty"};
-    if (materialCount_ == 0) return Error{"the scene has no materials (setMaterials)"};
+    if (frame.width <= 0 || frame.height <= 0) return internalError("the scene image is empty");
+    if (materialCount_ == 0) return internalError("the scene has no materials (setMaterials)");
     if (auto ok = prepareTarget(frame.width, frame.height); !ok) return ok.error();
     if (auto ok = prepareInstances(frame); !ok) return ok.error();
     const GpuFrame gpuFrame = toGpu(frame, scene, textures_);
@@ -544,7 +544,7 @@ Status GpuSceneRenderer::recordDisplay(VkCommandBuffer commands, const GpuImage&
                                        const SceneDisplay& display) {
     const VkExtent3D extent = target.spec().extent;
     if (int(extent.width) != width_ || int(extent.height) != height_)
-        return Error{"the scene display image is not the frame's size"};
+        return internalError("the scene display image is not the frame's size");
     displayKernel_.bindStorageImage(kDisplayTarget, target.view());
     transitionImage(commands, target.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,

@@ -15,8 +15,8 @@ Status requireLinearSampling(const Device& device) {
     const VkFormatFeatureFlags needed =
         VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
     if ((properties.optimalTilingFeatures & needed) != needed)
-        return Error{"Vulkan: " + device.name() +
-                     " cannot filter R32G32B32A32_SFLOAT textures linearly"};
+        return environmentError("Vulkan: " + device.name() +
+                     " cannot filter R32G32B32A32_SFLOAT textures linearly");
     return Ok{};
 }
 

@@ -95,7 +95,7 @@ Result<Instance> InstanceBuilder::build() const {
     uint32_t loaderVersion = 0;
     if (vkEnumerateInstanceVersion(&loaderVersion) != VK_SUCCESS ||
         loaderVersion < VK_API_VERSION_1_2)
-        return Error{"Vulkan: the loader supports only Vulkan < 1.2"};
+        return environmentError("Vulkan: the loader supports only Vulkan < 1.2");
 
     std::vector<const char*> extensions;
     for (const auto& name : extensions_) extensions.push_back(name.c_str());
@@ -105,8 +105,9 @@ Result<Instance> InstanceBuilder::build() const {
     std::vector<const char*> layers;
     if (validation_) {
         if (!hasLayer(kValidationLayer))
-            return Error{std::string("Vulkan: validation requested but ") + kValidationLayer +
-                         " is not installed (Debian: vulkan-validationlayers)"};
+            return environmentError(std::string("Vulkan: validation requested but ") +
+                                    kValidationLayer +
+                                    " is not installed (Debian: vulkan-validationlayers)");
         layers.push_back(kValidationLayer);
     }
 
@@ -164,7 +165,7 @@ Result<Instance> InstanceBuilder::build() const {
             vkGetInstanceProcAddr(handle, "vkCreateDebugUtilsMessengerEXT"));
         VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
         if (!create || create(handle, &messengerInfo, nullptr, &messenger) != VK_SUCCESS)
-            return Error{"Vulkan: creating the debug messenger failed"};
+            return environmentError("Vulkan: creating the debug messenger failed");
         instance.messenger_ = Instance::UniqueMessenger(handle, messenger);
     }
     return instance;

@@ -72,13 +72,15 @@ Result<UniqueRenderPass> createVisibilityRenderPass(VkDevice device) {
 Status SceneRasterVisibility::supportedOn(const Device& device) {
     const std::string lacks =
         "Vulkan: " + device.name() + " cannot run the raster visibility pass: ";
-    if (!device.primitiveIds()) return Error{lacks + "no geometryShader feature (gl_PrimitiveID)"};
+    if (!device.primitiveIds())
+        return environmentError(lacks + "no geometryShader feature (gl_PrimitiveID)");
     VkPhysicalDeviceProperties properties;
     vkGetPhysicalDeviceProperties(device.physicalDevice(), &properties);
     const VkPhysicalDeviceLimits& limits = properties.limits;
     if (!(limits.framebufferColorSampleCounts & limits.framebufferDepthSampleCounts &
           limits.sampledImageIntegerSampleCounts & limits.sampledImageDepthSampleCounts & kSamples))
-        return Error{lacks + "no 4x multisampled integer and depth attachments to sample"};
+        return environmentError(lacks +
+                                "no 4x multisampled integer and depth attachments to sample");
     for (const auto& [format, features] :
          {std::pair{kSurfaceFormat, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT},
           std::pair{kDepthFormat, VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT}}) {
@@ -86,8 +88,9 @@ Status SceneRasterVisibility::supportedOn(const Device& device) {
         vkGetPhysicalDeviceFormatProperties(device.physicalDevice(), format, &formatProperties);
         const VkFormatFeatureFlags needed = features | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
         if ((formatProperties.optimalTilingFeatures & needed) != needed)
-            return Error{lacks + (format == kDepthFormat ? "no sampled D32_SFLOAT depth buffer"
-                                                         : "no sampled R32_UINT attachment")};
+            return environmentError(lacks + (format == kDepthFormat
+                                                 ? "no sampled D32_SFLOAT depth buffer"
+                                                 : "no sampled R32_UINT attachment"));
     }
     return Ok{};
 }

@@ -11,7 +11,7 @@ namespace matevo::gpu {
 std::string describe(VkResult result);
 
 inline Error vulkanError(const std::string& what, VkResult result) {
-    return Error{"Vulkan: " + what + " failed (" + describe(result) + ")"};
+    return environmentError("Vulkan: " + what + " failed (" + describe(result) + ")");
 }
 
 // Ok for VK_SUCCESS, else vulkanError(what, result).

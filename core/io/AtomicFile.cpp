@@ -16,7 +16,7 @@ namespace matevo {
 namespace {
 
 Error cannotWrite(const std::filesystem::path& file, const std::string& reason) {
-    return Error{displayPath(file) + ": cannot write: " + reason};
+    return badInput(displayPath(file) + ": cannot write: " + reason);
 }
 
 Status writeAll(int fd, std::string_view contents) {
@@ -26,7 +26,7 @@ Status writeAll(int fd, std::string_view contents) {
         const ssize_t written = ::write(fd, data, left);
         if (written < 0 && errno == EINTR) continue;
         // write() returning 0 has no errno; say what it means.
-        if (written <= 0) return Error{written == 0 ? "no space written" : std::strerror(errno)};
+        if (written <= 0) return badInput(written == 0 ? "no space written" : std::strerror(errno));
         data += written;
         left -= std::size_t(written);
     }
@@ -77,12 +77,12 @@ Status writeFileAtomically(const std::filesystem::path& requested, std::string_v
         // write but do not own keeps its group only where we are allowed to set it.
         if (::fchown(fd, existing.st_uid, existing.st_gid) != 0)
             (void)!::fchown(fd, ::geteuid(), existing.st_gid);
-        if (::fchmod(fd, existing.st_mode & 07777) != 0) status = Error{std::strerror(errno)};
+        if (::fchmod(fd, existing.st_mode & 07777) != 0) status = badInput(std::strerror(errno));
     }
-    if (status && ::fsync(fd) != 0) status = Error{std::strerror(errno)};
-    if (::close(fd) != 0 && status) status = Error{std::strerror(errno)};
+    if (status && ::fsync(fd) != 0) status = badInput(std::strerror(errno));
+    if (::close(fd) != 0 && status) status = badInput(std::strerror(errno));
     if (status && ::rename(temporary.c_str(), file.c_str()) != 0)
-        status = Error{std::strerror(errno)};
+        status = badInput(std::strerror(errno));
     if (!status) {
         ::unlink(temporary.c_str());
         return cannotWrite(requested, status.error().message);

@@ -23,7 +23,7 @@ Result<fs::path> carry(const fs::path& file, const std::string& role, const fs::
     }
     fs::create_directories(folder, error);
     if (error)
-        return Error{"cannot create folder '" + folder.string() + "' (" + error.message() + ")"};
+        return badInput("cannot create folder '" + folder.string() + "' (" + error.message() + ")");
     if (auto written = writeFileAtomically(copy, *bytes); !written) return written.error();
     return copy;
 }

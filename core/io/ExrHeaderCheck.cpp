@@ -87,15 +87,15 @@ std::uint32_t readUint32(std::string_view bytes, std::size_t at) {
 Result<std::string> readName(std::string_view bytes, std::size_t& at, const char* what) {
     const std::size_t end = bytes.find('\0', at);
     if (end == std::string_view::npos || end - at >= kMaxNameBytes)
-        return Error{std::string("header ") + what + " is not terminated"};
+        return badInput(std::string("header ") + what + " is not terminated");
     std::string name(bytes.substr(at, end - at));
     at = end + 1;
     return name;
 }
 
 Error overrun(const std::string& name, std::uint64_t claimed, std::size_t left) {
-    return Error{"header attribute '" + name + "' claims " + std::to_string(claimed) +
-                 " bytes, the file has " + std::to_string(left) + " left"};
+    return badInput("header attribute '" + name + "' claims " + std::to_string(claimed) +
+                    " bytes, the file has " + std::to_string(left) + " left");
 }
 
 // Advances `at` past the value of attribute `name` of `type` as OpenEXR reads it, refusing any
@@ -111,7 +111,7 @@ Status skipValue(std::string_view bytes, std::size_t& at, const std::string& nam
                 if (!channel) return channel.error();
                 if (channel->empty()) return Ok{};
                 if (bytes.size() - at < kChannelBytes)
-                    return Error{"header channel '" + *channel + "' is cut short"};
+                    return badInput("header channel '" + *channel + "' is cut short");
                 if (name == "channels")  // UINT and FLOAT samples take 4 bytes, HALF 2
                     layout.bytesPerPixel += readUint32(bytes, at) == 1 ? 2 : 4;
                 at += kChannelBytes;
@@ -158,7 +158,7 @@ Status checkExrHeaders(std::string_view bytes) {
         // One header: attributes until a NUL byte.
         BlockLayout layout;
         while (true) {
-            if (at >= bytes.size()) return Error{"the header ends before its end marker"};
+            if (at >= bytes.size()) return badInput("the header ends before its end marker");
             if (bytes[at] == '\0') {
                 ++at;
                 break;
@@ -167,7 +167,8 @@ Status checkExrHeaders(std::string_view bytes) {
             if (!name) return name.error();
             auto type = readName(bytes, at, "attribute type");
             if (!type) return type.error();
-            if (bytes.size() - at < 4) return Error{"header attribute '" + *name + "' has no size"};
+            if (bytes.size() - at < 4)
+                return badInput("header attribute '" + *name + "' has no size");
             const std::uint32_t declared = readUint32(bytes, at);
             at += 4;
             if (auto skipped = skipValue(bytes, at, *name, *type, declared, layout); !skipped)
@@ -176,7 +177,7 @@ Status checkExrHeaders(std::string_view bytes) {
         if (auto fits = checkBlockMemory(layout); !fits) return fits;
         // A multi-part file lists its headers until an empty one.
         if (!multiPart) return Ok{};
-        if (at >= bytes.size()) return Error{"the header list ends before its end marker"};
+        if (at >= bytes.size()) return badInput("the header list ends before its end marker");
         if (bytes[at] == '\0') return Ok{};
     }
 }

@@ -46,8 +46,8 @@ Result<FileLock> FileLock::lock(const std::filesystem::path& guarded, bool wait)
     for (;;) {
         const int fd = ::open(lockFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
         if (fd < 0)
-            return Error{displayPath(guarded) + ": cannot write beside it in " +
-                         displayPath(lockFile.parent_path()) + ": " + std::strerror(errno)};
+            return badInput(displayPath(guarded) + ": cannot write beside it in " +
+                         displayPath(lockFile.parent_path()) + ": " + std::strerror(errno));
         int locked;
         do locked = ::flock(fd, LOCK_EX | (wait ? 0 : LOCK_NB));
         while (locked != 0 && errno == EINTR);
@@ -55,11 +55,11 @@ Result<FileLock> FileLock::lock(const std::filesystem::path& guarded, bool wait)
             const int reason = errno;
             ::close(fd);
             if (reason == EWOULDBLOCK)
-                return Error{displayPath(guarded) +
+                return badInput(displayPath(guarded) +
                              ": another matevo run is writing it now (it holds " +
-                             displayPath(lockFile) + "); wait for it or choose another name"};
-            return Error{displayPath(guarded) + ": cannot lock " + displayPath(lockFile) + ": " +
-                         std::strerror(reason)};
+                             displayPath(lockFile) + "); wait for it or choose another name");
+            return badInput(displayPath(guarded) + ": cannot lock " + displayPath(lockFile) + ": " +
+                         std::strerror(reason));
         }
         if (stillNamedBy(fd, lockFile)) return FileLock(lockFile, fd);
         ::close(fd);  // we locked a file its holder had just removed: take the current one

@@ -34,7 +34,7 @@ std::vector<unsigned char> encode8(const Image& image, PngValues values) {
 float decodeSrgb(float encoded) { return float(srgbToLinear(encoded)); }
 
 Error fileError(const std::filesystem::path& file, const std::string& what) {
-    return Error{displayPath(file) + ": " + what};
+    return badInput(displayPath(file) + ": " + what);
 }
 
 // Colour and alpha of one stored sample as linear values in memory: integer samples are
@@ -101,8 +101,8 @@ Result<ImageFileContents> decodeImageFile(std::string_view bytes,
     // The decoded samples plus the RGBA image: checked before anything is allocated.
     const DecodedSizeCheck checkSize = [](int width, int height, int channels) -> Status {
         if (channels < 1 || channels > 4)
-            return Error{"unsupported channel count " + std::to_string(channels)};
-        if (width <= 0 || height <= 0) return Error{"empty image"};
+            return badInput("unsupported channel count " + std::to_string(channels));
+        if (width <= 0 || height <= 0) return badInput("empty image");
         const std::uint64_t pixelCount = std::uint64_t(width) * std::uint64_t(height);
         return checkMemoryEstimate(pixelCount * (std::uint64_t(channels) + 4) * sizeof(float),
                                    "decoding " + std::to_string(width) + "x" +
@@ -154,11 +154,11 @@ Status checkImageEncoder(const std::filesystem::path& file) {
 
 Result<std::vector<unsigned char>> encodePng(const Image& image, PngValues values) {
     if (image.width <= 0 || image.height <= 0 || image.rgba.size() != image.pixelCount() * 4)
-        return Error{"cannot encode an empty or malformed image as PNG"};
+        return internalError("cannot encode an empty or malformed image as PNG");
     auto encoded = encodePngRgba8(
         encode8(image, values).data(), image.width, image.height,
         values == PngValues::Srgb ? PngEncodingTag::Srgb : PngEncodingTag::Linear);
-    if (!encoded) return Error{"cannot encode PNG: " + encoded.error().message};
+    if (!encoded) return withContext(encoded.error(), "cannot encode PNG");
     return std::vector<unsigned char>(encoded->begin(), encoded->end());
 }
 

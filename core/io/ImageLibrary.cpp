@@ -29,15 +29,15 @@ Result<const ImageLibraryFunctions*> openModule() {
         }
         // Kept loaded for the life of the process: decoders may run on several threads.
         void* handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
-        if (!handle) return Error{"cannot load " + candidate.string() + ": " + dlerror()};
+        if (!handle) return badInput("cannot load " + candidate.string() + ": " + dlerror());
         using Entry = const ImageLibraryFunctions* (*)();
         auto entry = reinterpret_cast<Entry>(dlsym(handle, "matevoImageLibrary"));
         const ImageLibraryFunctions* functions = entry ? entry() : nullptr;
         if (!functions || functions->abiVersion != kImageLibraryAbiVersion)
-            return Error{candidate.string() + " is not this matevo's image library module"};
+            return badInput(candidate.string() + " is not this matevo's image library module");
         return functions;
     }
-    return Error{"matevo's OpenImageIO module is not installed (looked in " + lookedIn + ")"};
+    return badInput("matevo's OpenImageIO module is not installed (looked in " + lookedIn + ")");
 }
 
 Result<const ImageLibraryFunctions*> imageLibrary() {

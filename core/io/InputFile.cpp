@@ -15,7 +15,7 @@ namespace matevo {
 namespace {
 
 Error cannotRead(const std::filesystem::path& file, const std::string& reason) {
-    return Error{displayPath(file) + ": cannot read: " + reason};
+    return badInput(displayPath(file) + ": cannot read: " + reason);
 }
 
 std::string kindOf(mode_t mode) {

@@ -27,9 +27,9 @@ Status checkJsonNesting(std::string_view text, const std::string& sourceName) {
             inString = true;
         } else if (c == '[' || c == '{') {
             if (++depth > kMaxJsonNesting)
-                return Error{sourceName + ": JSON nested deeper than " +
+                return badInput(sourceName + ": JSON nested deeper than " +
                              std::to_string(kMaxJsonNesting) + " levels (at byte " +
-                             std::to_string(at) + ")"};
+                             std::to_string(at) + ")");
         } else if ((c == ']' || c == '}') && depth > 0) {
             --depth;
         }

@@ -43,7 +43,7 @@ public:
     // A string naming one value of an enumeration; `expected` lists them for the error.
     template <typename Enum>
     Enum enumeration(const std::string& key, std::optional<Enum> (*parse)(std::string_view),
-                     const char* expected);
+                     const std::string& expected);
     // An array of objects, one reader each; their errors name "key[i].field".
     std::vector<JsonReader> objects(const std::string& key);
 
@@ -82,7 +82,7 @@ Result<Json> parseJsonDocument(const std::string& jsonText, const std::string& s
     try {
         return Json::parse(jsonText);
     } catch (const typename Json::exception& error) {
-        return Error{sourceName + ": not valid JSON (" + error.what() + ")"};
+        return badInput(sourceName + ": not valid JSON (" + error.what() + ")");
     }
 }
 
@@ -99,9 +99,9 @@ Result<T> readJsonDocument(const std::string& jsonText, const std::string& sourc
         for (auto& warning : warnings) warning = sourceName + ": " + warning;
         return value;
     } catch (const nlohmann::json::exception& error) {  // a reader's get<T>() on a wrong type
-        return Error{sourceName + ": not valid JSON (" + error.what() + ")"};
+        return badInput(sourceName + ": not valid JSON (" + error.what() + ")");
     } catch (const JsonFieldError& error) {
-        return Error{sourceName + ": " + error.what()};
+        return badInput(sourceName + ": " + error.what());
     }
 }
 
@@ -119,7 +119,8 @@ std::array<double, N> JsonReader::numbers(const std::string& key, double min, do
 
 template <typename Enum>
 Enum JsonReader::enumeration(const std::string& key,
-                             std::optional<Enum> (*parse)(std::string_view), const char* expected) {
+                             std::optional<Enum> (*parse)(std::string_view),
+                             const std::string& expected) {
     auto text = string(key);
     auto value = parse(text);
     if (!value) fail(key, "unknown value '" + text + "' (expected " + expected + ")");

@@ -144,7 +144,7 @@ Result<LoadedMaterial> loadMaterial(const fs::path& file, const MaterialFile& co
         // mistake too, not an internal error.
         if (path.empty()) continue;
         if (auto readable = checkInputFile(path); !readable)
-            return Error{displayPath(file) + ": " + field + ": " + readable.error().message};
+            return withContext(readable.error(), displayPath(file) + ": " + field);
     }
     return loaded;
 }

@@ -21,7 +21,7 @@ namespace {
 constexpr const char* kMarkerName = ".matevo-output";
 
 Error refused(const std::filesystem::path& folder, const std::string& reason) {
-    return Error{displayPath(folder) + ": " + reason};
+    return badInput(displayPath(folder) + ": " + reason);
 }
 
 bool isEmptyFolder(const std::filesystem::path& folder) {
@@ -136,21 +136,26 @@ std::string OutputFolder::userFacing(std::string message) const {
     return message;
 }
 
+Error OutputFolder::userFacing(Error error) const {
+    error.message = userFacing(std::move(error.message));
+    return error;
+}
+
 Status OutputFolder::commit() {
     // Where no folder is, the run simply takes the name. An existing folder (empty, a previous
     // run, or one made meanwhile) is exchanged with the staging folder in one step, so no
     // moment is without a complete folder; then what it held is retired.
     if (!renameWithoutReplacing(staging_, target_)) {
         if (errno != EEXIST)
-            return Error{displayPath(target_) +
-                         ": cannot create the folder: " + std::strerror(errno)};
+            return badInput(displayPath(target_) +
+                         ": cannot create the folder: " + std::strerror(errno));
         if (!std::filesystem::is_directory(std::filesystem::symlink_status(target_)))
-            return Error{displayPath(target_) + ": was replaced by something that is not a " +
-                         "folder while the run went on; the run is not written"};
+            return badInput(displayPath(target_) + ": was replaced by something that is not a " +
+                         "folder while the run went on; the run is not written");
         if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) !=
             0)
-            return Error{displayPath(target_) +
-                         ": cannot replace the folder: " + std::strerror(errno)};
+            return badInput(displayPath(target_) +
+                         ": cannot replace the folder: " + std::strerror(errno));
         committed_ = true;
         Status retired = previous_.retire(staging_, target_);
         lock_.reset();

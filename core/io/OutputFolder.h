@@ -45,6 +45,8 @@ public:
 
     // `message` with the staging folder's name replaced by the target's, for the user.
     std::string userFacing(std::string message) const;
+    // The same for an error, which keeps its kind.
+    Error userFacing(Error error) const;
 
 private:
     OutputFolder(std::filesystem::path target, std::filesystem::path staging, FileLock lock,

@@ -52,8 +52,8 @@ Status checkChunkLengths(std::string_view bytes) {
         const std::uint64_t length = std::uint64_t(chunk[0]) << 24 | std::uint64_t(chunk[1]) << 16 |
                                      std::uint64_t(chunk[2]) << 8 | std::uint64_t(chunk[3]);
         if (length > bytes.size() - at - kFramingBytes)
-            return Error{"a chunk claims " + std::to_string(length) +
-                         " bytes, more than the file holds"};
+            return badInput("a chunk claims " + std::to_string(length) +
+                         " bytes, more than the file holds");
         if (std::memcmp(chunk + 4, "IEND", 4) == 0) break;
         at += kFramingBytes + length;
     }
@@ -102,7 +102,7 @@ public:
     png_structp png() const { return png_; }
     png_infop info() const { return info_; }
     Error error() const {
-        return Error{std::string("not a readable PNG image: ") + messages_.text};
+        return badInput(std::string("not a readable PNG image: ") + messages_.text);
     }
 
 private:
@@ -149,11 +149,11 @@ void flushNothing(png_structp) {}
 
 Result<DecodedImage> decodePng(std::string_view bytes, const DecodedSizeCheck& checkSize) {
     if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8))
-        return Error{"not a readable PNG image: no PNG signature"};
+        return badInput("not a readable PNG image: no PNG signature");
     if (auto chunks = checkChunkLengths(bytes); !chunks)
-        return Error{"not a readable PNG image: " + chunks.error().message};
+        return badInput("not a readable PNG image: " + chunks.error().message);
     PngReader reader;
-    if (!reader.info()) return Error{"out of memory"};
+    if (!reader.info()) return environmentError("out of memory");
     MemorySource source{bytes.data(), bytes.size(), 0};
     png_set_read_fn(reader.png(), &source, readFromMemory);
     PngHeader header;
@@ -169,13 +169,14 @@ Result<std::string> encodePngRgba8(const std::uint8_t* rgba, int width, int heig
     PngMessages messages;
     png_structp png =
         png_create_write_struct(PNG_LIBPNG_VER_STRING, &messages, onPngError, onPngWarning);
-    if (!png) return Error{"out of memory"};
+    if (!png) return environmentError("out of memory");
     png_infop info = png_create_info_struct(png);
     std::string encoded;
     png_set_write_fn(png, &encoded, appendToString, flushNothing);
     const bool written = info && writeAll(png, info, rgba, width, height, tag);
     png_destroy_write_struct(&png, info ? &info : nullptr);
-    if (!written) return Error{info ? messages.text : "out of memory"};
+    // Encoding into memory fails only for want of memory or by a bug.
+    if (!written) return info ? internalError(messages.text) : environmentError("out of memory");
     return encoded;
 }
 

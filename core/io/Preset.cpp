@@ -111,8 +111,8 @@ Result<LoadedPreset> loadPreset(const std::filesystem::path& file) {
         // The error_code overload: a symlink loop or an over-long name is an answer, not a throw.
         std::error_code error;
         if (!name.empty() && !std::filesystem::is_regular_file(file.parent_path() / name, error))
-            return Error{file.string() + ": " + field + ": no such file '" +
-                         displayPath(file.parent_path() / name) + "'"};
+            return badInput(file.string() + ": " + field + ": no such file '" +
+                         displayPath(file.parent_path() / name) + "'");
     }
     return loaded;
 }

@@ -75,7 +75,8 @@ TextureNames readTextures(JsonReader& parent, const MaterialFamily& family) {
 SceneSettings readScene(JsonReader reader, bool writtenBeforeModes) {
     SceneSettings scene;
     if (reader.has("mode"))
-        scene.mode = reader.enumeration("mode", parseSceneMode, "paper, ambient or environment");
+        scene.mode =
+            reader.enumeration("mode", parseSceneMode, choiceNamesInWords(kSceneModes));
     if (reader.has("environment")) scene.environment = reader.string("environment");
     if (reader.has("image_size")) scene.imageSize = int(reader.integer("image_size", 8, 4096));
     if (reader.has("camera_position"))
@@ -124,7 +125,7 @@ GaSettings readGaSettings(JsonReader reader) {
     ga.generations = int(reader.integer("generations", 0, kMaxGenerations));
     if (reader.has("metric"))
         ga.metric = reader.enumeration("metric", parseDistanceMetric,
-                                       "chebyshev, euclidean or manhattan");
+                                       choiceNamesInWords(kDistanceMetrics));
     if (reader.has("weights"))
         ga.weights =
             reader.numbers<kPaperChromosomeCount>("weights", 0.0, kMaxChromosomeWeight);

@@ -102,8 +102,8 @@ Status PreviousRunFiles::retire(const std::filesystem::path& replaced,
         if (::rmdir(replaced.c_str()) == 0 || errno == ENOENT) return Ok{};
     }
     if (moveToKeptName(replaced, output)) return Ok{};
-    return Error{displayPath(output) + ": cannot keep the files matevo did not write in the " +
-                 "folder it replaced, now " + displayPath(replaced) + ": " + std::strerror(errno)};
+    return badInput(displayPath(output) + ": cannot keep the files matevo did not write in the " +
+                 "folder it replaced, now " + displayPath(replaced) + ": " + std::strerror(errno));
 }
 
 }  // namespace matevo

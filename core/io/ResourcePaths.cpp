@@ -30,8 +30,8 @@ Result<std::filesystem::path> findResourceDirectory(std::string_view name) {
         if (std::filesystem::is_directory(candidate, error)) return candidate;
         lookedIn += (lookedIn.empty() ? "" : ", ") + candidate.string();
     }
-    return Error{"cannot find the '" + std::string(name) + "' folder; looked in " + lookedIn +
-                 " (set MATEVO_DATA_DIR to the folder that holds it)"};
+    return badInput("cannot find the '" + std::string(name) + "' folder; looked in " + lookedIn +
+                 " (set MATEVO_DATA_DIR to the folder that holds it)");
 }
 
 Result<std::filesystem::path> defaultPresetPath() {

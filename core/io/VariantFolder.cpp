@@ -7,7 +7,7 @@ namespace matevo {
 Result<std::vector<std::filesystem::path>> variantFolderFiles(const std::filesystem::path& folder) {
     std::error_code error;
     if (!std::filesystem::is_directory(folder, error))
-        return Error{folder.string() + ": not a folder of variants"};
+        return badInput(folder.string() + ": not a folder of variants");
     // `matevo variants --out DIR` puts the material files one level down.
     const std::filesystem::path variants =
         std::filesystem::is_directory(folder / "variants", error) ? folder / "variants" : folder;
@@ -19,9 +19,9 @@ Result<std::vector<std::filesystem::path>> variantFolderFiles(const std::filesys
         if (entry.path().extension() == ".json" && (entry.is_regular_file(typeError) || typeError))
             files.push_back(entry.path());
     }
-    if (error) return Error{variants.string() + ": cannot list: " + error.message()};
+    if (error) return badInput(variants.string() + ": cannot list: " + error.message());
     std::sort(files.begin(), files.end());
-    if (files.empty()) return Error{variants.string() + ": no material .json files"};
+    if (files.empty()) return badInput(variants.string() + ": no material .json files");
     return files;
 }
 

@@ -77,13 +77,14 @@ Result<FgdTables> parseFgdTables(std::string_view text, const TableGenerationSet
     const std::size_t fgdCount = expected.grid.fgdSize();
     const std::size_t tirCount = expected.grid.tirSize();
     if (text.size() != fgdTableFileSize(expected))
-        return Error{sourceName + ": unexpected size (stale or truncated)"};
+        return environmentError(sourceName + ": unexpected size (stale or truncated)");
     if (!std::equal(expectedHeader.begin(), expectedHeader.end(), bytes))
-        return Error{sourceName + ": header: other version or settings"};
+        return environmentError(sourceName + ": header: other version or settings");
     const std::size_t checksumOffset = text.size() - sizeof(std::uint64_t);
     std::uint64_t stored = 0;
     std::memcpy(&stored, bytes + checksumOffset, sizeof(stored));
-    if (stored != fnv1a(bytes, checksumOffset)) return Error{sourceName + ": checksum mismatch"};
+    if (stored != fnv1a(bytes, checksumOffset))
+        return environmentError(sourceName + ": checksum mismatch");
     auto fgd = floatsAt(bytes, expectedHeader.size(), fgdCount);
     auto tir = floatsAt(bytes, expectedHeader.size() + fgdCount * sizeof(float), tirCount);
     // A checksum proves the bytes are what was written, not that what was written is sane (a
@@ -91,7 +92,8 @@ Result<FgdTables> parseFgdTables(std::string_view text, const TableGenerationSet
     for (const auto* values : {&fgd, &tir})
         for (float value : *values)
             if (!(value >= 0.0f && value <= 1.0f))
-                return Error{sourceName + ": value " + std::to_string(value) + " outside [0, 1]"};
+                return environmentError(sourceName + ": value " + std::to_string(value) +
+                                        " outside [0, 1]");
     return FgdTables(expected.grid, std::move(fgd), std::move(tir));
 }
 

@@ -394,7 +394,7 @@ Result<Mesh> parseGltf(const std::string& bytes, const std::filesystem::path& fi
         if (first.empty() || errors.find(first) == std::string::npos)
             first = shortText(errors.substr(0, errors.find('\n')));
         if (first.empty()) first = "not a valid glTF 2.0 file";
-        return Error{name + ": " + first};
+        return badInput(name + ": " + first);
     }
     MeshBuilder builder{model, {}};
     try {
@@ -409,9 +409,9 @@ Result<Mesh> parseGltf(const std::string& bytes, const std::filesystem::path& fi
                 builder.addMesh(int(m), glm::mat4(1.0f));
         }
     } catch (const GltfError& failure) {
-        return Error{name + ": " + failure.message};
+        return badInput(name + ": " + failure.message);
     }
-    if (builder.mesh.indices.empty()) return Error{name + ": no triangles to draw"};
+    if (builder.mesh.indices.empty()) return badInput(name + ": no triangles to draw");
     if (builder.missingNormals) computeVertexNormals(builder.mesh);
     return std::move(builder.mesh);
 }

@@ -44,15 +44,15 @@ void fitToUnitSphere(Mesh& mesh) {
 
 Status validateMesh(const Mesh& mesh, const std::string& source) {
     if (mesh.indices.empty() || mesh.indices.size() % 3 != 0)
-        return Error{source + ": no triangles to draw"};
+        return badInput(source + ": no triangles to draw");
     for (std::uint32_t index : mesh.indices)
         if (index >= mesh.vertices.size())
-            return Error{source + ": vertex index " + std::to_string(index) + " out of range (" +
-                         std::to_string(mesh.vertices.size()) + " vertices)"};
+            return badInput(source + ": vertex index " + std::to_string(index) + " out of range (" +
+                         std::to_string(mesh.vertices.size()) + " vertices)");
     for (const MeshVertex& vertex : mesh.vertices)
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(vertex.position[c]) || !std::isfinite(vertex.normal[c]))
-                return Error{source + ": a vertex position or normal is not a finite number"};
+                return badInput(source + ": a vertex position or normal is not a finite number");
     return Ok{};
 }
 

@@ -22,8 +22,9 @@ Result<Mesh> loadMesh(const std::string& nameOrFile) {
     if (const auto builtIn = parseBuiltInMesh(nameOrFile)) return makeBuiltInMesh(*builtIn);
     const std::filesystem::path file(nameOrFile);
     if (!isMeshFileName(file))
-        return Error{nameOrFile +
-                     ": not a mesh: expected sphere, shaderball, knot or a .obj, .gltf or .glb file"};
+        return badInput(
+            nameOrFile +
+            ": not a mesh: expected sphere, shaderball, knot or a .obj, .gltf or .glb file");
     auto bytes = readInputFile(file, kMaxMeshFileBytes);
     if (!bytes) return bytes.error();
     return parseMeshFile(*bytes, file);

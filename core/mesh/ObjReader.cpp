@@ -144,10 +144,10 @@ Result<Mesh> parseObj(const std::string& text, const std::string& sourceName) {
         try {
             parseLine(data, line);
         } catch (const LineError& error) {
-            return Error{sourceName + ":" + std::to_string(lineNumber) + ": " + error.message};
+            return badInput(sourceName + ":" + std::to_string(lineNumber) + ": " + error.message);
         }
     }
-    if (data.mesh.indices.empty()) return Error{sourceName + ": no faces (f lines) to draw"};
+    if (data.mesh.indices.empty()) return badInput(sourceName + ": no faces (f lines) to draw");
     if (data.missingNormals) computeVertexNormals(data.mesh);
     return std::move(data.mesh);
 }

@@ -15,7 +15,7 @@ Status CpuPopulationRenderer::setTextures(const SceneTextures& textures) {
 
 Result<std::vector<Image>> CpuPopulationRenderer::render(
     std::span<const MaterialInstance> materials, const SceneSettings& scene, int size) {
-    if (size <= 0) return Error{"CPU render: image size must be positive"};
+    if (size <= 0) return internalError("CPU render: image size must be positive");
     std::vector<Image> images;
     images.reserve(materials.size());
     for (const MaterialInstance& material : materials) {
@@ -28,7 +28,7 @@ Result<std::vector<Image>> CpuPopulationRenderer::render(
 Result<PopulationEvaluation> CpuPopulationRenderer::evaluate(
     const MaterialInstance& target, std::span<const MaterialInstance> candidates,
     const SceneSettings& scene, int size, const EvaluationOptions& options) {
-    if (size <= 0) return Error{"CPU render: image size must be positive"};
+    if (size <= 0) return internalError("CPU render: image size must be positive");
     const TargetKey key{target, scene, size};
     if (targetKey_ != key) {
         target_ = renderSphereCpu(target, textures_, scene, size);

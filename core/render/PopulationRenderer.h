@@ -15,6 +15,7 @@
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/ImageMetric.h"
+#include "common/Choice.h"
 #include "common/Image.h"
 #include "common/Result.h"
 #include "material/MaterialInstance.h"
@@ -28,6 +29,11 @@ struct DisplayTile;
 }
 
 enum class RenderBackend { Gpu, Cpu };
+// The back ends by name: --backend, reports' "made_by".
+inline constexpr std::array<Choice<RenderBackend>, 2> kRenderBackends{{
+    {RenderBackend::Gpu, "gpu", "GPU"},
+    {RenderBackend::Cpu, "cpu", "CPU"},
+}};
 
 struct PopulationEvaluation {
     Image target;

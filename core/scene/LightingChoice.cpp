@@ -7,7 +7,8 @@ namespace matevo {
 Status applyLightingChoice(const std::string& choice, SceneSettings& scene,
                            SceneTextures& textures, const PrefilterSettings& prefilter) {
     textures.environment = {};
-    if (choice != "paper" && choice != "ambient") {
+    const SceneMode mode = parseChoice(kLightings, choice).value_or(SceneMode::Environment);
+    if (mode == SceneMode::Environment) {
         auto environment = loadEnvironment(choice, prefilter);
         if (!environment) return environment.error();
         textures.environment = std::move(environment).value();
@@ -17,8 +18,8 @@ Status applyLightingChoice(const std::string& choice, SceneSettings& scene,
 }
 
 void setLightingChoice(const std::string& choice, SceneSettings& scene) {
-    if (choice == "paper" || choice == "ambient") {
-        scene.mode = *parseSceneMode(choice);
+    if (auto mode = parseChoice(kLightings, choice); mode && *mode != SceneMode::Environment) {
+        scene.mode = *mode;
         return;
     }
     scene.mode = SceneMode::Environment;

@@ -6,14 +6,24 @@
 //   FILE     the light plus a lat-long .hdr / .exr environment
 // It sets SceneSettings::mode (and environment); the environment ones are prefiltered here
 // (PrefilteredEnvironment.h) and put into SceneTextures, which both renderers shade from.
+#include <array>
 #include <string>
 
+#include "common/Choice.h"
 #include "common/Result.h"
 #include "scene/PrefilteredEnvironment.h"
 #include "scene/SceneSettings.h"
 #include "scene/SceneTextures.h"
 
 namespace matevo {
+
+// The lightings offered by name (render and scene --env, the editor's combo), each with the
+// scene mode it sets; any other name is an environment file.
+inline constexpr std::array<Choice<SceneMode>, 3> kLightings{{
+    {SceneMode::Paper, "paper", "paper"},
+    {SceneMode::Ambient, "ambient", "ambient"},
+    {SceneMode::Environment, "studio", "studio"},
+}};
 
 // Errors name the environment file.
 Status applyLightingChoice(const std::string& choice, SceneSettings& scene,

@@ -16,35 +16,29 @@
 #include <string>
 #include <string_view>
 
+#include "common/Choice.h"
+
 namespace matevo {
 
 enum class SceneMode { Paper, Ambient, Environment };
 
-// Header-only, like the struct: core/io reads and writes it without linking the renderer.
-inline std::string_view toString(SceneMode mode) {
-    switch (mode) {
-        case SceneMode::Paper: return "paper";
-        case SceneMode::Ambient: return "ambient";
-        case SceneMode::Environment: return "environment";
-    }
-    return "paper";
-}
+// The modes by name (a preset's "scene.mode", experiment --scene, the preset schema) and a line
+// for people. Header-only, like the struct: core/io reads and writes it without linking the
+// renderer.
+inline constexpr std::array<Choice<SceneMode>, 3> kSceneModes{{
+    {SceneMode::Paper, "paper", "paper (one light, no ambient)"},
+    {SceneMode::Ambient, "ambient", "ambient (one light + uniform ambient)"},
+    {SceneMode::Environment, "environment", "environment (one light + HDR environment)"},
+}};
+
+inline std::string_view toString(SceneMode mode) { return choiceName(kSceneModes, mode); }
 
 inline std::optional<SceneMode> parseSceneMode(std::string_view text) {
-    for (SceneMode mode : {SceneMode::Paper, SceneMode::Ambient, SceneMode::Environment})
-        if (text == toString(mode)) return mode;
-    return std::nullopt;
+    return parseChoice(kSceneModes, text);
 }
 
 // One line for people: "paper (one light, no ambient)".
-inline std::string_view describe(SceneMode mode) {
-    switch (mode) {
-        case SceneMode::Paper: return "paper (one light, no ambient)";
-        case SceneMode::Ambient: return "ambient (one light + uniform ambient)";
-        case SceneMode::Environment: return "environment (one light + HDR environment)";
-    }
-    return "paper (one light, no ambient)";
-}
+inline std::string_view describe(SceneMode mode) { return choiceLabel(kSceneModes, mode); }
 
 struct SceneSettings {
     SceneMode mode = SceneMode::Paper;

@@ -15,16 +15,16 @@ Result<Image> loadTexture(const std::string& source, const std::string& field,
                           const std::filesystem::path& file) {
     if (file.empty()) return Image();
     auto image = readImage(file);
-    if (!image) return Error{source + ": " + field + ": " + image.error().message};
+    if (!image) return withContext(image.error(), source + ": " + field);
     // Texels scale roughness or colour: an EXR may hold anything, the model needs [0, 1].
     for (std::size_t i = 0; i < image->rgba.size(); ++i) {
         const float value = image->rgba[i];
         if (value < 0.0f || value > 1.0f) {
             const std::size_t pixel = i / 4;
-            return Error{source + ": " + field + ": texel (" +
+            return badInput(source + ": " + field + ": texel (" +
                          std::to_string(pixel % std::size_t(image->width)) + ", " +
                          std::to_string(pixel / std::size_t(image->width)) + ") value " +
-                         std::to_string(value) + " outside [0, 1]"};
+                         std::to_string(value) + " outside [0, 1]");
         }
     }
     return image;
@@ -54,7 +54,7 @@ Result<SceneTextures> withEnvironment(SceneTextures textures, const SceneSetting
     if (scene.mode != SceneMode::Environment) return textures;
     auto environment = loadEnvironment(environmentFile(scene, folder));
     if (!environment)
-        return Error{source + ": scene.environment: " + environment.error().message};
+        return withContext(environment.error(), source + ": scene.environment");
     textures.environment = std::move(environment).value();
     return textures;
 }

@@ -76,12 +76,12 @@ Result<PrefilteredEnvironment> loadEnvironment(const std::string& studioOrFile,
     auto image = readImage(studioOrFile);
     if (!image) return image.error();
     if (image->width < 2 * image->height - 1 || image->width > 2 * image->height + 1)
-        return Error{studioOrFile + ": not a latitude-longitude environment (" +
+        return badInput(studioOrFile + ": not a latitude-longitude environment (" +
                      std::to_string(image->width) + "x" + std::to_string(image->height) +
-                     "; width must be twice the height)"};
+                     "; width must be twice the height)");
     for (float value : image->rgba)
         if (!std::isfinite(value) || value < 0.0f)
-            return Error{studioOrFile + ": has negative or non-finite radiance"};
+            return badInput(studioOrFile + ": has negative or non-finite radiance");
     return prefilterEnvironment(*image, settings);
 }
 

@@ -24,7 +24,7 @@ Result<GenomeRenderCache> GenomeRenderCache::create(RenderGenomes render, const 
                                                     ImageMetric metric) {
     auto images = render(std::span(&target, 1));
     if (!images) return images.error();
-    if (images->size() != 1) return Error{"the renderer returned no image for the target"};
+    if (images->size() != 1) return internalError("the renderer returned no image for the target");
     GenomeRenderCache cache;
     cache.render_ = std::move(render);
     cache.target_ = toLabImage(images->front());
@@ -42,8 +42,8 @@ Status GenomeRenderCache::renderMissing(std::span<const Genome> genomes) {
     auto images = render_(missing);
     if (!images) return images.error();
     if (images->size() != missing.size())
-        return Error{"the renderer returned " + std::to_string(images->size()) + " images for " +
-                     std::to_string(missing.size()) + " genomes"};
+        return internalError("the renderer returned " + std::to_string(images->size()) +
+                             " images for " + std::to_string(missing.size()) + " genomes");
     for (std::size_t i = 0; i < missing.size(); ++i) {
         GenomeRender entry{toLabImage((*images)[i]), 0.0};
         entry.deltaEToTarget = meanDeltaE00(target_, entry.lab);

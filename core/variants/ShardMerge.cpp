@@ -26,7 +26,7 @@ struct ShareReport {
 };
 
 Error fieldError(const fs::path& folder, const std::string& field, const std::string& problem) {
-    return Error{displayPath(folder / "report.json") + ": " + field + ": " + problem};
+    return badInput(displayPath(folder / "report.json") + ": " + field + ": " + problem);
 }
 
 Result<ShareReport> readShare(const fs::path& folder) {
@@ -37,7 +37,7 @@ Result<ShareReport> readShare(const fs::path& folder) {
     if (!report) return report.error();
     ShareReport share{folder, std::move(*report), {}};
     if (!share.report.is_object())
-        return Error{displayPath(folder / "report.json") + ": not a JSON object"};
+        return badInput(displayPath(folder / "report.json") + ": not a JSON object");
     if (!share.report.contains("shard"))
         return fieldError(folder, "shard", "missing (not written by matevo variants --shard I/K)");
     try {
@@ -66,7 +66,7 @@ Status copyMaterial(const fs::path& from, const fs::path& dir, const fs::path& t
     auto loaded = loadMaterial(from, MaterialFile{});
     if (!loaded) return loaded.error();
     if (loaded->fromContext)
-        return Error{displayPath(from) + ": a bare genome, not a variant's material file"};
+        return badInput(displayPath(from) + ": a bare genome, not a variant's material file");
     auto carried = carryTextures(loaded->file, dir);
     if (!carried) return carried.error();
     return saveMaterial(*carried, to);
@@ -161,7 +161,7 @@ nlohmann::ordered_json joinedMadeBy(const std::vector<const ShareReport*>& share
 
 Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
                                            const fs::path& dir) {
-    if (folders.empty()) return Error{"no share folders given"};
+    if (folders.empty()) return badInput("no share folders given");
     std::vector<ShareReport> shares;
     for (const fs::path& folder : folders) {
         auto share = readShare(folder);
@@ -212,8 +212,8 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
     }
     for (int index = 0; index < shareCount; ++index)
         if (!byIndex[std::size_t(index)])
-            return Error{"share " + std::to_string(index) + "/" + std::to_string(shareCount) +
-                         " is missing"};
+            return badInput("share " + std::to_string(index) + "/" + std::to_string(shareCount) +
+                         " is missing");
 
     auto target = readInputFile(first.folder / "target.png", kMaxImageFileBytes);
     if (!target) return target.error();
@@ -221,17 +221,17 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
         auto bytes = readInputFile(share->folder / "target.png", kMaxImageFileBytes);
         if (!bytes) return bytes.error();
         if (*bytes != *target)
-            return Error{displayPath(share->folder / "target.png") + ": differs from " +
+            return badInput(displayPath(share->folder / "target.png") + ": differs from " +
                          displayPath(first.folder / "target.png") +
-                         " (rendered by another back end or version?)"};
+                         " (rendered by another back end or version?)");
     }
 
     for (const fs::path& folder : {dir / "variants", (dir / blockContactSheet(0)).parent_path()}) {
         std::error_code error;
         fs::create_directories(folder, error);
         if (error)
-            return Error{"cannot create folder '" + folder.string() + "' (" + error.message() +
-                         ")"};
+            return badInput("cannot create folder '" + folder.string() + "' (" + error.message() +
+                         ")");
     }
     BlockReport joined;
     for (const char* field : kBlockHeaderFields) joined.header[field] = first.report[field];

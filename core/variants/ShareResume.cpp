@@ -52,9 +52,9 @@ Result<ResumableBlocks> readResumableBlocks(const fs::path& folder, const BlockR
     if (!parsed) return parsed.error();
     const nlohmann::ordered_json& report = *parsed;
     auto fieldError = [&file](const std::string& field, const std::string& problem) {
-        return Error{displayPath(file) + ": " + field + ": " + problem};
+        return badInput(displayPath(file) + ": " + field + ": " + problem);
     };
-    if (!report.is_object()) return Error{displayPath(file) + ": not a JSON object"};
+    if (!report.is_object()) return badInput(displayPath(file) + ": not a JSON object");
     ResumableBlocks kept;
     try {
         for (const auto& [field, expected] : header.header.items()) {

@@ -168,8 +168,8 @@ Status writeVariantBlock(const std::filesystem::path& dir, const MaterialFile& t
     std::error_code error;
     std::filesystem::create_directories(sheet.parent_path(), error);
     if (error)
-        return Error{"cannot create folder '" + sheet.parent_path().string() + "' (" +
-                     error.message() + ")"};
+        return badInput("cannot create folder '" + sheet.parent_path().string() + "' (" +
+                     error.message() + ")");
     return writeImage(contactSheet(set, font, first, count), sheet);
 }
 

@@ -33,7 +33,7 @@ Status createFolder(const std::filesystem::path& folder) {
     std::error_code error;
     std::filesystem::create_directories(folder, error);
     if (error)
-        return Error{"cannot create folder '" + folder.string() + "' (" + error.message() + ")"};
+        return badInput("cannot create folder '" + folder.string() + "' (" + error.message() + ")");
     return Ok{};
 }
 

@@ -262,7 +262,7 @@ TEST(VariantSearch, FindVariantsIsTheSearchThenTheChoiceAndStopsWhenAsked) {
 TEST(VariantSearch, ARenderFailureIsAnError) {
     int calls = 0;
     auto failing = [&](std::span<const Genome> genomes) -> Result<std::vector<Image>> {
-        if (++calls > 1) return Error{"device lost"};
+        if (++calls > 1) return environmentError("device lost");
         return cpuRenderer(8)(genomes);
     };
     auto search =

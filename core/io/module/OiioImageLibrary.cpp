@@ -63,7 +63,7 @@ Result<DecodedImage> readSamples(OIIO::ImageInput& input, const OIIO::ImageSpec&
         return input.read_image(0, 0, 0, channels, OIIO::TypeDesc::UNKNOWN, destination);
     };
     const auto cannotDecode = [&input] {
-        return Error{"cannot decode: " + oneLine(input.geterror())};
+        return badInput("cannot decode: " + oneLine(input.geterror()));
     };
     if (spec.channelformats.empty() && spec.format == type) {
         if (!readAsStored(samples.data())) return cannotDecode();
@@ -80,7 +80,7 @@ Result<DecodedImage> readSamples(OIIO::ImageInput& input, const OIIO::ImageSpec&
                                  storedPixelBytes, storedPixelBytes * spec.width, OIIO::AutoStride,
                                  samples.data() + c, type, samplePixelBytes,
                                  samplePixelBytes * spec.width, OIIO::AutoStride))
-            return Error{"cannot decode: no conversion from " + std::string(storedType.c_str())};
+            return badInput("cannot decode: no conversion from " + std::string(storedType.c_str()));
         offset += storedType.size();
     }
     return DecodedImage{spec.width, spec.height, channels, std::move(samples)};
@@ -89,27 +89,27 @@ Result<DecodedImage> readSamples(OIIO::ImageInput& input, const OIIO::ImageSpec&
 Result<DecodedImage> decode(std::string_view bytes, const std::filesystem::path& file,
                             const DecodedSizeCheck& checkSize) {
     std::string extension = lowerCaseExtension(file);
-    if (extension.empty()) return Error{"no file extension to tell the image type"};
+    if (extension.empty()) return badInput("no file extension to tell the image type");
     extension.erase(0, 1);  // OpenImageIO looks formats up by the extension without its dot
     auto input = OIIO::ImageInput::create(extension);
     if (!input)
-        return Error{"unsupported image type '." + extension + "' (not one OpenImageIO reads)"};
+        return badInput("unsupported image type '." + extension + "' (not one OpenImageIO reads)");
     BoundedMemoryReader memory(bytes.data(), bytes.size());
     if (input->supports("ioproxy") && !input->set_ioproxy(&memory))
-        return Error{"cannot decode from memory: " + oneLine(input->geterror())};
+        return badInput("cannot decode from memory: " + oneLine(input->geterror()));
     // Straight alpha as stored; without this hint OpenImageIO would premultiply on read.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     OIIO::ImageSpec spec;
     if (!input->open(file.string(), spec, config))
-        return Error{"not a readable " + displayFormat(input->format_name()) +
-                     " image: " + oneLine(input->geterror())};
-    if (spec.width <= 0 || spec.height <= 0) return Error{"empty image"};
+        return badInput("not a readable " + displayFormat(input->format_name()) +
+                     " image: " + oneLine(input->geterror()));
+    if (spec.width <= 0 || spec.height <= 0) return badInput("empty image");
     // A volume (a TIFF or DDS with depth) holds several images; we read one.
-    if (spec.depth != 1) return Error{"volume images are not supported"};
+    if (spec.depth != 1) return badInput("volume images are not supported");
     if (auto fits = checkSize(spec.width, spec.height, spec.nchannels); !fits) return fits.error();
 
-    Result<DecodedImage> decoded = Error{""};
+    Result<DecodedImage> decoded = internalError("no sample type chosen");
     switch (spec.format.basetype) {
         case OIIO::TypeDesc::UINT8:
             decoded = readSamples<std::uint8_t>(*input, spec, OIIO::TypeDesc::UINT8);
@@ -129,7 +129,7 @@ Result<DecodedImage> decode(std::string_view bytes, const std::filesystem::path&
 
 Result<std::string> encodeExr(const float* rgba, int width, int height) {
     auto output = OIIO::ImageOutput::create("openexr");
-    if (!output) return Error{"cannot encode: " + oneLine(OIIO::geterror())};
+    if (!output) return badInput("cannot encode: " + oneLine(OIIO::geterror()));
     OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::FLOAT);
     spec.alpha_channel = 3;
     std::vector<unsigned char> encoded;
@@ -140,7 +140,7 @@ Result<std::string> encodeExr(const float* rgba, int width, int height) {
         written = output->write_image(OIIO::TypeDesc::FLOAT, rgba);
         written = output->close() && written;
     }
-    if (!written) return Error{"cannot encode: " + oneLine(output->geterror())};
+    if (!written) return badInput("cannot encode: " + oneLine(output->geterror()));
     return std::string(reinterpret_cast<const char*>(encoded.data()), encoded.size());
 }
 
