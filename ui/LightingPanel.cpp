@@ -12,13 +12,16 @@
 namespace matevo::ui {
 namespace {
 
-constexpr const char* kChoiceLabels[] = {"paper's light", "light + ambient",
-                                         "studio environment", "HDR file"};
-constexpr int kFileChoice = 3;
+// The named lightings (scene/LightingChoice.h), then a file.
+constexpr int kFileChoice = int(kLightings.size());
+
+const char* comboLabel(int choice) {
+    return choice == kFileChoice ? "HDR file" : kLightings[std::size_t(choice)].label.data();
+}
 
 int choiceIndex(const std::string& lighting) {
     for (int i = 0; i < kFileChoice; ++i)
-        if (lighting == kLightingNames[i]) return i;
+        if (lighting == kLightings[std::size_t(i)].name) return i;
     return kFileChoice;
 }
 
@@ -36,13 +39,13 @@ bool drawLightingChoice(SceneSettings& scene, LightingView& view) {
     const int current = choiceIndex(lighting);
     if (current == kFileChoice && view.hdrFile.empty()) view.hdrFile = lighting;
     bool changed = false;
-    if (ImGui::BeginCombo("lighting", kChoiceLabels[view.typingFile ? kFileChoice : current])) {
+    if (ImGui::BeginCombo("lighting", comboLabel(view.typingFile ? kFileChoice : current))) {
         for (int i = 0; i <= kFileChoice; ++i) {
-            if (!ImGui::Selectable(kChoiceLabels[i], i == current) || i == current) continue;
+            if (!ImGui::Selectable(comboLabel(i), i == current) || i == current) continue;
             // A file is applied once typed (Enter); a named lighting at once.
             view.typingFile = i == kFileChoice;
             if (i < kFileChoice) {
-                setLightingChoice(kLightingNames[i], scene);
+                setLightingChoice(std::string(kLightings[std::size_t(i)].name), scene);
                 changed = true;
             }
         }
@@ -67,7 +70,8 @@ bool drawLightingChoice(SceneSettings& scene, LightingView& view) {
 
 void drawHoldUnderLightings(std::vector<std::string>& also, const std::string& chosen) {
     ImGui::TextUnformatted("hold under");
-    for (const char* name : kLightingNames) {
+    for (const auto& lighting : kLightings) {
+        const char* name = lighting.name.data();
         ImGui::SameLine();
         const bool isChosen = chosen == name;
         const auto found = std::find(also.begin(), also.end(), name);

@@ -19,9 +19,6 @@ struct LightingView {
     bool typingFile = false;  // "HDR file" picked, the file not applied yet
 };
 
-// The lighting names the editor offers besides a file, as LightingChoice takes them.
-inline constexpr const char* kLightingNames[] = {"paper", "ambient", "studio"};
-
 // A lighting as the user names it, as the preset keeps it: paper, ambient and studio as they
 // are, a file made absolute (relative to the working folder, as `render --env` reads it), so
 // that it means the same file wherever the preset is saved.

@@ -20,9 +20,9 @@ namespace matevo {
 // The lightings offered by name (render and scene --env, the editor's combo), each with the
 // scene mode it sets; any other name is an environment file.
 inline constexpr std::array<Choice<SceneMode>, 3> kLightings{{
-    {SceneMode::Paper, "paper", "paper"},
-    {SceneMode::Ambient, "ambient", "ambient"},
-    {SceneMode::Environment, "studio", "studio"},
+    {SceneMode::Paper, "paper", "paper's light"},
+    {SceneMode::Ambient, "ambient", "light + ambient"},
+    {SceneMode::Environment, "studio", "studio environment"},
 }};
 
 // Errors name the environment file.
