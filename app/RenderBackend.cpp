@@ -29,11 +29,7 @@ std::unique_ptr<PopulationRenderer> createCommandRenderer(const gpu::RendererReq
                                                           const Preset& preset,
                                                           const std::filesystem::path& presetFile) {
     auto renderer = gpu::createPresetRenderer(request, preset, presetFile);
-    if (!renderer) {
-        if (renderer.error().kind == ErrorKind::BadInput)
-            throw UsageError(renderer.error().message);
-        throw MachineFailure(renderer.error().message);
-    }
+    if (!renderer) throw CommandFailure(renderer.error());
     return std::move(renderer).value();
 }
 

@@ -6,7 +6,7 @@
 #include "export/GltfRenderer.h"
 #include "io/ImageFile.h"
 #include "material/MaterialInstance.h"
-#include "material/ParallelFor.h"
+#include "common/ParallelFor.h"
 
 namespace matevo {
 
@@ -72,7 +72,7 @@ Result<FittedSet> GltfDelivery::fittedSet(const std::vector<Member>& members) co
         if (conversion == conversions_.end())
             return internalError("glTF delivery: " + member.name + " was never converted");
         auto difference = compareImages(conversion->second.look, member.belcour);
-        if (!difference) return Error{member.name + ": " + difference.error().message};
+        if (!difference) return withContext(difference.error(), member.name);
         set.variants.push_back({member.name, conversion->second.fit, std::move(*difference),
                                 member.belcour, conversion->second.look});
     }

@@ -131,7 +131,7 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateIntoTiles(
     const SceneSettings& scene, int size, const EvaluationOptions& options,
     const TileOutput& tiles) {
     if (tiles.tiles.size() != candidates.size())
-        return Error{"GPU render: one tile per candidate expected"};
+        return internalError("GPU render: one tile per candidate expected");
     return evaluateOnDevice(target, candidates, scene, size, options, tiles.tiles);
 }
 
@@ -195,7 +195,7 @@ Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
                                              const SceneSettings& scene, int size,
                                              const TileOutput& tile) {
     if (cancel_.cancelled()) return cancelledError("rendering cancelled");
-    if (tile.tiles.size() != 1) return Error{"GPU render: one tile expected"};
+    if (tile.tiles.size() != 1) return internalError("GPU render: one tile expected");
     const ImageBatchShape shape{size, size, 1};
     auto buffer = createBatchBuffer(*device_, shape, 4, MemoryUse::DeviceLocal);
     if (!buffer) return buffer.error();

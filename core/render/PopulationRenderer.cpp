@@ -9,7 +9,7 @@ Result<PopulationEvaluation> PopulationRenderer::evaluateIntoTiles(
     const SceneSettings& scene, int size, const EvaluationOptions& options,
     const TileOutput& tiles) {
     if (tiles.tiles.size() != candidates.size())
-        return Error{"render: one tile per candidate expected"};
+        return internalError("render: one tile per candidate expected");
     EvaluationOptions withImages = options;
     withImages.candidateImages = true;  // the tiles' pictures
     auto evaluation = evaluate(target, candidates, scene, size, withImages);

@@ -63,7 +63,7 @@ Status writeDeliveredLooks(const std::filesystem::path& dir, const DeliveredSet&
     std::error_code error;
     std::filesystem::create_directories(folder, error);
     if (error)
-        return Error{"cannot create folder '" + folder.string() + "' (" + error.message() + ")"};
+        return badInput("cannot create folder '" + folder.string() + "' (" + error.message() + ")");
     if (auto written = writeImage(delivered.target, folder / "target.png"); !written)
         return written;
     for (std::size_t i = 0; i < delivered.variants.size(); ++i)

@@ -287,7 +287,7 @@ Status saveVariantFolder(OutputFolder& output, const MaterialFile& target, const
     if (auto written =
             writeVariantFiles(output.staging(), target, set, report, font, heatmapMetric);
         !written)
-        return Error{output.userFacing(written.error().message)};
+        return output.userFacing(written.error());
     return output.commit();
 }
 

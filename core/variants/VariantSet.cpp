@@ -177,8 +177,8 @@ Result<VariantSet> measureVariantSet(const Genome& target, std::span<const Genom
     auto images = outputRender(all);
     if (!images) return images.error();
     if (images->size() != all.size())
-        return Error{"the renderer returned " + std::to_string(images->size()) + " images for " +
-                     std::to_string(all.size()) + " genomes"};
+        return internalError("the renderer returned " + std::to_string(images->size()) +
+                             " images for " + std::to_string(all.size()) + " genomes");
     std::vector<LabImage> labs;
     for (const Image& image : *images) labs.push_back(toLabImage(image));
     VariantSet set;
