@@ -17,7 +17,7 @@
 //                           one ("hold under several lightings"); "none" clears them
 //   wait-scene              draw until the Scene window shows a render (gives up after 120 s)
 //   undo | redo
-//   resize W H              resize the window (pixels)
+//   resize W H              resize the window (pixels; clamped to the screen)
 //   check-layout            fail (exit 1) if a panel cuts off a control at its right edge
 //   screenshot PATH         PNG of the window, as F12
 //   redraw                  draw the whole window again, as after it was uncovered (frames
