@@ -28,10 +28,11 @@ constexpr int kVariantSpare = 4;                           // VariantSearchSetti
 constexpr std::uint64_t kExperimentBatch = 64;             // scoreRuns' default batch
 // Peak memory, measured as max RSS (/usr/bin/time -v, Release build, lavapipe) at several sizes
 // and fitted as a fixed part plus parts per pixel, instance, vertex and triangle.
-// compare: both images decoded at once (samples and RGBA floats), then both images, the error
-// map and the heatmap with its PNG encoding; the same for ΔE00 and FLIP (whose planes are
-// tiled): 55 bytes a pixel at 2048x2048 and 8192x8192.
-constexpr std::uint64_t kCompareBytesPerPixel = 56;
+// compare: both files read and decoded at once (samples and RGBA floats), then both images,
+// the error map and the heatmap with its PNG encoding; about the same for ΔE00 and FLIP (whose
+// planes are tiled): 55 bytes a pixel from 8-bit PNG files at 2048x2048 and 8192x8192, 81 from
+// float EXR files at 4096x4096 (the files themselves and the library's buffers).
+constexpr std::uint64_t kCompareBytesPerPixel = 84;
 constexpr std::uint64_t kCompareFixedBytes = 16ull << 20;
 // scene: the program, the Vulkan driver and its compiled pipelines (112 MiB at 256x256);
 // per pixel the radiance, the 4 samples' visibility words (or the MSAA targets), the
@@ -39,10 +40,9 @@ constexpr std::uint64_t kCompareFixedBytes = 16ull << 20;
 // at 2048x2048 and 4096x4096, 110 as EXR).
 constexpr std::uint64_t kSceneFixedBytes = 96ull << 20;
 constexpr std::uint64_t kSceneBytesPerPixel = 100;
-// Per instance its transform and material, and an (instance, cluster) entry per cluster of
-// kClusterTriangles = 64 triangles (2000 shaderballs at 1024x1024: 5 KiB each).
-constexpr std::uint64_t kSceneBytesPerInstance = 128;
-constexpr std::uint64_t kSceneTrianglesPerClusterEntry = 64 / 8;
+// Per instance its placement, its GPU record and the (instance, cluster) entries of the
+// clusters it shows: 209 MiB for 2000 and 5000 shaderballs at 1024x1024, 224 MiB for 100000.
+constexpr std::uint64_t kSceneBytesPerInstance = 256;
 // The mesh on the host, in the staging buffer and on the device; a texture texel likewise.
 constexpr std::uint64_t kMeshBytesPerVertex = 3 * 32;
 constexpr std::uint64_t kMeshBytesPerTriangle = 3 * 12 + 16;
@@ -164,11 +164,6 @@ std::uint64_t contentsBytes(const SceneContents& contents) {
            contents.texturePixels * kTextureBytesPerTexel;
 }
 
-std::uint64_t instancesBytes(std::uint64_t instances, const SceneContents& contents) {
-    return instances *
-           (kSceneBytesPerInstance + contents.meshTriangles / kSceneTrianglesPerClusterEntry);
-}
-
 }  // namespace
 
 WorkEstimate sceneEstimate(int width, int height, std::uint64_t instances,
@@ -176,7 +171,7 @@ WorkEstimate sceneEstimate(int width, int height, std::uint64_t instances,
     return {countOf(instances, "instance") + " at " + std::to_string(width) + "x" +
                 std::to_string(height),
             kSceneFixedBytes + pixels(width, height) * kSceneBytesPerPixel +
-                instancesBytes(instances, contents) + contentsBytes(contents),
+                instances * kSceneBytesPerInstance + contentsBytes(contents),
             double(pixels(width, height)) * kRenderSecondsPerPixel};
 }
 
