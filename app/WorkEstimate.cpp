@@ -7,6 +7,8 @@
 #include "EvolveImages.h"
 #include "Messages.h"
 #include "common/MemoryBudget.h"
+#include "mesh/Mesh.h"
+#include "scene/SceneTextures.h"
 
 namespace matevo::cli {
 namespace {
@@ -24,12 +26,45 @@ constexpr std::uint64_t kSearchBytesPerPixel = 2 * (16 + 13);
 constexpr std::uint64_t kSetBytesPerPixel = 16 + 16 + 13;
 constexpr int kVariantSpare = 4;                           // VariantSearchSettings::spare
 constexpr std::uint64_t kExperimentBatch = 64;             // scoreRuns' default batch
-constexpr std::uint64_t kDeltaEBytesPerPixel = 4 + 16;     // the ΔE00 map and its heatmap
-constexpr std::uint64_t kFlipBytesPerPixel = 12 * 4 + 16;  // FLIP's float planes and heatmap
+// Peak memory, measured as max RSS (/usr/bin/time -v, Release build, lavapipe) at several sizes
+// and fitted as a fixed part plus parts per pixel, instance, vertex and triangle.
+// compare: both files read and decoded at once (samples and RGBA floats), then both images,
+// the error map and the heatmap with its PNG encoding; about the same for ΔE00 and FLIP (whose
+// planes are tiled): 55 bytes a pixel from 8-bit PNG files at 2048x2048 and 8192x8192, 81 from
+// float EXR files at 4096x4096 (the files themselves and the library's buffers).
+constexpr std::uint64_t kCompareBytesPerPixel = 84;
+constexpr std::uint64_t kCompareFixedBytes = 16ull << 20;
+// scene: the program, the Vulkan driver and its compiled pipelines (112 MiB at 256x256);
+// per pixel the radiance, the 4 samples' visibility words (or the MSAA targets), the
+// displayed image, its read-back, the Image and the encoding (83-86 bytes a pixel as PNG
+// at 2048x2048 and 4096x4096, 110 as EXR).
+constexpr std::uint64_t kSceneFixedBytes = 96ull << 20;
+constexpr std::uint64_t kSceneBytesPerPixel = 100;
+// Per instance its placement, its GPU record and the (instance, cluster) entries of the
+// clusters it shows: 209 MiB for 2000 and 5000 shaderballs at 1024x1024, 224 MiB for 100000.
+constexpr std::uint64_t kSceneBytesPerInstance = 256;
+// The mesh on the host, in the staging buffer and on the device; a texture texel likewise.
+constexpr std::uint64_t kMeshBytesPerVertex = 3 * 32;
+constexpr std::uint64_t kMeshBytesPerTriangle = 3 * 12 + 16;
+constexpr std::uint64_t kTextureBytesPerTexel = 3 * 16;
+// export: the program and renderer (99 MiB at the default sizes); while one material is
+// reported, the renders, read-backs and comparison at the report size (102 bytes a pixel);
+// each material's two renders and ΔE00 map kept for the report, twice (the fitted set and the
+// report): 74 bytes a pixel (1 material at 2048, 8 at 1024 and 2048); the fit's renders.
+constexpr std::uint64_t kExportFixedBytes = 96ull << 20;
+constexpr std::uint64_t kExportWorkBytesPerReportPixel = 104;
+constexpr std::uint64_t kExportBytesPerReportPixel = 74;
+constexpr std::uint64_t kExportBytesPerFitPixel = 232;
+constexpr std::uint64_t kExportBytesPerInstance = 1024;  // a node in the glTF and its JSON
 constexpr std::uint64_t kLargeBytes = 1ull << 30;
 constexpr double kLargeSeconds = 30;
 
 std::uint64_t pixels(int width, int height) { return std::uint64_t(width) * std::uint64_t(height); }
+
+// "1 instance", "2000 instances"
+std::string countOf(std::uint64_t count, const std::string& noun) {
+    return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+}
 
 std::string sideBySide(int size) { return std::to_string(size) + "x" + std::to_string(size); }
 
@@ -105,8 +140,53 @@ WorkEstimate experimentEstimate(long long gaRuns, int population, int generation
 WorkEstimate compareEstimate(int width, int height, bool flip) {
     const std::uint64_t count = pixels(width, height);
     return {"comparing " + std::to_string(width) + "x" + std::to_string(height) + " pixels",
-            count * (flip ? kFlipBytesPerPixel : kDeltaEBytesPerPixel),
+            kCompareFixedBytes + count * kCompareBytesPerPixel,
             double(count) * (flip ? kFlipSecondsPerPixel : kDeltaESecondsPerPixel)};
+}
+
+SceneContents sceneContentsOf(const Mesh* mesh, const SceneTextures& textures) {
+    SceneContents contents;
+    if (mesh) {
+        contents.meshVertices = mesh->vertices.size();
+        contents.meshTriangles = mesh->triangleCount();
+    }
+    contents.texturePixels = textures.roughness.pixelCount() + textures.baseColor.pixelCount();
+    for (const Image& level : textures.environment.levels)
+        contents.texturePixels += level.pixelCount();
+    return contents;
+}
+
+namespace {
+
+std::uint64_t contentsBytes(const SceneContents& contents) {
+    return contents.meshVertices * kMeshBytesPerVertex +
+           contents.meshTriangles * kMeshBytesPerTriangle +
+           contents.texturePixels * kTextureBytesPerTexel;
+}
+
+}  // namespace
+
+WorkEstimate sceneEstimate(int width, int height, std::uint64_t instances,
+                           const SceneContents& contents) {
+    return {countOf(instances, "instance") + " at " + std::to_string(width) + "x" +
+                std::to_string(height),
+            kSceneFixedBytes + pixels(width, height) * kSceneBytesPerPixel +
+                instances * kSceneBytesPerInstance + contentsBytes(contents),
+            double(pixels(width, height)) * kRenderSecondsPerPixel};
+}
+
+WorkEstimate exportEstimate(std::uint64_t materials, int fitSize, int fitRenders, int reportSize,
+                            std::uint64_t instances, const SceneContents& contents) {
+    const std::uint64_t reportPixels = pixels(reportSize, reportSize);
+    const std::uint64_t fitPixels = pixels(fitSize, fitSize);
+    return {countOf(materials, "material") + " reported at " + sideBySide(reportSize),
+            kExportFixedBytes + materials * reportPixels * kExportBytesPerReportPixel +
+                reportPixels * kExportWorkBytesPerReportPixel +
+                fitPixels * kExportBytesPerFitPixel + instances * kExportBytesPerInstance +
+                contentsBytes(contents),
+            double(materials) *
+                (double(fitRenders) * double(fitPixels) +
+                 2 * double(reportPixels)) * kRenderSecondsPerPixel};
 }
 
 std::string describeDuration(double seconds) {

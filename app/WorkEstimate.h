@@ -9,6 +9,11 @@
 #include <cstdint>
 #include <string>
 
+namespace matevo {
+struct Mesh;
+struct SceneTextures;
+}  // namespace matevo
+
 namespace matevo::cli {
 
 struct WorkEstimate {
@@ -32,6 +37,24 @@ WorkEstimate experimentEstimate(long long gaRuns, int population, int generation
                                 long long imageRuns = 0, int fitnessSize = 0);
 // `compare` of two decoded width x height images (decoding is checked when each is read).
 WorkEstimate compareEstimate(int width, int height, bool flip);
+// What a scene or an export draws beside its pictures: the mesh and the textures.
+struct SceneContents {
+    std::uint64_t meshVertices = 0;
+    std::uint64_t meshTriangles = 0;
+    std::uint64_t texturePixels = 0;  // textures and every environment level, in all
+};
+// `mesh` may be null (a built-in sphere: next to nothing).
+SceneContents sceneContentsOf(const Mesh* mesh, const SceneTextures& textures);
+// `scene`: a width x height picture of `instances` instances. The Vulkan device's images and
+// buffers are counted as host memory, as they are on a CPU device (lavapipe); a GPU holds
+// them in its own memory, so there the estimate is high.
+WorkEstimate sceneEstimate(int width, int height, std::uint64_t instances,
+                           const SceneContents& contents);
+// `export` of `materials` materials, each fitted with fitRenders renders at fitSize and
+// reported at reportSize (the report keeps two renders and a ΔE00 map of each), and the
+// mesh of `instances` instances when the arrangement has one.
+WorkEstimate exportEstimate(std::uint64_t materials, int fitSize, int fitRenders, int reportSize,
+                            std::uint64_t instances, const SceneContents& contents);
 
 // Throws UsageError (exit 2, one line) when the estimate is past the memory limit; prints it
 // as a notice when the work is large (1 GiB or half a minute), so the user can stop it.

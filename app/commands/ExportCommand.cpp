@@ -8,6 +8,7 @@
 #include "Messages.h"
 #include "ProgressBar.h"
 #include "RenderBackend.h"
+#include "WorkEstimate.h"
 #include "color/Colormap.h"
 #include "commands/Commands.h"
 #include "export/ExportSet.h"
@@ -16,6 +17,7 @@
 #include "io/VariantFolder.h"
 #include "mesh/MeshFile.h"
 #include "scene/SceneLayout.h"
+#include "scene/SceneTextures.h"
 #include "variants/VariantFiles.h"
 
 namespace matevo::cli {
@@ -173,6 +175,20 @@ void writeImages(const ExportReport& report, const fs::path& folder) {
     }
 }
 
+// The set's textures are read here to be counted (fitting reads them again; they are small
+// next to the renders); a set whose textures cannot be read fails in the fit, naming them.
+void checkExportEstimate(const std::vector<MaterialFile>& materials,
+                         const ExportSettings& settings, const GltfAsset& asset) {
+    const auto textures = loadSceneTextures(materials.front(), materials.front().name);
+    const SceneTextures none;
+    const bool meshed = asset.arrangement != GltfArrangement::Spheres;
+    checkWorkEstimate(exportEstimate(materials.size(), settings.fit.imageSize,
+                                     settings.fit.maxEvaluations, settings.reportSize,
+                                     asset.instances.size(),
+                                     sceneContentsOf(meshed ? &asset.mesh : nullptr,
+                                                     textures ? *textures : none)));
+}
+
 }  // namespace
 
 int runExport(CommandLine& args) {
@@ -228,8 +244,6 @@ int runExport(CommandLine& args) {
         if (materials.back().name.empty()) materials.back().name = file.stem().string();
     }
 
-    auto renderer = createCommandRenderer(rendererRequest, SceneTextures{});
-    ProgressBar progress(int(materials.size()));
     GltfAsset asset{arrangement, {}, {}};
     if (arrangement != GltfArrangement::Spheres) {
         auto mesh = loadMesh(meshName);
@@ -240,6 +254,9 @@ int runExport(CommandLine& args) {
         asset.instances = layoutInstances(
             int(instanceCount.value_or((long long)materials.size())), InstanceLayout::Crowd,
             int(materials.size()), seed);
+    checkExportEstimate(materials, settings, asset);
+    auto renderer = createCommandRenderer(rendererRequest, SceneTextures{});
+    ProgressBar progress(int(materials.size()));
     auto report = exportMaterials(
         materials, *renderer, format, *out, settings,
         [&](std::size_t done, std::size_t) { progress.update(int(done), "fitting"); }, asset);

@@ -7,6 +7,7 @@
 #include "Messages.h"
 #include "PresetOption.h"
 #include "StopSignals.h"
+#include "WorkEstimate.h"
 #include "color/ToneMap.h"
 #include "commands/Commands.h"
 #include "gpu/GpuContext.h"
@@ -118,6 +119,8 @@ int runScene(CommandLine& args) {
         int(instanceCount.value_or(std::max<long long>(1, (long long)materials.size()))), *layout,
         int(materials.size()), seed);
     const SceneCamera camera = frameInstances(instances, double(size.width) / size.height);
+    checkWorkEstimate(sceneEstimate(size.width, size.height, instances.size(),
+                                    sceneContentsOf(&*mesh, *textures)));
 
     auto context = gpu::GpuContext::createHeadless();
     if (!context) throw CommandFailure(withContext(context.error(), "needs a Vulkan device"));

@@ -57,6 +57,22 @@ std::atomic<bool> terminationRequested{false};
 
 void onTerminationSignal(int) { terminationRequested.store(true); }
 
+// A script's resize, no larger than the screen: past it no one sees the rest, and the
+// swapchain's images with the renders that fill them grow without bound (16384x16384 on
+// lavapipe under Xvfb: 8 GiB and no frame in two minutes). Clamped with one line.
+void resizeForScript(GLFWwindow* window, int width, int height) {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* screen = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    if (screen && (width > screen->width || height > screen->height)) {
+        std::fprintf(stderr, "matevo edit: warning: resize %d %d: clamped to the screen, %dx%d\n",
+                     width, height, std::min(width, screen->width),
+                     std::min(height, screen->height));
+        width = std::min(width, screen->width);
+        height = std::min(height, screen->height);
+    }
+    glfwSetWindowSize(window, width, height);
+}
+
 // No window, or no Vulkan device to present it with: a property of the machine, exit 2.
 struct WindowUnavailable : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -434,7 +450,7 @@ ui::FrameRequests EditorApp::playScript(std::optional<std::filesystem::path>& sc
     if (!effects.error.empty()) failure_ = effects.error;
     if (effects.quit) quitRequested_ = true;
     if (effects.resize)
-        glfwSetWindowSize(window_.get(), effects.resize->first, effects.resize->second);
+        resizeForScript(window_.get(), effects.resize->first, effects.resize->second);
     if (effects.redraw) redrawRequested_ = true;
     screenshotPath = effects.screenshot;
     ui::FrameRequests scripted;

@@ -21,7 +21,7 @@
 //   wait-scene              draw until the Scene window shows the whole picture of its current
 //                           settings (gives up after 120 s; a mesh that fails to load fails)
 //   undo | redo
-//   resize W H              resize the window (pixels)
+//   resize W H              resize the window (pixels; clamped to the screen)
 //   check-layout            fail (exit 1) if a panel cuts off a control at its right edge
 //   screenshot PATH         PNG of the window, as F12
 //   redraw                  draw the whole window again, as after it was uncovered (frames

@@ -547,5 +547,26 @@ TEST(EditorScript, WaitingAfterAChangeToTheSameValueFinishes) {
     fs::remove_all(dir);
 }
 
+// A resize past the screen (1920x1080 under the tests' Xvfb) is clamped to it with one line:
+// at 16384x16384 the editor took 8 GiB and drew no frame in two minutes.
+TEST(EditorScript, ResizePastTheScreenIsClampedToIt) {
+    const fs::path dir = freshDirectory("huge_resize");
+    const fs::path shot = dir / "huge.png";
+    std::ofstream(dir / "script.txt")
+        << "wait 1\nresize 16384 16384\nwait 1\nscreenshot " << shot.string() << "\nquit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' timeout 60 '" + MATEVO_BINARY_DIR +
+        "/matevo' edit --script '" + (dir / "script.txt").string() + "'");
+    EXPECT_EQ(run.exitCode, 0) << "124 is the timeout\n" << run.err;
+    EXPECT_NE(run.err.find("resize 16384 16384: clamped to the screen, 1920x1080\n"),
+              std::string::npos)
+        << run.err;
+    const auto image = readImage(shot);
+    ASSERT_TRUE(image) << image.error().message;
+    EXPECT_LE(image->width, 1920);
+    EXPECT_LE(image->height, 1080);
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace matevo::testing
