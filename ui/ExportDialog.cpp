@@ -28,7 +28,7 @@ std::vector<MaterialFile> variantSetMaterialFiles(const EditorState& state) {
         materialFromPreset(madeFor, state.presetPath, set->target, state.preset.name);
     for (std::size_t i = 0; i < set->variants.size(); ++i)
         files.push_back(
-            variantMaterial(target, Variant{set->variants[i], {}, 0.0, false}, i,
+            variantMaterial(target, Variant{set->variants[i], {}, 0.0, false, {}}, i,
                             set->variants.size()));
     return files;
 }

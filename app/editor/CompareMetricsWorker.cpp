@@ -22,7 +22,6 @@ CompareMetricsWorker::CompareMetricsWorker(std::function<void()> onUpdate,
               failed.error = "the comparison failed: " + message;
               return failed;
           }) {}
-}
 
 CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job,
                                                    Worker::Context& context) {

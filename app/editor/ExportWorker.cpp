@@ -24,7 +24,6 @@ ExportWorker::ExportWorker(std::function<void()> onUpdate, gpu::RendererRequest 
           [](std::uint64_t, const std::string& message) {
               return ExportResult{std::nullopt, "the export failed: " + message};
           }) {}
-}
 
 bool ExportWorker::start(ui::ExportRequest request, ui::EditorState& state) {
     const std::string what = "Exporting " + materialCount(request.materials.size());

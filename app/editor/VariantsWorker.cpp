@@ -20,7 +20,6 @@ VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequ
               failed.error = "the variant search failed: " + message;
               return failed;
           }) {}
-}
 
 VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& context) {
     const auto started = std::chrono::steady_clock::now();

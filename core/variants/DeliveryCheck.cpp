@@ -165,7 +165,7 @@ Result<DeliveredVariants> checkDelivery(const VariantArchive& archive, VariantSe
         if (!images) return images.error();
         checker.outputRenders() += batch.size();
         for (std::size_t k = 0; k < batch.size() && checker.accepted() < wanted; ++k) {
-            auto offered = checker.offer({batch[k], std::move((*images)[k]), 0.0, false});
+            auto offered = checker.offer({batch[k], std::move((*images)[k]), 0.0, false, {}});
             if (!offered) return offered.error();
             if (*offered) ++checker.replaced();
         }

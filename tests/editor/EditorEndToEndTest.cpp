@@ -381,7 +381,10 @@ TEST(EditorSceneWindow, ShowsAMeshFileWithThePopulationThenTheKeptBin) {
          {"family", family},
          {"genome", {{"eta1", 1.2}, {"eta2", 0.8}, {"alpha1", 0.03}, {"alpha2", 0.4}}}}};
     std::ofstream(dir / "preset.json") << preset.dump(2);
+    // In the studio light (the editor's lighting choice), which lights each tetrahedron all
+    // round, rough materials included.
     std::ofstream(dir / "script.txt") << "wait 2\n"
+                                         "lighting studio\n"
                                          "population 12\n"
                                          "generations 2\n"
                                          "wait-evolution\n"

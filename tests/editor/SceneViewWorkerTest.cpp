@@ -171,7 +171,10 @@ TEST(SceneViewWorker, AMeshFileIsDrawnAndOneThatFailsIsOneLineAndNoPicture) {
     std::ofstream(dir / "broken.obj") << "v 0 0 0\nf 1 2 7\n";
     {
         SceneViewWorker worker([] {}, context->device);
-        worker.request(smallJob((dir / "tetra.obj").string(), 96, 64));
+        // Lit all round (the studio environment), so most of each tetrahedron shows.
+        SceneViewJob tetrahedra = smallJob((dir / "tetra.obj").string(), 96, 64);
+        setLightingChoice("studio", tetrahedra.preset.scene);
+        worker.request(tetrahedra);
         auto drawn = settle(worker);
         ASSERT_TRUE(drawn.has_value());
         ASSERT_NE(drawn->tile, nullptr) << drawn->status;
@@ -194,7 +197,7 @@ TEST(SceneViewWorker, AMeshFileIsDrawnAndOneThatFailsIsOneLineAndNoPicture) {
             EXPECT_EQ(failed->status.find('\n'), std::string::npos) << "one line";
         }
         // The scene it had is still there for the next request.
-        SceneViewJob again = smallJob((dir / "tetra.obj").string(), 96, 64);
+        SceneViewJob again = tetrahedra;
         again.controls.yawDegrees = 30.0f;
         worker.request(again);
         auto redrawn = settle(worker);

@@ -50,12 +50,12 @@ TEST(DeliveryCheck, ARefitOrAReplacementKeepsTheDeliveredSetInBandAndApart) {
     VariantArchive archive(request.minApart);
     // Chosen farthest-first from the band's centre: 55, 44.5, 52.5; then 47 is next in line.
     for (double lightness : {52.5, 55.0, 57.5, 47.0, 44.5}) {
-        const LabImage lab = toLabImage(greyOfLightness(lightness));
-        archive.offer(genomeOfLightness(lightness), lab, meanDeltaE00(targetLab, lab),
-                      archive.distancesTo(lab));
+        const LabsPerLighting labs{toLabImage(greyOfLightness(lightness))};
+        archive.offer(genomeOfLightness(lightness), labs, {meanDeltaE00(targetLab, labs[0])},
+                      archive.distancesTo(labs));
     }
     ASSERT_EQ(archive.size(), 5u);
-    auto chosen = chooseVariantSet(archive, request, target, renderGreys);
+    auto chosen = chooseVariantSet(archive, request, target, RenderGenomes(renderGreys));
     ASSERT_TRUE(chosen.ok());
     ASSERT_EQ(chosen->variants.size(), 3u);
 
@@ -109,11 +109,11 @@ TEST(DeliveryCheck, AConversionPastItsGoalIsRefittedAndKeptOnlyWhenTheRefitIsWit
     const LabImage targetLab = toLabImage(greyOfLightness(50.0));
     VariantArchive archive(request.minApart);
     for (double lightness : {56.0, 44.0}) {
-        const LabImage lab = toLabImage(greyOfLightness(lightness));
-        archive.offer(genomeOfLightness(lightness), lab, meanDeltaE00(targetLab, lab),
-                      archive.distancesTo(lab));
+        const LabsPerLighting labs{toLabImage(greyOfLightness(lightness))};
+        archive.offer(genomeOfLightness(lightness), labs, {meanDeltaE00(targetLab, labs[0])},
+                      archive.distancesTo(labs));
     }
-    auto chosen = chooseVariantSet(archive, request, target, renderGreys);
+    auto chosen = chooseVariantSet(archive, request, target, RenderGenomes(renderGreys));
     ASSERT_TRUE(chosen.ok());
     // Both convert 2.5 L* off at first; only 56's refit comes back within 2 of matevo's render.
     DeliveryFormat format{
