@@ -80,8 +80,24 @@ std::uint64_t peakBytes(const std::vector<std::string>& arguments) {
     return std::uint64_t(usage.ru_maxrss) * 1024;  // kilobytes on Linux
 }
 
+// Under AddressSanitizer the shadow memory and the quarantine of freed blocks are resident too
+// (requests estimated at 0.5 GB peaked at 1.1-1.8 GB there), so the peak is the program's own
+// only in a build without it; the refusal before the work is checked in both builds.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kPeakIsTheProgramsOwn = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kPeakIsTheProgramsOwn = false;
+#else
+constexpr bool kPeakIsTheProgramsOwn = true;
+#endif
+#else
+constexpr bool kPeakIsTheProgramsOwn = true;
+#endif
+
 void expectWithinTwice(std::uint64_t estimate, std::uint64_t peak, const std::string& request) {
     EXPECT_GT(estimate, 0u) << request;
+    if (!kPeakIsTheProgramsOwn) return;
     EXPECT_LE(peak, 2 * estimate) << request << ": peak " << peak << ", estimate " << estimate;
     EXPECT_LE(estimate, 2 * peak) << request << ": peak " << peak << ", estimate " << estimate;
 }
