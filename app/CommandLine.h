@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "common/ShortText.h"
-#include "io/OutputFolder.h"
-#include "variants/DeltaEBand.h"
+#include "files/OutputFolder.h"
+#include "fitness/DeltaEBand.h"
 
 namespace matevo::cli {
 

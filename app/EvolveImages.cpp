@@ -5,10 +5,10 @@
 #include <stdexcept>
 
 #include "CommandLine.h"
+#include "color/Colormap.h"
 #include "common/StopRequest.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "color/Colormap.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "scene/SceneTextures.h"
 
 namespace matevo::cli {

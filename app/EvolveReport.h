@@ -9,8 +9,8 @@
 
 #include "EvolveImages.h"
 #include "color/ImageDifference.h"
+#include "documents/Preset.h"
 #include "evolve/GeneticAlgorithm.h"
-#include "io/Preset.h"
 
 namespace matevo::cli {
 

@@ -11,7 +11,7 @@
 
 #include "CommandLine.h"
 #include "PresetOption.h"
-#include "io/MaterialFile.h"
+#include "documents/MaterialFile.h"
 
 namespace matevo::cli {
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "experiment/Font.h"
+#include "image/Font.h"
 
 namespace matevo::cli {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "CommandLine.h"
-#include "io/Preset.h"
+#include "documents/Preset.h"
 
 namespace matevo::cli {
 

@@ -7,7 +7,7 @@
 #include <chrono>
 #include <optional>
 
-#include "io/OutputFolder.h"
+#include "files/OutputFolder.h"
 
 namespace matevo::cli {
 

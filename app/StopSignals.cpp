@@ -5,7 +5,7 @@
 #include <csignal>
 
 #include "common/StopRequest.h"
-#include "io/TemporaryFiles.h"
+#include "files/TemporaryFiles.h"
 
 namespace matevo::cli {
 

@@ -2,7 +2,7 @@
 
 #include "BenchReport.h"
 #include "Timing.h"
-#include "io/ResourcePaths.h"
+#include "files/ResourcePaths.h"
 #include "material/FgdTableCache.h"
 #include "scene/SphereRenderer.h"
 

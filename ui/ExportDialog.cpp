@@ -3,7 +3,7 @@
 #include <string>
 
 #include "PresetFiles.h"
-#include "io/Preset.h"
+#include "documents/Preset.h"
 
 namespace matevo::ui {
 std::vector<MaterialFile> keptMaterialFiles(const EditorState& state) {

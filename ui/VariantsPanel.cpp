@@ -6,7 +6,7 @@
 #include "ImageView.h"
 #include "Widgets.h"
 #include "color/Colormap.h"
-#include "variants/DeltaEBand.h"
+#include "fitness/DeltaEBand.h"
 
 namespace matevo::ui {
 namespace {

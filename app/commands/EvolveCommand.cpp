@@ -12,16 +12,16 @@
 #include "PresetOption.h"
 #include "StopSignals.h"
 #include "WorkEstimate.h"
-#include "common/StopRequest.h"
 #include "commands/Commands.h"
+#include "common/StopRequest.h"
+#include "documents/GaCheckpoint.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "experiment/Experiment.h"
+#include "files/AtomicFile.h"
+#include "files/OutputFolder.h"
+#include "fitness/ImageFitness.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/AtomicFile.h"
-#include "io/GaCheckpoint.h"
-#include "io/OutputFolder.h"
 #include "scene/SceneTextures.h"
-#include "variants/ImageFitness.h"
 
 namespace matevo::cli {
 

@@ -8,9 +8,9 @@
 #include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
+#include "files/TemporaryFiles.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/ImageFile.h"
-#include "io/TemporaryFiles.h"
+#include "image/ImageFile.h"
 #include "scene/LightingChoice.h"
 
 namespace matevo::cli {

@@ -18,10 +18,10 @@
 
 #include "color/ImageDifference.h"
 #include "common/Result.h"
+#include "documents/Preset.h"
 #include "gpu/DisplayTile.h"
 #include "gpu/GpuPopulationRenderer.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/Preset.h"
 
 namespace matevo::editor {
 

@@ -11,9 +11,9 @@
 #include "BackgroundJob.h"
 
 #include "common/Image.h"
+#include "documents/Preset.h"
 #include "experiment/RunRecord.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/Preset.h"
 
 namespace matevo::editor {
 

@@ -35,10 +35,10 @@
 #include "VulkanContext.h"
 #include "WindowInput.h"
 #include "WindowRenderer.h"
-#include "io/ImageFile.h"
-#include "io/OutputFolder.h"
-#include "io/PresetCatalog.h"
-#include "io/ResourcePaths.h"
+#include "documents/PresetCatalog.h"
+#include "files/OutputFolder.h"
+#include "files/ResourcePaths.h"
+#include "image/ImageFile.h"
 #include "material/FgdTableCache.h"
 
 namespace matevo::editor {

@@ -11,8 +11,8 @@
 #include <unistd.h>
 
 #include "experiment/Experiment.h"
+#include "fitness/ImageFitness.h"
 #include "scene/SceneTextures.h"
-#include "variants/ImageFitness.h"
 
 namespace matevo::editor {
 namespace {

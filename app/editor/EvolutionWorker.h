@@ -19,8 +19,8 @@
 #include "EditorState.h"
 #include "color/ImageDifference.h"
 #include "common/Image.h"
+#include "documents/Preset.h"
 #include "evolve/GeneticAlgorithm.h"
-#include "io/Preset.h"
 
 namespace matevo::editor {
 

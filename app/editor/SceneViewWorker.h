@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "ScenePanel.h"
+#include "documents/Preset.h"
 #include "gpu/Device.h"
 #include "gpu/DisplayTile.h"
-#include "io/Preset.h"
 #include "material/MaterialInstance.h"
 
 namespace matevo::editor {

@@ -7,8 +7,8 @@
 #include "color/ImageDifference.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "experiment/RunSeeds.h"
+#include "fitness/ImageFitness.h"
 #include "material/ParallelFor.h"
-#include "variants/ImageFitness.h"
 
 namespace matevo {
 

@@ -5,8 +5,8 @@
 #include <span>
 #include <string>
 
-#include "experiment/ChartDrawing.h"
 #include "experiment/DeltaEHistogram.h"
+#include "image/ChartDrawing.h"
 
 namespace matevo {
 

@@ -5,7 +5,7 @@
 #include "export/GltfRenderer.h"
 #include "export/GltfWriter.h"
 #include "export/MaterialXWriter.h"
-#include "io/AtomicFile.h"
+#include "files/AtomicFile.h"
 
 namespace matevo {
 

@@ -14,9 +14,9 @@
 
 #include "color/ImageDifference.h"
 #include "common/Result.h"
+#include "documents/MaterialFile.h"
 #include "export/GltfFit.h"
 #include "export/GltfWriter.h"
-#include "io/MaterialFile.h"
 #include "render/PopulationRenderer.h"
 
 namespace matevo {

@@ -12,10 +12,10 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "files/AtomicFile.h"
+#include "files/CompanionFiles.h"
+#include "image/ImageFile.h"
 #include "mesh/GeneratedMeshes.h"
-#include "io/AtomicFile.h"
-#include "io/CompanionFiles.h"
-#include "io/ImageFile.h"
 
 namespace matevo {
 

@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "common/XmlText.h"
-#include "io/CompanionFiles.h"
-#include "io/ImageFile.h"
+#include "files/CompanionFiles.h"
+#include "image/ImageFile.h"
 
 namespace matevo {
 

@@ -13,8 +13,8 @@
 
 #include "common/Fnv1a.h"
 #include "common/StatusOutput.h"
-#include "io/AtomicFile.h"
-#include "io/InputFile.h"
+#include "files/AtomicFile.h"
+#include "files/InputFile.h"
 
 namespace matevo {
 

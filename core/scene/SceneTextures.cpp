@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "scene/StudioEnvironment.h"
 
 namespace matevo {

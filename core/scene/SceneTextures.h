@@ -7,8 +7,8 @@
 
 #include "common/Image.h"
 #include "common/Result.h"
-#include "io/MaterialFile.h"
-#include "io/Preset.h"
+#include "documents/MaterialFile.h"
+#include "documents/Preset.h"
 #include "material/LayerStack.h"
 #include "scene/PrefilteredEnvironment.h"
 

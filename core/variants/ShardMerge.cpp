@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <string>
 
-#include "io/AtomicFile.h"
-#include "io/CarriedTextures.h"
-#include "io/InputFile.h"
-#include "io/JsonReader.h"
-#include "io/MaterialFile.h"
-#include "io/TextFile.h"
+#include "documents/CarriedTextures.h"
+#include "documents/MaterialFile.h"
+#include "files/AtomicFile.h"
+#include "files/InputFile.h"
+#include "files/JsonReader.h"
+#include "files/TextFile.h"
 #include "variants/ShareResume.h"
 #include "variants/VariantBlockFiles.h"
 #include "variants/VariantBlocks.h"

@@ -5,11 +5,11 @@
 
 #include "color/Colormap.h"
 #include "color/ImageDifference.h"
-#include "experiment/Canvas.h"
-#include "io/AtomicFile.h"
-#include "io/CarriedTextures.h"
-#include "io/GenomeJson.h"
-#include "io/ImageFile.h"
+#include "documents/CarriedTextures.h"
+#include "documents/GenomeJson.h"
+#include "files/AtomicFile.h"
+#include "image/Canvas.h"
+#include "image/ImageFile.h"
 
 namespace matevo {
 namespace {

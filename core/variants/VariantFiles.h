@@ -20,10 +20,10 @@
 #include "color/ImageMetric.h"
 #include "common/Image.h"
 #include "common/Result.h"
+#include "documents/MaterialFile.h"
+#include "documents/Preset.h"
 #include "evolve/RenderGenomes.h"
-#include "experiment/Font.h"
-#include "io/MaterialFile.h"
-#include "io/Preset.h"
+#include "image/Font.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
 

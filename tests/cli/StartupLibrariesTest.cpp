@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 #include "support/TestImages.h"

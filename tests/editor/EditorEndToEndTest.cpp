@@ -16,7 +16,7 @@
 
 #include "PanelLayout.h"
 #include "ScreenshotAnalysis.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 
 namespace matevo::testing {

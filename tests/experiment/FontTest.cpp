@@ -1,4 +1,4 @@
-#include "experiment/Font.h"
+#include "image/Font.h"
 
 #include <cstdlib>
 #include <fstream>

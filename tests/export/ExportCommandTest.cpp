@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
-#include "io/MaterialFile.h"
+#include "documents/MaterialFile.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 

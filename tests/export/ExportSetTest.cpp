@@ -21,9 +21,9 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "documents/Preset.h"
 #include "export/GltfRenderer.h"
 #include "export/GltfWriter.h"
-#include "io/Preset.h"
 #include "render/CpuPopulationRenderer.h"
 #include "scene/SphereRenderer.h"
 #include "support/RunCommand.h"

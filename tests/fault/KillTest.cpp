@@ -21,10 +21,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "io/GenomeJson.h"
-#include "io/ImageFile.h"
-#include "io/MaterialFile.h"
-#include "io/Preset.h"
+#include "documents/GenomeJson.h"
+#include "documents/MaterialFile.h"
+#include "documents/Preset.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 
 namespace matevo {

@@ -11,11 +11,11 @@
 
 #include "GpuTestContext.h"
 #include "color/ImageDifference.h"
+#include "color/ToneMap.h"
+#include "documents/Preset.h"
 #include "gpu/GpuSphereRenderer.h"
-#include "io/Preset.h"
 #include "material/FgdTableCache.h"
 #include "mesh/GeneratedMeshes.h"
-#include "color/ToneMap.h"
 #include "scene/EnvironmentBackdrop.h"
 #include "scene/SphereRenderer.h"
 #include "scene/StudioEnvironment.h"

@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "scene/LatLong.h"
 #include "scene/SceneTextures.h"
 #include "scene/StudioEnvironment.h"

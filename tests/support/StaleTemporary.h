@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/TemporaryFiles.h"
+#include "files/TemporaryFiles.h"
 
 namespace matevo::testing {
 
