@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "files/ResourcePaths.h"
+#include "files/XdgFolders.h"
 
 namespace matevo {
 namespace {
@@ -32,11 +33,8 @@ void addPresetsIn(const std::filesystem::path& folder, bool shipped,
 }  // namespace
 
 std::filesystem::path userPresetDirectory() {
-    if (const char* dataHome = std::getenv("XDG_DATA_HOME"); dataHome && *dataHome == '/')
-        return std::filesystem::path(dataHome) / "matevo" / "presets";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return std::filesystem::path(home) / ".local" / "share" / "matevo" / "presets";
-    return {};
+    const std::filesystem::path dataHome = xdgHome(XdgHome::Data);
+    return dataHome.empty() ? dataHome : dataHome / "matevo" / "presets";
 }
 
 bool looksLikePresetPath(std::string_view text) {

@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <system_error>
 
+#include "files/XdgFolders.h"
+
 namespace matevo {
 
 std::filesystem::path executableDirectory() {
@@ -41,11 +43,8 @@ Result<std::filesystem::path> defaultPresetPath() {
 }
 
 std::filesystem::path userConfigDirectory() {
-    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config == '/')
-        return std::filesystem::path(config) / "matevo";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return std::filesystem::path(home) / ".config" / "matevo";
-    return {};
+    const std::filesystem::path config = xdgHome(XdgHome::Config);
+    return config.empty() ? config : config / "matevo";
 }
 
 }  // namespace matevo

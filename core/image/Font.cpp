@@ -6,6 +6,7 @@
 #include <string>
 
 #include "files/InputFile.h"
+#include "files/XdgFolders.h"
 
 // stb_truetype's implementation, private to this file.
 #define STB_TRUETYPE_IMPLEMENTATION
@@ -22,22 +23,6 @@ struct Font::Face {
 namespace {
 
 constexpr std::uintmax_t kMaxFontBytes = 64u << 20;
-
-std::vector<std::filesystem::path> fontSearchPath() {
-    std::vector<std::filesystem::path> dataDirs;
-    if (const char* dataHome = std::getenv("XDG_DATA_HOME"); dataHome && *dataHome == '/')
-        dataDirs.emplace_back(dataHome);
-    else if (const char* home = std::getenv("HOME"); home && *home)
-        dataDirs.push_back(std::filesystem::path(home) / ".local" / "share");
-    const char* dirs = std::getenv("XDG_DATA_DIRS");
-    const std::string_view list = dirs && *dirs ? dirs : "/usr/local/share:/usr/share";
-    for (std::size_t start = 0; start <= list.size();) {
-        const std::size_t end = std::min(list.find(':', start), list.size());
-        if (end > start && list[start] == '/') dataDirs.emplace_back(list.substr(start, end - start));
-        start = end + 1;
-    }
-    return dataDirs;
-}
 
 }  // namespace
 
@@ -81,7 +66,7 @@ Result<Font> Font::load(const std::filesystem::path& file) {
 Result<Font> Font::dejaVuSans() {
     const std::filesystem::path relative = "fonts/truetype/dejavu/DejaVuSans.ttf";
     std::string looked;
-    for (const auto& dir : fontSearchPath()) {
+    for (const auto& dir : xdgDataSearchPath()) {
         const std::filesystem::path file = dir / relative;
         std::error_code error;
         if (std::filesystem::is_regular_file(file, error)) return load(file);
