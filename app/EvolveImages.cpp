@@ -7,6 +7,7 @@
 #include "CommandLine.h"
 #include "color/Colormap.h"
 #include "common/StopRequest.h"
+#include "documents/PresetTextures.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "image/ImageFile.h"
 #include "scene/SceneTextures.h"

@@ -2,6 +2,7 @@
 
 #include "BenchReport.h"
 #include "Timing.h"
+#include "documents/PresetTextures.h"
 #include "files/ResourcePaths.h"
 #include "material/FgdTableCache.h"
 #include "scene/SphereRenderer.h"

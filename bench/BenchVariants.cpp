@@ -11,8 +11,10 @@
 
 #include "BenchReport.h"
 #include "documents/Preset.h"
+#include "documents/PresetTextures.h"
 #include "experiment/Experiment.h"
 #include "files/ResourcePaths.h"
+#include "fitness/RenderGenomesWith.h"
 #include "render/CpuPopulationRenderer.h"
 #include "scene/SceneTextures.h"
 #include "variants/FindVariants.h"

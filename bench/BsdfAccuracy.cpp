@@ -13,6 +13,7 @@
 
 #include "color/ImageDifference.h"
 #include "documents/Preset.h"
+#include "documents/PresetTextures.h"
 #include "evolve/GenomeSampling.h"
 #include "files/ResourcePaths.h"
 #include "genome/FamilyRules.h"

@@ -15,11 +15,13 @@
 #include "commands/Commands.h"
 #include "common/StopRequest.h"
 #include "documents/GaCheckpoint.h"
+#include "documents/PresetTextures.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "experiment/Experiment.h"
 #include "files/AtomicFile.h"
 #include "files/OutputFolder.h"
 #include "fitness/ImageFitness.h"
+#include "fitness/RenderGenomesWith.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "scene/SceneTextures.h"
 

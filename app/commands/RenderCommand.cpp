@@ -8,6 +8,7 @@
 #include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
+#include "documents/PresetTextures.h"
 #include "files/TemporaryFiles.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "image/ImageFile.h"

@@ -9,6 +9,7 @@
 #include "color/ToneMap.h"
 #include "commands/Commands.h"
 #include "documents/MaterialFile.h"
+#include "documents/PresetTextures.h"
 #include "documents/VariantFolder.h"
 #include "files/TemporaryFiles.h"
 #include "gpu/GpuContext.h"

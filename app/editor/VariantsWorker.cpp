@@ -4,7 +4,9 @@
 #include <chrono>
 #include <utility>
 
+#include "documents/PresetTextures.h"
 #include "experiment/Experiment.h"
+#include "fitness/RenderGenomesWith.h"
 #include "scene/SceneTextures.h"
 
 namespace matevo::editor {

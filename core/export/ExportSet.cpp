@@ -2,6 +2,7 @@
 
 #include <cctype>
 
+#include "documents/PresetTextures.h"
 #include "export/GltfRenderer.h"
 #include "export/GltfWriter.h"
 #include "export/MaterialXWriter.h"
@@ -96,7 +97,7 @@ Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
     std::vector<NamedGltfMaterial> materials;
     for (const auto& variant : set.variants)
         materials.push_back({variant.name, variant.fit.material});
-    // Temporary files of an export killed earlier (io/AtomicFile.h).
+    // Temporary files of an export killed earlier (files/AtomicFile.h).
     removeStaleTemporaryFilesBeside(file);
     const Status written = format == ExportFormat::MaterialX
                                ? writeMaterialX(materials, set.textures, file)

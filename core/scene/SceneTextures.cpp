@@ -57,29 +57,16 @@ Result<SceneTextures> withEnvironment(SceneTextures textures, const SceneSetting
     return textures;
 }
 
-std::filesystem::path besidePreset(const std::filesystem::path& presetFile,
-                                   const std::string& name) {
-    return name.empty() ? std::filesystem::path() : presetFile.parent_path() / name;
-}
-
 }  // namespace
 
-Result<SceneTextures> loadSceneTextures(const Preset& preset,
-                                        const std::filesystem::path& presetFile) {
-    auto textures =
-        loadTextures(presetFile.string(), besidePreset(presetFile, preset.roughnessTexture),
-                     besidePreset(presetFile, preset.baseColorTexture));
+Result<SceneTextures> loadSceneTextures(const std::filesystem::path& roughnessFile,
+                                        const std::filesystem::path& baseColorFile,
+                                        const SceneSettings& scene,
+                                        const std::filesystem::path& folder,
+                                        const std::string& source) {
+    auto textures = loadTextures(source, roughnessFile, baseColorFile);
     if (!textures) return textures;
-    return withEnvironment(std::move(*textures), preset.scene, presetFile.parent_path(),
-                           presetFile.string());
-}
-
-Result<SceneTextures> loadSceneTextures(const MaterialFile& material,
-                                        const std::string& sourceName) {
-    auto textures =
-        loadTextures(sourceName, material.roughnessTexture, material.baseColorTexture);
-    if (!textures) return textures;
-    return withEnvironment(std::move(*textures), material.scene, {}, sourceName);
+    return withEnvironment(std::move(*textures), scene, folder, source);
 }
 
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v) {

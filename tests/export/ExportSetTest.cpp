@@ -22,6 +22,7 @@
 #include <tiny_gltf.h>
 
 #include "documents/Preset.h"
+#include "documents/PresetTextures.h"
 #include "export/GltfRenderer.h"
 #include "export/GltfWriter.h"
 #include "render/CpuPopulationRenderer.h"
@@ -90,7 +91,7 @@ TEST(ExportSet, GltfFilesReadBackFieldByField) {
             ASSERT_TRUE(loaded) << error;
             EXPECT_TRUE(warning.empty()) << warning;
             if (format == ExportFormat::Gltf) {
-                // NAME.HASH.bin (io/CompanionFiles.h), beside the JSON.
+                // NAME.HASH.bin (files/CompanionFiles.h), beside the JSON.
                 const std::string& uri = model.buffers[0].uri;
                 EXPECT_EQ(uri.rfind(std::string(name) + ".", 0), 0u) << uri;
                 EXPECT_EQ(uri.size(), std::strlen(name) + 1 + 16 + 4) << uri;

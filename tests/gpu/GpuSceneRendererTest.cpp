@@ -13,6 +13,7 @@
 #include "color/ImageDifference.h"
 #include "color/ToneMap.h"
 #include "documents/Preset.h"
+#include "documents/PresetTextures.h"
 #include "gpu/GpuSphereRenderer.h"
 #include "material/FgdTableCache.h"
 #include "mesh/GeneratedMeshes.h"

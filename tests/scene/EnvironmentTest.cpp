@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "documents/PresetTextures.h"
 #include "image/ImageFile.h"
 #include "scene/LatLong.h"
 #include "scene/SceneTextures.h"

@@ -9,6 +9,7 @@
 #include "EditorUiFixture.h"
 #include "ViewSettings.h"
 #include "documents/MaterialFile.h"
+#include "documents/PresetTextures.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "render/CpuPopulationRenderer.h"
 
