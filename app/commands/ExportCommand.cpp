@@ -89,7 +89,7 @@ MaterialFile targetOf(const std::optional<std::string>& variantsFolder,
     return target;
 }
 
-// The set's material files, as every command reads a set (io/VariantFolder.h).
+// The set's material files, as every command reads a set (documents/VariantFolder.h).
 std::vector<fs::path> variantFiles(const fs::path& folder) {
     auto files = variantFolderFiles(folder);
     if (!files) throw UsageError("--variants: " + files.error().message);

@@ -3,7 +3,7 @@
 // environment map), so that the folder can be moved, copied or mailed and still renders,
 // exports and merges: each is copied to SET/textures/ROLE.EXT (roughness.png, base_color.png,
 // environment.hdr; one file per role, since a set comes from one preset) and the material
-// points there, which its file then writes as a path relative to itself (io/MaterialFile.h).
+// points there, which its file then writes as a path relative to itself (documents/MaterialFile.h).
 #include <filesystem>
 
 #include "common/Result.h"

@@ -2,7 +2,7 @@
 // A checkpoint of an evolve run, written after every generation so that a long run can stop and
 // resume to the same end, bit for bit: the run's identity (family, target, kappa, GA settings)
 // and its state (population with fitness, history, the random generator). Doubles are written
-// with enough digits to read back exactly. Saving is atomic (io/AtomicFile.h).
+// with enough digits to read back exactly. Saving is atomic (files/AtomicFile.h).
 //   {"format": "matevo-ga-checkpoint", "format_version": 1, "family": {…}, "base_kappa": […],
 //    "target": {…}, "ga": {…}, "generation": G, "random_state": [4 integers],
 //    "population": [{"genome": {…}, "fitness": f}, …], "history": [{…}, …]}

@@ -43,7 +43,7 @@ MaterialFile materialFromPreset(const Preset& preset, const std::filesystem::pat
 // `folder`: where the JSON will live (textures relative to it); empty for absolute paths.
 nlohmann::ordered_json materialToJson(const MaterialFile& material,
                                       const std::filesystem::path& folder = {});
-// Atomic (io/AtomicFile.h); textures relative to the file's folder.
+// Atomic (files/AtomicFile.h); textures relative to the file's folder.
 Status saveMaterial(const MaterialFile& material, const std::filesystem::path& file);
 
 struct LoadedMaterial {

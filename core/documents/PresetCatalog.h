@@ -1,7 +1,7 @@
 #pragma once
 // Presets by name: NAME is NAME.json in the user's preset folder
 // ($XDG_DATA_HOME/matevo/presets, default ~/.local/share/matevo/presets) or in the shipped
-// presets folder (io/ResourcePaths.h). A user's preset hides a shipped one of the same name.
+// presets folder (files/ResourcePaths.h). A user's preset hides a shipped one of the same name.
 #include <filesystem>
 #include <string>
 #include <string_view>

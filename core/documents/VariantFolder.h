@@ -1,10 +1,10 @@
 #pragma once
 // A set of variants on disk, as `matevo variants --out DIR` writes it (DIR/variants/
 // variant_NNN.json) or any folder of material JSON files (what `render --genome` reads): every
-// *.json file, in name order, read as a material (io/MaterialFile.h), so that each keeps its own
-// kappa (hue variety); a bare genome takes `context`'s family, kappa, textures and scene. Other
-// files are passed over. The one way a set is enumerated: `scene --variants` and
-// `export --variants` read the same members. Errors name the file and field.
+// *.json file, in name order, read as a material (documents/MaterialFile.h), so that each keeps its
+// own kappa (hue variety); a bare genome takes `context`'s family, kappa, textures and scene. Other
+// files are passed over. The one way a set is enumerated: `scene --variants` and `export
+// --variants` read the same members. Errors name the file and field.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -125,7 +125,7 @@ Status writeMaterialX(const std::vector<NamedGltfMaterial>& materials,
         }
     }
     // Named after their contents, so that the document and its textures are replaced as one
-    // (io/CompanionFiles.h).
+    // (files/CompanionFiles.h).
     CompanionFile baseColor{"_base_color", ".png", {}};
     CompanionFile roughness{"_roughness", ".png", {}};
     if (anyBaseColor) {

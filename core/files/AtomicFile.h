@@ -15,7 +15,7 @@ namespace matevo {
 Status writeFileAtomically(const std::filesystem::path& file, std::string_view contents);
 
 // Where a write to `file` lands: its symlinks followed (a dangling link names the file to
-// create). Files written beside it (io/CompanionFiles.h) belong beside this path.
+// create). Files written beside it (files/CompanionFiles.h) belong beside this path.
 Result<std::filesystem::path> writeDestination(const std::filesystem::path& file);
 
 }  // namespace matevo

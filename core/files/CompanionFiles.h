@@ -8,7 +8,7 @@
 // own companions or the new one with its own, never a mix; an orphan a kill leaves behind is
 // removed by the next write of that main file.
 //
-// Two processes writing one main file at once take turns (io/FileLock.h): otherwise one could
+// Two processes writing one main file at once take turns (files/FileLock.h): otherwise one could
 // remove the companions the other's main file names. Through a symlinked main file, the
 // companions go beside the file the link leads to, named after it, as the main file's relative
 // references need.

@@ -5,7 +5,7 @@
 // commands' --force) is given and it is a previous matevo output (it holds the marker file
 // .matevo-output); a file, a parent folder we cannot write, and a folder that cannot be
 // replaced by a rename (a mount point; another user's folder under a sticky parent) are refused
-// too. So is a folder another matevo run is writing: a run holds a lock (io/FileLock.h) from
+// too. So is a folder another matevo run is writing: a run holds a lock (files/FileLock.h) from
 // claim() to commit(), so of two concurrent runs into one folder the second is refused at once,
 // never "both succeeded".
 //
@@ -13,8 +13,8 @@
 // place in one atomic rename, so the folder is always either the previous run's or the new
 // run's, whatever kill -9 does. Of the replaced folder only what it held at claim() is removed:
 // files the user put into it while the run went on are kept, moved into the new folder
-// (io/PreviousRunFiles.h). A staging folder left by a killed process of this host is removed
-// next time (io/TemporaryFiles.h).
+// (files/PreviousRunFiles.h). A staging folder left by a killed process of this host is removed
+// next time (files/TemporaryFiles.h).
 #include <filesystem>
 #include <optional>
 #include <string>

@@ -22,7 +22,7 @@ Result<std::filesystem::path> defaultPresetPath();  // presets/validation_metal.
 
 // $XDG_CONFIG_HOME/matevo (default ~/.config/matevo): imgui.ini and the editor's view
 // settings; not created here. Empty when neither XDG_CONFIG_HOME nor HOME is set. (The user's
-// presets: userPresetDirectory in io/PresetCatalog.h.)
+// presets: userPresetDirectory in documents/PresetCatalog.h.)
 std::filesystem::path userConfigDirectory();
 
 }  // namespace matevo

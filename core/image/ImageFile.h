@@ -1,7 +1,7 @@
 #pragma once
-// Images on disk: the one image reader and writer. PNG goes through libpng (io/PngCodec.h), every
-// other format through OpenImageIO, loaded only then (io/ImageLibrary.h). Integer samples (PNG,
-// JPEG, 8/16-bit TIFF) are sRGB-encoded; floating-point samples (OpenEXR, Radiance HDR) are
+// Images on disk: the one image reader and writer. PNG goes through libpng (image/PngCodec.h),
+// every other format through OpenImageIO, loaded only then (image/ImageLibrary.h). Integer samples
+// (PNG, JPEG, 8/16-bit TIFF) are sRGB-encoded; floating-point samples (OpenEXR, Radiance HDR) are
 // linear. In memory an Image is always linear with straight (unassociated) alpha, so colour
 // values are stored as they are and alpha is never multiplied in.
 #include <filesystem>

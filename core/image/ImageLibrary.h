@@ -15,7 +15,7 @@ namespace matevo {
 // Whether the module loads; the error says where it was looked for, or why it would not load.
 Status imageLibraryAvailable();
 
-// The functions of io/ImageLibraryAbi.h; errors say why the module could not be loaded.
+// The functions of image/ImageLibraryAbi.h; errors say why the module could not be loaded.
 Result<DecodedImage> decodeWithImageLibrary(std::string_view bytes,
                                             const std::filesystem::path& file,
                                             const DecodedSizeCheck& checkSize);

@@ -20,7 +20,7 @@ namespace matevo {
 
 enum class SceneMode { Paper, Ambient, Environment };
 
-// Header-only, like the struct: core/io reads and writes it without linking the renderer.
+// Header-only, like the struct: presets and material files (core/documents) read and write it.
 inline std::string_view toString(SceneMode mode) {
     switch (mode) {
         case SceneMode::Paper: return "paper";

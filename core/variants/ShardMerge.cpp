@@ -61,7 +61,7 @@ Status copyFile(const fs::path& from, const fs::path& to) {
 }
 
 // A share's material file saved again in the merged set `dir`, its textures carried into the
-// set (io/CarriedTextures.h), so that the merged set does not depend on the shares' folders.
+// set (documents/CarriedTextures.h), so that the merged set does not depend on the shares' folders.
 Status copyMaterial(const fs::path& from, const fs::path& dir, const fs::path& to) {
     auto loaded = loadMaterial(from, MaterialFile{});
     if (!loaded) return loaded.error();

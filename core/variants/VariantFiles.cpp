@@ -193,7 +193,8 @@ Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile&
                            ImageMetric heatmapMetric) {
     const std::filesystem::path folder = dir / "variants";
     if (auto created = createFolder(folder); !created) return created;
-    // The set carries its textures, so that it renders wherever it is moved (io/CarriedTextures.h).
+    // The set carries its textures, so that it renders wherever it is moved
+    // (documents/CarriedTextures.h).
     auto carried = carryTextures(target, dir);
     if (!carried) return carried.error();
     if (auto written = saveMaterial(*carried, targetMaterialFile(dir)); !written) return written;

@@ -1,4 +1,4 @@
-// A main file and its content-named companions replaced as one (io/CompanionFiles.h), on real
+// A main file and its content-named companions replaced as one (files/CompanionFiles.h), on real
 // files. The kill -9 half of the promise is tests/fault/KillTest.cpp's export test.
 #include "files/CompanionFiles.h"
 

@@ -1,5 +1,5 @@
-// Output folders and temporary names on a folder other runs share (io/OutputFolder.h,
-// io/TemporaryFiles.h, io/FileLock.h), on real files: what is reaped, who may write, and what
+// Output folders and temporary names on a folder other runs share (files/OutputFolder.h,
+// files/TemporaryFiles.h, files/FileLock.h), on real files: what is reaped, who may write, and what
 // a replaced folder keeps.
 #include "files/OutputFolder.h"
 

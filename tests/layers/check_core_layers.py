@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""core's folders as layers: lists the folder -> folder include edges of core, the include loops
-between folders, and (with --check) fails on a loop, on a folder that includes a folder its
-CMake target does not link, or on a folder of core without a row in docs/architecture.md.
+"""core's folders as layers: lists the folder -> folder include edges of core and the include
+loops between folders, and (with --check) fails on a loop, on a folder that includes a folder its
+CMake target does not link, on an include that does not go down docs/architecture.md's picture
+of the layers, or on a folder of core without a row in that page's module table.
 
     check_core_layers.py SOURCE_DIR            print edges and loops
     check_core_layers.py SOURCE_DIR --check    the same, exit 1 on any fault
@@ -19,12 +20,12 @@ def folders(core):
     return sorted(p.name for p in core.iterdir() if p.is_dir())
 
 
-def include_edges(core, names):
+def include_edges(core, names, suffixes=(".h", ".cpp")):
     """folder -> {included folder: first file that includes it}"""
     edges = {name: {} for name in names}
     for name in names:
         for source in sorted((core / name).rglob("*")):
-            if source.suffix not in (".h", ".cpp"):
+            if source.suffix not in suffixes:
                 continue
             for target in INCLUDE.findall(source.read_text(encoding="utf-8")):
                 if target in edges and target != name:
@@ -49,8 +50,9 @@ def loops(edges):
 
 
 def linked_folders(core, names):
-    """folder -> the folders whose libraries its own libraries may include: its libraries'
-    direct links (PUBLIC or PRIVATE) and, through those, their PUBLIC links."""
+    """folder -> (the folders its sources may include: its libraries' direct links and, through
+    those, their PUBLIC links; the folders its headers may include: those its libraries pass on
+    to whoever links them, through PUBLIC links only)."""
     library_folder, public, direct = {}, {}, {}
     for name in names:
         cmake = core / name / "CMakeLists.txt"
@@ -79,18 +81,33 @@ def linked_folders(core, names):
         return result
 
     granted = {name: set() for name in names}
+    passed_on = {name: set() for name in names}
     for library, folder in library_folder.items():
         for dependency in direct.get(library, ()):
             for reachable in exported(dependency, set()):
                 if reachable in library_folder:
                     granted[folder].add(library_folder[reachable])
-    return granted
+        for reachable in exported(library, set()):
+            if reachable in library_folder:
+                passed_on[folder].add(library_folder[reachable])
+    return granted, passed_on
 
 
-def documented(architecture, names):
-    text = architecture.read_text(encoding="utf-8")
+def undocumented(text, names):
     return [name for name in names
             if not re.search(r"^\|\s*`core/" + name + r"`\s*\|", text, re.MULTILINE)]
+
+
+def layers(text):
+    """folder -> its row in the picture of the layers: the fenced block of "N  folder..." lines."""
+    row = {}
+    for block in re.findall(r"^```\n(.*?)^```", text, re.MULTILINE | re.DOTALL):
+        lines = block.strip().split("\n")
+        if all(re.fullmatch(r"\d+(\s+[a-z]+)+", line) for line in lines):
+            for line in lines:
+                number, *folders = line.split()
+                row.update({folder: int(number) for folder in folders})
+    return row
 
 
 def main():
@@ -108,13 +125,27 @@ def main():
         faults.append("include loop: " + " -> ".join(cycle + [cycle[0]]) + " (" +
                       ", ".join(str(edges[a][b]) for a, b in zip(cycle, cycle[1:] + cycle[:1]))
                       + ")")
-    granted = linked_folders(core, names)
+    granted, passed_on = linked_folders(core, names)
+    header_edges = include_edges(core, names, (".h",))
     for name in names:
         for target, source in sorted(edges[name].items()):
             if target not in granted[name]:
                 faults.append(f"core/{name} includes core/{target} ({source}) without linking it")
-    for name in documented(root / "docs" / "architecture.md", names):
+            elif target in header_edges[name] and target not in passed_on[name]:
+                faults.append(f"core/{name}'s header {header_edges[name][target]} includes "
+                              f"core/{target}, which its library does not link PUBLIC")
+    architecture = (root / "docs" / "architecture.md").read_text(encoding="utf-8")
+    for name in undocumented(architecture, names):
         faults.append(f"core/{name} has no row in docs/architecture.md's module table")
+    row = layers(architecture)
+    for name in names:
+        if name not in row:
+            faults.append(f"core/{name} is not in docs/architecture.md's picture of the layers")
+    for name in names:
+        for target, source in sorted(edges[name].items()):
+            if name in row and target in row and row[target] >= row[name]:
+                faults.append(f"core/{name} (row {row[name]}) includes core/{target} "
+                              f"(row {row[target]}), not below it in docs/architecture.md ({source})")
     for fault in faults:
         print(fault, file=sys.stderr)
     return 1 if check and faults else 0
