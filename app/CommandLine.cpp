@@ -9,7 +9,7 @@
 #include "Suggestion.h"
 #include "common/ByteSize.h"
 #include "common/ShortText.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 
 namespace matevo::cli {
 

@@ -17,8 +17,8 @@
 #include "common/Choice.h"
 #include "common/Result.h"
 #include "common/ShortText.h"
-#include "io/OutputFolder.h"
-#include "variants/DeltaEBand.h"
+#include "files/OutputFolder.h"
+#include "fitness/DeltaEBand.h"
 
 namespace matevo::cli {
 
@@ -99,7 +99,7 @@ DeltaEBand parseDeltaEBand(const std::string& text, const std::string& what);
 // looked for before the work (OutputNeeds.h).
 std::string imageOutputPath(CommandLine& args);
 
-// Claims an output folder before the work starts (io/OutputFolder.h: a folder holding other
+// Claims an output folder before the work starts (files/OutputFolder.h: a folder holding other
 // files is refused unless `replace`); a refusal is a UsageError naming --out.
 OutputFolder claimOutputFolder(const std::filesystem::path& folder, bool replace);
 

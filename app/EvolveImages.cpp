@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "CommandLine.h"
-#include "gpu/PopulationRendererFactory.h"
 #include "color/Colormap.h"
-#include "io/ImageFile.h"
+#include "gpu/PopulationRendererFactory.h"
+#include "image/ImageFile.h"
 
 namespace matevo::cli {
 

@@ -1,9 +1,9 @@
 #include "EvolveReport.h"
 
+#include "documents/GenomeJson.h"
+#include "documents/MaterialFile.h"
+#include "documents/PresetFieldsJson.h"
 #include "genome/Genome.h"
-#include "io/GenomeJson.h"
-#include "io/MaterialFile.h"
-#include "io/PresetFieldsJson.h"
 #include "material/MaterialInstance.h"
 
 namespace matevo::cli {

@@ -9,14 +9,15 @@
 
 #include "EvolveImages.h"
 #include "color/ImageDifference.h"
+#include "documents/Preset.h"
 #include "evolve/GeneticAlgorithm.h"
-#include "io/Preset.h"
 
 namespace matevo::cli {
 
 // `ranked` is ga.rankedPopulation(), ranked once by the caller for every output. Besides the
-// contract's fields, "best_material" is the best genome as a material file (io/MaterialFile.h,
-// textures by absolute path), so that `render --genome` and `export` replay it on its own.
+// contract's fields, "best_material" is the best genome as a material file
+// (documents/MaterialFile.h, textures by absolute path), so that `render --genome` and `export`
+// replay it on its own.
 nlohmann::ordered_json evolveReport(const Preset& preset, const std::filesystem::path& presetFile,
                                     const GeneticAlgorithm& ga,
                                     const std::vector<Individual>& ranked);

@@ -1,6 +1,8 @@
 #include "ExperimentRenderer.h"
 
 #include "CommandLine.h"
+#include "documents/PresetTextures.h"
+#include "fitness/RenderGenomesWith.h"
 #include "gpu/PopulationRendererFactory.h"
 
 namespace matevo::cli {

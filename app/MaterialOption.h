@@ -1,8 +1,8 @@
 #pragma once
 // Material JSON files for the commands that read them (render --genome, export): any JSON that
-// matevo writes for a material (io/MaterialFile.h). A bare genome carries no family, so it takes
-// the family, kappa, textures and scene of --preset (or the default preset); beside a file that
-// names its own, --preset would do nothing and is refused. The preset is read only when it is
+// matevo writes for a material (documents/MaterialFile.h). A bare genome carries no family, so it
+// takes the family, kappa, textures and scene of --preset (or the default preset); beside a file
+// that names its own, --preset would do nothing and is refused. The preset is read only when it is
 // needed, so that material files (a moved variant set) are read where no preset can be found.
 // Warnings go to stderr; errors become a UsageError (exit 2).
 #include <filesystem>
@@ -11,7 +11,7 @@
 
 #include "CommandLine.h"
 #include "PresetOption.h"
-#include "io/MaterialFile.h"
+#include "documents/MaterialFile.h"
 
 namespace matevo::cli {
 

@@ -1,7 +1,7 @@
 #include "OutputNeeds.h"
 
 #include "CommandLine.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 
 namespace matevo::cli {
 

@@ -6,14 +6,14 @@
 #include <filesystem>
 #include <string>
 
-#include "experiment/Font.h"
+#include "image/Font.h"
 
 namespace matevo::cli {
 
 // DejaVu Sans, the font of experiment's charts and variants' contact sheets.
 Font requireChartFont();
 
-// The encoder of `file`'s image type (io/ImageFile.h): an .exr needs matevo's OpenImageIO
+// The encoder of `file`'s image type (image/ImageFile.h): an .exr needs matevo's OpenImageIO
 // module. `option` names what asked for the type ("--out", "--format").
 void requireImageEncoder(const std::filesystem::path& file, const std::string& option);
 

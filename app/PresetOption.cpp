@@ -2,8 +2,8 @@
 
 #include "Messages.h"
 #include "Suggestion.h"
-#include "io/PresetCatalog.h"
-#include "io/ResourcePaths.h"
+#include "documents/PresetCatalog.h"
+#include "files/ResourcePaths.h"
 
 namespace matevo::cli {
 

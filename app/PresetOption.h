@@ -6,7 +6,7 @@
 #include <string>
 
 #include "CommandLine.h"
-#include "io/Preset.h"
+#include "documents/Preset.h"
 
 namespace matevo::cli {
 
@@ -17,7 +17,7 @@ struct PresetChoice {
 };
 
 // A path ("dir/x.json", "x.json") is taken as it is; anything else is a preset name, looked up
-// in the user's and the shipped preset folders (io/PresetCatalog.h).
+// in the user's and the shipped preset folders (documents/PresetCatalog.h).
 std::filesystem::path resolvePreset(const std::string& pathOrName);
 
 PresetChoice loadPresetOption(CommandLine& args);

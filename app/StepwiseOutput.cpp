@@ -4,7 +4,7 @@
 #include <system_error>
 
 #include "CommandLine.h"
-#include "io/InputFile.h"
+#include "files/InputFile.h"
 
 namespace matevo::cli {
 namespace {

@@ -1,13 +1,13 @@
 #pragma once
 // An output folder committed step by step (`matevo variants --block`): after each completed
-// block the run so far replaces the folder, whole (io/OutputFolder.h), so a kill -9 or a
+// block the run so far replaces the folder, whole (files/OutputFolder.h), so a kill -9 or a
 // scheduler's time limit leaves the completed blocks for a later run of the same request to
 // keep (variants/ShareResume.h). The next staging folder starts from the committed files as
 // hard links (copies where the filesystem has none): a step costs a link per file, not a copy.
 #include <chrono>
 #include <optional>
 
-#include "io/OutputFolder.h"
+#include "files/OutputFolder.h"
 
 namespace matevo::cli {
 

@@ -5,7 +5,7 @@
 #include <atomic>
 #include <csignal>
 
-#include "io/TemporaryFiles.h"
+#include "files/TemporaryFiles.h"
 
 namespace matevo::cli {
 

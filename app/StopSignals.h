@@ -17,7 +17,7 @@ int stopSignal();
 
 void installStopSignalHandlers();
 // For short commands (render, scene): SIGINT and SIGTERM end them at once, as by default, but
-// first remove the temporary file being written (io/TemporaryFiles.h). The stop handlers above
+// first remove the temporary file being written (files/TemporaryFiles.h). The stop handlers above
 // do the same when a second signal ends a long command.
 void installQuitSignalHandlers();
 

@@ -21,8 +21,8 @@
 #include "commands/Commands.h"
 #include "common/MemoryBudget.h"
 #include "common/WorkerThreads.h"
+#include "documents/PresetCatalog.h"
 #include "gpu/LoaderEnvironment.h"
-#include "io/PresetCatalog.h"
 
 namespace {
 

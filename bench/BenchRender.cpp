@@ -2,7 +2,8 @@
 
 #include "BenchReport.h"
 #include "Timing.h"
-#include "io/ResourcePaths.h"
+#include "documents/PresetTextures.h"
+#include "files/ResourcePaths.h"
 #include "material/FgdTableCache.h"
 #include "scene/SphereRenderer.h"
 

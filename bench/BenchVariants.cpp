@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "BenchReport.h"
+#include "documents/Preset.h"
+#include "documents/PresetTextures.h"
 #include "experiment/Experiment.h"
-#include "io/Preset.h"
-#include "io/ResourcePaths.h"
+#include "files/ResourcePaths.h"
+#include "fitness/RenderGenomesWith.h"
 #include "render/CpuPopulationRenderer.h"
 #include "scene/SceneTextures.h"
 #include "variants/FindVariants.h"

@@ -12,10 +12,11 @@
 #include <vector>
 
 #include "color/ImageDifference.h"
+#include "documents/Preset.h"
+#include "documents/PresetTextures.h"
 #include "evolve/GenomeSampling.h"
+#include "files/ResourcePaths.h"
 #include "genome/FamilyRules.h"
-#include "io/Preset.h"
-#include "io/ResourcePaths.h"
 #include "material/FgdTableCache.h"
 #include "material/IntegratedAlbedo.h"
 #include "scene/ProceduralTextures.h"

@@ -4,7 +4,7 @@
 #   scripts/install-deps.sh --tests  that, plus the test stack (scripts/test.sh asks for it)
 set -euo pipefail
 
-# DejaVu Sans is the font of the charts and contact sheets matevo draws (core/experiment/Font.h).
+# DejaVu Sans is the font of the charts and contact sheets matevo draws (core/image/Font.h).
 packages=(
     build-essential cmake ninja-build pkg-config
     libvulkan-dev mesa-vulkan-drivers glslang-tools glslang-dev

@@ -20,8 +20,8 @@
 #include "color/ImageDifference.h"
 #include "color/ImageMetric.h"
 #include "common/Image.h"
+#include "documents/Preset.h"
 #include "genome/Genome.h"
-#include "io/Preset.h"
 
 namespace matevo::ui {
 

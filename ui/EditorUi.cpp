@@ -17,8 +17,8 @@
 #include "StatusBar.h"
 #include "TargetPanel.h"
 #include "VariantsPanel.h"
+#include "documents/MaterialFile.h"
 #include "genome/FamilyRules.h"
-#include "io/MaterialFile.h"
 #include "scene/LightingChoice.h"
 
 namespace matevo::ui {

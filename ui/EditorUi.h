@@ -1,6 +1,6 @@
 #pragma once
 // The whole editor UI for one frame: tiles the panels, maps keyboard shortcuts, runs file
-// actions through core/io and keeps the undo history. Nothing that discards unsaved changes
+// actions through core/documents and keeps the undo history. Nothing that discards unsaved changes
 // (open, quit, close, a dropped file) happens without asking. Call draw() between
 // ImGui::NewFrame() and ImGui::Render(). Knows nothing of Vulkan or windows.
 #include <filesystem>

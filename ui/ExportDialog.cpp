@@ -3,7 +3,7 @@
 #include <string>
 
 #include "PresetFiles.h"
-#include "io/Preset.h"
+#include "documents/Preset.h"
 #include "variants/VariantFiles.h"
 
 namespace matevo::ui {

@@ -10,8 +10,8 @@
 
 #include "EditorState.h"
 #include "PathDialog.h"
+#include "documents/MaterialFile.h"
 #include "export/ExportSet.h"
-#include "io/MaterialFile.h"
 
 namespace matevo::ui {
 

@@ -10,8 +10,8 @@
 #include "ImageView.h"
 #include "PixelReadout.h"
 #include "Widgets.h"
+#include "documents/MaterialFile.h"
 #include "genome/FamilyRules.h"
-#include "io/MaterialFile.h"
 
 namespace matevo::ui {
 namespace {

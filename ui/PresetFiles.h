@@ -6,7 +6,7 @@
 #include <string>
 
 #include "common/Result.h"
-#include "io/Preset.h"
+#include "documents/Preset.h"
 
 namespace matevo::ui {
 

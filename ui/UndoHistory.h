@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "io/Preset.h"
+#include "documents/Preset.h"
 
 namespace matevo::ui {
 

@@ -10,7 +10,7 @@
 #include "KeptBin.h"
 #include "Widgets.h"
 #include "color/Colormap.h"
-#include "variants/DeltaEBand.h"
+#include "fitness/DeltaEBand.h"
 
 namespace matevo::ui {
 namespace {

@@ -7,13 +7,13 @@
 
 #include "ChoiceHelp.h"
 #include "Messages.h"
+#include "WorkEstimate.h"
 #include "color/Colormap.h"
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/ImageMetric.h"
-#include "WorkEstimate.h"
 #include "commands/Commands.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 
 namespace matevo::cli {
 namespace {

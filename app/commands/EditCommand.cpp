@@ -5,7 +5,7 @@
 #include "RenderBackend.h"
 #include "commands/Commands.h"
 #include "editor/EditorApp.h"
-#include "io/TextFile.h"
+#include "files/TextFile.h"
 
 namespace matevo::cli {
 namespace {

@@ -14,13 +14,16 @@
 #include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
+#include "common/StopRequest.h"
+#include "documents/GaCheckpoint.h"
+#include "documents/PresetTextures.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "experiment/Experiment.h"
+#include "files/AtomicFile.h"
+#include "files/OutputFolder.h"
+#include "fitness/ImageFitness.h"
+#include "fitness/RenderGenomesWith.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/AtomicFile.h"
-#include "io/GaCheckpoint.h"
-#include "io/OutputFolder.h"
-#include "variants/ImageFitness.h"
 
 namespace matevo::cli {
 

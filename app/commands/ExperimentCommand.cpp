@@ -21,10 +21,10 @@
 #include "experiment/ExperimentCharts.h"
 #include "experiment/ResultsCsv.h"
 #include "experiment/RunSummary.h"
-#include "io/AtomicFile.h"
-#include "io/ImageFile.h"
-#include "io/OutputFolder.h"
-#include "io/ResourcePaths.h"
+#include "files/AtomicFile.h"
+#include "files/OutputFolder.h"
+#include "files/ResourcePaths.h"
+#include "image/ImageFile.h"
 
 namespace matevo::cli {
 

@@ -11,10 +11,10 @@
 #include "WorkEstimate.h"
 #include "color/Colormap.h"
 #include "commands/Commands.h"
+#include "documents/PresetTextures.h"
 #include "export/ExportSet.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/ImageFile.h"
-#include "io/VariantFolder.h"
+#include "image/ImageFile.h"
 #include "mesh/MeshFile.h"
 #include "scene/SceneLayout.h"
 #include "scene/SceneTextures.h"
@@ -92,7 +92,7 @@ MaterialFile targetOf(const std::optional<std::string>& variantsFolder,
     return target;
 }
 
-// The set's material files, as every command reads a set (io/VariantFolder.h).
+// The set's material files, as every command reads a set (documents/VariantFolder.h).
 std::vector<fs::path> variantFiles(const fs::path& folder) {
     auto files = variantFolderFiles(folder);
     if (!files) throw CommandFailure(withContext(files.error(), "--variants"));

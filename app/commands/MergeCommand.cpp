@@ -5,7 +5,7 @@
 
 #include "Messages.h"
 #include "commands/Commands.h"
-#include "io/OutputFolder.h"
+#include "files/OutputFolder.h"
 #include "variants/ShardMerge.h"
 
 namespace matevo::cli {

@@ -3,7 +3,7 @@
 #include "CommandLine.h"
 #include "PresetOption.h"
 #include "commands/Commands.h"
-#include "io/PresetCatalog.h"
+#include "documents/PresetCatalog.h"
 
 namespace matevo::cli {
 

@@ -9,9 +9,10 @@
 #include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
+#include "documents/PresetTextures.h"
+#include "files/TemporaryFiles.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/ImageFile.h"
-#include "io/TemporaryFiles.h"
+#include "image/ImageFile.h"
 #include "scene/LightingChoice.h"
 
 namespace matevo::cli {

@@ -1,6 +1,7 @@
 #include "CandidateRenderCache.h"
 
 #include <algorithm>
+#include "documents/PresetTextures.h"
 
 namespace matevo::editor {
 namespace {

@@ -19,10 +19,10 @@
 #include "color/ImageDifference.h"
 #include "common/CancelToken.h"
 #include "common/Result.h"
+#include "documents/Preset.h"
 #include "gpu/CommandRunner.h"
 #include "gpu/DisplayTile.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/Preset.h"
 #include "render/PopulationRenderer.h"
 #include "scene/SceneTextures.h"
 

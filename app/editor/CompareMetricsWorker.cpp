@@ -5,7 +5,9 @@
 #include <string>
 #include <utility>
 
+#include "documents/PresetTextures.h"
 #include "experiment/Experiment.h"
+#include "fitness/RenderGenomesWith.h"
 
 namespace matevo::editor {
 

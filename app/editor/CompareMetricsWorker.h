@@ -12,9 +12,9 @@
 #include "BackgroundWorker.h"
 
 #include "common/Image.h"
+#include "documents/Preset.h"
 #include "experiment/RunRecord.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/Preset.h"
 
 namespace matevo::editor {
 

@@ -31,9 +31,9 @@
 #include "VulkanContext.h"
 #include "WindowInput.h"
 #include "WindowRenderer.h"
-#include "io/ImageFile.h"
-#include "io/PresetCatalog.h"
-#include "io/ResourcePaths.h"
+#include "documents/PresetCatalog.h"
+#include "files/ResourcePaths.h"
+#include "image/ImageFile.h"
 #include "material/FgdTableCache.h"
 
 namespace matevo::editor {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "EditorScript.h"
-#include "io/Preset.h"
+#include "documents/Preset.h"
 #include "render/PopulationRenderer.h"
 
 namespace matevo::editor {

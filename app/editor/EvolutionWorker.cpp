@@ -10,8 +10,10 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include "documents/PresetTextures.h"
 #include "experiment/Experiment.h"
-#include "variants/ImageFitness.h"
+#include "fitness/ImageFitness.h"
+#include "fitness/RenderGenomesWith.h"
 
 namespace matevo::editor {
 namespace {

@@ -18,8 +18,8 @@
 #include "color/ImageDifference.h"
 #include "common/CancelToken.h"
 #include "common/Image.h"
+#include "documents/Preset.h"
 #include "evolve/GeneticAlgorithm.h"
-#include "io/Preset.h"
 
 namespace matevo::editor {
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "documents/PresetTextures.h"
 #include "gpu/GpuSceneRenderer.h"
 #include "material/FgdTableCache.h"
 #include "mesh/MeshFile.h"

@@ -16,9 +16,9 @@
 
 #include "BackgroundWorker.h"
 #include "ScenePanel.h"
+#include "documents/Preset.h"
 #include "gpu/Device.h"
 #include "gpu/DisplayTile.h"
-#include "io/Preset.h"
 
 namespace matevo::editor {
 

@@ -5,9 +5,9 @@
 
 #include "LightingPanel.h"
 #include "VariantsDisplay.h"
-#include "experiment/Font.h"
-#include "io/MaterialFile.h"
-#include "io/OutputFolder.h"
+#include "documents/MaterialFile.h"
+#include "files/OutputFolder.h"
+#include "image/Font.h"
 #include "variants/VariantFiles.h"
 
 namespace matevo::editor {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <utility>
 
+#include "documents/PresetTextures.h"
 #include "scene/SceneTextures.h"
 
 namespace matevo::editor {

@@ -9,8 +9,8 @@
 
 #include "BackgroundWorker.h"
 
+#include "documents/Preset.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "io/Preset.h"
 #include "variants/FindVariants.h"
 #include "variants/VariantFiles.h"
 

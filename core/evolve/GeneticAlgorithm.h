@@ -39,7 +39,7 @@ struct GenerationStats {
 };
 
 // Everything a run carries from one generation to the next: with it a run can stop after any
-// generation and resume to the same end, bit for bit (checkpoints, io/GaCheckpoint.h).
+// generation and resume to the same end, bit for bit (checkpoints, documents/GaCheckpoint.h).
 struct GaState {
     int generation = 0;
     std::vector<Individual> population;

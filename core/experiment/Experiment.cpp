@@ -6,7 +6,7 @@
 #include "common/ParallelFor.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "experiment/RunSeeds.h"
-#include "variants/ImageFitness.h"
+#include "fitness/ImageFitness.h"
 
 namespace matevo {
 
@@ -95,18 +95,6 @@ Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,
         records.resize(kept);
     }
     return records;
-}
-
-RenderGenomes renderGenomesWith(std::shared_ptr<PopulationRenderer> renderer,
-                                const MaterialFamily& family, const std::array<double, 3>& kappa,
-                                const SceneSettings& scene, int size) {
-    return [renderer = std::move(renderer), family, kappa, scene,
-            size](std::span<const Genome> genomes) {
-        std::vector<MaterialInstance> materials;
-        materials.reserve(genomes.size());
-        for (const Genome& genome : genomes) materials.push_back(materialOf(genome, family, kappa));
-        return renderer->render(materials, scene, size);
-    };
 }
 
 Result<ScoredRuns> scoreRuns(std::span<RunRecord> records, const Image& targetImage,

@@ -7,7 +7,6 @@
 // the image comparison does not depend on the thread count.
 #include <cstddef>
 #include <functional>
-#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -21,15 +20,8 @@
 #include "experiment/RunRecord.h"
 #include "genome/Genome.h"
 #include "genome/MaterialFamily.h"
-#include "render/PopulationRenderer.h"
 
 namespace matevo {
-
-// RenderGenomes on `renderer` for genomes of `family` with the base's `kappa` (a genome that
-// carries its own kappa genes, for hue variety, is drawn with those: materialOf), at size x size.
-RenderGenomes renderGenomesWith(std::shared_ptr<PopulationRenderer> renderer,
-                                const MaterialFamily& family, const std::array<double, 3>& kappa,
-                                const SceneSettings& scene, int size);
 
 // done of total work items (one per GA run, one per scored run); called on the calling thread.
 using ExperimentProgress = std::function<void(int done, int total)>;

@@ -1,7 +1,7 @@
 #pragma once
 // What an experiment's GA runs minimise: one of the paper's three genotype distances, or, beyond
 // the paper, the image-space fitness (the rendered mean ΔE00 against the target's render at the
-// fitness resolution, core/variants/ImageFitness.h). The paper's three stay the default.
+// fitness resolution, core/fitness/ImageFitness.h). The paper's three stay the default.
 #include <optional>
 #include <string_view>
 #include <vector>

@@ -1,12 +1,12 @@
 #pragma once
 // A histogram of mean ΔE00 values as a chart: the perceptual bands as tinted backgrounds with
 // lines at their edges and short labels, one bar per non-empty bin, both axes with tick labels
-// and titles, and a title. `matevo experiment` writes it as SVG and PNG (experiment/ChartDrawing.h).
+// and titles, and a title. `matevo experiment` writes it as SVG and PNG (image/ChartDrawing.h).
 #include <span>
 #include <string>
 
-#include "experiment/ChartDrawing.h"
 #include "experiment/DeltaEHistogram.h"
+#include "image/ChartDrawing.h"
 
 namespace matevo {
 

@@ -2,10 +2,11 @@
 
 #include <cctype>
 
+#include "documents/PresetTextures.h"
 #include "export/GltfRenderer.h"
 #include "export/GltfWriter.h"
 #include "export/MaterialXWriter.h"
-#include "io/AtomicFile.h"
+#include "files/AtomicFile.h"
 
 namespace matevo {
 
@@ -90,7 +91,7 @@ Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
     std::vector<NamedGltfMaterial> materials;
     for (const auto& variant : set.variants)
         materials.push_back({variant.name, variant.fit.material});
-    // Temporary files of an export killed earlier (io/AtomicFile.h).
+    // Temporary files of an export killed earlier (files/AtomicFile.h).
     removeStaleTemporaryFilesBeside(file);
     const Status written = format == ExportFormat::MaterialX
                                ? writeMaterialX(materials, set.textures, file)

@@ -17,9 +17,9 @@
 #include "common/CancelToken.h"
 #include "common/Choice.h"
 #include "common/Result.h"
+#include "documents/MaterialFile.h"
 #include "export/GltfFit.h"
 #include "export/GltfWriter.h"
-#include "io/MaterialFile.h"
 #include "render/PopulationRenderer.h"
 
 namespace matevo {

@@ -3,10 +3,10 @@
 #include <algorithm>
 
 #include "color/ImageDifference.h"
-#include "export/GltfRenderer.h"
-#include "io/ImageFile.h"
-#include "material/MaterialInstance.h"
 #include "common/ParallelFor.h"
+#include "export/GltfRenderer.h"
+#include "image/ImageFile.h"
+#include "material/MaterialInstance.h"
 
 namespace matevo {
 

@@ -12,10 +12,10 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "files/AtomicFile.h"
+#include "files/CompanionFiles.h"
+#include "image/ImageFile.h"
 #include "mesh/GeneratedMeshes.h"
-#include "io/AtomicFile.h"
-#include "io/CompanionFiles.h"
-#include "io/ImageFile.h"
 
 namespace matevo {
 
@@ -345,7 +345,7 @@ Status writeGltf(const std::vector<NamedGltfMaterial>& materials, const SceneTex
     if (binary) return writeFileAtomically(file, stream.str());
 
     // tinygltf streams the buffer as a data URI; a .gltf keeps it in a .bin beside the JSON,
-    // named after its contents so that the pair is replaced as one (io/CompanionFiles.h).
+    // named after its contents so that the pair is replaced as one (files/CompanionFiles.h).
     const auto& bytes = model->buffers[0].data;
     const CompanionFile bin{"", ".bin",
                             std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size())};

@@ -7,7 +7,7 @@
 // KHR_materials_clearcoat, KHR_materials_ior and KHR_materials_specular where their values act
 // on the material (GltfMaterial.h). `.glb` is one binary file, written atomically; `.gltf` is
 // the JSON with its buffer beside it in NAME.HASH.bin, the pair replaced as one
-// (io/CompanionFiles.h). Textures (the scene's base colour; the roughness texture as
+// (files/CompanionFiles.h). Textures (the scene's base colour; the roughness texture as
 // GltfMaterial.h derives it, tagged linear) are PNGs inside the buffer.
 #include <filesystem>
 #include <string>

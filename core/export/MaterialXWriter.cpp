@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "common/XmlText.h"
-#include "io/CompanionFiles.h"
-#include "io/ImageFile.h"
+#include "files/CompanionFiles.h"
+#include "image/ImageFile.h"
 
 namespace matevo {
 
@@ -131,7 +131,7 @@ Status writeMaterialX(const std::vector<NamedGltfMaterial>& materials,
         }
     }
     // Named after their contents, so that the document and its textures are replaced as one
-    // (io/CompanionFiles.h).
+    // (files/CompanionFiles.h).
     CompanionFile baseColor{"_base_color", ".png", {}};
     CompanionFile roughness{"_roughness", ".png", {}};
     if (anyBaseColor) {

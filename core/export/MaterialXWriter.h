@@ -20,7 +20,7 @@ std::string materialXDocument(const std::vector<NamedGltfMaterial>& materials,
                               const std::string& baseColorFile, const std::string& roughnessFile);
 
 // Writes FILE.mtlx, and FILE_base_color.HASH.png / FILE_roughness.HASH.png beside it when used;
-// the document and its textures are replaced as one (io/CompanionFiles.h).
+// the document and its textures are replaced as one (files/CompanionFiles.h).
 Status writeMaterialX(const std::vector<NamedGltfMaterial>& materials,
                       const SceneTextures& textures, const std::filesystem::path& file);
 

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "documents/PresetTextures.h"
 #include "gpu/GpuPopulationRenderer.h"
 #include "material/FgdTableCache.h"
 #include "render/CpuPopulationRenderer.h"

@@ -11,8 +11,8 @@
 #include <utility>
 
 #include "common/CancelToken.h"
+#include "documents/Preset.h"
 #include "gpu/GpuContext.h"
-#include "io/Preset.h"
 #include "render/PopulationRenderer.h"
 
 namespace matevo::gpu {

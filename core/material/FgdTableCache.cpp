@@ -13,8 +13,9 @@
 
 #include "common/Fnv1a.h"
 #include "common/StatusOutput.h"
-#include "io/AtomicFile.h"
-#include "io/InputFile.h"
+#include "files/AtomicFile.h"
+#include "files/InputFile.h"
+#include "files/XdgFolders.h"
 
 namespace matevo {
 
@@ -122,10 +123,7 @@ Status writeFgdTables(const std::filesystem::path& file, const FgdTables& tables
 }
 
 std::filesystem::path defaultTableCacheDirectory() {
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-        return std::filesystem::path(xdg) / "matevo";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return std::filesystem::path(home) / ".cache" / "matevo";
+    if (auto cache = xdgHome(XdgHome::Cache); !cache.empty()) return cache / "matevo";
     return std::filesystem::temp_directory_path() / "matevo-cache";
 }
 

@@ -31,7 +31,8 @@ std::string serializeFgdTables(const FgdTables& tables, const TableGenerationSet
 Status writeFgdTables(const std::filesystem::path& file, const FgdTables& tables,
                       const TableGenerationSettings& settings);
 
-// $XDG_CACHE_HOME/matevo, else $HOME/.cache/matevo, else <temp>/matevo-cache.
+// $XDG_CACHE_HOME/matevo, else $HOME/.cache/matevo (files/XdgFolders.h), else
+// <temp>/matevo-cache.
 std::filesystem::path defaultTableCacheDirectory();
 
 // Reads the cached tables, or builds them (progress on stderr) and caches them. If the cache

@@ -4,7 +4,7 @@
 
 #include "common/MemoryBudget.h"
 #include "common/ShortText.h"
-#include "io/InputFile.h"
+#include "files/InputFile.h"
 #include "mesh/GltfReader.h"
 
 namespace matevo {

@@ -16,9 +16,9 @@
 
 #include "common/MemoryBudget.h"
 #include "common/ShortText.h"
-#include "io/ImageType.h"
-#include "io/InputFile.h"
-#include "io/JsonReader.h"
+#include "files/InputFile.h"
+#include "files/JsonReader.h"
+#include "image/ImageType.h"
 #include "mesh/GltfExternalFiles.h"
 
 namespace matevo {

@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
-#include "io/ImageType.h"
-#include "io/InputFile.h"
+#include "files/InputFile.h"
+#include "image/ImageType.h"
 #include "mesh/GeneratedMeshes.h"
 #include "mesh/GltfReader.h"
 #include "mesh/ObjReader.h"

@@ -23,7 +23,7 @@ namespace matevo {
 enum class SceneMode { Paper, Ambient, Environment };
 
 // The modes by name (a preset's "scene.mode", experiment --scene, the preset schema) and a line
-// for people. Header-only, like the struct: core/io reads and writes it without linking the
+// for people. Header-only, like the struct: core/documents reads and writes it without linking the
 // renderer.
 inline constexpr std::array<Choice<SceneMode>, 3> kSceneModes{{
     {SceneMode::Paper, "paper", "paper (one light, no ambient)"},

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "scene/StudioEnvironment.h"
 
 namespace matevo {
@@ -41,13 +41,6 @@ Result<SceneTextures> loadTextures(const std::string& source,
     return SceneTextures{std::move(roughness).value(), std::move(baseColor).value(), {}};
 }
 
-// The environment mode's lighting: "studio", or a file (relative to `folder` unless absolute).
-std::string environmentFile(const SceneSettings& scene, const std::filesystem::path& folder) {
-    const std::filesystem::path name(scene.environment);
-    return scene.environment == "studio" || name.is_absolute() ? scene.environment
-                                                               : (folder / name).string();
-}
-
 Result<SceneTextures> withEnvironment(SceneTextures textures, const SceneSettings& scene,
                                       const std::filesystem::path& folder,
                                       const std::string& source) {
@@ -59,37 +52,22 @@ Result<SceneTextures> withEnvironment(SceneTextures textures, const SceneSetting
     return textures;
 }
 
-std::filesystem::path besidePreset(const std::filesystem::path& presetFile,
-                                   const std::string& name) {
-    return name.empty() ? std::filesystem::path() : presetFile.parent_path() / name;
-}
-
 }  // namespace
 
-Result<SceneTextures> loadSceneTextures(const Preset& preset,
-                                        const std::filesystem::path& presetFile) {
-    auto textures =
-        loadTextures(presetFile.string(), besidePreset(presetFile, preset.roughnessTexture),
-                     besidePreset(presetFile, preset.baseColorTexture));
+Result<SceneTextures> loadSceneTextures(const std::filesystem::path& roughnessFile,
+                                        const std::filesystem::path& baseColorFile,
+                                        const SceneSettings& scene,
+                                        const std::filesystem::path& folder,
+                                        const std::string& source) {
+    auto textures = loadTextures(source, roughnessFile, baseColorFile);
     if (!textures) return textures;
-    return withEnvironment(std::move(*textures), preset.scene, presetFile.parent_path(),
-                           presetFile.string());
+    return withEnvironment(std::move(*textures), scene, folder, source);
 }
 
-TextureSources textureSourcesOf(const Preset& preset, const std::filesystem::path& presetFile) {
-    return {besidePreset(presetFile, preset.roughnessTexture),
-            besidePreset(presetFile, preset.baseColorTexture),
-            preset.scene.mode == SceneMode::Environment
-                ? environmentFile(preset.scene, presetFile.parent_path())
-                : std::string()};
-}
-
-Result<SceneTextures> loadSceneTextures(const MaterialFile& material,
-                                        const std::string& sourceName) {
-    auto textures =
-        loadTextures(sourceName, material.roughnessTexture, material.baseColorTexture);
-    if (!textures) return textures;
-    return withEnvironment(std::move(*textures), material.scene, {}, sourceName);
+std::string environmentFile(const SceneSettings& scene, const std::filesystem::path& folder) {
+    const std::filesystem::path name(scene.environment);
+    return scene.environment == "studio" || name.is_absolute() ? scene.environment
+                                                               : (folder / name).string();
 }
 
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v) {

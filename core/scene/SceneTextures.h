@@ -8,10 +8,9 @@
 
 #include "common/Image.h"
 #include "common/Result.h"
-#include "io/MaterialFile.h"
-#include "io/Preset.h"
 #include "material/LayerStack.h"
 #include "scene/PrefilteredEnvironment.h"
+#include "scene/SceneSettings.h"
 
 namespace matevo {
 
@@ -21,26 +20,19 @@ struct SceneTextures {
     PrefilteredEnvironment environment;
 };
 
-// Loads the preset's textures, and its environment in the environment scene mode; their names
-// are relative to the preset file's folder. Errors name the preset file, the field and the
-// image file.
-Result<SceneTextures> loadSceneTextures(const Preset& preset,
-                                        const std::filesystem::path& presetFile);
+// Loads the textures a preset or material file names (an empty path: none), and in the
+// environment scene mode `scene.environment`, relative to `folder` unless absolute or "studio".
+// Errors name `source`, the field and the image file. For a preset or material file itself:
+// documents/PresetTextures.h.
+Result<SceneTextures> loadSceneTextures(const std::filesystem::path& roughnessFile,
+                                        const std::filesystem::path& baseColorFile,
+                                        const SceneSettings& scene,
+                                        const std::filesystem::path& folder,
+                                        const std::string& source);
 
-// The files loadSceneTextures(preset, presetFile) reads: while they stay the same, so do the
-// textures, and a renderer keeps its own (the editor's, while a target slider is dragged).
-struct TextureSources {
-    std::filesystem::path roughness;
-    std::filesystem::path baseColor;
-    std::string environment;  // empty outside the environment scene mode
-
-    bool operator==(const TextureSources&) const = default;
-};
-TextureSources textureSourcesOf(const Preset& preset, const std::filesystem::path& presetFile);
-
-// Loads a material file's textures (absolute paths); errors name `sourceName` and the field.
-Result<SceneTextures> loadSceneTextures(const MaterialFile& material,
-                                        const std::string& sourceName);
+// The environment file the environment scene mode reads: "studio", or `scene.environment`
+// relative to `folder` unless absolute.
+std::string environmentFile(const SceneSettings& scene, const std::filesystem::path& folder);
 
 // Bilinear RGB at (u, v) with the wrap/clamp rule of SphereMapping.h.
 std::array<double, 3> sampleTexture(const Image& texture, double u, double v);

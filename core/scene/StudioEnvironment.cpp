@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "scene/LatLong.h"
 
 namespace matevo {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "variants/VariantFiles.h"
 
 namespace matevo {

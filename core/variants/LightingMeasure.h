@@ -10,7 +10,7 @@
 
 #include "color/LabImage.h"
 #include "evolve/RenderGenomes.h"
-#include "variants/DeltaEBand.h"
+#include "fitness/DeltaEBand.h"
 
 namespace matevo {
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "common/Result.h"
+#include "fitness/GenomeRenderCache.h"
 #include "genome/Genome.h"
-#include "variants/GenomeRenderCache.h"
 #include "variants/LightingMeasure.h"
 
 namespace matevo {

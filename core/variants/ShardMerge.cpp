@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <string>
 
-#include "io/AtomicFile.h"
-#include "io/CarriedTextures.h"
-#include "io/InputFile.h"
-#include "io/JsonReader.h"
-#include "io/MaterialFile.h"
-#include "io/TextFile.h"
+#include "documents/CarriedTextures.h"
+#include "documents/MaterialFile.h"
+#include "files/AtomicFile.h"
+#include "files/InputFile.h"
+#include "files/JsonReader.h"
+#include "files/TextFile.h"
 #include "variants/ShareResume.h"
 #include "variants/VariantBlockFiles.h"
 #include "variants/VariantBlocks.h"
@@ -61,7 +61,7 @@ Status copyFile(const fs::path& from, const fs::path& to) {
 }
 
 // A share's material file saved again in the merged set `dir`, its textures carried into the
-// set (io/CarriedTextures.h), so that the merged set does not depend on the shares' folders.
+// set (documents/CarriedTextures.h), so that the merged set does not depend on the shares' folders.
 Status copyMaterial(const fs::path& from, const fs::path& dir, const fs::path& to) {
     auto loaded = loadMaterial(from, MaterialFile{});
     if (!loaded) return loaded.error();

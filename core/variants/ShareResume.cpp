@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "io/InputFile.h"
-#include "io/JsonReader.h"
-#include "io/TextFile.h"
+#include "files/InputFile.h"
+#include "files/JsonReader.h"
+#include "files/TextFile.h"
 
 namespace matevo {
 namespace {

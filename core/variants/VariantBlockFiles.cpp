@@ -6,8 +6,8 @@
 #include <limits>
 #include <map>
 
-#include "io/GenomeJson.h"
-#include "io/ImageFile.h"
+#include "documents/GenomeJson.h"
+#include "image/ImageFile.h"
 
 namespace matevo {
 

@@ -17,8 +17,8 @@
 
 #include "color/ImageMetric.h"
 #include "common/Result.h"
-#include "io/MaterialFile.h"
-#include "io/Preset.h"
+#include "documents/MaterialFile.h"
+#include "documents/Preset.h"
 #include "variants/VariantBlocks.h"
 #include "variants/VariantFiles.h"
 #include "variants/VariantSet.h"

@@ -5,12 +5,13 @@
 
 #include "color/Colormap.h"
 #include "color/ImageDifference.h"
-#include "experiment/Canvas.h"
+#include "documents/CarriedTextures.h"
+#include "documents/GenomeJson.h"
 #include "experiment/Experiment.h"
-#include "io/AtomicFile.h"
-#include "io/CarriedTextures.h"
-#include "io/GenomeJson.h"
-#include "io/ImageFile.h"
+#include "files/AtomicFile.h"
+#include "fitness/RenderGenomesWith.h"
+#include "image/Canvas.h"
+#include "image/ImageFile.h"
 #include "variants/DeliveredFiles.h"
 
 namespace matevo {
@@ -248,7 +249,8 @@ Status writeVariantMembers(const std::filesystem::path& dir, const MaterialFile&
                            ImageMetric heatmapMetric) {
     const std::filesystem::path folder = dir / "variants";
     if (auto created = createFolder(folder); !created) return created;
-    // The set carries its textures, so that it renders wherever it is moved (io/CarriedTextures.h).
+    // The set carries its textures, so that it renders wherever it is moved
+    // (documents/CarriedTextures.h).
     auto carried = carryTextures(target, dir);
     if (!carried) return carried.error();
     if (auto written = saveMaterial(*carried, targetMaterialFile(dir)); !written) return written;

@@ -4,8 +4,8 @@
 //   DIR/report.json                       the report (variantReport)
 //   DIR/target.png                        the target at the output size
 //   DIR/target.json                       the target as a material file
-//   DIR/textures/                         the textures the materials use (io/CarriedTextures.h),
-//                                         so that the folder can be moved
+//   DIR/textures/                         the textures the materials use, so that the folder
+//                                         can be moved (documents/CarriedTextures.h)
 //   DIR/contact_sheet.png                 the target and the set side by side
 //   DIR/variants/variant_NNN.json         one material each, read by `render --genome`
 //   DIR/variants/variant_NNN.png          its render at the output size
@@ -20,11 +20,11 @@
 #include "color/ImageMetric.h"
 #include "common/Image.h"
 #include "common/Result.h"
+#include "documents/MaterialFile.h"
+#include "documents/Preset.h"
 #include "evolve/RenderGenomes.h"
-#include "experiment/Font.h"
-#include "io/MaterialFile.h"
-#include "io/OutputFolder.h"
-#include "io/Preset.h"
+#include "files/OutputFolder.h"
+#include "image/Font.h"
 #include "render/LightingScenes.h"
 #include "variants/DeliveryCheck.h"
 #include "variants/VariantSearch.h"
@@ -93,14 +93,14 @@ std::string variantSummary(const VariantRun& run, const VariantSet& set);
 // The target (top left) and the variants in rows, each labelled with its index (the set's
 // members are the variants firstIndex, firstIndex + 1, … of a whole of `count`), its ΔE00 to
 // the target and to its nearest sibling, on a dark background, in `font` (DejaVu Sans,
-// experiment/Font.h: loaded by the caller before the search, so that a missing font is found
+// image/Font.h: loaded by the caller before the search, so that a missing font is found
 // out before the work rather than when the files are written).
 Image contactSheet(const VariantSet& set, const Font& font, std::size_t firstIndex = 0,
                    std::size_t count = 0);
 
 // The material file of variant `index` of a whole of `count`: `target` (the preset's target as a
-// material file, io/MaterialFile.h: family, kappa, textures, scene) with the variant's genome
-// and name.
+// material file, documents/MaterialFile.h: family, kappa, textures, scene) with the variant's
+// genome and name.
 MaterialFile variantMaterial(const MaterialFile& target, const Variant& variant, std::size_t index,
                              std::size_t count = 0);
 

@@ -26,11 +26,11 @@
 #include "common/Result.h"
 #include "evolve/GeneticAlgorithm.h"
 #include "evolve/RenderGenomes.h"
+#include "fitness/DeltaEBand.h"
+#include "fitness/GenomeRenderCache.h"
 #include "genome/Genome.h"
 #include "genome/MaterialFamily.h"
 #include "material/MaterialInstance.h"
-#include "variants/DeltaEBand.h"
-#include "variants/GenomeRenderCache.h"
 #include "variants/LightingRenderCache.h"
 #include "variants/VariantArchive.h"
 

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <fstream>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 #include "support/TestImages.h"

@@ -1,12 +1,12 @@
 // Start-up cost is mostly the shared libraries a process maps: OpenImageIO alone pulls in about
 // 250 of them. Commands that touch only PNG must never map it; a file of another format loads
-// it on demand (core/io/ImageLibrary.h). Checked with the dynamic loader's own log.
+// it on demand (core/image/ImageLibrary.h). Checked with the dynamic loader's own log.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 #include "support/TestImages.h"

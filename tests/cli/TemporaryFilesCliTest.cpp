@@ -1,4 +1,4 @@
-// The temporary files of `render`, `scene` and `evolve --checkpoint` (io/TemporaryFiles.h), with
+// The temporary files of `render`, `scene` and `evolve --checkpoint` (files/TemporaryFiles.h), with
 // the real executable: none is left after success, a failed write or SIGTERM, and those a
 // kill -9 left earlier are removed by the next command writing there.
 #include <filesystem>

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "color/ImageDifference.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 

@@ -8,7 +8,7 @@
 #include "color/Flip.h"
 #include "color/ImageDifference.h"
 #include "color/Srgb.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 #include "support/TestImages.h"

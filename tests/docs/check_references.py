@@ -2,11 +2,10 @@
 """Fails on a dangling reference anywhere in the repository's sources and docs.
 
 A reference is a Markdown link ([text](target)), a file name ending in .md, or a path into the
-repository's own folders (core/io/Preset.h, docs/scene.md, scripts/test.sh; a stem such as ui/ImageView stands
-for its .h/.cpp). Each must name a
-file or folder that exists: relative to the referring file, to the repository root, or (for a
-bare *.md name) to docs/. The repository must also stand alone, so nothing may point outside
-it (OUTSIDE below lists the forms such a pointer takes).
+repository's own folders (core/documents/Preset.h, docs/scene.md, scripts/test.sh; a stem such as
+ui/ImageView stands for its .h/.cpp). Each must name a file or folder that exists: relative to the
+referring file, to the repository root, or (for a bare *.md name) to docs/. The repository must also
+stand alone, so nothing may point outside it (OUTSIDE below lists the forms such a pointer takes).
 
 usage: check_references.py SOURCE_DIR
 """

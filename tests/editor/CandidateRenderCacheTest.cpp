@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "../gpu/GpuTestContext.h"
+#include "documents/PresetTextures.h"
 #include "evolve/GenomeSampling.h"
 #include "gpu/ComputeKernel.h"
 #include "gpu/GpuPopulationRenderer.h"

@@ -18,7 +18,7 @@
 
 #include "PanelLayout.h"
 #include "ScreenshotAnalysis.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 
 namespace matevo::testing {

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "../gpu/GpuTestContext.h"
+#include "documents/PresetTextures.h"
 #include "gpu/Buffer.h"
 #include "gpu/GpuSceneRenderer.h"
 #include "material/FgdTableCache.h"

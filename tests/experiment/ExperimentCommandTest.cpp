@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "experiment/ResultsCsv.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "support/BackEndAgreement.h"
 #include "support/RunCommand.h"
 

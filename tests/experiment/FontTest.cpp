@@ -1,13 +1,12 @@
-#include "experiment/Font.h"
+#include "image/Font.h"
 
-#include <cstdlib>
 #include <fstream>
 #include <map>
-#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "support/ScopedEnvironment.h"
 #include "support/ScratchFolder.h"
 
 namespace matevo {
@@ -61,28 +60,11 @@ TEST(Font, WidthsFollowTheFontsAdvancesAndScaleWithSize) {
                 1e-6);
 }
 
-// Restores one environment variable at the end of a test.
-class ScopedEnvironment {
-public:
-    ScopedEnvironment(const char* name, const std::string& value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_ = old;
-        ::setenv(name, value.c_str(), 1);
-    }
-    ~ScopedEnvironment() {
-        if (old_) ::setenv(name_, old_->c_str(), 1);
-        else ::unsetenv(name_);
-    }
-
-private:
-    const char* name_;
-    std::optional<std::string> old_;
-};
-
 TEST(Font, WithoutTheFontTheMessageSaysWhereItLookedAndWhichPackageHasIt) {
     matevo::testing::ScratchFolder scratch("font");
-    ScopedEnvironment dataHome("XDG_DATA_HOME", (scratch / "home").string());
-    ScopedEnvironment dataDirs("XDG_DATA_DIRS", (scratch / "a").string() + ":" +
-                                                    (scratch / "b").string());
+    testing::ScopedEnvironment dataHome("XDG_DATA_HOME", (scratch / "home").string());
+    testing::ScopedEnvironment dataDirs(
+        "XDG_DATA_DIRS", (scratch / "a").string() + ":" + (scratch / "b").string());
     auto font = Font::dejaVuSans();
     ASSERT_FALSE(font);
     const std::string& message = font.error().message;

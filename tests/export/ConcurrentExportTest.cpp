@@ -1,4 +1,4 @@
-// Exports that meet at one file (io/CompanionFiles.h), through the real executable: several
+// Exports that meet at one file (files/CompanionFiles.h), through the real executable: several
 // `matevo export` processes writing one .gltf or .mtlx at once, and an export through a symlink.
 // Afterwards the main file must be one export's whole result and every file it names must be
 // there, holding what that export wrote.

@@ -12,10 +12,10 @@
 #include <nlohmann/json.hpp>
 
 #include "color/LabImage.h"
+#include "documents/Preset.h"
 #include "export/GltfMaterial.h"
 #include "export/GltfRenderer.h"
-#include "io/ImageFile.h"
-#include "io/Preset.h"
+#include "image/ImageFile.h"
 #include "support/FileContents.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"

@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
-#include "io/MaterialFile.h"
+#include "documents/MaterialFile.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 
@@ -185,10 +185,10 @@ TEST(ExportCommand, AVariantsSetExportsToGltfAndMaterialX) {
     }
 }
 
-// A set is read the one way every command reads it (io/VariantFolder.h): every material .json
-// in DIR/variants, in name order, whatever its name (a material the user added is exported, as
-// `scene --variants` draws it); other files are passed over; a .json that is not a material
-// is refused with one line naming it, and nothing is written.
+// A set is read the one way every command reads it (documents/VariantFolder.h): every material
+// .json in DIR/variants, in name order, whatever its name (a material the user added is exported,
+// as `scene --variants` draws it); other files are passed over; a .json that is not a material is
+// refused with one line naming it, and nothing is written.
 TEST(ExportCommand, ASetIsEveryMaterialFileInItsFolder) {
     testing::ScratchFolder folder("export_cli");
     const auto set = folder / "set";

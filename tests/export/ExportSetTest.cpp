@@ -21,10 +21,11 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "documents/Preset.h"
+#include "documents/PresetTextures.h"
 #include "export/GltfRenderer.h"
 #include "export/GltfWriter.h"
 #include "export/MaterialXWriter.h"
-#include "io/Preset.h"
 #include "render/CpuPopulationRenderer.h"
 #include "scene/SphereRenderer.h"
 #include "support/RunCommand.h"
@@ -104,7 +105,7 @@ TEST(ExportSet, GltfFilesReadBackFieldByField) {
             ASSERT_TRUE(loaded) << error;
             EXPECT_TRUE(warning.empty()) << warning;
             if (format == ExportFormat::Gltf) {
-                // NAME.HASH.bin (io/CompanionFiles.h), beside the JSON.
+                // NAME.HASH.bin (files/CompanionFiles.h), beside the JSON.
                 const std::string& uri = model.buffers[0].uri;
                 EXPECT_EQ(uri.rfind(std::string(name) + ".", 0), 0u) << uri;
                 EXPECT_EQ(uri.size(), std::strlen(name) + 1 + 16 + 4) << uri;

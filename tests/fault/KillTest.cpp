@@ -21,10 +21,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "io/GenomeJson.h"
-#include "io/ImageFile.h"
-#include "io/MaterialFile.h"
-#include "io/Preset.h"
+#include "documents/GenomeJson.h"
+#include "documents/MaterialFile.h"
+#include "documents/Preset.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 
 namespace matevo {
@@ -224,7 +224,7 @@ FileSet filesIn(const fs::path& folder) {
     return files;
 }
 
-// A temporary file, or the lock of a write the kill interrupted (io/FileLock.h).
+// A temporary file, or the lock of a write the kill interrupted (files/FileLock.h).
 bool isLeftByAKill(const std::string& name) {
     return name.rfind('.', 0) == 0 && (name.find(".matevo-tmp-") != std::string::npos ||
                                        name.ends_with(".matevo-lock"));
@@ -302,7 +302,7 @@ void killDuringExport(const std::string& extension) {
         for (const auto& [name, bytes] : files) {
             if (wholeExports[std::size_t(whole)].count(name) || isLeftByAKill(name)) continue;
             // An orphan of this or an earlier killed export (removed by the next whole write of
-            // the main file, io/CompanionFiles.h): whole, byte for byte.
+            // the main file, files/CompanionFiles.h): whole, byte for byte.
             const bool wholeCompanion =
                 std::any_of(wholeExports.begin(), wholeExports.end(),
                             [&name = name, &bytes = bytes](const FileSet& exported) {

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "io/Preset.h"
+#include "documents/Preset.h"
 
 int main(int argc, char** argv) {
     if (argc != 3) {

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "io/MaterialFile.h"
+#include "documents/MaterialFile.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     (void)matevo::parseMaterial(std::string(reinterpret_cast<const char*>(data), size),

@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "common/MemoryBudget.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     // 1 MiB holds a 180x180 image with its decoded samples: enough for every decoder path, and

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "io/Preset.h"
+#include "documents/Preset.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);

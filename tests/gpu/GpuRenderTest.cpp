@@ -10,9 +10,10 @@
 
 #include "GpuTestContext.h"
 #include "color/ImageDifference.h"
+#include "documents/Preset.h"
+#include "documents/PresetTextures.h"
 #include "evolve/GenomeSampling.h"
 #include "genome/FamilyRules.h"
-#include "io/Preset.h"
 #include "material/FgdTableCache.h"
 #include "scene/ProceduralTextures.h"
 #include "scene/SphereRenderer.h"

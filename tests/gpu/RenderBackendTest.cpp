@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "color/ImageDifference.h"
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 
 namespace matevo {

@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "color/ImageDifference.h"
+#include "documents/GenomeJson.h"
+#include "documents/MaterialFile.h"
+#include "documents/Preset.h"
 #include "evolve/GenomeSampling.h"
-#include "io/GenomeJson.h"
-#include "io/ImageFile.h"
-#include "io/MaterialFile.h"
-#include "io/Preset.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 #include "support/ScratchFolder.h"
 

@@ -1,6 +1,6 @@
-// A main file and its content-named companions replaced as one (io/CompanionFiles.h), on real
+// A main file and its content-named companions replaced as one (files/CompanionFiles.h), on real
 // files. The kill -9 half of the promise is tests/fault/KillTest.cpp's export test.
-#include "io/CompanionFiles.h"
+#include "files/CompanionFiles.h"
 
 #include <filesystem>
 #include <fstream>

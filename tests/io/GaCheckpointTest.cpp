@@ -1,6 +1,6 @@
 // GA checkpoints read back exactly (every double, the generator's state) and refuse what does not
 // belong to the run being resumed.
-#include "io/GaCheckpoint.h"
+#include "documents/GaCheckpoint.h"
 
 #include <fstream>
 

@@ -1,4 +1,4 @@
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The material file: what matevo writes for one material reads back equal, is checked against
 // Table 2 with the field named, and warns about unknown fields.
-#include "io/MaterialFile.h"
+#include "documents/MaterialFile.h"
 
 #include <filesystem>
 #include <fstream>
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/VariantFolder.h"
+#include "documents/VariantFolder.h"
 #include "support/ScratchFolder.h"
 
 namespace matevo {

@@ -1,7 +1,7 @@
-// Output folders and temporary names on a folder other runs share (io/OutputFolder.h,
-// io/TemporaryFiles.h, io/FileLock.h), on real files: what is reaped, who may write, and what
+// Output folders and temporary names on a folder other runs share (files/OutputFolder.h,
+// files/TemporaryFiles.h, files/FileLock.h), on real files: what is reaped, who may write, and what
 // a replaced folder keeps.
-#include "io/OutputFolder.h"
+#include "files/OutputFolder.h"
 
 #include <filesystem>
 #include <fstream>
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/TemporaryFiles.h"
+#include "files/TemporaryFiles.h"
 #include "support/FileContents.h"
 #include "support/ScratchFolder.h"
 #include "support/StaleTemporary.h"

@@ -1,4 +1,4 @@
-#include "io/Preset.h"
+#include "documents/Preset.h"
 
 #include <filesystem>
 #include <fstream>
@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "io/GenomeJson.h"
+#include "documents/GenomeJson.h"
 
 namespace matevo {
 namespace {

@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
-#include "io/AtomicFile.h"
-#include "io/InputFile.h"
-#include "io/OutputFolder.h"
+#include "files/AtomicFile.h"
+#include "files/InputFile.h"
+#include "files/OutputFolder.h"
 
 namespace matevo {
 namespace {

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/AtomicFile.h"
+#include "files/AtomicFile.h"
 #include "material/FgdIntegrals.h"
 #include "material/FgdTableCache.h"
 #include "material/Fresnel.h"

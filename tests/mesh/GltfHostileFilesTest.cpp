@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/MemoryBudget.h"
-#include "io/JsonReader.h"
+#include "files/JsonReader.h"
 #include "mesh/GltfReader.h"
 #include "mesh/MeshFile.h"
 #include "support/ScratchFolder.h"

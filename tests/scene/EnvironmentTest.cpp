@@ -6,7 +6,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "io/ImageFile.h"
+#include "documents/PresetTextures.h"
+#include "image/ImageFile.h"
 #include "scene/LatLong.h"
 #include "scene/SceneTextures.h"
 #include "scene/StudioEnvironment.h"

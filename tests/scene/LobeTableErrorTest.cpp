@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "color/ImageDifference.h"
+#include "documents/PresetTextures.h"
 #include "evolve/GenomeSampling.h"
 #include "genome/FamilyRules.h"
 #include "material/FgdTableCache.h"

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "support/RunCommand.h"
 
 namespace matevo {

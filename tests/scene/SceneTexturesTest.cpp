@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "scene/SceneTextures.h"
 #include "scene/ShippedTextures.h"
 #include "scene/SphereMapping.h"

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "documents/Preset.h"
 #include "genome/FamilyRules.h"
 #include "scene/ProceduralTextures.h"
 #include "scene/SphereRenderer.h"

@@ -1,6 +1,6 @@
 #pragma once
 // What a kill -9 leaves: a temporary name of this host, boot and PID namespace
-// (io/TemporaryFiles.h) whose process is gone.
+// (files/TemporaryFiles.h) whose process is gone.
 #include <unistd.h>
 
 #include <filesystem>
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/TemporaryFiles.h"
+#include "files/TemporaryFiles.h"
 
 namespace matevo::testing {
 

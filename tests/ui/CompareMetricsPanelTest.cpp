@@ -9,9 +9,9 @@
 
 #include "EditorUi.h"
 #include "HeadlessImGui.h"
+#include "documents/Preset.h"
 #include "experiment/Experiment.h"
 #include "experiment/RunSummary.h"
-#include "io/Preset.h"
 #include "scene/SphereRenderer.h"
 
 namespace matevo::ui {

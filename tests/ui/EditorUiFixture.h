@@ -11,7 +11,7 @@
 
 #include "EditorUi.h"
 #include "HeadlessImGui.h"
-#include "io/Preset.h"
+#include "documents/Preset.h"
 
 namespace matevo::testing {
 

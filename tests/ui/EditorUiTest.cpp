@@ -12,8 +12,8 @@
 #include "GaControls.h"
 #include "MaterialControls.h"
 #include "ViewSettings.h"
+#include "documents/Preset.h"
 #include "genome/FamilyRules.h"
-#include "io/Preset.h"
 
 namespace matevo::ui {
 namespace {

@@ -8,8 +8,9 @@
 #include "CandidateGrid.h"
 #include "EditorUiFixture.h"
 #include "ViewSettings.h"
+#include "documents/MaterialFile.h"
+#include "documents/PresetTextures.h"
 #include "evolve/GeneticAlgorithm.h"
-#include "io/MaterialFile.h"
 #include "render/CpuPopulationRenderer.h"
 
 namespace matevo::testing {

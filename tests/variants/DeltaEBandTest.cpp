@@ -1,4 +1,4 @@
-#include "variants/DeltaEBand.h"
+#include "fitness/DeltaEBand.h"
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
 
 #include "../genome/TestGenomes.h"
 #include "color/ImageDifference.h"
+#include "fitness/ImageFitness.h"
 #include "scene/SphereRenderer.h"
 #include "variants/FindVariants.h"
-#include "variants/ImageFitness.h"
 #include "variants/VariantSet.h"
 
 namespace matevo {

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "io/ImageFile.h"
+#include "image/ImageFile.h"
 #include "scene/ProceduralTextures.h"
 #include "scene/ShippedTextures.h"
 

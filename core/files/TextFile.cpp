@@ -1,0 +1,11 @@
+#include "files/TextFile.h"
+
+#include "files/InputFile.h"
+
+namespace matevo {
+
+Result<std::string> readTextFile(const std::filesystem::path& file) {
+    return readInputFile(file, kMaxTextFileBytes);
+}
+
+}  // namespace matevo
