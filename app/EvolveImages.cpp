@@ -87,7 +87,7 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
                 auto flip = computeFlip(storedTarget, storedCandidate);
                 if (!flip) throw CommandFailure(flip.error());
                 entry.flip = flip->stats;
-                heatmap = flipHeatmapImage(*flip);
+                heatmap = heatmapImage(*flip);
             } else {
                 heatmap = heatmapImage(*map, HeatmapSettings{});
             }

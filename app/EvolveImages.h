@@ -31,8 +31,8 @@ std::uint64_t evolveImagesMemoryEstimate(int size);
 
 // One written candidate's error against the target: ΔE00 always, ꟻLIP with ꟻLIP heatmaps.
 struct CandidateImageStats {
-    DeltaEStats deltaE;
-    std::optional<FlipStats> flip;
+    ErrorStats deltaE;
+    std::optional<ErrorStats> flip;
 };
 
 struct EvolveImagesWritten {

@@ -54,7 +54,7 @@ void addImageStatistics(nlohmann::ordered_json& report,
                         const std::vector<CandidateImageStats>& stats) {
     auto& population = report["population"];
     for (std::size_t rank = 0; rank < stats.size() && rank < population.size(); ++rank) {
-        const DeltaEStats& deltaE = stats[rank].deltaE;
+        const ErrorStats& deltaE = stats[rank].deltaE;
         population[rank]["mean_de00"] = deltaE.mean;
         population[rank]["max_de00"] = deltaE.max;
         population[rank]["p95_de00"] = deltaE.p95;

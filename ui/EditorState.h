@@ -62,8 +62,8 @@ struct CandidateView {
     int copies = 1;  // individuals in the population with this genome (one tile for all)
     // Host copies of the render and its ΔE00 map, for the inspector's readout under the pointer.
     std::shared_ptr<const Image> picture = nullptr;
-    std::shared_ptr<const DeltaEMap> deltaEMap = nullptr;
-    std::shared_ptr<const FlipMap> flipMap = nullptr;  // while the heatmap shows ꟻLIP
+    std::shared_ptr<const ErrorMap> deltaEMap = nullptr;
+    std::shared_ptr<const ErrorMap> flipMap = nullptr;  // while the heatmap shows ꟻLIP
 };
 
 struct GenerationPoint {

@@ -22,8 +22,8 @@ PixelColour colourAt(const Image& image, int x, int y) {
 }  // namespace
 
 std::optional<PixelReadout> readPixel(const Image* target, const Image* candidate,
-                                      const DeltaEMap* deltaE, float u, float v,
-                                      const FlipMap* flip) {
+                                      const ErrorMap* deltaE, float u, float v,
+                                      const ErrorMap* flip) {
     if (!target || !candidate || !deltaE) return std::nullopt;
     const int width = candidate->width;
     const int height = candidate->height;
@@ -36,8 +36,8 @@ std::optional<PixelReadout> readPixel(const Image* target, const Image* candidat
     readout.x = std::min(width - 1, int(u * float(width)));
     readout.y = std::min(height - 1, int(v * float(height)));
     const std::size_t index = std::size_t(readout.y) * std::size_t(width) + std::size_t(readout.x);
-    if (deltaE->covered[index]) readout.deltaE = deltaE->deltaE[index];
-    if (flip && flip->pooled[index]) readout.flip = flip->error[index];
+    if (deltaE->covered[index]) readout.deltaE = deltaE->values[index];
+    if (flip && flip->covered[index]) readout.flip = flip->values[index];
     readout.target = colourAt(*target, readout.x, readout.y);
     readout.candidate = colourAt(*candidate, readout.x, readout.y);
     return readout;

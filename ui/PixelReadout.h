@@ -30,7 +30,7 @@ struct PixelReadout {
 // The pixel at (u, v) in [0, 1)² of the shown image; nothing when an image is missing or the
 // images and maps differ in size. `flip` may be null.
 std::optional<PixelReadout> readPixel(const Image* target, const Image* candidate,
-                                      const DeltaEMap* deltaE, float u, float v,
-                                      const FlipMap* flip = nullptr);
+                                      const ErrorMap* deltaE, float u, float v,
+                                      const ErrorMap* flip = nullptr);
 
 }  // namespace matevo::ui

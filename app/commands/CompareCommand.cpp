@@ -91,7 +91,7 @@ double reportDeltaE(const Inputs& inputs, const HeatmapSettings& settings,
     // An image without alpha reads as fully covered, so coverage always comes from alpha.
     auto map = compareImages(inputs.a, inputs.b);
     if (!map) throw CommandFailure(map.error());
-    const DeltaEStats& stats = map->stats;
+    const ErrorStats& stats = map->stats;
     if (stats.pixels == 0) throw nothingCovered(inputs);
     writeHeatmap([&] { return heatmapImage(*map, settings); }, heatmapFile);
     if (asJson) {
@@ -112,9 +112,9 @@ double reportFlip(const Inputs& inputs, const FlipSettings& settings,
                   const std::optional<std::string>& heatmapFile, bool asJson) {
     auto map = computeFlip(inputs.a, inputs.b, true, settings);
     if (!map) throw CommandFailure(map.error());
-    const FlipStats& stats = map->stats;
+    const ErrorStats& stats = map->stats;
     if (stats.pixels == 0) throw nothingCovered(inputs);
-    writeHeatmap([&] { return flipHeatmapImage(*map); }, heatmapFile);
+    writeHeatmap([&] { return heatmapImage(*map); }, heatmapFile);
     if (asJson) {
         nlohmann::ordered_json out;
         out["mean_flip"] = stats.mean;

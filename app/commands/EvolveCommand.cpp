@@ -14,7 +14,6 @@
 #include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "commands/Commands.h"
-#include "common/StopRequest.h"
 #include "documents/GaCheckpoint.h"
 #include "documents/PresetTextures.h"
 #include "evolve/GeneticAlgorithm.h"

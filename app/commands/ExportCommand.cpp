@@ -12,6 +12,7 @@
 #include "color/Colormap.h"
 #include "commands/Commands.h"
 #include "documents/PresetTextures.h"
+#include "documents/VariantFolder.h"
 #include "export/ExportSet.h"
 #include "gpu/PopulationRendererFactory.h"
 #include "image/ImageFile.h"
@@ -136,7 +137,7 @@ void printTable(const ExportReport& report) {
     double sum = 0.0;
     for (const auto& variant : report.variants) {
         const GltfMaterial& m = variant.fit.material;
-        const DeltaEStats& stats = variant.deltaE.stats;
+        const ErrorStats& stats = variant.deltaE.stats;
         const std::string ior = iorActs(m) ? fixed(m.ior, 3) : "-";
         std::printf("%-28s %8.3f %9.3f %8.3f %5s %9.3f %6.3f %7.3f %9.3f %6s\n",
                     variant.name.c_str(), stats.mean, stats.p95, variant.fit.meanDeltaE00,

@@ -69,7 +69,7 @@ Status CandidateRenderCache::useTexturesOf(const Preset& preset,
 }
 
 TileOutput CandidateRenderCache::tileOutput(std::span<const gpu::DisplayTile* const> tiles) {
-    return {tiles, [this, tiles](std::span<const Image> pictures, std::span<const DeltaEMap> maps) {
+    return {tiles, [this, tiles](std::span<const Image> pictures, std::span<const ErrorMap> maps) {
                 return gpu::uploadToTiles(device_, *uploadRunner_, tiles, pictures, maps);
             }};
 }
@@ -128,15 +128,18 @@ Status CandidateRenderCache::draw(std::span<const Genome> genomes) {
                                                    evaluationOptions(heatmapMetric_),
                                                    tileOutput(targets));
     if (!evaluation) return evaluation.error();
-    const bool flip = heatmapMetric_ == ImageMetric::Flip;
+    std::vector<ErrorMap>& deltaE = evaluation->errors.at(ImageMetric::DeltaE00);
+    const auto flip = evaluation->errors.find(ImageMetric::Flip);
     if (!targetPicture_) targetPicture_ = std::make_shared<Image>(std::move(evaluation->target));
     for (std::size_t i = 0; i < genomes.size(); ++i) {
-        const DeltaEStats stats = evaluation->deltaE[i].stats;
+        const ErrorStats stats = deltaE[i].stats;
         entries_.push_back(
             {genomes[i],
              {tiles[i], stats, std::make_shared<Image>(std::move(evaluation->candidates[i])),
-              std::make_shared<DeltaEMap>(std::move(evaluation->deltaE[i])),
-              flip ? std::make_shared<FlipMap>(std::move(evaluation->flip[i])) : nullptr},
+              std::make_shared<ErrorMap>(std::move(deltaE[i])),
+              flip != evaluation->errors.end()
+                  ? std::make_shared<ErrorMap>(std::move(flip->second[i]))
+                  : nullptr},
              useCounter_});
     }
     return Ok{};

@@ -20,6 +20,7 @@
 #include "common/CancelToken.h"
 #include "common/Result.h"
 #include "documents/Preset.h"
+#include "documents/PresetTextures.h"
 #include "gpu/CommandRunner.h"
 #include "gpu/DisplayTile.h"
 #include "gpu/PopulationRendererFactory.h"
@@ -30,11 +31,11 @@ namespace matevo::editor {
 
 struct CandidateTile {
     std::shared_ptr<const gpu::DisplayTile> tile;  // render + ΔE00 map, on the window's device
-    DeltaEStats stats;                             // of the ΔE00 map
+    ErrorStats stats;                              // of the ΔE00 map
     // Host copies, for the inspector's readout of the pixel under the pointer.
     std::shared_ptr<const Image> picture;
-    std::shared_ptr<const DeltaEMap> deltaE;
-    std::shared_ptr<const FlipMap> flip;  // with a ꟻLIP heatmap
+    std::shared_ptr<const ErrorMap> deltaE;
+    std::shared_ptr<const ErrorMap> flip;  // with a ꟻLIP heatmap
 };
 
 class CandidateRenderCache {

@@ -40,11 +40,11 @@ struct CandidateResult {
     int rank = 0;  // 1 = best
     Individual individual;
     std::shared_ptr<const gpu::DisplayTile> tile;  // render + ΔE00 map against the target
-    DeltaEStats deltaE;
+    ErrorStats deltaE;
     int copies = 1;                        // individuals in the population with this genome
     std::shared_ptr<const Image> picture;  // host copies, for the inspector's pixel readout
-    std::shared_ptr<const DeltaEMap> deltaEMap;
-    std::shared_ptr<const FlipMap> flipMap;  // with a ꟻLIP heatmap
+    std::shared_ptr<const ErrorMap> deltaEMap;
+    std::shared_ptr<const ErrorMap> flipMap;  // with a ꟻLIP heatmap
 };
 
 struct EvolutionUpdate {

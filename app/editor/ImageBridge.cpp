@@ -122,7 +122,7 @@ Status ImageBridge::createSharedResources() {
     if (!tile) return tile.error();
     noDeltaE_ = std::move(tile).value();
     const Image render(1, 1);
-    const DeltaEMap notCovered{1, 1, {0.0f}, {0}, {}};
+    const ErrorMap notCovered{ImageMetric::DeltaE00, 1, 1, {0.0f}, {0}, {}};
     const gpu::DisplayTile* tiles[] = {&*noDeltaE_};
     return gpu::uploadToTiles(context_.device(), context_.setupRunner(), tiles,
                               std::span(&render, 1), std::span(&notCovered, 1));

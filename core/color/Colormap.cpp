@@ -82,42 +82,37 @@ std::array<float, 3> heatmapColorLinear(double deltaE, const HeatmapSettings& se
     return colormapLinear(position);
 }
 
-Image heatmapImage(const DeltaEMap& map, const HeatmapSettings& settings) {
-    return paintCovered(map.width, map.height, map.covered, map.deltaE,
-                        [&](float deltaE) { return heatmapColorLinear(deltaE, settings); });
+namespace {
+
+// The map's metric's colour for one value: ΔE00 through `settings`, ꟻLIP through magma.
+auto colorOf(const ErrorMap& map, const HeatmapSettings& settings) {
+    return [&map, &settings](float value) {
+        return map.metric == ImageMetric::Flip ? flipColorLinear(value)
+                                               : heatmapColorLinear(value, settings);
+    };
+}
+
+}  // namespace
+
+Image heatmapImage(const ErrorMap& map, const HeatmapSettings& settings) {
+    return paintCovered(map.width, map.height, map.covered, map.values, colorOf(map, settings));
 }
 
 Result<Image> errorHeatmap(const Image& reference, const Image& test, ImageMetric metric,
                            const HeatmapSettings& settings) {
-    if (metric == ImageMetric::Flip) {
-        auto map = computeFlip(reference, test);
-        if (!map) return map.error();
-        return flipHeatmapImage(*map);
-    }
-    auto map = compareImages(reference, test);
+    auto map =
+        metric == ImageMetric::Flip ? computeFlip(reference, test) : compareImages(reference, test);
     if (!map) return map.error();
     return heatmapImage(*map, settings);
 }
 
-Image overlayHeatmap(const Image& candidate, const DeltaEMap& map,
-                     const HeatmapSettings& settings) {
-    return blendCovered(candidate, map.width, map.height, map.covered, map.deltaE,
-                        settings.opacity,
-                        [&](float deltaE) { return heatmapColorLinear(deltaE, settings); });
+Image overlayHeatmap(const Image& candidate, const ErrorMap& map, const HeatmapSettings& settings) {
+    return blendCovered(candidate, map.width, map.height, map.covered, map.values, settings.opacity,
+                        colorOf(map, settings));
 }
 
 std::array<float, 3> magmaSrgb(double error) { return kMagmaSrgb[entryIndex(error)]; }
 
 std::array<float, 3> flipColorLinear(double error) { return magmaLinear()[entryIndex(error)]; }
-
-Image flipHeatmapImage(const FlipMap& map) {
-    return paintCovered(map.width, map.height, map.pooled, map.error, flipColorLinear);
-}
-
-Image overlayFlipHeatmap(const Image& candidate, const FlipMap& map,
-                         const HeatmapSettings& settings) {
-    return blendCovered(candidate, map.width, map.height, map.pooled, map.error,
-                        settings.opacity, flipColorLinear);
-}
 
 }  // namespace matevo

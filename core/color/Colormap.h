@@ -29,14 +29,13 @@ std::array<float, 3> colormapLinear(double position);
 // ΔE00 at or below minDeltaE maps to the first entry, at or above maxDeltaE to the last.
 std::array<float, 3> heatmapColorLinear(double deltaE, const HeatmapSettings& settings);
 
-// The heatmap alone: opaque where the map covers a pixel, fully transparent elsewhere.
-Image heatmapImage(const DeltaEMap& map, const HeatmapSettings& settings);
+// The heatmap alone, coloured as the map's metric is (ΔE00 through `settings`, ꟻLIP through
+// magma): opaque where the map covers a pixel, fully transparent elsewhere.
+Image heatmapImage(const ErrorMap& map, const HeatmapSettings& settings = {});
 
 // ꟻLIP error (clamped to [0, 1]) → the nearest magma entry.
 std::array<float, 3> magmaSrgb(double error);
 std::array<float, 3> flipColorLinear(double error);
-// Opaque magma where the ꟻLIP map pools a pixel, fully transparent elsewhere.
-Image flipHeatmapImage(const FlipMap& map);
 
 // The heatmap of `metric` between two renders of the same size (ΔE00 through `settings`, ꟻLIP
 // through magma at the default viewing condition); an Error when the sizes differ.
@@ -44,11 +43,9 @@ Result<Image> errorHeatmap(const Image& reference, const Image& test, ImageMetri
                            const HeatmapSettings& settings = {});
 
 // The candidate with the heatmap blended over it at settings.opacity where the map covers a
-// pixel; elsewhere the candidate unchanged, so it stays transparent outside its sphere. The
-// candidate must have the map's size; otherwise the result is an empty image.
-Image overlayHeatmap(const Image& candidate, const DeltaEMap& map, const HeatmapSettings& settings);
-// The same with the ꟻLIP map (its fixed range; settings.opacity only).
-Image overlayFlipHeatmap(const Image& candidate, const FlipMap& map,
-                         const HeatmapSettings& settings);
+// pixel (a ꟻLIP map at its fixed range: settings.opacity only); elsewhere the candidate
+// unchanged, so it stays transparent outside its sphere. The candidate must have the map's
+// size; otherwise the result is an empty image.
+Image overlayHeatmap(const Image& candidate, const ErrorMap& map, const HeatmapSettings& settings);
 
 }  // namespace matevo

@@ -10,9 +10,9 @@ void DeltaEPooling::merge(const DeltaEPooling& later) {
         histogram_[bucket] += later.histogram_[bucket];
 }
 
-DeltaEStats DeltaEPooling::finish(std::span<const float> deltaE,
-                                  std::span<const std::uint8_t> covered) const {
-    DeltaEStats stats;
+ErrorStats DeltaEPooling::finish(std::span<const float> deltaE,
+                                 std::span<const std::uint8_t> covered) const {
+    ErrorStats stats;
     stats.pixels = pixels_;
     if (pixels_ == 0) return stats;
     stats.mean = sum_ / double(pixels_);
@@ -37,7 +37,7 @@ DeltaEStats DeltaEPooling::finish(std::span<const float> deltaE,
     return stats;
 }
 
-DeltaEStats poolDeltaE(std::span<const float> deltaE, std::span<const std::uint8_t> covered) {
+ErrorStats poolDeltaE(std::span<const float> deltaE, std::span<const std::uint8_t> covered) {
     DeltaEPooling pooling;
     for (std::size_t i = 0; i < deltaE.size(); ++i) pooling.add(deltaE[i], covered[i] != 0);
     return pooling.finish(deltaE, covered);

@@ -1,5 +1,5 @@
 #pragma once
-// Pools a ΔE00 map into its statistics (DeltaEStats: mean, max and nearest-rank 95th percentile
+// Pools a ΔE00 map into its statistics (ErrorStats: mean, max and nearest-rank 95th percentile
 // over the covered pixels), one pixel at a time, in chunks that merge. The CPU comparison
 // (compareImages) and the GPU paths' read-back pool through it, so both give the same figures.
 //
@@ -33,7 +33,7 @@ public:
     void merge(const DeltaEPooling& later);
     // The statistics of the pixels added; the p95 reads the values of its bucket back from the
     // whole map they came from.
-    DeltaEStats finish(std::span<const float> deltaE, std::span<const std::uint8_t> covered) const;
+    ErrorStats finish(std::span<const float> deltaE, std::span<const std::uint8_t> covered) const;
 
 private:
     static constexpr int kBucketShift = 20;
@@ -50,6 +50,6 @@ private:
 };
 
 // One map's statistics, pooled in pixel order.
-DeltaEStats poolDeltaE(std::span<const float> deltaE, std::span<const std::uint8_t> covered);
+ErrorStats poolDeltaE(std::span<const float> deltaE, std::span<const std::uint8_t> covered);
 
 }  // namespace matevo

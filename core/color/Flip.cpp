@@ -346,34 +346,35 @@ void flipOfTile(const Image& reference, const Image& test, const Tile& tile,
 
 // Which of the tile's pixels count in the statistics, and their errors added to the pooling.
 void poolTile(const Image& reference, const Image& test, bool useAlpha, const Tile& tile,
-              FlipMap& map, FlipPooling& pooling) {
+              ErrorMap& map, FlipPooling& pooling) {
     for (int y = tile.firstRow; y < tile.endRow; ++y) {
         const std::size_t rowStart = std::size_t(y) * std::size_t(map.width);
         for (std::size_t i = rowStart + std::size_t(tile.firstColumn);
              i < rowStart + std::size_t(tile.endColumn); ++i) {
             const bool counts = !useAlpha || (isCovered(reference.rgba[4 * i + 3]) &&
                                               isCovered(test.rgba[4 * i + 3]));
-            map.pooled[i] = counts ? 1 : 0;
-            pooling.add(map.error[i], counts);
+            map.covered[i] = counts ? 1 : 0;
+            pooling.add(map.values[i], counts);
         }
     }
 }
 
 }  // namespace
 
-Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useAlpha,
-                            const FlipSettings& settings, unsigned workerCount) {
+Result<ErrorMap> computeFlip(const Image& reference, const Image& test, bool useAlpha,
+                             const FlipSettings& settings, unsigned workerCount) {
     if (auto comparable = requireComparable(reference, test); !comparable)
         return comparable.error();
     const std::size_t pixelCount = reference.pixelCount();
     if (!(settings.pixelsPerDegree > 0.0) || settings.pixelsPerDegree > 1000.0)
         return badInput("pixels per degree must be in (0, 1000]");
 
-    FlipMap map;
+    ErrorMap map;
+    map.metric = ImageMetric::Flip;
     map.width = reference.width;
     map.height = reference.height;
-    resizeOnHugePages(map.error, pixelCount);
-    resizeOnHugePages(map.pooled, pixelCount);
+    resizeOnHugePages(map.values, pixelCount);
+    resizeOnHugePages(map.covered, pixelCount);
     if (pixelCount == 0) return map;
 
     const Kernels kernels = makeKernels(settings.pixelsPerDegree);
@@ -392,13 +393,13 @@ Result<FlipMap> computeFlip(const Image& reference, const Image& test, bool useA
             const Tile tile{row * kTileRows, std::min(map.height, (row + 1) * kTileRows),
                             column * kTileColumns,
                             std::min(map.width, (column + 1) * kTileColumns)};
-            flipOfTile(reference, test, tile, kernels, *scratch, map.error.data());
+            flipOfTile(reference, test, tile, kernels, *scratch, map.values.data());
             poolTile(reference, test, useAlpha, tile, map, scratch->pooling);
         },
         workerCount);
     FlipPooling& pooling = scratches.front()->pooling;
     for (std::size_t i = 1; i < scratches.size(); ++i) pooling.merge(scratches[i]->pooling);
-    map.stats = pooling.finish(map.error, map.pooled, workerCount);
+    map.stats = pooling.finish(map.values, map.covered, workerCount);
     return map;
 }
 

@@ -54,9 +54,9 @@ double FlipPooling::bucketSum(std::size_t bucket) const {
     return std::ldexp(double(sum), std::max(exponent, 1) - 150);
 }
 
-FlipStats FlipPooling::finish(std::span<const float> errors, std::span<const std::uint8_t> pooled,
-                              unsigned workerCount) const {
-    FlipStats stats;
+ErrorStats FlipPooling::finish(std::span<const float> errors, std::span<const std::uint8_t> pooled,
+                               unsigned workerCount) const {
+    ErrorStats stats;
     stats.pixels = pixels_;
     if (pixels_ == 0) return stats;
     double total = 0;
@@ -115,7 +115,7 @@ FlipStats FlipPooling::finish(std::span<const float> errors, std::span<const std
     return stats;
 }
 
-FlipStats poolFlip(std::span<const float> errors, std::span<const std::uint8_t> pooled) {
+ErrorStats poolFlip(std::span<const float> errors, std::span<const std::uint8_t> pooled) {
     FlipPooling pooling;
     for (std::size_t i = 0; i < errors.size(); ++i) pooling.add(errors[i], pooled[i] != 0);
     return pooling.finish(errors, pooled);

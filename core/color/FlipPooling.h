@@ -7,20 +7,9 @@
 #include <span>
 #include <vector>
 
-namespace matevo {
+#include "color/ErrorMap.h"
 
-// Over the pooled pixels; all zero when there are none (check `pixels`). Weighted percentiles
-// weight each pixel by its own error, as the ꟻLIP authors pool: the weighted median is the
-// smallest error e such that pixels with error ≤ e carry more than half of the summed error.
-struct FlipStats {
-    double mean = 0;
-    double weightedMedian = 0;
-    double firstWeightedQuartile = 0;
-    double thirdWeightedQuartile = 0;
-    double max = 0;
-    std::size_t pixels = 0;
-    bool operator==(const FlipStats&) const = default;
-};
+namespace matevo {
 
 class FlipPooling {
 public:
@@ -32,8 +21,8 @@ public:
     void clear();
     // The statistics of the pixels added; the percentiles read the errors of their buckets
     // back from the whole map they came from, on up to workerCount threads (0: all).
-    FlipStats finish(std::span<const float> errors, std::span<const std::uint8_t> pooled,
-                     unsigned workerCount = 1) const;
+    ErrorStats finish(std::span<const float> errors, std::span<const std::uint8_t> pooled,
+                      unsigned workerCount = 1) const;
 
 private:
     // Non-negative floats order like their bit patterns: the top bits (exponent and seven
@@ -52,6 +41,6 @@ private:
 };
 
 // One map's statistics (errors and pooled flags pixel by pixel).
-FlipStats poolFlip(std::span<const float> errors, std::span<const std::uint8_t> pooled);
+ErrorStats poolFlip(std::span<const float> errors, std::span<const std::uint8_t> pooled);
 
 }  // namespace matevo

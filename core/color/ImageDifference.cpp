@@ -51,10 +51,10 @@ bool anyCoveredInBoth(const float* rgbaA, const float* rgbaB, std::size_t begin,
 }
 
 DeltaEPooling compareChunk(const Image& a, const Image& b, bool useAlpha, std::size_t begin,
-                           std::size_t end, DeltaEMap& map) {
+                           std::size_t end, ErrorMap& map) {
     const float* rgbaA = a.rgba.data();
     const float* rgbaB = b.rgba.data();
-    float* deltaE = map.deltaE.data();
+    float* deltaE = map.values.data();
     std::uint8_t* covered = map.covered.data();
     DeltaEPooling pooling;
     // In blocks small enough that the coverage pass finds the block's alpha still in cache.
@@ -93,15 +93,16 @@ Status requireComparable(const Image& a, const Image& b) {
     return Ok{};
 }
 
-Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
-                                unsigned workerCount) {
+Result<ErrorMap> compareImages(const Image& a, const Image& b, bool useAlpha,
+                               unsigned workerCount) {
     if (auto comparable = requireComparable(a, b); !comparable) return comparable.error();
     const std::size_t pixelCount = a.pixelCount();
 
-    DeltaEMap map;
+    ErrorMap map;
+    map.metric = ImageMetric::DeltaE00;
     map.width = a.width;
     map.height = a.height;
-    resizeOnHugePages(map.deltaE, pixelCount);
+    resizeOnHugePages(map.values, pixelCount);
     resizeOnHugePages(map.covered, pixelCount);
     const std::size_t chunkCount = (pixelCount + kChunkPixels - 1) / kChunkPixels;
     std::vector<DeltaEPooling> chunks(chunkCount);
@@ -114,7 +115,7 @@ Result<DeltaEMap> compareImages(const Image& a, const Image& b, bool useAlpha,
     // Pooled in chunk order, whichever thread did which chunk.
     DeltaEPooling pooling;
     for (const DeltaEPooling& chunk : chunks) pooling.merge(chunk);
-    map.stats = pooling.finish(map.deltaE, map.covered);
+    map.stats = pooling.finish(map.values, map.covered);
     return map;
 }
 

@@ -148,7 +148,7 @@ nlohmann::ordered_json exportReportJson(const ExportReport& report) {
     nlohmann::ordered_json variants = nlohmann::ordered_json::array();
     double sum = 0.0;
     for (const auto& variant : report.variants) {
-        const DeltaEStats& stats = variant.deltaE.stats;
+        const ErrorStats& stats = variant.deltaE.stats;
         sum += stats.mean;
         variants.push_back({{"name", variant.name},
                             {"gltf", gltfParameters(variant.fit.material)},

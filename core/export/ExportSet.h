@@ -50,7 +50,7 @@ struct ExportSettings {
 struct ExportedVariant {
     std::string name;
     GltfFit fit;        // the parameters and the ΔE00 at the fitting size
-    DeltaEMap deltaE;   // fitted glTF render vs Belcour render at the report size
+    ErrorMap deltaE;    // fitted glTF render vs Belcour render at the report size
     Image matevoRender;  // the two renders at the report size, for a look
     Image gltfRender;
 };

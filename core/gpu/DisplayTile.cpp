@@ -82,7 +82,7 @@ void recordCopiesToTiles(VkCommandBuffer commands, const Buffer& renders, const 
 
 Status uploadToTiles(const Device& device, CommandRunner& runner,
                      std::span<const DisplayTile* const> tiles, std::span<const Image> renders,
-                     std::span<const DeltaEMap> maps) {
+                     std::span<const ErrorMap> maps) {
     if (tiles.empty()) return Ok{};
     const ImageBatchShape shape{tiles.front()->width, tiles.front()->height,
                                 uint32_t(tiles.size())};
@@ -98,7 +98,7 @@ Status uploadToTiles(const Device& device, CommandRunner& runner,
         for (uint32_t i = 0; i < shape.count; ++i)
             for (std::size_t p = 0; p < shape.pixelCount(); ++p)
                 values[i * shape.pixelCount() + p] =
-                    maps[i].covered[p] ? maps[i].deltaE[p] : -1.0f;  // as the GPU pass writes
+                    maps[i].covered[p] ? maps[i].values[p] : -1.0f;  // as the GPU pass writes
     }
     auto commands = runner.begin();
     if (!commands) return commands.error();

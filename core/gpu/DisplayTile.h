@@ -37,6 +37,6 @@ void recordCopiesToTiles(VkCommandBuffer commands, const Buffer& renders, const 
 // into tiles[i]. Sizes must match the tiles'.
 Status uploadToTiles(const Device& device, CommandRunner& runner,
                      std::span<const DisplayTile* const> tiles, std::span<const Image> renders,
-                     std::span<const DeltaEMap> maps);
+                     std::span<const ErrorMap> maps);
 
 }  // namespace matevo::gpu

@@ -56,12 +56,12 @@ Result<ImageBatchShape> GpuImageComparer::upload(const Image& reference,
     return shape;
 }
 
-Result<std::vector<DeltaEMap>> GpuImageComparer::compare(const Image& reference,
-                                                         std::span<const Image> candidates) {
+Result<std::vector<ErrorMap>> GpuImageComparer::compare(const Image& reference,
+                                                        std::span<const Image> candidates) {
     auto uploaded = upload(reference, candidates);
     if (!uploaded) return uploaded.error();
     const ImageBatchShape& shape = *uploaded;
-    if (shape.count == 0 || shape.pixelCount() == 0) return std::vector<DeltaEMap>{};
+    if (shape.count == 0 || shape.pixelCount() == 0) return std::vector<ErrorMap>{};
 
     auto commands = runner_.begin();
     if (!commands) return commands.error();
@@ -70,19 +70,19 @@ Result<std::vector<DeltaEMap>> GpuImageComparer::compare(const Image& reference,
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
 
-    std::vector<DeltaEMap> maps;
+    std::vector<ErrorMap> maps;
     for (uint32_t i = 0; i < shape.count; ++i)
         maps.push_back(downloadDeltaEMap(buffers_.maps, shape, i));
     return maps;
 }
 
-Result<std::vector<FlipMap>> GpuImageComparer::compareFlip(const Image& reference,
-                                                           std::span<const Image> candidates,
-                                                           const FlipSettings& settings) {
+Result<std::vector<ErrorMap>> GpuImageComparer::compareFlip(const Image& reference,
+                                                            std::span<const Image> candidates,
+                                                            const FlipSettings& settings) {
     auto uploaded = upload(reference, candidates);
     if (!uploaded) return uploaded.error();
     const ImageBatchShape& shape = *uploaded;
-    if (shape.count == 0 || shape.pixelCount() == 0) return std::vector<FlipMap>{};
+    if (shape.count == 0 || shape.pixelCount() == 0) return std::vector<ErrorMap>{};
 
     auto commands = runner_.begin();
     if (!commands) return commands.error();
@@ -96,7 +96,7 @@ Result<std::vector<FlipMap>> GpuImageComparer::compareFlip(const Image& referenc
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
 
-    std::vector<FlipMap> maps;
+    std::vector<ErrorMap> maps;
     for (uint32_t i = 0; i < shape.count; ++i)
         maps.push_back(downloadFlipMap(buffers_.maps, shape, i));
     return maps;

@@ -20,11 +20,11 @@ public:
     static Result<GpuImageComparer> create(const Device& device);
 
     // One map per candidate; every candidate must have the reference's size.
-    Result<std::vector<DeltaEMap>> compare(const Image& reference,
-                                           std::span<const Image> candidates);
-    Result<std::vector<FlipMap>> compareFlip(const Image& reference,
-                                             std::span<const Image> candidates,
-                                             const FlipSettings& settings = {});
+    Result<std::vector<ErrorMap>> compare(const Image& reference,
+                                          std::span<const Image> candidates);
+    Result<std::vector<ErrorMap>> compareFlip(const Image& reference,
+                                              std::span<const Image> candidates,
+                                              const FlipSettings& settings = {});
 
 private:
     // The images in upload buffers, and a read-back buffer for one map per candidate: kept from call to call, made anew only for a larger batch. (Fresh buffers at

@@ -146,6 +146,7 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateOnDevice(
         if (auto rendered = renderTarget(key); !rendered) return rendered.error();
     PopulationEvaluation evaluation;
     evaluation.target = target_;
+    evaluation.errors[ImageMetric::DeltaE00];  // also with no candidates
     if (candidates.empty()) return evaluation;
 
     const ImageBatchShape shape{size, size, uint32_t(candidates.size())};
@@ -180,13 +181,15 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateOnDevice(
     // these copies and the pooling of the maps are a sixth of the evaluation's CPU time.
     const std::size_t count = shape.count;
     evaluation.candidates.resize(options.candidateImages ? count : 0);
-    evaluation.deltaE.resize(count);
-    evaluation.flip.resize(flip ? count : 0);
+    std::vector<ErrorMap>& deltaE = evaluation.errors[ImageMetric::DeltaE00];
+    deltaE.resize(count);
+    std::vector<ErrorMap>* flipMaps = flip ? &evaluation.errors[ImageMetric::Flip] : nullptr;
+    if (flipMaps) flipMaps->resize(count);
     parallelForChunks(int(count), [&](int chunk) {
         const auto i = uint32_t(chunk);
         if (options.candidateImages) evaluation.candidates[i] = downloadImage(renders_, shape, i);
-        evaluation.deltaE[i] = downloadDeltaEMap(deltaE_, shape, i);
-        if (flip) evaluation.flip[i] = downloadFlipMap(flip_, shape, i);
+        deltaE[i] = downloadDeltaEMap(deltaE_, shape, i);
+        if (flipMaps) (*flipMaps)[i] = downloadFlipMap(flip_, shape, i);
     });
     return evaluation;
 }

@@ -68,37 +68,39 @@ Image downloadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t 
     return image;
 }
 
-DeltaEMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index) {
-    DeltaEMap map;
+ErrorMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index) {
+    ErrorMap map;
+    map.metric = ImageMetric::DeltaE00;
     map.width = shape.width;
     map.height = shape.height;
     const std::size_t pixels = shape.pixelCount();
     const float* values = batch.as<float>().data() + pixels * index;
-    map.deltaE.resize(pixels);
+    map.values.resize(pixels);
     map.covered.resize(pixels);
     DeltaEPooling pooling;  // as compareImages pools
     for (std::size_t i = 0; i < pixels; ++i) {
         map.covered[i] = values[i] >= 0.0f;
-        map.deltaE[i] = std::max(values[i], 0.0f);
-        pooling.add(map.deltaE[i], map.covered[i] != 0);
+        map.values[i] = std::max(values[i], 0.0f);
+        pooling.add(map.values[i], map.covered[i] != 0);
     }
-    map.stats = pooling.finish(map.deltaE, map.covered);
+    map.stats = pooling.finish(map.values, map.covered);
     return map;
 }
 
-FlipMap downloadFlipMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index) {
-    FlipMap map;
+ErrorMap downloadFlipMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index) {
+    ErrorMap map;
+    map.metric = ImageMetric::Flip;
     map.width = shape.width;
     map.height = shape.height;
     const std::size_t pixels = shape.pixelCount();
     const float* values = batch.as<float>().data() + pixels * index;
-    map.error.resize(pixels);
-    map.pooled.resize(pixels);
+    map.values.resize(pixels);
+    map.covered.resize(pixels);
     for (std::size_t i = 0; i < pixels; ++i) {
-        map.pooled[i] = values[i] >= 0.0f;
-        map.error[i] = map.pooled[i] ? values[i] : -1.0f - values[i];
+        map.covered[i] = values[i] >= 0.0f;
+        map.values[i] = map.covered[i] ? values[i] : -1.0f - values[i];
     }
-    map.stats = poolFlip(map.error, map.pooled);  // as computeFlip pools
+    map.stats = poolFlip(map.values, map.covered);  // as computeFlip pools
     return map;
 }
 

@@ -41,9 +41,9 @@ void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t ind
 Image downloadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
 
 // A ΔE00 map from the pass's output (negative = not covered) with its pooled statistics.
-DeltaEMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
+ErrorMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
 
 // A ꟻLIP map from the ꟻLIP pass's output (e pooled, −1 − e not) with its pooled statistics.
-FlipMap downloadFlipMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
+ErrorMap downloadFlipMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
 
 }  // namespace matevo::gpu

@@ -36,6 +36,7 @@ Result<PopulationEvaluation> CpuPopulationRenderer::evaluate(
     }
     PopulationEvaluation evaluation;
     evaluation.target = target_;
+    evaluation.errors[ImageMetric::DeltaE00];  // also with no candidates
     for (const MaterialInstance& candidate : candidates) {
         if (cancel_.cancelled()) return cancelledError("rendering cancelled");
         Image image = renderSphereCpu(candidate, textures_, scene, size);
@@ -44,10 +45,10 @@ Result<PopulationEvaluation> CpuPopulationRenderer::evaluate(
         if (options.flip) {
             auto flipMap = computeFlip(target_, image, true, options.flipSettings);
             if (!flipMap) return flipMap.error();  // a viewing condition out of range
-            evaluation.flip.push_back(std::move(flipMap).value());
+            evaluation.errors[ImageMetric::Flip].push_back(std::move(flipMap).value());
         }
         if (options.candidateImages) evaluation.candidates.push_back(std::move(image));
-        evaluation.deltaE.push_back(std::move(map).value());
+        evaluation.errors[ImageMetric::DeltaE00].push_back(std::move(map).value());
     }
     return evaluation;
 }

@@ -14,15 +14,11 @@ Result<PopulationEvaluation> PopulationRenderer::evaluateIntoTiles(
     withImages.candidateImages = true;  // the tiles' pictures
     auto evaluation = evaluate(target, candidates, scene, size, withImages);
     if (!evaluation) return evaluation.error();
-    // A ꟻLIP tile's map holds ꟻLIP where the pixel is pooled and "not covered" elsewhere, so
-    // that the window draws either metric's map the same way.
-    std::vector<DeltaEMap> flipShown;
-    if (options.heatmapMetric == ImageMetric::Flip && !evaluation->flip.empty())
-        for (const FlipMap& map : evaluation->flip)
-            flipShown.push_back({map.width, map.height, map.error, map.pooled, {}});
-    if (Status uploaded = tiles.upload(evaluation->candidates,
-                                       flipShown.empty() ? evaluation->deltaE : flipShown);
-        !uploaded)
+    const auto shown = evaluation->errors.find(options.heatmapMetric);
+    const std::vector<ErrorMap>& maps = shown != evaluation->errors.end()
+                                            ? shown->second
+                                            : evaluation->errors.at(ImageMetric::DeltaE00);
+    if (Status uploaded = tiles.upload(evaluation->candidates, maps); !uploaded)
         return uploaded.error();
     if (!options.candidateImages) evaluation->candidates.clear();
     return evaluation;

@@ -8,6 +8,7 @@
 // the only place that chooses between them, and talk to it through this interface only. An
 // instance is used from one thread at a time.
 #include <functional>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -38,8 +39,9 @@ inline constexpr std::array<Choice<RenderBackend>, 2> kRenderBackends{{
 struct PopulationEvaluation {
     Image target;
     std::vector<Image> candidates;  // empty unless EvaluationOptions::candidateImages
-    std::vector<DeltaEMap> deltaE;  // candidate vs target, over pixels covered in both
-    std::vector<FlipMap> flip;      // the same with ꟻLIP; empty unless EvaluationOptions::flip
+    // Candidate vs target, one map per candidate for each metric computed: ΔE00 always, ꟻLIP
+    // with EvaluationOptions::flip.
+    std::map<ImageMetric, std::vector<ErrorMap>> errors;
 };
 
 struct EvaluationOptions {
@@ -59,7 +61,7 @@ struct EvaluationOptions {
 struct TileOutput {
     std::span<const gpu::DisplayTile* const> tiles;
     // tiles[i] gets pictures[i], and maps[i] when maps is not empty.
-    std::function<Status(std::span<const Image> pictures, std::span<const DeltaEMap> maps)> upload;
+    std::function<Status(std::span<const Image> pictures, std::span<const ErrorMap> maps)> upload;
 };
 
 class PopulationRenderer {

@@ -7,7 +7,6 @@
 #include "color/ImageDifference.h"
 #include "documents/CarriedTextures.h"
 #include "documents/GenomeJson.h"
-#include "experiment/Experiment.h"
 #include "files/AtomicFile.h"
 #include "fitness/RenderGenomesWith.h"
 #include "image/Canvas.h"

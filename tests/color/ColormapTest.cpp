@@ -54,11 +54,11 @@ TEST(Colormap, DeltaERangeMapsOntoTheTable) {
     EXPECT_EQ(heatmapColorLinear(3.1, threshold), decoded(kViridisSrgb[255]));
 }
 
-DeltaEMap twoPixelMap() {
-    DeltaEMap map;
+ErrorMap twoPixelMap() {
+    ErrorMap map;
     map.width = 2;
     map.height = 1;
-    map.deltaE = {10.0f, 0.0f};
+    map.values = {10.0f, 0.0f};
     map.covered = {1, 0};
     return map;
 }

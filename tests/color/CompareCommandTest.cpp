@@ -103,7 +103,7 @@ TEST_F(CompareCommandTest, FlipHeatmapIsMagmaOverTheUnitRange) {
             const float* pixel = heatmap->image.pixel(x, y);
             EXPECT_EQ(pixel[3], x == 5 && y == 1 ? 0.0f : 1.0f);
             if (pixel[3] == 0.0f) continue;
-            const auto expected = magmaSrgb(map->error[std::size_t(y * 16 + x)]);
+            const auto expected = magmaSrgb(map->values[std::size_t(y * 16 + x)]);
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(linearToSrgb(pixel[c]), expected[std::size_t(c)], 0.5 / 255 + 1e-6);
         }
@@ -139,7 +139,7 @@ TEST_F(CompareCommandTest, HeatmapPngShowsTheColourMapInsideCoverageOnly) {
             }
             EXPECT_EQ(pixel[3], 1.0f);
             const auto expected =
-                colormapSrgb(map->deltaE[std::size_t(y * 16 + x)] / 40.0);  // --range 0,40
+                colormapSrgb(map->values[std::size_t(y * 16 + x)] / 40.0);  // --range 0,40
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(linearToSrgb(pixel[c]), expected[std::size_t(c)], 0.5 / 255 + 1e-6);
         }

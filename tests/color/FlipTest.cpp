@@ -164,7 +164,7 @@ TEST(Flip, IdenticalImagesGiveZeroEverywhere) {
     const Image image = noise(40, 1);
     auto map = computeFlip(image, image);
     ASSERT_TRUE(map.ok()) << map.error().message;
-    for (float value : map->error) EXPECT_EQ(value, 0.0f);
+    for (float value : map->values) EXPECT_EQ(value, 0.0f);
     EXPECT_EQ(map->stats.mean, 0.0);
     EXPECT_EQ(map->stats.max, 0.0);
     EXPECT_EQ(map->stats.weightedMedian, 0.0);
@@ -176,11 +176,11 @@ TEST(Flip, ErrorsStayInTheUnitIntervalAndDoNotDependOnThreads) {
     auto one = computeFlip(a, b, true, {}, 1);
     auto two = computeFlip(a, b, true, {}, 2);
     ASSERT_TRUE(one.ok() && two.ok());
-    for (float value : one->error) {
+    for (float value : one->values) {
         EXPECT_GE(value, 0.0f);
         EXPECT_LE(value, 1.0f);
     }
-    EXPECT_EQ(one->error, two->error);
+    EXPECT_EQ(one->values, two->values);
     EXPECT_GT(one->stats.mean, 0.3);  // unrelated noise is very visible
     EXPECT_LE(one->stats.firstWeightedQuartile, one->stats.weightedMedian);
     EXPECT_LE(one->stats.weightedMedian, one->stats.thirdWeightedQuartile);
@@ -192,18 +192,18 @@ TEST(Flip, UniformImagesGiveTheColourDifferenceOnly) {
     // every pixel carries step 3's value (black against white: 0.967379).
     auto map = computeFlip(uniform(24, 0, 0, 0), uniform(24, 1, 1, 1));
     ASSERT_TRUE(map.ok());
-    for (float value : map->error) EXPECT_NEAR(value, 0.967379, 1e-4);
+    for (float value : map->values) EXPECT_NEAR(value, 0.967379, 1e-4);
 }
 
 TEST(Flip, AShiftedEdgeIsAnErrorAtTheEdgeOnly) {
     auto map = computeFlip(edgeImage(48, 24), edgeImage(48, 25));
     ASSERT_TRUE(map.ok());
-    const float atEdge = map->error[std::size_t(20) * 48 + 24];
-    const float farAway = map->error[std::size_t(20) * 48 + 4];
+    const float atEdge = map->values[std::size_t(20) * 48 + 24];
+    const float farAway = map->values[std::size_t(20) * 48 + 4];
     EXPECT_GT(atEdge, 0.5f);
     EXPECT_EQ(farAway, 0.0f);
     // Every row sees the same edge.
-    for (int y = 0; y < 48; ++y) EXPECT_EQ(map->error[std::size_t(y) * 48 + 24], atEdge) << y;
+    for (int y = 0; y < 48; ++y) EXPECT_EQ(map->values[std::size_t(y) * 48 + 24], atEdge) << y;
 }
 
 TEST(Flip, PoolsOverThePixelsBothImagesCover) {
@@ -213,8 +213,8 @@ TEST(Flip, PoolsOverThePixelsBothImagesCover) {
     auto map = computeFlip(a, b);
     ASSERT_TRUE(map.ok());
     EXPECT_EQ(map->stats.pixels, 16u * 8u);
-    EXPECT_EQ(map->pooled[0], 0);
-    EXPECT_EQ(map->pooled[16 * 15], 1);
+    EXPECT_EQ(map->covered[0], 0);
+    EXPECT_EQ(map->covered[16 * 15], 1);
     auto everyPixel = computeFlip(a, b, false);
     ASSERT_TRUE(everyPixel.ok());
     EXPECT_EQ(everyPixel->stats.pixels, 16u * 16u);
@@ -230,7 +230,7 @@ TEST(FlipPooling, WeightedPercentilesWeightEachPixelByItsError) {
     // The 0.9 is not pooled.
     const std::vector<float> errors = {0.4f, 0.9f, 0.1f, 0.3f, 0.2f};
     const std::vector<std::uint8_t> pooled = {1, 0, 1, 1, 1};
-    const FlipStats stats = poolFlip(errors, pooled);
+    const ErrorStats stats = poolFlip(errors, pooled);
     EXPECT_NEAR(stats.mean, 0.25, 1e-7);
     EXPECT_NEAR(stats.firstWeightedQuartile, 0.2, 1e-7);
     EXPECT_NEAR(stats.weightedMedian, 0.3, 1e-7);
@@ -252,7 +252,7 @@ TEST(FlipPooling, SumsExactlyWhateverTheOrderOfItsChunks) {
     for (std::size_t i = 0; i < errors.size(); ++i) chunks[i % 3].add(errors[i], true);
     for (const FlipPooling& chunk : chunks) forwards.merge(chunk);
     for (auto chunk = chunks.rbegin(); chunk != chunks.rend(); ++chunk) backwards.merge(*chunk);
-    const FlipStats a = forwards.finish(errors, pooled), b = backwards.finish(errors, pooled);
+    const ErrorStats a = forwards.finish(errors, pooled), b = backwards.finish(errors, pooled);
     EXPECT_EQ(a.mean, b.mean);
     EXPECT_EQ(a.weightedMedian, b.weightedMedian);
     EXPECT_EQ(a, poolFlip(errors, pooled));
@@ -275,10 +275,10 @@ TEST(FlipHeatmap, MagmaOverTheFixedUnitRange) {
     a.pixel(0, 0)[3] = 0.0f;
     auto map = computeFlip(a, b);
     ASSERT_TRUE(map.ok());
-    const Image heatmap = flipHeatmapImage(*map);
+    const Image heatmap = heatmapImage(*map);
     EXPECT_EQ(heatmap.pixel(0, 0)[3], 0.0f);  // not pooled: transparent
     EXPECT_EQ(heatmap.pixel(4, 4)[3], 1.0f);
-    const auto expected = flipColorLinear(map->error[4 * 8 + 4]);
+    const auto expected = flipColorLinear(map->values[4 * 8 + 4]);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(heatmap.pixel(4, 4)[c], expected[c]);
 }
 

@@ -32,7 +32,7 @@ TEST(ImageDifference, IdenticalImagesDifferByZero) {
     EXPECT_EQ(map->stats.mean, 0.0);
     EXPECT_EQ(map->stats.max, 0.0);
     EXPECT_EQ(map->stats.p95, 0.0);
-    for (float value : map->deltaE) EXPECT_EQ(value, 0.0f);
+    for (float value : map->values) EXPECT_EQ(value, 0.0f);
 }
 
 TEST(ImageDifference, EveryPixelMatchesTheDoubleReference) {
@@ -44,7 +44,7 @@ TEST(ImageDifference, EveryPixelMatchesTheDoubleReference) {
     double sum = 0, max = 0;
     for (std::size_t i = 0; i < a.pixelCount(); ++i) {
         const double expected = referenceDeltaE(a, b, i);
-        ASSERT_NEAR(map->deltaE[i], expected, 5e-4) << "pixel " << i;
+        ASSERT_NEAR(map->values[i], expected, 5e-4) << "pixel " << i;
         sum += expected;
         max = std::max(max, expected);
     }
@@ -87,7 +87,7 @@ TEST(ImageDifference, MaskedPixelsAreExcluded) {
             std::find(std::begin(masked), std::end(masked), i) != std::end(masked);
         EXPECT_EQ(map->covered[i], isMasked ? 0 : 1) << i;
         if (isMasked) {
-            EXPECT_EQ(map->deltaE[i], 0.0f) << i;
+            EXPECT_EQ(map->values[i], 0.0f) << i;
         }
     }
 
@@ -117,7 +117,7 @@ TEST(ImageDifference, P95IsTheNearestRankPercentile) {
         const Image b = randomImage(width, 1, 7, false);
         auto map = compareImages(a, b);
         ASSERT_TRUE(map.ok());
-        std::vector<float> sorted = map->deltaE;
+        std::vector<float> sorted = map->values;
         std::sort(sorted.begin(), sorted.end());
         const auto rank = std::size_t(std::ceil(0.95 * width - 1e-9));
         EXPECT_EQ(map->stats.p95, double(sorted[rank - 1])) << "N = " << width;
@@ -134,7 +134,7 @@ TEST(ImageDifference, ResultDoesNotDependOnTheThreadCount) {
     for (unsigned workers : {2u, 3u, 7u, 0u}) {
         auto parallel = compareImages(a, b, true, workers);
         ASSERT_TRUE(parallel.ok());
-        EXPECT_EQ(parallel->deltaE, single->deltaE) << workers;
+        EXPECT_EQ(parallel->values, single->values) << workers;
         EXPECT_EQ(parallel->covered, single->covered) << workers;
         EXPECT_EQ(parallel->stats.mean, single->stats.mean) << workers;
         EXPECT_EQ(parallel->stats.max, single->stats.max) << workers;
@@ -153,8 +153,8 @@ TEST(ImageDifference, NonFiniteValuesAreClampedLikeAnyOther) {
     a.pixel(1, 0)[1] = std::numeric_limits<float>::infinity();
     auto map = compareImages(a, b);
     ASSERT_TRUE(map.ok());
-    EXPECT_EQ(map->deltaE[0], 0.0f);
-    EXPECT_EQ(map->deltaE[1], 0.0f);
+    EXPECT_EQ(map->values[0], 0.0f);
+    EXPECT_EQ(map->values[1], 0.0f);
     EXPECT_EQ(map->stats.mean, 0.0);
 }
 

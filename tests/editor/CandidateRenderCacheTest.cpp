@@ -77,7 +77,8 @@ TEST(CandidateRenderCache, TargetChangeKeepsTexturesAndPipelines) {
     EXPECT_EQ(cache.targetPicture()->rgba, expected->target.rgba);
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         EXPECT_EQ((*tiles)[i].picture->rgba, expected->candidates[i].rgba) << i;
-        EXPECT_EQ((*tiles)[i].deltaE->deltaE, expected->deltaE[i].deltaE) << i;
+        EXPECT_EQ((*tiles)[i].deltaE->values, expected->errors.at(ImageMetric::DeltaE00)[i].values)
+            << i;
     }
     test::expectNoValidationMessages(*context);
 }

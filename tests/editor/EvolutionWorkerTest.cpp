@@ -185,22 +185,22 @@ TEST(EvolutionWorker, AFlipHeatmapReadsAsTheCpuFlipOfTheSameImages) {
             expectOnDevice(context->device, *candidate.tile->deltaE, EvolutionWorker::kTileSize);
             auto reference = computeFlip(*update->targetPicture, *candidate.picture);
             ASSERT_TRUE(reference.ok()) << reference.error().message;
-            ASSERT_EQ(candidate.flipMap->pooled, reference->pooled);
+            ASSERT_EQ(candidate.flipMap->covered, reference->covered);
             float largest = 0.0f;
-            for (std::size_t p = 0; p < reference->error.size(); ++p)
-                if (reference->pooled[p])
-                    largest = std::max(largest,
-                                       std::abs(candidate.flipMap->error[p] - reference->error[p]));
+            for (std::size_t p = 0; p < reference->values.size(); ++p)
+                if (reference->covered[p])
+                    largest = std::max(
+                        largest, std::abs(candidate.flipMap->values[p] - reference->values[p]));
             EXPECT_LE(largest, 2e-4f);
             EXPECT_NEAR(candidate.flipMap->stats.mean, reference->stats.mean, 1e-3);
             EXPECT_GT(reference->stats.mean, 0.0) << "a candidate identical to the target";
             // What the tile shows: the same map, pooled pixels as e, the others negative.
             const std::vector<float> shown = errorTexels(context->device, *candidate.tile->deltaE);
-            ASSERT_EQ(shown.size(), reference->error.size());
+            ASSERT_EQ(shown.size(), reference->values.size());
             for (std::size_t p = 0; p < shown.size(); ++p) {
-                ASSERT_EQ(shown[p] >= 0.0f, bool(candidate.flipMap->pooled[p])) << p;
-                if (candidate.flipMap->pooled[p]) {
-                    ASSERT_EQ(shown[p], candidate.flipMap->error[p]) << p;
+                ASSERT_EQ(shown[p] >= 0.0f, bool(candidate.flipMap->covered[p])) << p;
+                if (candidate.flipMap->covered[p]) {
+                    ASSERT_EQ(shown[p], candidate.flipMap->values[p]) << p;
                 }
             }
             // The readout, at pointer positions over the image.
@@ -215,7 +215,7 @@ TEST(EvolutionWorker, AFlipHeatmapReadsAsTheCpuFlipOfTheSameImages) {
                     const std::size_t index =
                         std::size_t(readout->y) * std::size_t(reference->width) +
                         std::size_t(readout->x);
-                    EXPECT_NEAR(*readout->flip, reference->error[index], 2e-4);
+                    EXPECT_NEAR(*readout->flip, reference->values[index], 2e-4);
                     ++read;
                 }
             EXPECT_GT(read, 20) << "the sphere covers most of the tile";

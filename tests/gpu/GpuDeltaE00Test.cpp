@@ -60,12 +60,12 @@ TEST(GpuDeltaE00, MatchesCoreColorOnImagePairs) {
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         auto cpu = compareImages(reference, candidates[i]);
         ASSERT_TRUE(cpu.ok()) << cpu.error().message;
-        const DeltaEMap& gpuMap = (*gpuResult)[i];
+        const ErrorMap& gpuMap = (*gpuResult)[i];
         ASSERT_EQ(gpuMap.covered, cpu->covered) << "candidate " << i;
         ASSERT_GT(cpu->stats.pixels, 0u);
         double difference = 0.0;
-        for (std::size_t p = 0; p < cpu->deltaE.size(); ++p)
-            if (cpu->covered[p]) difference += std::abs(gpuMap.deltaE[p] - cpu->deltaE[p]);
+        for (std::size_t p = 0; p < cpu->values.size(); ++p)
+            if (cpu->covered[p]) difference += std::abs(gpuMap.values[p] - cpu->values[p]);
         const double meanDifference = difference / double(cpu->stats.pixels);
         largestMeanDifference = std::max(largestMeanDifference, meanDifference);
         EXPECT_LT(meanDifference, 1e-3) << "candidate " << i;

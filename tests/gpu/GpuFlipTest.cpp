@@ -72,16 +72,16 @@ void expectAgreement(gpu::GpuImageComparer& comparer, const FlipCase& flipCase,
     for (std::size_t i = 0; i < flipCase.candidates.size(); ++i) {
         auto cpu = computeFlip(flipCase.reference, flipCase.candidates[i], true, settings);
         ASSERT_TRUE(cpu.ok()) << cpu.error().message;
-        const FlipMap& gpuMap = (*gpuResult)[i];
-        ASSERT_EQ(gpuMap.pooled, cpu->pooled) << "candidate " << i;
+        const ErrorMap& gpuMap = (*gpuResult)[i];
+        ASSERT_EQ(gpuMap.covered, cpu->covered) << "candidate " << i;
         ASSERT_EQ(gpuMap.stats.pixels, cpu->stats.pixels);
         ASSERT_GT(cpu->stats.pixels, 0u);
 
         float largestPixel = 0;
-        for (std::size_t p = 0; p < cpu->error.size(); ++p) {
-            ASSERT_GE(gpuMap.error[p], 0.0f);
-            ASSERT_LE(gpuMap.error[p], 1.0f);
-            largestPixel = std::max(largestPixel, std::abs(gpuMap.error[p] - cpu->error[p]));
+        for (std::size_t p = 0; p < cpu->values.size(); ++p) {
+            ASSERT_GE(gpuMap.values[p], 0.0f);
+            ASSERT_LE(gpuMap.values[p], 1.0f);
+            largestPixel = std::max(largestPixel, std::abs(gpuMap.values[p] - cpu->values[p]));
         }
         EXPECT_LE(largestPixel, kPerPixelTolerance) << "candidate " << i;
         const double meanDifference = std::abs(gpuMap.stats.mean - cpu->stats.mean);
@@ -169,7 +169,7 @@ TEST_F(GpuFlip, IdenticalImagesGiveZero) {
     const std::vector<Image> candidates{image};
     auto result = comparer_->compareFlip(image, candidates);
     ASSERT_TRUE(result.ok()) << result.error().message;
-    for (float error : (*result)[0].error) ASSERT_EQ(error, 0.0f);
+    for (float error : (*result)[0].values) ASSERT_EQ(error, 0.0f);
     EXPECT_EQ((*result)[0].stats.pixels, image.pixelCount());
 }
 
@@ -198,14 +198,14 @@ TEST_F(GpuFlip, AComparerKeptAcrossBatchesOfOtherSizesGivesWhatANewOneGives) {
         ASSERT_TRUE(keptFlip.ok() && freshFlip.ok());
         ASSERT_EQ(keptFlip->size(), batch.candidates.size());
         for (std::size_t i = 0; i < batch.candidates.size(); ++i)
-            EXPECT_EQ((*keptFlip)[i].error, (*freshFlip)[i].error);
+            EXPECT_EQ((*keptFlip)[i].values, (*freshFlip)[i].values);
 
         auto keptDeltaE = comparer_->compare(batch.reference, batch.candidates);
         auto freshDeltaE = fresh->compare(batch.reference, batch.candidates);
         ASSERT_TRUE(keptDeltaE.ok() && freshDeltaE.ok());
         ASSERT_EQ(keptDeltaE->size(), batch.candidates.size());
         for (std::size_t i = 0; i < batch.candidates.size(); ++i)
-            EXPECT_EQ((*keptDeltaE)[i].deltaE, (*freshDeltaE)[i].deltaE);
+            EXPECT_EQ((*keptDeltaE)[i].values, (*freshDeltaE)[i].values);
     }
 }
 

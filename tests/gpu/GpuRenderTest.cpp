@@ -172,17 +172,18 @@ TEST(GpuPopulation, DeltaEMatchesCoreColorOnRenderedPairs) {
         candidates.push_back({randomGenome(family, random), family, target.baseKappa});
     auto evaluation = (*renderer)->evaluate(target, candidates, SceneSettings{}, kImageSize);
     ASSERT_TRUE(evaluation.ok()) << evaluation.error().message;
-    ASSERT_EQ(evaluation->deltaE.size(), candidates.size());
+    ASSERT_EQ(evaluation->errors.at(ImageMetric::DeltaE00).size(), candidates.size());
 
     double largestDifference = 0.0;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         auto cpu = compareImages(evaluation->target, evaluation->candidates[i]);
         ASSERT_TRUE(cpu.ok()) << cpu.error().message;
-        ASSERT_EQ(evaluation->deltaE[i].covered, cpu->covered);
+        ASSERT_EQ(evaluation->errors.at(ImageMetric::DeltaE00)[i].covered, cpu->covered);
         ASSERT_GT(cpu->stats.pixels, 0u);
         double difference = 0.0;
-        for (std::size_t p = 0; p < cpu->deltaE.size(); ++p)
-            difference += std::abs(double(evaluation->deltaE[i].deltaE[p]) - cpu->deltaE[p]);
+        for (std::size_t p = 0; p < cpu->values.size(); ++p)
+            difference += std::abs(
+                double(evaluation->errors.at(ImageMetric::DeltaE00)[i].values[p]) - cpu->values[p]);
         const double meanDifference = difference / double(cpu->stats.pixels);
         largestDifference = std::max(largestDifference, meanDifference);
         EXPECT_LT(meanDifference, 1e-3) << "candidate " << i;

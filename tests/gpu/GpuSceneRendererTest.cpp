@@ -189,9 +189,9 @@ TEST_P(EitherVisibilityPass, SphereMatchesTheComputeSphereRender) {
         // pixel's centre on both paths.
         double interiorSum = 0.0;
         std::size_t interior = 0;
-        for (std::size_t i = 0; i < difference->deltaE.size(); ++i)
+        for (std::size_t i = 0; i < difference->values.size(); ++i)
             if (computeImage.rgba[4 * i + 3] == 1.0f && rasterImage->rgba[4 * i + 3] == 1.0f) {
-                interiorSum += difference->deltaE[i];
+                interiorSum += difference->values[i];
                 ++interior;
             }
         ASSERT_GT(interior, std::size_t(kImageSize * kImageSize / 3));
@@ -558,7 +558,7 @@ TEST_P(EitherVisibilityPass, InstancesWearTheirOwnMaterials) {
         for (int x = 0; x < frame.width; ++x) {
             if (withTwo.pixel(x, y)[3] < 0.99f) continue;
             const std::size_t third = std::size_t(x * 3 / frame.width);
-            sums[third] += difference->deltaE[std::size_t(y * frame.width + x)];
+            sums[third] += difference->values[std::size_t(y * frame.width + x)];
             counts[third] += 1.0;
         }
     for (double count : counts) ASSERT_GT(count, 200.0) << "every instance is in view";

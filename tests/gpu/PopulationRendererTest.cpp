@@ -62,13 +62,15 @@ TEST(PopulationRenderer, GpuAndCpuEvaluateAlike) {
     ASSERT_TRUE(onCpu.ok()) << onCpu.error().message;
     for (const PopulationEvaluation* evaluation : {&*onGpu, &*onCpu}) {
         EXPECT_EQ(evaluation->candidates.size(), population.candidates.size());
-        EXPECT_EQ(evaluation->deltaE.size(), population.candidates.size());
+        EXPECT_EQ(evaluation->errors.at(ImageMetric::DeltaE00).size(),
+                  population.candidates.size());
         EXPECT_EQ(evaluation->target.width, kSize);
     }
     for (std::size_t i = 0; i < population.candidates.size(); ++i) {
-        EXPECT_GT(onCpu->deltaE[i].stats.mean, 0.0) << "distinct genomes should differ";
-        EXPECT_NEAR(onGpu->deltaE[i].stats.mean, onCpu->deltaE[i].stats.mean,
-                    test::kBackEndMeanDeltaE)
+        EXPECT_GT(onCpu->errors.at(ImageMetric::DeltaE00)[i].stats.mean, 0.0)
+            << "distinct genomes should differ";
+        EXPECT_NEAR(onGpu->errors.at(ImageMetric::DeltaE00)[i].stats.mean,
+                    onCpu->errors.at(ImageMetric::DeltaE00)[i].stats.mean, test::kBackEndMeanDeltaE)
             << i;
     }
     test::expectNoValidationMessages(*test::validatedContext());
@@ -88,7 +90,9 @@ TEST(PopulationRenderer, TargetChangeIsRenderedAgain) {
         ASSERT_TRUE(first.ok() && second.ok() && alone.ok()) << renderer->name();
         EXPECT_EQ(second->target.rgba, alone->front().rgba) << renderer->name();
         EXPECT_NE(first->target.rgba, second->target.rgba) << renderer->name();
-        EXPECT_NE(first->deltaE[0].stats.mean, second->deltaE[0].stats.mean) << renderer->name();
+        EXPECT_NE(first->errors.at(ImageMetric::DeltaE00)[0].stats.mean,
+                  second->errors.at(ImageMetric::DeltaE00)[0].stats.mean)
+            << renderer->name();
         // Back to the first target at another size: drawn at that size.
         auto smaller = renderer->evaluate(population.target, population.candidates, {}, kSize / 2);
         ASSERT_TRUE(smaller.ok()) << renderer->name();
@@ -124,8 +128,12 @@ TEST(PopulationRenderer, KeptBuffersHoldNothingOfAnEarlierCoverage) {
     ASSERT_TRUE(expected.ok());
     for (std::size_t i = 0; i < population.candidates.size(); ++i) {
         EXPECT_EQ(last->candidates[i].rgba, expected->candidates[i].rgba) << i;
-        EXPECT_EQ(last->deltaE[i].deltaE, expected->deltaE[i].deltaE) << i;
-        EXPECT_EQ(last->deltaE[i].covered, expected->deltaE[i].covered) << i;
+        EXPECT_EQ(last->errors.at(ImageMetric::DeltaE00)[i].values,
+                  expected->errors.at(ImageMetric::DeltaE00)[i].values)
+            << i;
+        EXPECT_EQ(last->errors.at(ImageMetric::DeltaE00)[i].covered,
+                  expected->errors.at(ImageMetric::DeltaE00)[i].covered)
+            << i;
     }
     test::expectNoValidationMessages(*test::validatedContext());
 }
@@ -142,7 +150,8 @@ TEST(PopulationRenderer, HandsBackOnlyWhatWasAskedFor) {
             renderer->evaluate(population.target, population.candidates, {}, kSize, scoresOnly);
         ASSERT_TRUE(evaluation.ok()) << renderer->name();
         EXPECT_TRUE(evaluation->candidates.empty()) << renderer->name();
-        EXPECT_EQ(evaluation->deltaE.size(), population.candidates.size()) << renderer->name();
+        EXPECT_EQ(evaluation->errors.at(ImageMetric::DeltaE00).size(), population.candidates.size())
+            << renderer->name();
         EXPECT_FALSE(renderer->evaluate(population.target, population.candidates, {}, 0).ok());
     }
     test::expectNoValidationMessages(*test::validatedContext());
@@ -164,17 +173,19 @@ TEST(PopulationRenderer, FlipMapsWhenAsked) {
             auto evaluation = renderer->evaluate(population.target, population.candidates, {},
                                                  kSize, withFlip);
             ASSERT_TRUE(evaluation.ok()) << renderer->name();
-            ASSERT_EQ(evaluation->flip.size(), population.candidates.size());
-            ASSERT_EQ(evaluation->deltaE.size(), population.candidates.size());
+            ASSERT_EQ(evaluation->errors.at(ImageMetric::Flip).size(),
+                      population.candidates.size());
+            ASSERT_EQ(evaluation->errors.at(ImageMetric::DeltaE00).size(),
+                      population.candidates.size());
             for (std::size_t i = 0; i < population.candidates.size(); ++i) {
                 auto reference = computeFlip(evaluation->target, evaluation->candidates[i]);
                 ASSERT_TRUE(reference.ok());
-                const FlipMap& map = evaluation->flip[i];
-                EXPECT_EQ(map.pooled, reference->pooled) << renderer->name();
+                const ErrorMap& map = evaluation->errors.at(ImageMetric::Flip)[i];
+                EXPECT_EQ(map.covered, reference->covered) << renderer->name();
                 EXPECT_NEAR(map.stats.mean, reference->stats.mean, 1e-3) << renderer->name();
                 EXPECT_GT(map.stats.mean, 0.0) << "distinct genomes should differ";
-                for (std::size_t p = 0; p < map.error.size(); ++p)
-                    ASSERT_NEAR(map.error[p], reference->error[p], 2e-4) << renderer->name();
+                for (std::size_t p = 0; p < map.values.size(); ++p)
+                    ASSERT_NEAR(map.values[p], reference->values[p], 2e-4) << renderer->name();
             }
         }
     }
@@ -184,7 +195,7 @@ TEST(PopulationRenderer, FlipMapsWhenAsked) {
     scoresOnly.candidateImages = false;
     auto scores = gpu->evaluate(population.target, population.candidates, {}, kSize, scoresOnly);
     ASSERT_TRUE(scores.ok());
-    EXPECT_EQ(scores->flip.size(), population.candidates.size());
+    EXPECT_EQ(scores->errors.at(ImageMetric::Flip).size(), population.candidates.size());
     EXPECT_TRUE(scores->candidates.empty());
     test::expectNoValidationMessages(*test::validatedContext());
 }

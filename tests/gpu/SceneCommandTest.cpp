@@ -52,7 +52,7 @@ protected:
         int count = 0;
         for (int y = 0; y < a.height; ++y)
             for (int x = right ? a.width / 2 : 0; x < (right ? a.width : a.width / 2); ++x, ++count)
-                sum += map->deltaE[std::size_t(y) * std::size_t(a.width) + std::size_t(x)];
+                sum += map->values[std::size_t(y) * std::size_t(a.width) + std::size_t(x)];
         return sum / count;
     }
 };

@@ -100,7 +100,7 @@ TEST(LobeTableError, PaintedMetalAtThePresetSizeFollowsTheLoopAcrossTheTexelEdge
         renderSphereCpu(material, *textures, preset.scene, size, defaultFgdTables());
     auto difference = compareImages(exact, table);
     ASSERT_TRUE(difference.ok());
-    const auto above = std::count_if(difference->deltaE.begin(), difference->deltaE.end(),
+    const auto above = std::count_if(difference->values.begin(), difference->values.end(),
                                      [](float e) { return e > 0.5f; });
     std::printf("painted metal %d²: lobe table vs loop mean ΔE00 %.4f, max %.3f, %td pixels "
                 "above 0.5\n",

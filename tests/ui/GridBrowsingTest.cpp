@@ -102,7 +102,7 @@ TEST_F(GridBrowsing, ARunFarFromTheTargetSaysWhatToChangeAndTheButtonDoesIt) {
                           preset.scene, kEditorTileSize, options);
     ASSERT_TRUE(evaluation.ok()) << evaluation.error().message;
     for (std::size_t i = 0; i < candidates.size(); ++i)
-        candidates[i].meanDeltaE00 = evaluation->deltaE[i].stats.mean;
+        candidates[i].meanDeltaE00 = evaluation->errors.at(ImageMetric::DeltaE00)[i].stats.mean;
     showRun(candidates, 5);
 
     const auto advice = ui::adviceForFarCandidates(ui.state().evolution, preset.ga);

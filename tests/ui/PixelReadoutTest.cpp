@@ -16,10 +16,10 @@ Image filled(int size, float value, float alpha) {
     return image;
 }
 
-DeltaEMap coveredMap(int size) {
-    DeltaEMap map;
+ErrorMap coveredMap(int size) {
+    ErrorMap map;
     map.width = map.height = size;
-    map.deltaE.assign(std::size_t(size * size), 0.0f);
+    map.values.assign(std::size_t(size * size), 0.0f);
     map.covered.assign(std::size_t(size * size), 1);
     return map;
 }
@@ -29,8 +29,8 @@ TEST(PixelReadout, ReadsDeltaEAndBothColoursAtThePointedPixel) {
     Image candidate = filled(4, 0.18f, 1.0f);
     float* pixel = candidate.pixel(2, 1);
     pixel[0] = pixel[1] = pixel[2] = 1.0f;
-    DeltaEMap map = coveredMap(4);
-    map.deltaE[1 * 4 + 2] = 3.5f;
+    ErrorMap map = coveredMap(4);
+    map.values[1 * 4 + 2] = 3.5f;
 
     const auto readout = readPixel(&target, &candidate, &map, 0.6f, 0.3f);  // x 2.4, y 1.2
     ASSERT_TRUE(readout.has_value());
@@ -49,7 +49,7 @@ TEST(PixelReadout, ReadsDeltaEAndBothColoursAtThePointedPixel) {
 TEST(PixelReadout, NoDeltaEOffTheSphereAndNothingOutsideTheImage) {
     const Image target = filled(4, 0.5f, 0.0f);
     const Image candidate = filled(4, 0.5f, 0.0f);
-    DeltaEMap map = coveredMap(4);
+    ErrorMap map = coveredMap(4);
     map.covered.assign(16, 0);
     const auto background = readPixel(&target, &candidate, &map, 0.1f, 0.1f);
     ASSERT_TRUE(background.has_value());
