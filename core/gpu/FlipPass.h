@@ -26,7 +26,7 @@ struct FlipBatch {
     const Buffer* reference = nullptr;   // holds the reference image at referenceImage
     const Buffer* candidates = nullptr;  // holds the candidates from firstCandidate on
     // candidateCount * width * height floats, written: the error e where both images cover
-    // the pixel (alpha >= 0.5), −1 − e elsewhere (downloadFlipMap reads it).
+    // the pixel (alpha >= 0.5), −1 − e elsewhere (downloadErrorMap reads it).
     const Buffer* error = nullptr;
     int width = 0;
     int height = 0;

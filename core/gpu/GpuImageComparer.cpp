@@ -56,8 +56,10 @@ Result<ImageBatchShape> GpuImageComparer::upload(const Image& reference,
     return shape;
 }
 
-Result<std::vector<ErrorMap>> GpuImageComparer::compare(const Image& reference,
-                                                        std::span<const Image> candidates) {
+Result<std::vector<ErrorMap>> GpuImageComparer::measure(const Image& reference,
+                                                        std::span<const Image> candidates,
+                                                        ImageMetric metric,
+                                                        const RecordPass& record) {
     auto uploaded = upload(reference, candidates);
     if (!uploaded) return uploaded.error();
     const ImageBatchShape& shape = *uploaded;
@@ -65,41 +67,38 @@ Result<std::vector<ErrorMap>> GpuImageComparer::compare(const Image& reference,
 
     auto commands = runner_.begin();
     if (!commands) return commands.error();
-    deltaEPass_.record(*commands, {&buffers_.reference, &buffers_.candidates, &buffers_.maps,
-                                   shape.pixelCount(), shape.count, 0, 0});
+    if (auto recorded = record(*commands, shape); !recorded) return recorded.error();
     computeWriteToHostReadBarrier(*commands);
     if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
 
     std::vector<ErrorMap> maps;
     for (uint32_t i = 0; i < shape.count; ++i)
-        maps.push_back(downloadDeltaEMap(buffers_.maps, shape, i));
+        maps.push_back(downloadErrorMap(buffers_.maps, shape, i, metric));
     return maps;
+}
+
+Result<std::vector<ErrorMap>> GpuImageComparer::compare(const Image& reference,
+                                                        std::span<const Image> candidates) {
+    return measure(reference, candidates, ImageMetric::DeltaE00,
+                   [&](VkCommandBuffer commands, const ImageBatchShape& shape) -> Status {
+                       deltaEPass_.record(commands, {&buffers_.reference, &buffers_.candidates,
+                                                     &buffers_.maps, shape.pixelCount(),
+                                                     shape.count, 0, 0});
+                       return Ok{};
+                   });
 }
 
 Result<std::vector<ErrorMap>> GpuImageComparer::compareFlip(const Image& reference,
                                                             std::span<const Image> candidates,
                                                             const FlipSettings& settings) {
-    auto uploaded = upload(reference, candidates);
-    if (!uploaded) return uploaded.error();
-    const ImageBatchShape& shape = *uploaded;
-    if (shape.count == 0 || shape.pixelCount() == 0) return std::vector<ErrorMap>{};
-
-    auto commands = runner_.begin();
-    if (!commands) return commands.error();
-    if (auto recorded =
-            flipPass_.record(*commands,
-                             {&buffers_.reference, &buffers_.candidates, &buffers_.maps,
-                              shape.width, shape.height, shape.count, 0, 0},
-                             settings);
-        !recorded)
-        return recorded.error();
-    computeWriteToHostReadBarrier(*commands);
-    if (auto submitted = runner_.submitAndWait(); !submitted) return submitted.error();
-
-    std::vector<ErrorMap> maps;
-    for (uint32_t i = 0; i < shape.count; ++i)
-        maps.push_back(downloadFlipMap(buffers_.maps, shape, i));
-    return maps;
+    return measure(reference, candidates, ImageMetric::Flip,
+                   [&](VkCommandBuffer commands, const ImageBatchShape& shape) {
+                       return flipPass_.record(commands,
+                                               {&buffers_.reference, &buffers_.candidates,
+                                                &buffers_.maps, shape.width, shape.height,
+                                                shape.count, 0, 0},
+                                               settings);
+                   });
 }
 
 }  // namespace matevo::gpu

@@ -1,6 +1,7 @@
 #pragma once
 // ΔE00 or ꟻLIP maps on the GPU for images that already exist on the host (e.g. CPU renders): upload, one submission of the compute pass, read back. The GPU renderer feeds the
 // same passes straight from its own buffers instead.
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -35,6 +36,11 @@ private:
     };
     // Copies the images into buffers_ (made or grown first when needed).
     Result<ImageBatchShape> upload(const Image& reference, std::span<const Image> candidates);
+    // Uploads, records the metric's pass with `record`, submits and reads the maps back.
+    using RecordPass = std::function<Status(VkCommandBuffer, const ImageBatchShape&)>;
+    Result<std::vector<ErrorMap>> measure(const Image& reference,
+                                          std::span<const Image> candidates, ImageMetric metric,
+                                          const RecordPass& record);
 
     const Device* device_ = nullptr;
     DeltaE00Pass deltaEPass_;

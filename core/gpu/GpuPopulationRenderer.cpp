@@ -188,8 +188,8 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateOnDevice(
     parallelForChunks(int(count), [&](int chunk) {
         const auto i = uint32_t(chunk);
         if (options.candidateImages) evaluation.candidates[i] = downloadImage(renders_, shape, i);
-        deltaE[i] = downloadDeltaEMap(deltaE_, shape, i);
-        if (flipMaps) (*flipMaps)[i] = downloadFlipMap(flip_, shape, i);
+        deltaE[i] = downloadErrorMap(deltaE_, shape, i, ImageMetric::DeltaE00);
+        if (flipMaps) (*flipMaps)[i] = downloadErrorMap(flip_, shape, i, ImageMetric::Flip);
     });
     return evaluation;
 }

@@ -68,39 +68,28 @@ Image downloadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t 
     return image;
 }
 
-ErrorMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index) {
+ErrorMap downloadErrorMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index,
+                          ImageMetric metric) {
     ErrorMap map;
-    map.metric = ImageMetric::DeltaE00;
+    map.metric = metric;
     map.width = shape.width;
     map.height = shape.height;
     const std::size_t pixels = shape.pixelCount();
     const float* values = batch.as<float>().data() + pixels * index;
     map.values.resize(pixels);
     map.covered.resize(pixels);
-    DeltaEPooling pooling;  // as compareImages pools
+    const bool flip = metric == ImageMetric::Flip;
     for (std::size_t i = 0; i < pixels; ++i) {
         map.covered[i] = values[i] >= 0.0f;
-        map.values[i] = std::max(values[i], 0.0f);
-        pooling.add(map.values[i], map.covered[i] != 0);
+        map.values[i] = map.covered[i] ? values[i] : flip ? -1.0f - values[i] : 0.0f;
     }
-    map.stats = pooling.finish(map.values, map.covered);
-    return map;
-}
-
-ErrorMap downloadFlipMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index) {
-    ErrorMap map;
-    map.metric = ImageMetric::Flip;
-    map.width = shape.width;
-    map.height = shape.height;
-    const std::size_t pixels = shape.pixelCount();
-    const float* values = batch.as<float>().data() + pixels * index;
-    map.values.resize(pixels);
-    map.covered.resize(pixels);
-    for (std::size_t i = 0; i < pixels; ++i) {
-        map.covered[i] = values[i] >= 0.0f;
-        map.values[i] = map.covered[i] ? values[i] : -1.0f - values[i];
+    if (flip) {
+        map.stats = poolFlip(map.values, map.covered);  // as computeFlip pools
+    } else {
+        DeltaEPooling pooling;  // as compareImages pools
+        for (std::size_t i = 0; i < pixels; ++i) pooling.add(map.values[i], map.covered[i] != 0);
+        map.stats = pooling.finish(map.values, map.covered);
     }
-    map.stats = poolFlip(map.values, map.covered);  // as computeFlip pools
     return map;
 }
 

@@ -40,10 +40,10 @@ void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t ind
                  const Image& image);
 Image downloadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
 
-// A ΔE00 map from the pass's output (negative = not covered) with its pooled statistics.
-ErrorMap downloadDeltaEMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
-
-// A ꟻLIP map from the ꟻLIP pass's output (e pooled, −1 − e not) with its pooled statistics.
-ErrorMap downloadFlipMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index);
+// The error map the pass of `metric` wrote, with its statistics pooled as on the CPU. Covered
+// pixels hold the error e ≥ 0; elsewhere the ΔE00 pass writes −1 (kept as 0) and the ꟻLIP pass
+// −1 − e (kept as e), as ErrorMap says.
+ErrorMap downloadErrorMap(const Buffer& batch, const ImageBatchShape& shape, uint32_t index,
+                          ImageMetric metric);
 
 }  // namespace matevo::gpu
