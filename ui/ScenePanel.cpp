@@ -86,7 +86,8 @@ void handleMouse(EditorState& state, ImVec2 topLeft, ImVec2 size) {
     SceneView& view = state.sceneView;
     const ImGuiIO& io = ImGui::GetIO();
     view.hovered = -1;
-    view.cameraHeld = ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    view.cameraHeld = view.orbitByScript ||
+                      (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left));
     if (!ImGui::IsItemHovered() && !ImGui::IsItemActive()) return;
     if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
         view.controls.yawDegrees -= io.MouseDelta.x * 0.4f;

@@ -72,6 +72,7 @@ struct SceneView {
     std::string status;     // what was drawn and how long it took
     std::string meshError;  // why the last mesh chosen could not be shown (one line)
     bool cameraHeld = false;  // the left button is down on the picture (orbiting)
+    bool orbitByScript = false;  // an editor script drags the camera: held as by the mouse
     int hovered = -1;    // instance under the mouse, -1 when none
 };
 

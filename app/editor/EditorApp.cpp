@@ -187,6 +187,7 @@ private:
     EvolutionController* evolution_ = nullptr;
     VariantsController* variants_ = nullptr;
     ExportController* export_ = nullptr;
+    SceneController* scene_ = nullptr;
 };
 
 EditorApp::ImGuiSession::ImGuiSession(GLFWwindow* window, VulkanContext& vulkan,
@@ -257,7 +258,7 @@ EditorApp::EditorApp(const EditorOptions& options)
     add(std::make_unique<CompareMetricsController>(context));
     variants_ = &add(std::make_unique<VariantsController>(context));
     export_ = &add(std::make_unique<ExportController>(context));
-    add(std::make_unique<SceneController>(context, sceneTimings_));
+    scene_ = &add(std::make_unique<SceneController>(context, sceneTimings_));
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);
 }
@@ -309,17 +310,18 @@ int EditorApp::run() {
         const bool scriptDue =
             !script_.finished() &&
             (script_.waitingForEvolution() ? script_.awaitedWorkSettled(scriptSettled())
-                                           : !script_.idling() || script_.idleOver());
+                                           : script_.resumed());
         const bool due = screenshotPath || scriptDue || input_->hasPending() || framesToSettle > 0;
         const bool busy = jobsRunning();
         const auto sinceDrawn = std::chrono::steady_clock::now() - lastDrawn;
+        // Until the next progress frame is due, or the script resumes (a scene-orbit's next move).
+        const double wait = std::min(
+            busy ? std::chrono::duration<double>(kProgressInterval - sinceDrawn).count() : 0.25,
+            script_.finished() || script_.waitingForEvolution() ? 0.25 : script_.secondsToResume());
         if (due)
             glfwPollEvents();
-        else if (busy)  // until the next progress frame is due
-            glfwWaitEventsTimeout(
-                std::max(0.001, std::chrono::duration<double>(kProgressInterval - sinceDrawn).count()));
         else
-            glfwWaitEventsTimeout(0.25);
+            glfwWaitEventsTimeout(std::max(0.001, wait));
         if (shouldQuit()) break;
         if (input_->takeCloseRequest()) ui_.requestQuit();
         if (auto dropped = input_->takeDroppedFiles(); !dropped.empty())
@@ -442,7 +444,8 @@ EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& s
 }
 
 ScriptPlayer::Settled EditorApp::scriptSettled() {
-    return {evolution_->settled(), variants_->settled(ui_.state()), export_->settled()};
+    return {evolution_->settled(), variants_->settled(ui_.state()), export_->settled(),
+            !scene_->running()};
 }
 
 ui::FrameRequests EditorApp::playScript(std::optional<std::filesystem::path>& screenshotPath) {

@@ -30,6 +30,7 @@ struct Grammar {
 constexpr long long kMaxWindowSide = 16384;
 constexpr long long kMaxWaitFrames = 10'000'000;
 constexpr long long kMaxIdleMilliseconds = 600'000;
+constexpr long long kMaxOrbitMoves = 100'000;
 
 const std::map<std::string, Grammar>& grammar() {
     static const std::map<std::string, Grammar> table = {
@@ -48,6 +49,7 @@ const std::map<std::string, Grammar>& grammar() {
         {"wait-scene", {Kind::WaitScene, 0, false}},
         {"scene-show", {Kind::SceneShow, 0, true}},
         {"scene-mesh", {Kind::SceneMesh, 0, true}},
+        {"scene-orbit", {Kind::SceneOrbit, 1, false, 1, kMaxOrbitMoves}},
         {"undo", {Kind::Undo, 0, false}},
         {"redo", {Kind::Redo, 0, false}},
         {"resize", {Kind::Resize, 2, false, 64, kMaxWindowSide}},

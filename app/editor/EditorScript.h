@@ -20,6 +20,8 @@
 //   scene-mesh FILE|sphere|shaderball|knot the Scene window's mesh (.obj, .gltf, .glb file)
 //   wait-scene              draw until the Scene window shows the whole picture of its current
 //                           settings (gives up after 120 s; a mesh that fails to load fails)
+//   scene-orbit N           drag the Scene window's camera as a mouse would: N moves (each
+//                           turns it 4 degrees), one every 20 ms, the button held, then released
 //   undo | redo
 //   resize W H              resize the window (pixels; clamped to the screen)
 //   check-layout            fail (exit 1) if a panel cuts off a control at its right edge
@@ -65,6 +67,7 @@ struct ScriptAction {
         WaitScene,
         SceneShow,
         SceneMesh,
+        SceneOrbit,
         Undo,
         Redo,
         Resize,

@@ -71,7 +71,8 @@ Status SceneController::show(SceneViewResult& result, ui::SceneView& view) {
     if (!result.preview)
         planner_.wholePictureTook(result.frameMilliseconds,
                                   static_cast<long long>(result.tile->width) * result.tile->height);
-    timings_.pictureShown(result.preview, view.cameraHeld, SceneTimings::Clock::now());
+    timings_.pictureShown(result.preview, view.cameraHeld, SceneTimings::Clock::now(),
+                          result.frameMilliseconds);
     return Ok{};
 }
 

@@ -38,7 +38,9 @@ void SceneTimings::cameraReleased(Clock::time_point when) {
     awaitingRefined_ = true;
 }
 
-void SceneTimings::pictureShown(bool preview, bool cameraHeld, Clock::time_point when) {
+void SceneTimings::pictureShown(bool preview, bool cameraHeld, Clock::time_point when,
+                                double renderMs) {
+    (preview ? previewRenderMs_ : wholeRenderMs_).push_back(renderMs);
     if (awaitingFirst_) firstPictureMs_.push_back(milliseconds(when - openedAt_));
     awaitingFirst_ = false;
     if (cameraHeld) orbitPictures_.push_back(when);
@@ -49,13 +51,17 @@ void SceneTimings::pictureShown(bool preview, bool cameraHeld, Clock::time_point
 }
 
 std::string SceneTimings::report() const {
-    char text[320];
+    char text[480];
     std::snprintf(text, sizeof text,
                   "{\"first_picture_ms\":%.1f,\"openings\":%zu,"
                   "\"release_to_refined_ms\":%.1f,\"releases\":%zu,"
-                  "\"orbit_fps\":%.1f,\"orbits\":%zu}",
+                  "\"orbit_fps\":%.1f,\"orbits\":%zu,"
+                  "\"preview_render_ms\":%.1f,\"previews\":%zu,"
+                  "\"whole_render_ms\":%.1f,\"wholes\":%zu}",
                   median(firstPictureMs_), firstPictureMs_.size(), median(releaseToRefinedMs_),
-                  releaseToRefinedMs_.size(), median(orbitFps_), orbitFps_.size());
+                  releaseToRefinedMs_.size(), median(orbitFps_), orbitFps_.size(),
+                  median(previewRenderMs_), previewRenderMs_.size(), median(wholeRenderMs_),
+                  wholeRenderMs_.size());
     return text;
 }
 

@@ -6,7 +6,8 @@
 // (BackgroundWorker, latest wins): one queued while a render runs replaces any older one and
 // cancels the running one before its frame is recorded (a mesh being loaded is kept for the
 // next). The UI thread takes the finished render and is woken through `onUpdate` (which must be
-// thread-safe).
+// thread-safe). Previews draw a coarse copy of the mesh (mesh/MeshSimplification.h) with a
+// renderer of their own, made right after the mesh's first whole picture.
 #include <filesystem>
 #include <functional>
 #include <memory>

@@ -14,10 +14,27 @@ namespace matevo::editor {
 namespace {
 
 constexpr auto kEvolutionTimeout = std::chrono::seconds(120);
+// scene-orbit's moves: a mouse moving 10 pixels (ScenePanel turns 0.4 degrees per pixel) every
+// 20 ms, as a quick drag reports itself.
+constexpr float kOrbitDegreesPerMove = 4.0f;
+constexpr auto kOrbitMoveInterval = std::chrono::milliseconds(20);
 
 }  // namespace
 
 ScriptPlayer::ScriptPlayer(std::vector<ScriptAction> actions) : actions_(std::move(actions)) {}
+
+bool ScriptPlayer::resumed() const {
+    const auto now = std::chrono::steady_clock::now();
+    return (!idleUntil_ || now >= *idleUntil_) && (!nextOrbitMove_ || now >= *nextOrbitMove_);
+}
+
+double ScriptPlayer::secondsToResume() const {
+    std::chrono::steady_clock::duration wait{};
+    const auto now = std::chrono::steady_clock::now();
+    for (const auto& until : {idleUntil_, nextOrbitMove_})
+        if (until) wait = std::max(wait, *until - now);
+    return std::chrono::duration<double>(wait).count();
+}
 
 ScriptEffects ScriptPlayer::step(ui::EditorUi& ui, Settled settled) {
     ScriptEffects effects;
@@ -161,6 +178,21 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::SceneMesh:
             ui::chooseSceneMesh(state.sceneView, action.text);
             return true;
+        case Kind::SceneOrbit: {
+            ui::SceneView& view = state.sceneView;
+            if (!resumed()) return false;
+            nextOrbitMove_.reset();
+            if (orbitMoves_ == action.first) {  // the button released
+                view.orbitByScript = false;
+                orbitMoves_ = 0;
+                return true;
+            }
+            view.orbitByScript = true;
+            view.controls.yawDegrees -= kOrbitDegreesPerMove;
+            ++orbitMoves_;
+            nextOrbitMove_ = std::chrono::steady_clock::now() + kOrbitMoveInterval;
+            return false;
+        }
         case Kind::WaitScene: {
             const ui::SceneView& view = state.sceneView;
             if (!waitingSince_) waitingSince_ = std::chrono::steady_clock::now();

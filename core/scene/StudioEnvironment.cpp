@@ -6,7 +6,9 @@
 #include <glm/geometric.hpp>
 
 #include "image/ImageFile.h"
+#include "material/FgdTableCache.h"
 #include "scene/LatLong.h"
+#include "scene/StudioEnvironmentCache.h"
 
 namespace matevo {
 namespace {
@@ -72,7 +74,8 @@ Image makeStudioEnvironment(int width) {
 
 Result<PrefilteredEnvironment> loadEnvironment(const std::string& studioOrFile,
                                                const PrefilterSettings& settings) {
-    if (studioOrFile == "studio") return prefilterEnvironment(makeStudioEnvironment(), settings);
+    if (studioOrFile == "studio")
+        return loadOrBuildStudioEnvironment(defaultTableCacheDirectory(), settings).environment;
     auto image = readImage(studioOrFile);
     if (!image) return image.error();
     if (image->width < 2 * image->height - 1 || image->width > 2 * image->height + 1)

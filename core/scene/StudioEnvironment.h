@@ -11,10 +11,14 @@
 
 namespace matevo {
 
-Image makeStudioEnvironment(int width = 512);
+// The width of the lat-long studio image that loadEnvironment("studio") prefilters.
+constexpr int kStudioSourceWidth = 512;
 
-// "studio" for the generated one, or a lat-long .hdr / .exr file (any image OpenImageIO reads),
-// prefiltered. Errors name the file.
+Image makeStudioEnvironment(int width = kStudioSourceWidth);
+
+// "studio" for the generated one, prefiltered once and then read from the user's cache
+// (scene/StudioEnvironmentCache.h), or a lat-long .hdr / .exr file (any image OpenImageIO
+// reads), prefiltered. Errors name the file.
 Result<PrefilteredEnvironment> loadEnvironment(const std::string& studioOrFile,
                                                const PrefilterSettings& settings = {});
 

@@ -360,6 +360,59 @@ TEST(EditorSceneWindow, ShowsTheCandidatesAsInstancesOfAMesh) {
     fs::remove_all(dir);
 }
 
+// An orbit driven by the script as a mouse would (scene-orbit): previews while the camera
+// moves, the picture never blank (right after the release the last preview is still shown
+// while the whole picture is made), and the whole picture from the new viewpoint once it is
+// done. Asserted on what the editor reports and shows, not on how long it took.
+TEST(EditorSceneWindow, AnOrbitShowsPreviewsNeverBlanksAndEndsRefined) {
+    const fs::path dir = freshDirectory("scene_orbit");
+    fs::create_directories(dir / "config");
+    std::ofstream(dir / "script.txt") << "wait 2\n"
+                                         "population 12\n"
+                                         "generations 2\n"
+                                         "wait-evolution\n"
+                                         "scene open\n"
+                                         "wait-scene\n"
+                                         "screenshot "
+                                      << (dir / "before.png").string()
+                                      << "\nscene-orbit 12\n"
+                                         "screenshot "
+                                      << (dir / "released.png").string()
+                                      << "\nwait-scene\n"
+                                         "screenshot "
+                                      << (dir / "refined.png").string() << "\nquit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+        "/matevo' edit '" + MATEVO_SOURCE_DIR + "/presets/validation_metal.json' --validate " +
+        "--size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --script '" +
+        (dir / "script.txt").string() + "' --frames 100000 --report-timings");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto timings = run.out.find("scene timings: ");
+    ASSERT_NE(timings, std::string::npos) << run.out;
+    const auto scene = nlohmann::json::parse(
+        run.out.substr(timings + 15, run.out.find('\n', timings) - timings - 15));
+    EXPECT_EQ(scene.at("orbits").get<int>(), 1) << scene.dump();
+    EXPECT_GE(scene.at("previews").get<int>(), 1) << "pictures while the camera moved";
+    EXPECT_EQ(scene.at("releases").get<int>(), 1) << "the whole picture after the release";
+
+    // The window's image area, as in ShowsTheCandidatesAsInstancesOfAMesh.
+    const PixelRect image{50, 140, 790, 550};
+    std::vector<std::vector<Blob>> shown;
+    for (const char* name : {"before.png", "released.png", "refined.png"}) {
+        auto file = readImage(dir / name);
+        ASSERT_TRUE(file.ok()) << file.error().message;
+        shown.push_back(Screenshot(*file).litBlobs(image, 40, 170));
+        EXPECT_GE(shown.back().size(), 12u) << "lit instances in " << name;
+    }
+    // The camera turned: the refined picture is not the one before the orbit.
+    bool moved = shown[0].size() != shown[2].size();
+    for (std::size_t i = 0; !moved && i < shown[0].size(); ++i)
+        moved = shown[0][i].bounds.x0 != shown[2][i].bounds.x0 ||
+                shown[0][i].bounds.y0 != shown[2][i].bounds.y0;
+    EXPECT_TRUE(moved) << "the instances are where they were before the orbit";
+    fs::remove_all(dir);
+}
+
 // The Scene window shows what the user chooses: a mesh file instead of the built-ins, the
 // population, then the kept bin; the mesh is remembered for the next session.
 TEST(EditorSceneWindow, ShowsAMeshFileWithThePopulationThenTheKeptBin) {

@@ -68,16 +68,20 @@ TEST(SceneTimings, FirstPictureReleaseToRefinedAndOrbitRate) {
     SceneTimings timings;
     const auto start = SceneTimings::Clock::now();
     timings.windowOpened(start);
-    timings.pictureShown(false, false, start + 800ms);
+    timings.pictureShown(false, false, start + 800ms, 700.0);
     timings.cameraGrabbed();
-    for (int i = 0; i < 5; ++i) timings.pictureShown(true, true, start + 1s + i * 100ms);
+    for (int i = 0; i < 5; ++i) timings.pictureShown(true, true, start + 1s + i * 100ms, 40.0);
     timings.cameraReleased(start + 2s);
-    timings.pictureShown(true, false, start + 2s + 50ms);  // a preview still in flight
-    timings.pictureShown(false, false, start + 2s + 400ms);
+    timings.pictureShown(true, false, start + 2s + 50ms, 40.0);  // a preview still in flight
+    timings.pictureShown(false, false, start + 2s + 400ms, 300.0);
     const std::string report = timings.report();
     EXPECT_NE(report.find("\"first_picture_ms\":800.0"), std::string::npos) << report;
     EXPECT_NE(report.find("\"release_to_refined_ms\":400.0"), std::string::npos) << report;
     EXPECT_NE(report.find("\"orbit_fps\":10.0,\"orbits\":1"), std::string::npos) << report;
+    EXPECT_NE(report.find("\"preview_render_ms\":40.0,\"previews\":6"), std::string::npos)
+        << report;
+    EXPECT_NE(report.find("\"whole_render_ms\":700.0,\"wholes\":2"), std::string::npos)
+        << report;
 }
 
 }  // namespace

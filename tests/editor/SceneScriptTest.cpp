@@ -30,5 +30,19 @@ TEST(SceneScript, ShowAndMeshVerbsAreCheckedWhenTheScriptIsRead) {
         << badMesh.error().message;
 }
 
+TEST(SceneScript, OrbitTakesItsNumberOfMoves) {
+    auto script = parseEditorScript("scene-orbit 30\n", "demo.txt");
+    ASSERT_TRUE(script.ok()) << script.error().message;
+    EXPECT_EQ((*script)[0].kind, ScriptAction::Kind::SceneOrbit);
+    EXPECT_EQ((*script)[0].first, 30);
+    for (const char* bad : {"scene-orbit\n", "scene-orbit 0\n", "scene-orbit many\n"})
+        EXPECT_FALSE(parseEditorScript(bad, "demo.txt").ok()) << bad;
+    auto zero = parseEditorScript("scene-orbit 0\n", "demo.txt");
+    ASSERT_FALSE(zero.ok());
+    EXPECT_NE(zero.error().message.find("demo.txt:1: scene-orbit: must be in [1, "),
+              std::string::npos)
+        << zero.error().message;
+}
+
 }  // namespace
 }  // namespace matevo::editor
