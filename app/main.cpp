@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "CommandLine.h"
+#include "MemoryLimitWatch.h"
 #include "Messages.h"
 #include "Suggestion.h"
 #include "commands/Commands.h"
@@ -131,7 +132,7 @@ int dispatch(std::vector<std::string> args) {
     if (!chosen->takesMaxMemory) return chosen->run(commandLine);
     if (const auto limit = commandLine.option("--max-memory"))
         matevo::setMemoryLimitBytes(parseByteSizeOption(*limit, "--max-memory"));
-    const int status = chosen->run(commandLine);
+    const int status = runWithinMemoryLimit(chosen->run, commandLine);
     if (commandLine.wantsHelp()) std::printf("\n%s", kMaxMemoryHelp);
     return status;
 }
