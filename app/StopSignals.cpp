@@ -13,7 +13,7 @@ namespace matevo::cli {
 namespace {
 
 // What the handler touches: only lock-free atomics (async-signal-safe), never the token's
-// shared state itself. Set before the handlers are installed.
+// shared pointer. Set before the handlers are installed.
 CancelToken::State* stopState = nullptr;
 std::atomic<int> stopSignalNumber{0};
 
