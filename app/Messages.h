@@ -23,7 +23,8 @@ namespace matevo::cli {
 // The documented exit statuses (matevo --help, docs/architecture.md).
 enum class ExitStatus : int {
     Success = 0,
-    InternalFailure = 1,  // a bug or a failure of the machine (Vulkan, memory): not the user's
+    InternalFailure = 1,  // a bug or a failure of the machine (Vulkan, memory, the memory limit
+                          // passed while working): not the user's
     BadUsage = 2,         // bad usage or input: a mistyped option, a bad file, a missing folder
     AboveThreshold = 3,   // compare --fail-above: the difference is above the threshold
     RequestNotMet = 3,    // variants: the set asked for cannot be made (what was found is kept)

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <csignal>
 
+#include "CommandLine.h"
 #include "files/TemporaryFiles.h"
 
 namespace matevo::cli {
@@ -12,8 +13,8 @@ namespace matevo::cli {
 namespace {
 
 // What the handler touches: only lock-free atomics (async-signal-safe), never the token's
-// shared state itself. Set before the handlers are installed.
-std::atomic<bool>* stopFlag = nullptr;
+// shared pointer. Set before the handlers are installed.
+CancelToken::State* stopState = nullptr;
 std::atomic<int> stopSignalNumber{0};
 
 // Ends the process with the status the signal itself gives, leaving no temporary file.
@@ -27,7 +28,7 @@ void onStopSignal(int signal) {
     if (stopSignalNumber.load(std::memory_order_relaxed) != 0)
         return quit(signal);  // asked twice: stop now
     stopSignalNumber.store(signal, std::memory_order_relaxed);
-    stopFlag->store(true, std::memory_order_relaxed);
+    CancelToken::cancelState(*stopState, CancelReason::Request);
     constexpr char kNotice[] =
         "\nmatevo: stopping after the current step and keeping what is complete "
         "(again to quit at once)\n";
@@ -53,11 +54,24 @@ const CancelToken& stopToken() {
 int stopSignal() { return stopSignalNumber.load(std::memory_order_relaxed); }
 
 void installStopSignalHandlers() {
-    stopFlag = stopToken().flag();
+    stopState = stopToken().state();
     installHandler(onStopSignal);
 }
 
 void installQuitSignalHandlers() { installHandler(quit); }
+
+void stopIfCancelled() {
+    if (stopToken().cancelled()) throw CommandFailure(cancelledError());
+}
+
+std::string stoppedBy() {
+    switch (stopToken().reason()) {
+        case CancelReason::None: return {};
+        case CancelReason::Request: return signalName(stopSignal());
+        case CancelReason::MemoryLimit: return "memory limit";
+    }
+    return {};
+}
 
 int stoppedExitStatus(int signal) { return 128 + signal; }
 

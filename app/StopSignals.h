@@ -9,8 +9,8 @@
 
 namespace matevo::cli {
 
-// The token the long commands pass down; cancelled by the first SIGINT or SIGTERM once
-// installStopSignalHandlers() ran.
+// The token the commands pass down; cancelled by the first SIGINT or SIGTERM once
+// installStopSignalHandlers() ran, and at the memory limit (MemoryLimitWatch.h).
 const CancelToken& stopToken();
 // The signal that cancelled stopToken(), 0 when none did.
 int stopSignal();
@@ -20,6 +20,14 @@ void installStopSignalHandlers();
 // first remove the temporary file being written (files/TemporaryFiles.h). The stop handlers above
 // do the same when a second signal ends a long command.
 void installQuitSignalHandlers();
+
+// A cancellation point of a command with nothing partial to keep (render, scene, compare,
+// export): throws CommandFailure once stopToken() is cancelled, for main to report why
+// (MemoryLimitWatch.h).
+void stopIfCancelled();
+// What cancelled stopToken(), for a report marked partial: "SIGINT", "SIGTERM" or
+// "memory limit"; empty while nothing did.
+std::string stoppedBy();
 
 // 130 for SIGINT, 143 for SIGTERM (128 + signal), as shells report a process the signal ended.
 int stoppedExitStatus(int signal);

@@ -5,7 +5,9 @@
 
 #include "CommandLine.h"
 #include "EvolveImages.h"
+#include "MemoryLimitWatch.h"
 #include "Messages.h"
+#include "StopSignals.h"
 #include "common/MemoryBudget.h"
 #include "mesh/Mesh.h"
 #include "scene/SceneTextures.h"
@@ -200,13 +202,15 @@ std::string describeDuration(double seconds) {
     return text;
 }
 
-void checkWorkEstimate(const WorkEstimate& estimate) {
+void beginEstimatedWork(const WorkEstimate& estimate) {
     if (auto fits = checkMemoryEstimate(estimate.bytes, estimate.what); !fits)
         throw CommandFailure(fits.error());
     if (estimate.bytes >= kLargeBytes || estimate.seconds >= kLargeSeconds)
         printMessage(estimate.what + ": about " + describeBytes(estimate.bytes) +
                      " of memory and " + describeDuration(estimate.seconds) +
                      " of processor time (estimated)");
+    watchMemoryLimit(estimate.what);
+    stopIfCancelled();
 }
 
 }  // namespace matevo::cli

@@ -1,7 +1,8 @@
 #pragma once
 // Up-front estimates of the memory and processor time of large work, so that the user sees the
 // cost before it is spent and work past the memory limit (common/MemoryBudget.h,
-// --max-memory) is refused before it starts instead of ending in the OOM killer.
+// --max-memory) is refused before it starts instead of ending in the OOM killer; the limit is
+// then enforced while the work runs (MemoryLimitWatch.h).
 //
 // Times are processor seconds on the CPU renderer, from per-pixel costs measured on a two-core
 // x86-64 machine (lavapipe costs about the same; a real GPU renders much faster). They are
@@ -56,9 +57,11 @@ WorkEstimate sceneEstimate(int width, int height, std::uint64_t instances,
 WorkEstimate exportEstimate(std::uint64_t materials, int fitSize, int fitRenders, int reportSize,
                             std::uint64_t instances, const SceneContents& contents);
 
-// Throws UsageError (exit 2, one line) when the estimate is past the memory limit; prints it
-// as a notice when the work is large (1 GiB or half a minute), so the user can stop it.
-void checkWorkEstimate(const WorkEstimate& estimate);
+// Where a command's work begins. Throws UsageError (exit 2, one line) when the estimate is past
+// the memory limit; prints it as a notice when the work is large (1 GiB or half a minute), so
+// the user can stop it. Then holds the work to the limit while it runs (MemoryLimitWatch.h),
+// stopping it here already when the command is past the limit (reading its inputs).
+void beginEstimatedWork(const WorkEstimate& estimate);
 
 // "40 s", "12 min", "3.5 h"
 std::string describeDuration(double seconds);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "CommandLine.h"
+#include "MemoryLimitWatch.h"
 #include "Messages.h"
 #include "Suggestion.h"
 #include "commands/Commands.h"
@@ -51,7 +52,8 @@ constexpr Subcommand kSubcommands[] = {
 };
 
 constexpr const char* kMaxMemoryHelp =
-    "  --max-memory SIZE  refuse work whose estimated memory is past SIZE (e.g. 512M, 16G;\n"
+    "  --max-memory SIZE  refuse work whose estimated memory is past SIZE, and stop work\n"
+    "                     whose resident memory passes it (exit 1) (e.g. 512M, 16G;\n"
     "                     default half the machine's memory, or 3/4 of the cgroup's\n"
     "                     memory.max when lower); every command that reads images or\n"
     "                     renders takes it\n";
@@ -72,8 +74,9 @@ void printHelp() {
         "messages: 'matevo COMMAND: TEXT' on stderr, one line each; progress is redrawn in place\n"
         "          only on a terminal; every command takes --quiet, which leaves only errors,\n"
         "          warnings and the outcome.\n"
-        "exit status: 0 success, 1 internal failure, 2 bad usage or input,\n"
-        "             3 compare --fail-above: the difference is above the threshold.\n\n%s",
+        "exit status: 0 success, 1 internal failure or the memory limit passed while working,\n"
+        "             2 bad usage or input, 3 compare --fail-above: the difference is above\n"
+        "             the threshold.\n\n%s",
         kMaxMemoryHelp);
 }
 
@@ -131,7 +134,7 @@ int dispatch(std::vector<std::string> args) {
     if (!chosen->takesMaxMemory) return chosen->run(commandLine);
     if (const auto limit = commandLine.option("--max-memory"))
         matevo::setMemoryLimitBytes(parseByteSizeOption(*limit, "--max-memory"));
-    const int status = chosen->run(commandLine);
+    const int status = runWithinMemoryLimit(chosen->run, commandLine);
     if (commandLine.wantsHelp()) std::printf("\n%s", kMaxMemoryHelp);
     return status;
 }

@@ -7,6 +7,7 @@
 
 #include "ChoiceHelp.h"
 #include "Messages.h"
+#include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "color/Colormap.h"
 #include "color/Flip.h"
@@ -81,6 +82,7 @@ UsageError nothingCovered(const Inputs& inputs) {
 template <typename MakeHeatmap>
 void writeHeatmap(const MakeHeatmap& makeHeatmap, const std::optional<std::string>& file) {
     if (!file) return;
+    stopIfCancelled();
     auto written = writeImage(makeHeatmap(), *file);
     if (!written) throw CommandFailure(withContext(written.error(), "--heatmap"));
 }
@@ -174,7 +176,7 @@ int runCompare(CommandLine& args) {
                          std::to_string(a.image.width) + "x" + std::to_string(a.image.height) +
                          ", " + files[1] + " is " + std::to_string(b.image.width) + "x" +
                          std::to_string(b.image.height));
-    checkWorkEstimate(compareEstimate(a.image.width, a.image.height, metric == ImageMetric::Flip));
+    beginEstimatedWork(compareEstimate(a.image.width, a.image.height, metric == ImageMetric::Flip));
     const Inputs inputs{a.image, b.image, files[0] + " and " + files[1]};
     const double mean = metric == ImageMetric::Flip
                             ? reportFlip(inputs, flipSettings, heatmapFile, asJson)

@@ -184,8 +184,8 @@ int runEvolve(CommandLine& args) {
         output.emplace(claimOutputFolder(*outDir, replaceOutput));
         requireImageEncoder(output->target() / ("target." + format), "--format " + format);
     }
-    checkWorkEstimate(evolveEstimate(choice.preset.ga.population, choice.preset.ga.generations,
-                                     outDir ? imageSize : 0));
+    beginEstimatedWork(evolveEstimate(choice.preset.ga.population, choice.preset.ga.generations,
+                                      outDir ? imageSize : 0));
 
     const Preset& preset = choice.preset;
     std::optional<ImageSpaceFitness> fitness;
@@ -259,9 +259,9 @@ int runEvolve(CommandLine& args) {
         }
     }
     if (!renderedBy.is_null()) report["made_by"] = renderedBy;
-    if (const int signal = stopSignal()) {
+    if (stopToken().cancelled()) {
         report["partial"] = true;
-        report["stopped_by"] = signalName(signal);
+        report["stopped_by"] = stoppedBy();
     }
     if (output) {
         auto status = writeFileAtomically(output->staging() / "result.json", report.dump(2) + "\n");

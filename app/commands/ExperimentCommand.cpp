@@ -282,9 +282,9 @@ int runInto(const Request& request, OutputFolder& output, const Font& font) {
         }
     }
     nlohmann::ordered_json report = {{"runs_completed", allRecords.size()}, {"partial", false}};
-    if (const int signal = stopSignal()) {
+    if (stopToken().cancelled()) {
         report["partial"] = true;
-        report["stopped_by"] = signalName(signal);
+        report["stopped_by"] = stoppedBy();
         if (allRecords.empty())
             writeOrThrow(writeFileAtomically(outDir / "results.csv", resultsCsv(allRecords)));
     }
@@ -319,7 +319,7 @@ int runExperiment(CommandLine& args) {
     // font for the charts, and work past the memory limit.
     OutputFolder output = claimOutputFolder(request.outDir, request.replaceOutput);
     const Font font = requireChartFont();
-    checkWorkEstimate(estimateWork(request));
+    beginEstimatedWork(estimateWork(request));
     try {
         return runInto(request, output, font);
     } catch (const CommandFailure& failure) {

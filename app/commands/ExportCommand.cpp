@@ -8,6 +8,7 @@
 #include "Messages.h"
 #include "ProgressBar.h"
 #include "RenderBackend.h"
+#include "StopSignals.h"
 #include "WorkEstimate.h"
 #include "color/Colormap.h"
 #include "commands/Commands.h"
@@ -183,11 +184,10 @@ void checkExportEstimate(const std::vector<MaterialFile>& materials,
     const auto textures = loadSceneTextures(materials.front(), materials.front().name);
     const SceneTextures none;
     const bool meshed = asset.arrangement != GltfArrangement::Spheres;
-    checkWorkEstimate(exportEstimate(materials.size(), settings.fit.imageSize,
-                                     settings.fit.maxEvaluations, settings.reportSize,
-                                     asset.instances.size(),
-                                     sceneContentsOf(meshed ? &asset.mesh : nullptr,
-                                                     textures ? *textures : none)));
+    beginEstimatedWork(exportEstimate(
+        materials.size(), settings.fit.imageSize, settings.fit.maxEvaluations, settings.reportSize,
+        asset.instances.size(),
+        sceneContentsOf(meshed ? &asset.mesh : nullptr, textures ? *textures : none)));
 }
 
 }  // namespace
@@ -210,7 +210,8 @@ int runExport(CommandLine& args) {
         args.integerOption("--fit-renders", 20, 100000).value_or(settings.fit.maxEvaluations));
     settings.reportSize =
         int(args.integerOption("--report-size", 16, 2048).value_or(settings.reportSize));
-    const gpu::RendererRequest rendererRequest = backendOptions(args, "matevo export");
+    gpu::RendererRequest rendererRequest = backendOptions(args, "matevo export");
+    rendererRequest.cancel = stopToken();  // at the memory limit (MemoryLimitWatch.h)
     const auto imageFolder = args.option("--images");
     const std::string arrangeName = args.option("--arrange").value_or("spheres");
     const auto arrangement = parseArrangement(arrangeName);
@@ -260,8 +261,10 @@ int runExport(CommandLine& args) {
     ProgressBar progress(int(materials.size()));
     auto report = exportMaterials(
         materials, *renderer, format, *out, settings,
-        [&](std::size_t done, std::size_t) { progress.update(int(done), "fitting"); }, asset);
+        [&](std::size_t done, std::size_t) { progress.update(int(done), "fitting"); }, asset,
+        stopToken());
     if (!report) throw CommandFailure(report.error());
+    stopIfCancelled();
     if (imageFolder) writeImages(*report, *imageFolder);
     warnPastGoal(*report);
     if (asJson)

@@ -49,7 +49,8 @@ int runRender(CommandLine& args) {
     const MaterialSource source(args);
     const auto genomeFile = args.option("--genome");
     const auto size = args.integerOption("--size", 1, 8192);
-    const gpu::RendererRequest rendererRequest = backendOptions(args, "matevo render");
+    gpu::RendererRequest rendererRequest = backendOptions(args, "matevo render");
+    rendererRequest.cancel = stopToken();  // at the memory limit (MemoryLimitWatch.h)
     const auto lighting = args.option("--env");
     const std::filesystem::path out = imageOutputPath(args);
     args.finish();
@@ -58,7 +59,7 @@ int runRender(CommandLine& args) {
     removeStaleTemporaryFilesBeside(out);
     const MaterialFile material = genomeFile ? source.load(*genomeFile) : source.presetMaterial();
     const int imageSize = int(size.value_or(material.scene.imageSize));
-    checkWorkEstimate(renderEstimate(imageSize));
+    beginEstimatedWork(renderEstimate(imageSize));
     auto textures = loadSceneTextures(material, genomeFile.value_or(material.name));
     if (!textures) throw CommandFailure(textures.error());
     SceneSettings scene = material.scene;
@@ -69,6 +70,7 @@ int runRender(CommandLine& args) {
     auto renderer = createCommandRenderer(rendererRequest, *textures);
     auto images = renderer->render(std::span(&material.material, 1), scene, imageSize);
     if (!images) throw CommandFailure(images.error());
+    stopIfCancelled();
     if (auto written = writeImage(images->front(), out); !written)
         throw CommandFailure(withContext(written.error(), "--out"));
     return 0;

@@ -120,8 +120,8 @@ int runScene(CommandLine& args) {
         int(instanceCount.value_or(std::max<long long>(1, (long long)materials.size()))), *layout,
         int(materials.size()), seed);
     const SceneCamera camera = frameInstances(instances, double(size.width) / size.height);
-    checkWorkEstimate(sceneEstimate(size.width, size.height, instances.size(),
-                                    sceneContentsOf(&*mesh, *textures)));
+    beginEstimatedWork(sceneEstimate(size.width, size.height, instances.size(),
+                                     sceneContentsOf(&*mesh, *textures)));
 
     auto context = gpu::GpuContext::createHeadless();
     if (!context) throw CommandFailure(withContext(context.error(), "needs a Vulkan device"));
@@ -135,9 +135,11 @@ int runScene(CommandLine& args) {
     const gpu::SceneDisplay display = lowerCaseExtension(out) == ".png"
                                           ? gpu::SceneDisplay{exposure, *toneMap}
                                           : gpu::SceneDisplay{0.0, ToneMap::None};
+    stopIfCancelled();
     auto image =
         renderer->render(*runner, {size.width, size.height, camera, instances}, scene, display);
     if (!image) throw CommandFailure(image.error());
+    stopIfCancelled();
     if (auto written = writeImage(*image, out); !written)
         throw CommandFailure(withContext(written.error(), "--out"));
     std::printf(

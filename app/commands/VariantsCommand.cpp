@@ -244,7 +244,8 @@ void commit(std::optional<OutputFolder>& output) {
         throw CommandFailure(withContext(committed.error(), "--out"));
 }
 
-// The exit: stopped by `signal` (0: none), request not met (3), or met.
+// The exit: stopped by `signal` (0: none), request not met (3), or met. Stopped at the memory
+// limit, main says so (MemoryLimitWatch.h), not that the request is not met.
 int finish(int signal, const std::string& summary, bool met, bool wroteFiles, bool asJson,
            double seconds) {
     if (signal) {
@@ -252,6 +253,7 @@ int finish(int signal, const std::string& summary, bool met, bool wroteFiles, bo
                      (wroteFiles ? "; what was found is written, marked partial" : ""));
         return stoppedExitStatus(signal);
     }
+    if (stopToken().cancelled()) return 0;
     if (!met) {
         printMessage("request not met: " + summary +
                      (wroteFiles ? "; what was found is written" : ""));
@@ -261,14 +263,14 @@ int finish(int signal, const std::string& summary, bool met, bool wroteFiles, bo
     return 0;
 }
 
-// Marks the report partial when a signal stopped the work; returns the signal (0: none).
+// Marks the report partial when a signal or the memory limit stopped the work; returns the
+// signal (0: none).
 int markPartial(nlohmann::ordered_json& report) {
-    const int signal = stopSignal();
-    if (signal) {
+    if (stopToken().cancelled()) {
         report["partial"] = true;
-        report["stopped_by"] = signalName(signal);
+        report["stopped_by"] = stoppedBy();
     }
-    return signal;
+    return stopSignal();
 }
 
 // The whole set in one search (VariantSearch.h).
@@ -439,10 +441,10 @@ int runVariants(CommandLine& args) {
         std::move(kept->blocks.begin(), kept->blocks.end(), std::back_inserter(parts.blocks));
         std::move(kept->variants.begin(), kept->variants.end(), std::back_inserter(parts.variants));
     }
-    checkWorkEstimate(variantsEstimate(std::min(request.count, plan.blockSize), size, fitnessSize,
-                                       settings.maxEvaluations, settings.population,
-                                       int(kept ? kept->missing.size() : blocks.size()),
-                                       int(std::max<std::size_t>(1, request.lightings.size()))));
+    beginEstimatedWork(variantsEstimate(std::min(request.count, plan.blockSize), size, fitnessSize,
+                                        settings.maxEvaluations, settings.population,
+                                        int(kept ? kept->missing.size() : blocks.size()),
+                                        int(std::max<std::size_t>(1, request.lightings.size()))));
 
     const Preset& preset = choice.preset;
     auto textures = loadSceneTextures(preset, choice.file);

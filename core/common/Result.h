@@ -10,10 +10,13 @@ namespace matevo {
 // Where a failure was born, which decides the exit status once, in app/Messages.h:
 //   BadInput     what the user named or can fix: options, files and folders (unreadable,
 //                malformed, unwritable, a full disk or a file size limit while writing them),
-//                work past --max-memory, the shipped resources not found where MATEVO_DATA_DIR
-//                or the install says (the message lists the folders tried)          -> exit 2
+//                work estimated past --max-memory, the shipped resources not found where
+//                MATEVO_DATA_DIR or the install says (the message lists the folders
+//                tried)                                                             -> exit 2
 //   Environment  the machine: no usable Vulkan device or driver, a device or host out of
-//                memory, a failed system call that no input of the user's caused    -> exit 1
+//                memory, work whose resident memory passed the memory limit while it ran
+//                (common/MemoryWatch.h), a failed system call that no input of the
+//                user's caused                                                      -> exit 1
 //   Internal     a broken invariant: a bug                                          -> exit 1
 //   Cancelled    work stopped on request (SIGINT, SIGTERM, the editor closing)      -> 130/143
 enum class ErrorKind { BadInput, Environment, Internal, Cancelled };
