@@ -26,8 +26,8 @@ constexpr double kGaSecondsPerIndividual = 0.2e-6;  // one individual in one gen
 // (16) while the batch is scored; the set keeps RGBA, quantised copy and Lab of each member.
 constexpr std::uint64_t kSearchBytesPerPixel = 2 * (16 + 13);
 constexpr std::uint64_t kSetBytesPerPixel = 16 + 16 + 13;
-constexpr int kVariantSpare = 4;                           // VariantSearchSettings::spare
-constexpr std::uint64_t kExperimentBatch = 64;             // scoreRuns' default batch
+constexpr int kVariantSpare = 4;                // VariantSearchSettings::spare
+constexpr std::uint64_t kExperimentBatch = 64;  // scoreRuns' default batch
 // Peak memory, measured as max RSS (/usr/bin/time -v, Release build, lavapipe) at several sizes
 // and fitted as a fixed part plus parts per pixel, instance, vertex and triangle.
 // compare: both files read and decoded at once (samples and RGBA floats), then both images,
@@ -58,6 +58,12 @@ constexpr std::uint64_t kExportWorkBytesPerReportPixel = 104;
 constexpr std::uint64_t kExportBytesPerReportPixel = 74;
 constexpr std::uint64_t kExportBytesPerFitPixel = 232;
 constexpr std::uint64_t kExportBytesPerInstance = 1024;  // a node in the glTF and its JSON
+// render: the program and the Vulkan driver; per pixel the renderer's buffers (on lavapipe the
+// device's memory is the process's own), the read-back, the Image, its 8-bit copy and the
+// encoding: max RSS 499 MiB (CPU back end) and 690 MiB (lavapipe) at 2048x2048, 2.2-2.4 GiB at
+// 4096x4096.
+constexpr std::uint64_t kRenderFixedBytes = 96ull << 20;
+constexpr std::uint64_t kRenderBytesPerPixel = 144;
 constexpr std::uint64_t kLargeBytes = 1ull << 30;
 constexpr double kLargeSeconds = 30;
 
@@ -73,8 +79,8 @@ std::string sideBySide(int size) { return std::to_string(size) + "x" + std::to_s
 }  // namespace
 
 WorkEstimate renderEstimate(int size) {
-    // The render, its read-back and the encoded file: about three RGBA float images.
-    return {"--size " + std::to_string(size), pixels(size, size) * 16 * 3,
+    return {"--size " + std::to_string(size),
+            kRenderFixedBytes + pixels(size, size) * kRenderBytesPerPixel,
             double(pixels(size, size)) * kRenderSecondsPerPixel};
 }
 
@@ -107,12 +113,11 @@ WorkEstimate variantsEstimate(int count, int size, int fitnessSize, int maxEvalu
     estimate.bytes = lit * std::uint64_t(population) * searchPixels * kSearchBytesPerPixel +
                      lit * members * searchPixels * kSetBytesPerPixel +
                      lit * members * outputPixels * kSetBytesPerPixel + members * outputPixels * 16;
-    estimate.seconds =
-        double(lit) * (double(maxEvaluations) * double(searchPixels) *
-                           (kRenderSecondsPerPixel + kDeltaESecondsPerPixel) +
-                       double(members) * double(members) / 2 * double(outputPixels) *
-                           kDeltaESecondsPerPixel) +
-        double(members) * double(outputPixels) * kWrittenCandidateSecondsPerPixel;
+    estimate.seconds = double(lit) * (double(maxEvaluations) * double(searchPixels) *
+                                          (kRenderSecondsPerPixel + kDeltaESecondsPerPixel) +
+                                      double(members) * double(members) / 2 * double(outputPixels) *
+                                          kDeltaESecondsPerPixel) +
+                       double(members) * double(outputPixels) * kWrittenCandidateSecondsPerPixel;
     if (blocks > 1) {
         estimate.what = std::to_string(blocks) + " blocks of " + estimate.what;
         estimate.seconds *= double(blocks);
@@ -130,12 +135,11 @@ WorkEstimate experimentEstimate(long long gaRuns, int population, int generation
     estimate.bytes = std::max((kExperimentBatch + 1) * pixels(size, size), generationPixels) *
                      kSearchBytesPerPixel;
     const double individuals = double(population) * double(generations + 1);
-    estimate.seconds =
-        double(gaRuns) *
-            (individuals * kGaSecondsPerIndividual +
-             double(pixels(size, size)) * (kRenderSecondsPerPixel + kDeltaESecondsPerPixel)) +
-        double(imageRuns) * individuals * double(pixels(fitnessSize, fitnessSize)) *
-            (kRenderSecondsPerPixel + kDeltaESecondsPerPixel);
+    estimate.seconds = double(gaRuns) * (individuals * kGaSecondsPerIndividual +
+                                         double(pixels(size, size)) *
+                                             (kRenderSecondsPerPixel + kDeltaESecondsPerPixel)) +
+                       double(imageRuns) * individuals * double(pixels(fitnessSize, fitnessSize)) *
+                           (kRenderSecondsPerPixel + kDeltaESecondsPerPixel);
     return estimate;
 }
 
@@ -181,14 +185,13 @@ WorkEstimate exportEstimate(std::uint64_t materials, int fitSize, int fitRenders
                             std::uint64_t instances, const SceneContents& contents) {
     const std::uint64_t reportPixels = pixels(reportSize, reportSize);
     const std::uint64_t fitPixels = pixels(fitSize, fitSize);
-    return {countOf(materials, "material") + " reported at " + sideBySide(reportSize),
-            kExportFixedBytes + materials * reportPixels * kExportBytesPerReportPixel +
-                reportPixels * kExportWorkBytesPerReportPixel +
-                fitPixels * kExportBytesPerFitPixel + instances * kExportBytesPerInstance +
-                contentsBytes(contents),
-            double(materials) *
-                (double(fitRenders) * double(fitPixels) +
-                 2 * double(reportPixels)) * kRenderSecondsPerPixel};
+    return {
+        countOf(materials, "material") + " reported at " + sideBySide(reportSize),
+        kExportFixedBytes + materials * reportPixels * kExportBytesPerReportPixel +
+            reportPixels * kExportWorkBytesPerReportPixel + fitPixels * kExportBytesPerFitPixel +
+            instances * kExportBytesPerInstance + contentsBytes(contents),
+        double(materials) * (double(fitRenders) * double(fitPixels) + 2 * double(reportPixels)) *
+            kRenderSecondsPerPixel};
 }
 
 std::string describeDuration(double seconds) {

@@ -1,5 +1,5 @@
-// --max-memory on the commands that render or read images (scene, export, compare): the real
-// executable's estimate, which a refusal prints, is within 2x of the peak memory (max RSS) the
+// --max-memory on the commands that render or read images (render, scene, export, compare): the
+// real executable's estimate, which a refusal prints, is within 2x of the peak memory (max RSS) the
 // same request takes when it is allowed to run; under the estimate the command refuses with
 // exit status 2 and one line, and writes nothing. Scene and export render on Vulkan: on
 // lavapipe the device's memory is the process's own, so the peak counts it.
@@ -104,21 +104,35 @@ void expectWithinTwice(std::uint64_t estimate, std::uint64_t peak, const std::st
 
 TEST_F(MemoryEstimateCli, SceneEstimateIsWithinTwiceOfItsPeak) {
     const fs::path out = folder_ / "scene.png";
-    const std::vector<std::string> request{"scene", "--size", "2048x2048", "--instances", "200",
-                                           "--out", out.string()};
-    const std::uint64_t estimate = refusedEstimate(request, "64M", out, "200 instances at 2048x2048");
+    const std::vector<std::string> request{"scene", "--size", "2048x2048", "--instances",
+                                           "200",   "--out",  out.string()};
+    const std::uint64_t estimate =
+        refusedEstimate(request, "64M", out, "200 instances at 2048x2048");
     expectWithinTwice(estimate, peakBytes(request), joined(request));
     EXPECT_TRUE(fs::exists(out));
 }
 
 TEST_F(MemoryEstimateCli, ExportEstimateIsWithinTwiceOfItsPeak) {
     const fs::path out = folder_ / "set.gltf";
-    const std::vector<std::string> request{"export", "--fit-size", "16", "--fit-renders", "20",
-                                           "--report-size", "1536", "--out", out.string()};
+    const std::vector<std::string> request{"export",        "--fit-size", "16",
+                                           "--fit-renders", "20",         "--report-size",
+                                           "1536",          "--out",      out.string()};
     const std::uint64_t estimate =
         refusedEstimate(request, "64M", out, "1 material reported at 1536x1536");
     expectWithinTwice(estimate, peakBytes(request), joined(request));
     EXPECT_TRUE(fs::exists(out));
+}
+
+TEST_F(MemoryEstimateCli, RenderEstimateIsWithinTwiceOfItsPeakOnEitherBackEnd) {
+    const fs::path out = folder_ / "render.png";
+    for (const std::string backend : {"cpu", "gpu"}) {
+        const std::vector<std::string> request{"render", "--backend", backend,     "--size",
+                                               "2048",   "--out",     out.string()};
+        const std::uint64_t estimate = refusedEstimate(request, "64M", out, "--size 2048");
+        expectWithinTwice(estimate, peakBytes(request), joined(request));
+        EXPECT_TRUE(fs::exists(out));
+        fs::remove(out);
+    }
 }
 
 TEST_F(MemoryEstimateCli, CompareEstimateIsWithinTwiceOfItsPeak) {
@@ -127,8 +141,8 @@ TEST_F(MemoryEstimateCli, CompareEstimateIsWithinTwiceOfItsPeak) {
               0);
     const fs::path heatmap = folder_ / "heatmap.png";
     for (const std::string metric : {"de00", "flip"}) {
-        const std::vector<std::string> request{"compare",       "--metric",       metric,
-                                               image.string(),  image.string(),   "--heatmap",
+        const std::vector<std::string> request{"compare",       "--metric",     metric,
+                                               image.string(),  image.string(), "--heatmap",
                                                heatmap.string()};
         // Each image's decoding (128 MiB) fits; comparing both does not.
         const std::uint64_t estimate =
