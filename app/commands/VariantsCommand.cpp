@@ -20,6 +20,7 @@
 #include "experiment/Experiment.h"
 #include "export/GltfDelivery.h"
 #include "files/AtomicFile.h"
+#include "files/JsonReader.h"
 #include "files/OutputFolder.h"
 #include "fitness/RenderGenomesWith.h"
 #include "gpu/PopulationRendererFactory.h"
@@ -311,7 +312,7 @@ void writeReport(const OutputFolder& output, const nlohmann::ordered_json& repor
 int runBlocks(const VariantsJob& job, const VariantBlocks& plan, const std::vector<int>& blocks,
               const std::optional<Shard>& shard, BlockReport parts) {
     std::vector<int> kept;
-    for (const auto& entry : parts.blocks) kept.push_back(entry.at("index").get<int>());
+    for (const auto& entry : parts.blocks) kept.push_back(jsonInteger<int>(entry.at("index")));
     // Rendered here, not taken from a block: a share may have no block at all.
     auto target = job.outputRender.perLighting.front()(std::span(&job.preset.target, 1));
     if (!target) throw CommandFailure(target.error());

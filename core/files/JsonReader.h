@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -64,6 +65,23 @@ private:
     std::vector<std::string>& warnings_;
     std::set<std::string> read_;
 };
+
+// An integer read back from a JSON file matevo wrote (reports, shares, checkpoints), which a
+// user may have edited: nlohmann's get<int>() converts a float or an out-of-range number with a
+// plain cast (1e62 to int is undefined behaviour). Throws the library's type_error, as get<int>()
+// does for a string, so a reader's catch of nlohmann's exceptions names the field.
+template <typename Integer, typename Json>
+Integer jsonInteger(const Json& value) {
+    if (value.is_number_unsigned()) {
+        if (const auto number = value.template get<std::uint64_t>(); std::in_range<Integer>(number))
+            return Integer(number);
+    } else if (value.is_number_integer()) {
+        if (const auto number = value.template get<std::int64_t>(); std::in_range<Integer>(number))
+            return Integer(number);
+    }
+    throw Json::type_error::create(
+        302, "must be an integer that fits the field, got " + value.dump(), &value);
+}
 
 // Every JSON text matevo reads is nested at most this deep. Parsers recurse once per level
 // (tinygltf turns each level into a nested Value), so a document 20,000 levels deep overflows the

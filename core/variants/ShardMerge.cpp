@@ -43,8 +43,8 @@ Result<ShareReport> readShare(const fs::path& folder) {
     try {
         for (const char* field : kBlockHeaderFields)
             if (!share.report.contains(field)) return fieldError(folder, field, "missing");
-        share.shard = {share.report.at("shard").at("index").get<int>(),
-                       share.report.at("shard").at("count").get<int>()};
+        share.shard = {jsonInteger<int>(share.report.at("shard").at("index")),
+                       jsonInteger<int>(share.report.at("shard").at("count"))};
         for (const char* field : {"blocks", "variants"})
             if (!share.report.at(field).is_array())
                 return fieldError(folder, field, "must be an array");
@@ -78,7 +78,7 @@ Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::
     std::vector<int> blocks;
     try {
         for (const auto& block : share.report.at("blocks")) {
-            blocks.push_back(block.at("index").get<int>());
+            blocks.push_back(jsonInteger<int>(block.at("index")));
             joined.blocks.push_back(block);
         }
         const std::vector<int> expected = blocksOfShard(plan, share.shard);
@@ -99,8 +99,8 @@ Status copyShare(const ShareReport& share, const VariantBlocks& plan, const fs::
                               "not the blocks of " + shareName(share.shard));
         }
         for (const auto& variant : share.report.at("variants")) {
-            const auto index = variant.at("index").get<int>();
-            const int block = variant.at("block").get<int>();
+            const auto index = jsonInteger<int>(variant.at("index"));
+            const int block = jsonInteger<int>(variant.at("block"));
             if (std::find(blocks.begin(), blocks.end(), block) == blocks.end() ||
                 index < plan.firstIndex(block) ||
                 index >= plan.firstIndex(block) + plan.countIn(block))
@@ -172,8 +172,8 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
     const int shareCount = first.shard.count;
     VariantBlocks plan;
     try {
-        plan = {first.report.at("request").at("count").get<int>(),
-                first.report.at("request").at("block").get<int>()};
+        plan = {jsonInteger<int>(first.report.at("request").at("count")),
+                jsonInteger<int>(first.report.at("request").at("block"))};
     } catch (const nlohmann::ordered_json::exception& error) {
         return fieldError(first.folder, "request", error.what());
     }

@@ -30,8 +30,8 @@ std::optional<std::string> firstDifference(const nlohmann::ordered_json& expecte
 
 std::optional<Shard> shardOf(const nlohmann::ordered_json& report) {
     if (!report.contains("shard")) return std::nullopt;
-    return Shard{report.at("shard").at("index").get<int>(),
-                 report.at("shard").at("count").get<int>()};
+    return Shard{jsonInteger<int>(report.at("shard").at("index")),
+                 jsonInteger<int>(report.at("shard").at("count"))};
 }
 
 }  // namespace
@@ -72,16 +72,16 @@ Result<ResumableBlocks> readResumableBlocks(const fs::path& folder, const BlockR
         BlockReport parts{header.header, {}, {}};
         const std::vector<int> ofThisRun = missingBlocks(parts, shard);
         for (const auto& block : report.at("blocks")) {
-            const int index = block.at("index").get<int>();
+            const int index = jsonInteger<int>(block.at("index"));
             if (std::find(ofThisRun.begin(), ofThisRun.end(), index) == ofThisRun.end())
                 return fieldError("blocks", "block " + std::to_string(index) + " is not one of " +
                                                 shareName(shard) + "'s");
             parts.blocks.push_back(block);
         }
         for (const auto& variant : report.at("variants")) {
-            const int block = variant.at("block").get<int>();
+            const int block = jsonInteger<int>(variant.at("block"));
             if (std::none_of(parts.blocks.begin(), parts.blocks.end(), [block](const auto& entry) {
-                    return entry.at("index").template get<int>() == block;
+                    return jsonInteger<int>(entry.at("index")) == block;
                 }))
                 return fieldError("variants", "variant " + variant.at("index").dump() +
                                                   " is not in a listed block");

@@ -1,4 +1,5 @@
 #include "variants/VariantBlockFiles.h"
+#include "files/JsonReader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,7 @@ namespace matevo {
 namespace {
 
 std::size_t indexOf(const nlohmann::ordered_json& entry) {
-    return entry.at("index").get<std::size_t>();
+    return jsonInteger<std::size_t>(entry.at("index"));
 }
 
 void sortByIndex(std::vector<nlohmann::ordered_json>& entries) {
@@ -26,7 +27,8 @@ void sortByIndex(std::vector<nlohmann::ordered_json>& entries) {
 
 std::vector<int> missingBlocks(const BlockReport& parts, const std::optional<Shard>& shard) {
     const nlohmann::ordered_json& request = parts.header.at("request");
-    const VariantBlocks plan{request.at("count").get<int>(), request.at("block").get<int>()};
+    const VariantBlocks plan{jsonInteger<int>(request.at("count")),
+                             jsonInteger<int>(request.at("block"))};
     std::vector<int> missing;
     for (const int block : blocksOfShard(plan, shard.value_or(Shard{})))
         if (std::none_of(parts.blocks.begin(), parts.blocks.end(),
@@ -98,17 +100,17 @@ nlohmann::ordered_json assembleBlockReport(BlockReport parts, const std::optiona
         const auto [found, inserted] = firstWithGenome.emplace(identity, indexOf(variant));
         if (!inserted) duplicates.push_back({found->second, indexOf(variant)});
     }
-    int asked = 0;
+    long long asked = 0;  // a sum over blocks a user may have edited: no int overflow
     bool everyBlockMet = true;
     std::size_t evaluations = 0, archived = 0, outputRenders = 0;
     double smallest = std::numeric_limits<double>::infinity();
     for (const auto& block : parts.blocks) {
-        asked += block.at("count").get<int>();
+        asked += jsonInteger<int>(block.at("count"));
         everyBlockMet = everyBlockMet && block.at("met").get<bool>();
-        evaluations += block.at("evaluations").get<std::size_t>();
-        archived += block.at("archived").get<std::size_t>();
-        outputRenders += block.at("output_renders").get<std::size_t>();
-        if (block.at("found").get<std::size_t>() > 1)
+        evaluations += jsonInteger<std::size_t>(block.at("evaluations"));
+        archived += jsonInteger<std::size_t>(block.at("archived"));
+        outputRenders += jsonInteger<std::size_t>(block.at("output_renders"));
+        if (jsonInteger<std::size_t>(block.at("found")) > 1)
             smallest = std::min(smallest, block.at("smallest_pairwise_de00").get<double>());
     }
     if (!std::isfinite(smallest)) smallest = 0;
@@ -116,11 +118,12 @@ nlohmann::ordered_json assembleBlockReport(BlockReport parts, const std::optiona
     const std::vector<int> missing = missingBlocks(parts, shard);
     char text[512];
     std::snprintf(text, sizeof text,
-                  "%zu of %d variants in %zu block(s) of up to %d, band %g-%g, at least %g apart "
+                  "%zu of %lld variants in %zu block(s) of up to %d, band %g-%g, at least %g apart "
                   "within each block (smallest %.2f), %zu evaluations",
-                  parts.variants.size(), asked, parts.blocks.size(), request.at("block").get<int>(),
-                  request.at("band")[0].get<double>(), request.at("band")[1].get<double>(),
-                  request.at("min_apart").get<double>(), smallest, evaluations);
+                  parts.variants.size(), asked, parts.blocks.size(),
+                  jsonInteger<int>(request.at("block")), request.at("band")[0].get<double>(),
+                  request.at("band")[1].get<double>(), request.at("min_apart").get<double>(),
+                  smallest, evaluations);
     std::string summary = text;
     if (!duplicates.empty())
         summary += "; " + std::to_string(duplicates.size()) + " genome(s) repeated across blocks";
@@ -138,7 +141,7 @@ nlohmann::ordered_json assembleBlockReport(BlockReport parts, const std::optiona
     report["variants"] = std::move(parts.variants);
     report["duplicates"] = std::move(duplicates);
     report["met"] = everyBlockMet && missing.empty() && report["duplicates"].empty() &&
-                    report["found"].get<int>() == asked;
+                    static_cast<long long>(report["found"].get<std::size_t>()) == asked;
     if (!missing.empty()) report["partial"] = true;
     report["missing_blocks"] = missing;
     report["summary"] = summary;
@@ -169,7 +172,7 @@ Status writeVariantBlock(const std::filesystem::path& dir, const MaterialFile& t
     std::filesystem::create_directories(sheet.parent_path(), error);
     if (error)
         return badInput("cannot create folder '" + sheet.parent_path().string() + "' (" +
-                     error.message() + ")");
+                        error.message() + ")");
     return writeImage(contactSheet(set, font, first, count), sheet);
 }
 
