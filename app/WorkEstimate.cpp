@@ -7,6 +7,7 @@
 #include "EvolveImages.h"
 #include "Messages.h"
 #include "common/MemoryBudget.h"
+#include "documents/PresetTextures.h"
 #include "mesh/Mesh.h"
 #include "scene/SceneTextures.h"
 
@@ -187,6 +188,17 @@ WorkEstimate exportEstimate(std::uint64_t materials, int fitSize, int fitRenders
             double(materials) *
                 (double(fitRenders) * double(fitPixels) +
                  2 * double(reportPixels)) * kRenderSecondsPerPixel};
+}
+
+WorkEstimate exportSetEstimate(const std::vector<MaterialFile>& materials,
+                               const ExportSettings& settings, const GltfAsset& asset) {
+    const auto textures = loadSceneTextures(materials.front(), materials.front().name);
+    const SceneTextures none;
+    const bool meshed = asset.arrangement != GltfArrangement::Spheres;
+    return exportEstimate(materials.size(), settings.fit.imageSize, settings.fit.maxEvaluations,
+                          settings.reportSize, asset.instances.size(),
+                          sceneContentsOf(meshed ? &asset.mesh : nullptr,
+                                          textures ? *textures : none));
 }
 
 std::string describeDuration(double seconds) {

@@ -93,6 +93,7 @@ FrameRequests EditorUi::draw() {
     drawSceneWindow(state_);
     drawDialogs();
     requests.exportSet = exportDialog_.draw(state_);
+    drawExportOutcome(state_);
     handleShortcuts(requests);
     // One undo step per finished edit: a slider drag is recorded when it is released.
     if (!ImGui::IsAnyItemActive()) recordEdits();

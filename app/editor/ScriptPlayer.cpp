@@ -86,8 +86,7 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::ExportSet: {
             if (!exportAsked_) {
                 const std::filesystem::path file = action.text;
-                std::vector<MaterialFile> materials = ui::variantSetMaterialFiles(state);
-                if (materials.empty()) {
+                if (ui::variantSetMaterialFiles(state).empty()) {
                     effects.error = "script line " + std::to_string(action.line) +
                                     ": export-set: no variant set to export";
                     return true;
@@ -97,13 +96,19 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
                                     ": export-set: " + folder.error().message;
                     return true;
                 }
-                effects.exportSet =
-                    ui::ExportRequest{std::move(materials), *exportFormatOfFile(file), file};
+                effects.exportSet = ui::exportRequest(state, ui::ExportSource::VariantSet,
+                                                      *exportFormatOfFile(file), file);
+                state.exportOutcome.reset();
                 exportAsked_ = true;
                 return false;
             }
             if (!waitFor(settled.exported, action, "export-set: the export", effects)) return false;
             exportAsked_ = false;
+            // A refused or failed export fails the script, with the editor's own words.
+            if (!state.exportOutcome || state.exportOutcome->failed)
+                effects.error = "script line " + std::to_string(action.line) + ": export-set: " +
+                                (state.exportOutcome ? state.exportOutcome->summary
+                                                     : "the export did not start");
             return true;
         }
         case Kind::Open:
