@@ -66,6 +66,17 @@ ExportRequest exportRequest(const EditorState& state, ExportSource source, Expor
     return request;
 }
 
+void drawExportOutcomeLines(const ExportOutcome& outcome) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(outcome.failed ? kErrorColor : ImGui::GetStyleColorVec4(ImGuiCol_Text),
+                       "%s", outcome.summary.c_str());
+    if (!outcome.lines.empty()) ImGui::Separator();
+    for (const ExportOutcome::Line& line : outcome.lines)
+        ImGui::TextColored(line.holds ? ImGui::GetStyleColorVec4(ImGuiCol_Text) : kWarningColor,
+                           "%s", line.text.c_str());
+    ImGui::PopTextWrapPos();
+}
+
 void drawExportOutcome(EditorState& state) {
     if (!state.exportOutcome || !state.exportOutcome->open) return;
     const ExportOutcome& outcome = *state.exportOutcome;
@@ -77,16 +88,8 @@ void drawExportOutcome(EditorState& state) {
     ImGui::SetNextWindowSize(ImVec2(std::min(620.0f, viewport.Size.x - 40.0f), 0.0f),
                              ImGuiCond_Appearing);
     if (ImGui::Begin(kExportOutcomeTitle, &state.exportOutcome->open,
-                     ImGuiWindowFlags_NoSavedSettings)) {
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextColored(outcome.failed ? kErrorColor : ImGui::GetStyleColorVec4(ImGuiCol_Text),
-                           "%s", outcome.summary.c_str());
-        if (!outcome.lines.empty()) ImGui::Separator();
-        for (const ExportOutcome::Line& line : outcome.lines)
-            ImGui::TextColored(line.holds ? ImGui::GetStyleColorVec4(ImGuiCol_Text) : kWarningColor,
-                               "%s", line.text.c_str());
-        ImGui::PopTextWrapPos();
-    }
+                     ImGuiWindowFlags_NoSavedSettings))
+        drawExportOutcomeLines(outcome);
     ImGui::End();
 }
 

@@ -52,6 +52,9 @@ inline constexpr const char* kExportOutcomeTitle = "Exported set";
 // The last export's outcome in a window of its own, until it is closed: the summary and a line
 // per material (ExportOutcome).
 void drawExportOutcome(EditorState& state);
+// What that window holds: the summary (red when the export failed), then the lines (amber for a
+// material past the goal, or out of the band or too close as delivered).
+void drawExportOutcomeLines(const ExportOutcome& outcome);
 
 class ExportDialog {
 public:

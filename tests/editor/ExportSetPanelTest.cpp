@@ -86,16 +86,20 @@ protected:
         test::expectNoValidationMessages(*context);
         return true;
     }
-    // The text of the outcome window as drawn (ImGui logs it until the window's End).
+    // The text the outcome window shows (ImGui logs a window's text until its End), once the
+    // editor shows the window.
     std::string outcomeWindowText() {
+        imgui.frame(draw);
+        ImGuiWindow* window = ImGui::FindWindowByName(ui::kExportOutcomeTitle);
+        EXPECT_TRUE(window && window->Active) << "no outcome window";
         std::string text;
-        for (int frame = 0; frame < 2; ++frame)  // a new window sizes itself in its first
-            imgui.frame([&] {
-                draw();
-                ImGui::LogToBuffer();
-                ui::drawExportOutcome(ui.state());
-                text = GImGui->LogBuffer.c_str();
-            });
+        imgui.frame([&] {
+            ImGui::Begin("drawn");
+            ImGui::LogToBuffer();
+            ui::drawExportOutcomeLines(*ui.state().exportOutcome);
+            text = GImGui->LogBuffer.c_str();
+            ImGui::End();
+        });
         return text;
     }
 
@@ -304,10 +308,10 @@ TEST_F(ExportFromTheKeptBin, AnExportPastTheMemoryLimitIsRefused) {
     ASSERT_EQ(ui::keepMaterials(preset, {preset.target}), 1);
     const fs::path file = folder / "exports" / "kept.gltf";
     bool checked = false;
-    const editor::ExportMemoryCheck overTheLimit = [&](const ui::ExportRequest& request,
+    const editor::ExportMemoryCheck overTheLimit = [&](const ui::ExportRequest& refused,
                                                        const ExportSettings& settings) -> Status {
         checked = true;
-        EXPECT_EQ(request.file, file);
+        EXPECT_EQ(refused.file, file);
         EXPECT_EQ(settings.reportSize, 64) << "the settings the export would run with";
         return badInput("Export set of 1 material needs about 99 MiB of memory, more than the "
                         "limit of 1 MiB");
