@@ -87,7 +87,7 @@ FrameRequests EditorUi::draw() {
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
     state_.variants.keptInFamily = int(keptGenomesOfFamily(state_.preset).size());
     state_.variants.lighting = lightingChoiceOf(state_.preset.scene);
-    requests.variants = drawVariantsWindow(state_);
+    requests.variants = drawVariantsWindow(state_, layout.inspect.position.x);
     if (requests.variants.exportSet)
         exportDialog_.open(state_, folders_.exports, ExportSource::VariantSet);
     drawSceneWindow(state_);
@@ -167,6 +167,7 @@ void EditorUi::handleGridKeys() {
     }
     state_.selected =
         shown[std::size_t(std::clamp(index, 0, int(shown.size()) - 1))].candidate->genome;
+    state_.variants.selected = -1;  // the inspector shows the candidate
     state_.revealSelected = true;
 }
 

@@ -122,26 +122,15 @@ int nearestOf(const VariantsView& view, std::size_t index) {
     return nearest;
 }
 
-// The selected variant beside the target, both at the size they were rendered at (or smaller
-// when the window is narrower): never enlarged.
+// Where the clicked variant is shown: the Inspect panel, beside the target at its size.
 void drawSelected(const VariantsView& view) {
     if (view.selected < 0 || std::size_t(view.selected) >= view.variants.size()) return;
-    const VariantTileView& tile = view.variants[std::size_t(view.selected)];
-    const float side = std::min(float(view.imageSize),
-                                (ImGui::GetContentRegionAvail().x - 8.0f) / 2.0f);
-    ImDrawList& drawList = *ImGui::GetWindowDrawList();
-    ImGui::BeginGroup();
-    ImGui::TextColored(kMutedTextColor, "target");
-    drawImage(drawList, ImGui::GetCursorScreenPos(), side, view.target);
-    ImGui::Dummy(ImVec2(side, side));
-    ImGui::EndGroup();
-    ImGui::SameLine(0.0f, 8.0f);
-    ImGui::BeginGroup();
-    ImGui::TextColored(kMutedTextColor, "variant %03d: ΔE00 %.2f to the target", view.selected,
-                       tile.deltaEToTarget);
-    drawImage(drawList, ImGui::GetCursorScreenPos(), side, tile.image);
-    ImGui::Dummy(ImVec2(side, side));
-    ImGui::EndGroup();
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "variant %03d is in the Inspect panel, beside the target at its size; click "
+                  "its tile again to hide it",
+                  view.selected);
+    mutedText(text);
 }
 
 void drawTiles(EditorState& state) {
@@ -170,7 +159,7 @@ void drawTiles(EditorState& state) {
             const int nearest = nearestOf(view, i);
             if (nearest >= 0)
                 ImGui::SetTooltip("variant %03zu: ΔE00 %.2f to the target; nearest: variant %03d "
-                                  "at %.2f\nClick to see it beside the target",
+                                  "at %.2f\nClick to see it beside the target in the Inspect panel",
                                   i, tile.deltaEToTarget, nearest, tile.nearestSibling);
             else
                 ImGui::SetTooltip("variant %03zu: ΔE00 %.2f to the target", i,
@@ -244,11 +233,13 @@ void keepVariants(EditorState& state, std::optional<std::size_t> index) {
                       "; the kept bin holds " + std::to_string(state.preset.kept.size()));
 }
 
-VariantsActions drawVariantsWindow(EditorState& state) {
+VariantsActions drawVariantsWindow(EditorState& state, float inspectorLeft) {
     VariantsView& view = state.variants;
     VariantsActions actions;
     if (!view.open) return actions;
-    placeFloatingWindow(ImVec2(960, 700));  // the tiles scroll
+    // The tiles scroll; the Inspect panel stays in view beside it (placeFloatingWindow's margin
+    // on the left, a gap on the right).
+    placeFloatingWindow(ImVec2(std::clamp(inspectorLeft - 48.0f, 480.0f, 960.0f), 700.0f));
     if (!ImGui::Begin("Variants", &view.open)) {
         ImGui::End();
         return actions;

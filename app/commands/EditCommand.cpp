@@ -32,7 +32,7 @@ constexpr const char* kHelp =
     "                     wait-scene, undo, redo, resize W H, check-layout,\n"
     "                     screenshot PATH, redraw, save PATH, variants-hue on|off,\n"
     "                     variants N, wait-variants, discard-variant I, refill-variants,\n"
-    "                     save-variants PATH, quit\n"
+    "                     variants-inspect I, save-variants PATH, export-set PATH, quit\n"
     "  --frames N         quit after N frames\n"
     "  --size WxH         initial window size (default 1280x800)\n"
     "  --backend {backends}  where candidate tiles and Compare metrics render (default gpu;\n"

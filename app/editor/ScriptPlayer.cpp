@@ -79,6 +79,15 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::DiscardVariant:
             ui::discardVariant(state, std::size_t(action.first));
             return true;
+        case Kind::InspectVariant:
+            if (std::size_t(action.first) >= state.variants.variants.size()) {
+                effects.error = "script line " + std::to_string(action.line) +
+                                ": variants-inspect: the set shows " +
+                                std::to_string(state.variants.variants.size()) + " variants";
+                return true;
+            }
+            state.variants.selected = int(action.first);
+            return true;
         case Kind::KeepVariants:
             ui::keepVariants(state, action.text == "all" ? std::nullopt
                                                          : variantIndexOf(action.text));
