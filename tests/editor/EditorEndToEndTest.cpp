@@ -407,7 +407,7 @@ TEST(EditorVariantDocument, ExportSetPastTheMemoryLimitIsRefused) {
                            "256x256 needs about "),
               std::string::npos)
         << run.err;
-    EXPECT_NE(run.err.find("more than the limit of 1.0 MiB (--max-memory raises it"),
+    EXPECT_NE(run.err.find("more than the limit of 1 MiB (--max-memory raises it"),
               std::string::npos)
         << run.err;
     EXPECT_FALSE(fs::exists(dir / "set.glb"));
