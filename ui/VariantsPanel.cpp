@@ -239,7 +239,7 @@ VariantsActions drawVariantsWindow(EditorState& state, float inspectorLeft) {
     if (!view.open) return actions;
     // The tiles scroll; the Inspect panel stays in view beside it (placeFloatingWindow's margin
     // on the left, a gap on the right).
-    placeFloatingWindow(ImVec2(std::clamp(inspectorLeft - 48.0f, 480.0f, 960.0f), 700.0f));
+    placeFloatingWindow(ImVec2(std::clamp(inspectorLeft - 48.0f, 620.0f, 960.0f), 700.0f));
     if (!ImGui::Begin("Variants", &view.open)) {
         ImGui::End();
         return actions;
