@@ -1,6 +1,7 @@
 #include "ExportWorker.h"
 
 #include <cstdio>
+#include <optional>
 #include <utility>
 
 #include "VariantsWorker.h"
@@ -41,19 +42,28 @@ std::string fraction(std::size_t part, std::size_t whole) {
     return std::to_string(part) + "/" + std::to_string(whole);
 }
 
-// Why delivered variant `member` does not hold: "leaves the band (5.30)" or "is 1.61 from #3";
-// empty when it holds.
-std::string whyNotDelivered(const DeliveredSet& delivered, std::size_t member,
-                            const VariantRequest& request) {
-    const double toTarget = delivered.variants[member].deltaEToTarget;
-    if (!request.band.contains(toTarget)) return "leaves the band (" + fixed2(toTarget) + ")";
+// The delivered variant nearest to `member`, when there is another.
+std::optional<std::size_t> nearestDelivered(const DeliveredSet& delivered, std::size_t member) {
     const std::vector<double>& distances = delivered.pairwise[member];
-    std::size_t nearest = member;
+    std::optional<std::size_t> nearest;
     for (std::size_t other = 0; other < distances.size(); ++other)
-        if (other != member && (nearest == member || distances[other] < distances[nearest]))
+        if (other != member && (!nearest || distances[other] < distances[*nearest]))
             nearest = other;
-    if (nearest == member || distances[nearest] >= request.minApart) return {};
-    return "is " + fixed2(distances[nearest]) + " from " + numbered(nearest);
+    return nearest;
+}
+
+// Why delivered variant `member` does not hold: "leaves the band (5.30)" or "is 1.61 from #3";
+// empty when it holds. `withFigure`: with the distance (the lines give it already).
+std::string whyNotDelivered(const DeliveredSet& delivered, std::size_t member,
+                            const VariantRequest& request, bool withFigure = true) {
+    const double toTarget = delivered.variants[member].deltaEToTarget;
+    if (!request.band.contains(toTarget))
+        return withFigure ? "leaves the band (" + fixed2(toTarget) + ")" : "leaves the band";
+    const std::optional<std::size_t> nearest = nearestDelivered(delivered, member);
+    if (!nearest || delivered.pairwise[member][*nearest] >= request.minApart) return {};
+    return withFigure ? "is " + fixed2(delivered.pairwise[member][*nearest]) + " from " +
+                            numbered(*nearest)
+                      : "closer than " + number(request.minApart) + " to " + numbered(*nearest);
 }
 
 std::string bandInWords(const VariantRequest& request) {
@@ -286,9 +296,9 @@ ui::ExportOutcome exportOutcome(const ExportResult& result) {
     const std::vector<double> nearest = nearestSiblings(delivered.pairwise);
     for (std::size_t i = 0; i < delivered.variants.size(); ++i) {
         const DeliveredVariant& variant = delivered.variants[i];
-        const std::string why = whyNotDelivered(delivered, i, request);
-        std::string text = numbered(i) + " " + report.variants[i].name +
-                           ": fitted ΔE00 " + fixed2(variant.deltaEToMatevo) +
+        const std::string why = whyNotDelivered(delivered, i, request, false);
+        // By number, as the summary and the Variants window's tiles name them.
+        std::string text = numbered(i) + ": fitted ΔE00 " + fixed2(variant.deltaEToMatevo) +
                            (delivered.withinGoal(i) ? " (within the goal)" : " (past the goal)") +
                            "; as delivered " + fixed2(variant.deltaEToTarget) +
                            " from the target";

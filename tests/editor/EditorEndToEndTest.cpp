@@ -227,11 +227,13 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     auto shotFile = readImage(dir / "variants.png");
     ASSERT_TRUE(shotFile.ok()) << shotFile.error().message;
     const Screenshot shot(*shotFile);
-    // The row of tiles in the Variants window (first shown at ImGui's (60, 60), 960 wide, below
-    // its two lines of text and three rows of controls): the target and the four variants.
-    // They are dark red in the paper scene, so "lit" starts low: above the tiles' dark backdrop,
-    // which keeps each sphere apart from the window's lighter background.
-    const auto tiles = spheres(shot, {60, 230, 1020, 385}, 3000, 30);
+    // The tiles in the Variants window (first shown at (40, 40), left of the Inspect panel, below
+    // its two lines of text and three rows of controls): the target and the four variants, in
+    // two rows. They are dark red in the paper scene, so "lit" starts low: above the tiles' dark
+    // backdrop, which keeps each sphere apart from the window's lighter background.
+    const ui::PanelLayout layout = ui::layoutPanels(ImVec2(float(kWidth), float(kHeight)));
+    const auto tiles =
+        spheres(shot, {45, 230, int(layout.inspect.position.x) - 20, 600}, 3000, 30);
     EXPECT_EQ(tiles.size(), 5u) << "sphere tiles in the Variants window";
     fs::remove_all(dir);
 }

@@ -263,7 +263,7 @@ TEST_F(ExportFromTheKeptBin, AVariantSetIsCheckedAsItIsDelivered) {
     int withinGoal = 0;
     ASSERT_EQ(outcome.lines.size(), 2u);
     const std::regex line(
-        "#([01]) validation metal variant_00[01]: fitted ΔE00 ([0-9.]+) \\((within|past) the "
+        "#([01]): fitted ΔE00 ([0-9.]+) \\((within|past) the "
         "goal\\); as delivered ([0-9.]+) from the target, ([0-9.]+) from the nearest.*");
     for (std::size_t i = 0; i < 2; ++i) {
         const auto& entry = report.at("variants")[i];
