@@ -9,17 +9,14 @@
 // estimated as `matevo export` estimates it, and work past the limit is refused. While it
 // runs the status bar shows its progress; at the end, the status bar and the outcome window
 // (ui::ExportOutcome) say where it went and each material's figures, or why it failed.
-#include <filesystem>
 #include <functional>
-#include <optional>
-#include <string>
 
 #include "BackgroundWorker.h"
 #include "EditorState.h"
 #include "ExportDialog.h"
+#include "ExportOutcome.h"
 #include "export/ExportSet.h"
 #include "gpu/PopulationRendererFactory.h"
-#include "variants/DeliveryCheck.h"
 
 namespace matevo::editor {
 
@@ -28,13 +25,6 @@ namespace matevo::editor {
 // `matevo export` (app/WorkEstimate.h).
 using ExportMemoryCheck =
     std::function<Status(const ui::ExportRequest& request, const ExportSettings& settings)>;
-
-struct ExportResult {
-    std::optional<ExportReport> report;
-    std::optional<DeliveredSet> delivered;     // a variant set as glTF: as it was delivered
-    std::optional<VariantRequest> checkedFor;  // the band and spacing it was checked against
-    std::string error;  // the export could not be done (e.g. a missing texture)
-};
 
 class ExportWorker {
 public:
@@ -67,19 +57,5 @@ private:
     ExportMemoryCheck checkMemory_;
     Worker worker_;  // last: stopped first
 };
-
-// "Exported 3 materials to sets/rust.gltf (glTF 2.0): fitted ΔE00 rust 1: 0.84, …; mean 1.12
-// (at 128 px); within the goal of 2: 3/3".
-std::string describeExport(const ExportReport& report);
-// "Exported 12 variants to set.glb (glb): fitted ΔE00 within 2 for 12/12; in band 2–5 and at
-// least 2 apart as delivered: 11/12 — #7 leaves the band (5.30)".
-std::string describeDeliveredExport(const ExportReport& report, const DeliveredSet& delivered,
-                                    const VariantRequest& request);
-// The outcome window's lines: one per material, its fitted ΔE00 and whether it is within the
-// goal, and for a delivered set where it lies as delivered.
-ui::ExportOutcome exportOutcome(const ExportResult& result);
-
-// The JSON report written beside a delivered export: `set.glb` → `set.export.json`.
-std::filesystem::path exportReportFile(const std::filesystem::path& exported);
 
 }  // namespace matevo::editor
