@@ -9,6 +9,7 @@
 #include "Messages.h"
 #include "StopSignals.h"
 #include "common/MemoryBudget.h"
+#include "documents/PresetTextures.h"
 #include "mesh/Mesh.h"
 #include "scene/SceneTextures.h"
 
@@ -192,6 +193,17 @@ WorkEstimate exportEstimate(std::uint64_t materials, int fitSize, int fitRenders
             instances * kExportBytesPerInstance + contentsBytes(contents),
         double(materials) * (double(fitRenders) * double(fitPixels) + 2 * double(reportPixels)) *
             kRenderSecondsPerPixel};
+}
+
+WorkEstimate exportSetEstimate(const std::vector<MaterialFile>& materials,
+                               const ExportSettings& settings, const GltfAsset& asset) {
+    const auto textures = loadSceneTextures(materials.front(), materials.front().name);
+    const SceneTextures none;
+    const bool meshed = asset.arrangement != GltfArrangement::Spheres;
+    return exportEstimate(materials.size(), settings.fit.imageSize, settings.fit.maxEvaluations,
+                          settings.reportSize, asset.instances.size(),
+                          sceneContentsOf(meshed ? &asset.mesh : nullptr,
+                                          textures ? *textures : none));
 }
 
 std::string describeDuration(double seconds) {

@@ -9,10 +9,12 @@
 // meant to tell a minute from an hour, not to the second.
 #include <cstdint>
 #include <string>
+#include <vector>
+
+#include "export/ExportSet.h"
 
 namespace matevo {
 struct Mesh;
-struct SceneTextures;
 }  // namespace matevo
 
 namespace matevo::cli {
@@ -56,6 +58,13 @@ WorkEstimate sceneEstimate(int width, int height, std::uint64_t instances,
 // mesh of `instances` instances when the arrangement has one.
 WorkEstimate exportEstimate(std::uint64_t materials, int fitSize, int fitRenders, int reportSize,
                             std::uint64_t instances, const SceneContents& contents);
+
+// `export` of `materials` (they share textures) with `settings`, arranged as `asset` says: the
+// textures are read here to be counted (fitting reads them again; they are small next to the
+// renders); textures that cannot be read count as none, and the fit fails naming them. Also
+// what the editor's Export set checks before it starts.
+WorkEstimate exportSetEstimate(const std::vector<MaterialFile>& materials,
+                               const ExportSettings& settings, const GltfAsset& asset);
 
 // Where a command's work begins. Throws UsageError (exit 2, one line) when the estimate is past
 // the memory limit; prints it as a notice when the work is large (1 GiB or half a minute), so

@@ -217,6 +217,7 @@ void drawPopulation(EditorState& state) {
                 }
                 if (clicks.clicked || clicks.doubleClicked) {
                     state.selected = genome;
+                    state.variants.selected = -1;  // the inspector shows the candidate
                     state.inspectShowsTarget = false;
                 }
                 if (clicks.doubleClicked) state.enlarged = true;

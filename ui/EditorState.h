@@ -100,6 +100,18 @@ struct TaskProgress {
     float fraction = 0.0f;
 };
 
+// How the last export ended, shown in a window until it is closed (ExportDialog.h).
+struct ExportOutcome {
+    bool failed = false;  // refused or failed: `summary` says why
+    std::string summary;  // as the status bar gives it
+    struct Line {
+        std::string text;   // one material: its fitted ΔE00, and as delivered for a variant set
+        bool holds = true;  // within the goal, and in band and apart as delivered
+    };
+    std::vector<Line> lines;
+    bool open = true;
+};
+
 struct EditorState {
     Preset preset;  // the parameters: undoable, saved to and loaded from preset files
     HeatmapView heatmap;
@@ -126,6 +138,7 @@ struct EditorState {
     StatusLog status;                 // every action's outcome; the status bar shows the newest
     bool statusLogOpen = false;       // the window listing the recent messages
     std::optional<TaskProgress> task;  // while one runs
+    std::optional<ExportOutcome> exportOutcome;  // of the last export
     std::vector<std::filesystem::path> recentFiles;  // newest first, remembered in imgui.ini
 
     bool hasUnsavedChanges() const { return preset != savedPreset; }

@@ -87,12 +87,13 @@ FrameRequests EditorUi::draw() {
     requests.runCompareMetrics = drawCompareMetricsWindow(state_.compareMetrics).run;
     state_.variants.keptInFamily = int(keptGenomesOfFamily(state_.preset).size());
     state_.variants.lighting = lightingChoiceOf(state_.preset.scene);
-    requests.variants = drawVariantsWindow(state_);
+    requests.variants = drawVariantsWindow(state_, layout.inspect.position.x);
     if (requests.variants.exportSet)
         exportDialog_.open(state_, folders_.exports, ExportSource::VariantSet);
     drawSceneWindow(state_);
     drawDialogs();
     requests.exportSet = exportDialog_.draw(state_);
+    drawExportOutcome(state_);
     handleShortcuts(requests);
     // One undo step per finished edit: a slider drag is recorded when it is released.
     if (!ImGui::IsAnyItemActive()) recordEdits();
@@ -166,6 +167,7 @@ void EditorUi::handleGridKeys() {
     }
     state_.selected =
         shown[std::size_t(std::clamp(index, 0, int(shown.size()) - 1))].candidate->genome;
+    state_.variants.selected = -1;  // the inspector shows the candidate
     state_.revealSelected = true;
 }
 

@@ -12,14 +12,26 @@
 #include "PathDialog.h"
 #include "documents/MaterialFile.h"
 #include "export/ExportSet.h"
+#include "variants/VariantSearch.h"
 
 namespace matevo::ui {
+
+// A variant set exported as glTF is checked as it is delivered (variants/DeliveryCheck.h, as
+// `matevo variants --deliver gltf` checks it): each variant's fit rendered with the glTF BRDF,
+// against the Variants window's band and spacing.
+struct VariantSetDelivery {
+    Preset madeFor;  // the preset with the set's own target, family and kappa
+    std::filesystem::path presetFile;  // its textures are relative to its folder
+    std::vector<Genome> variants;      // in the set's order, as `materials`
+    VariantRequest request;            // the band and the spacing
+};
 
 // What the user asked to export, ready for exportMaterials().
 struct ExportRequest {
     std::vector<MaterialFile> materials;
     ExportFormat format = ExportFormat::Gltf;
     std::filesystem::path file;
+    std::optional<VariantSetDelivery> delivery;  // a variant set, as glTF or GLB
 };
 
 // The kept materials of the preset's family as material files, named as in the bin.
@@ -31,6 +43,18 @@ std::vector<MaterialFile> variantSetMaterialFiles(const EditorState& state);
 // What "Export set…" exports.
 enum class ExportSource { KeptBin, VariantSet };
 std::vector<MaterialFile> exportedMaterials(const EditorState& state, ExportSource source);
+// The request to export `source` as `format` to `file` (a variant set as glTF with its
+// delivery check).
+ExportRequest exportRequest(const EditorState& state, ExportSource source, ExportFormat format,
+                            const std::filesystem::path& file);
+
+inline constexpr const char* kExportOutcomeTitle = "Exported set";
+// The last export's outcome in a window of its own, until it is closed: the summary and a line
+// per material (ExportOutcome).
+void drawExportOutcome(EditorState& state);
+// What that window holds: the summary (red when the export failed), then the lines (amber for a
+// material past the goal, or out of the band or too close as delivered).
+void drawExportOutcomeLines(const ExportOutcome& outcome);
 
 class ExportDialog {
 public:

@@ -18,6 +18,16 @@ namespace {
 
 constexpr float kGap = 8.0f;
 
+// What the A/B view sets against the target: a GA candidate, or a variant of the Variants window
+// (rendered with its target at the target's size).
+struct Comparison {
+    ImTextureID target = nullptr;
+    const Image* targetPicture = nullptr;  // at the size the material's maps were computed at
+    CandidateView material;
+    const char* name = "candidate";  // on its image and in the readout
+    std::string heatmapLabel;
+};
+
 // The family's active chromosomes only: the others are the same in every candidate.
 void drawChromosomeTable(const MaterialFamily& family, const Genome& target,
                          const Genome& candidate) {
@@ -92,20 +102,20 @@ void drawLabel(ImDrawList& drawList, ImVec2 at, float size, const char* text) {
     drawList.AddText(ImVec2(at.x + 4.0f, at.y + 2.0f), ImGui::GetColorU32(kMutedTextColor), text);
 }
 
-// Target on the left of the split, candidate on the right; the line follows a drag.
-void drawWipe(EditorState& state, const CandidateView& candidate, ImVec2 origin, float size) {
+// Target on the left of the split, the material on the right; the line follows a drag.
+void drawWipe(EditorState& state, const Comparison& compared, ImVec2 origin, float size) {
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
     ImGui::InvisibleButton("wipe", ImVec2(size, size));
     if (ImGui::IsItemActive())
         state.wipePosition = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / size, 0.0f, 1.0f);
     const float splitX = origin.x + state.wipePosition * size;
-    drawImage(drawList, origin, size, state.evolution.targetImage);
+    drawImage(drawList, origin, size, compared.target);
     drawList.PushClipRect(ImVec2(splitX, origin.y), ImVec2(origin.x + size, origin.y + size), true);
-    drawImage(drawList, origin, size, candidate.image);
+    drawImage(drawList, origin, size, compared.material.image);
     drawList.PopClipRect();
     drawList.AddLine(ImVec2(splitX, origin.y), ImVec2(splitX, origin.y + size),
                      IM_COL32(255, 255, 255, 200), 2.0f);
-    drawLabel(drawList, origin, size, "target | candidate");
+    drawLabel(drawList, origin, size, ("target | " + std::string(compared.name)).c_str());
 }
 
 // Where the pointer is over the image at `topLeft`, in [0, 1)² of it; nothing when elsewhere.
@@ -120,11 +130,11 @@ std::optional<ImVec2> pointerOver(ImVec2 topLeft, float size, std::optional<ImVe
 
 // Three lines under the images, always there so that nothing moves when the pointer arrives:
 // the ΔE00 of the pixel under it and its colour in the target and in the candidate.
-void drawPixelReadout(const EditorState& state, const CandidateView& candidate,
-                      std::optional<ImVec2> pointer) {
-    const auto readout = pointer ? readPixel(state.evolution.targetPicture.get(),
-                                             candidate.picture.get(), candidate.deltaEMap.get(),
-                                             pointer->x, pointer->y, candidate.flipMap.get())
+void drawPixelReadout(const Comparison& compared, std::optional<ImVec2> pointer) {
+    const CandidateView& candidate = compared.material;
+    const auto readout = pointer ? readPixel(compared.targetPicture, candidate.picture.get(),
+                                             candidate.deltaEMap.get(), pointer->x, pointer->y,
+                                             candidate.flipMap.get())
                                  : std::nullopt;
     if (!readout) {
         ImGui::TextColored(kMutedTextColor, "Point at an image: the ΔE00 and colours of a pixel");
@@ -154,15 +164,16 @@ void drawPixelReadout(const EditorState& state, const CandidateView& candidate,
         hoverHint(srgb.c_str());
     };
     swatch("target", readout->target);
-    swatch("candidate", readout->candidate);
+    swatch(compared.name, readout->candidate);
 }
 
 // The comparison images; returns where the pointer is over one of them.
-std::optional<ImVec2> drawComparison(EditorState& state, const CandidateView& candidate,
-                                     float width, float height) {
+std::optional<ImVec2> drawComparison(EditorState& state, const Comparison& compared, float width,
+                                     float height) {
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
-    const ImTextureID target = state.evolution.targetImage;
+    const ImTextureID target = compared.target;
+    const CandidateView& candidate = compared.material;
     switch (state.compareMode) {
         case CompareMode::SideBySide: {
             // Target, candidate and its heatmap: equal sizes, so they are judged alike.
@@ -173,23 +184,24 @@ std::optional<ImVec2> drawComparison(EditorState& state, const CandidateView& ca
             drawImage(drawList, second, size, candidate.image);
             drawImage(drawList, third, size, candidate.image, candidate.heatmap, 1.0f);
             drawLabel(drawList, origin, size, "target");
-            drawLabel(drawList, second, size, "candidate");
-            drawLabel(drawList, third, size,
-                      choiceLabel(kImageMetrics, state.evolution.heatmapMetric).data());
+            drawLabel(drawList, second, size, compared.name);
+            drawLabel(drawList, third, size, compared.heatmapLabel.c_str());
             ImGui::Dummy(ImVec2(3.0f * size + 2.0f * kGap, size));
             return pointerOver(third, size,
                                pointerOver(second, size, pointerOver(origin, size, {})));
         }
         case CompareMode::Wipe: {
             const float size = std::max(48.0f, std::min(height, width));
-            drawWipe(state, candidate, origin, size);
+            drawWipe(state, compared, origin, size);
             return pointerOver(origin, size, {});
         }
         case CompareMode::Flip: {
             const float size = std::max(48.0f, std::min(height, width));
             drawImage(drawList, origin, size, state.inspectShowsTarget ? target : candidate.image);
             drawLabel(drawList, origin, size,
-                      state.inspectShowsTarget ? "target (Space)" : "candidate (Space)");
+                      (std::string(state.inspectShowsTarget ? "target" : compared.name) +
+                       " (Space)")
+                          .c_str());
             ImGui::Dummy(ImVec2(size, size));
             return pointerOver(origin, size, {});
         }
@@ -197,9 +209,69 @@ std::optional<ImVec2> drawComparison(EditorState& state, const CandidateView& ca
     return std::nullopt;
 }
 
+// The comparison and the chromosome table beside it; in a narrow panel, the table below.
+void drawComparisonAndGenes(EditorState& state, const Comparison& compared,
+                            const MaterialFamily& family, const Genome& target) {
+    constexpr float kTableWidth = 300.0f;
+    constexpr float kMinImage = 96.0f;
+    const ImVec2 available = ImGui::GetContentRegionAvail();
+    const bool stacked = available.x < kTableWidth + 3.0f * (kMinImage + kGap);
+    const float readoutHeight = 3.0f * ImGui::GetTextLineHeightWithSpacing();
+    ImGui::BeginGroup();
+    const std::optional<ImVec2> pointer =
+        stacked ? drawComparison(state, compared, available.x, available.y * 0.5f - readoutHeight)
+                : drawComparison(state, compared, available.x - kTableWidth - kGap,
+                                 available.y - 4.0f - readoutHeight);
+    drawPixelReadout(compared, pointer);
+    ImGui::EndGroup();
+    if (!stacked) ImGui::SameLine();
+    ImGui::BeginChild("genes", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+    drawChromosomeTable(family, target, compared.material.genome);
+    ImGui::EndChild();
+}
+
+// The variant clicked in the Variants window beside the set's target, both rendered at the
+// target's size.
+void drawInspectedVariant(EditorState& state) {
+    const VariantsView& view = state.variants;
+    const std::size_t index = std::size_t(view.selected);
+    if (!view.inspectionError.empty()) {
+        ImGui::TextColored(kErrorColor, "%s", view.inspectionError.c_str());
+        return;
+    }
+    const std::optional<VariantInspection>& shown = view.inspection;
+    if (!shown || shown->index != view.selected || shown->genome != view.variants[index].genome) {
+        ImGui::TextColored(kMutedTextColor, "Rendering variant %03d at the target's size…",
+                           view.selected);
+        return;
+    }
+    ImGui::Text("variant %03d   mean ΔE00 %.2f to the target", shown->index, shown->meanDeltaE00);
+    ImGui::SameLine();
+    ImGui::TextColored(kMutedTextColor, "(both at %d px)", shown->size);
+    drawCompareModes(state);
+    CandidateView variant;
+    variant.rank = shown->index;
+    variant.meanDeltaE00 = shown->meanDeltaE00;
+    variant.genome = shown->genome;
+    variant.image = shown->variant;
+    variant.heatmap = shown->heatmap;
+    variant.picture = shown->picture;
+    variant.deltaEMap = shown->deltaEMap;
+    const Comparison compared{shown->target, shown->targetPicture.get(), std::move(variant),
+                              "variant", "ΔE00"};
+    const auto& set = state.preset.variantSet;
+    drawComparisonAndGenes(state, compared, set ? set->family : state.preset.family,
+                           set ? set->target : state.preset.target);
+}
+
 }  // namespace
 
 void drawInspectPanel(EditorState& state) {
+    if (state.variants.selected >= 0 &&
+        std::size_t(state.variants.selected) < state.variants.variants.size()) {
+        drawInspectedVariant(state);
+        return;
+    }
     if (state.evolution.candidates.empty()) {
         ImGui::TextColored(kMutedTextColor, "No candidates yet.");
         return;
@@ -223,23 +295,10 @@ void drawInspectPanel(EditorState& state) {
     sameLineIfFits(buttonWidth("Promote to target"));
     if (drawActions(state, candidate)) return;  // promoted: the grid is about to change
 
-    // The comparison and the chromosome table beside it; in a narrow panel, the table below.
-    constexpr float kTableWidth = 300.0f;
-    constexpr float kMinImage = 96.0f;
-    const ImVec2 available = ImGui::GetContentRegionAvail();
-    const bool stacked = available.x < kTableWidth + 3.0f * (kMinImage + kGap);
-    const float readoutHeight = 3.0f * ImGui::GetTextLineHeightWithSpacing();
-    ImGui::BeginGroup();
-    const std::optional<ImVec2> pointer =
-        stacked ? drawComparison(state, candidate, available.x, available.y * 0.5f - readoutHeight)
-                : drawComparison(state, candidate, available.x - kTableWidth - kGap,
-                                 available.y - 4.0f - readoutHeight);
-    drawPixelReadout(state, candidate, pointer);
-    ImGui::EndGroup();
-    if (!stacked) ImGui::SameLine();
-    ImGui::BeginChild("genes", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
-    drawChromosomeTable(state.preset.family, state.preset.target, candidate.genome);
-    ImGui::EndChild();
+    const Comparison compared{state.evolution.targetImage, state.evolution.targetPicture.get(),
+                              candidate, "candidate",
+                              std::string(choiceLabel(kImageMetrics, state.evolution.heatmapMetric))};
+    drawComparisonAndGenes(state, compared, state.preset.family, state.preset.target);
 }
 
 }  // namespace matevo::ui

@@ -80,8 +80,10 @@ bool drawKeptBin(EditorState& state) {
                                           ? renderOf(state.evolution, kept[i].genome)
                                           : nullptr;
         const ImVec2 at = ImGui::GetCursorScreenPos();
-        if (ImGui::InvisibleButton("tile", ImVec2(kTile + 40.0f, kTile)))
+        if (ImGui::InvisibleButton("tile", ImVec2(kTile + 40.0f, kTile))) {
             state.selected = kept[i].genome;
+            state.variants.selected = -1;  // the inspector shows the kept material
+        }
         drawImage(*ImGui::GetWindowDrawList(), ImVec2(at.x + 20.0f, at.y), kTile,
                   render ? render->image : nullptr);
         if (state.selected == kept[i].genome)

@@ -20,8 +20,8 @@ constexpr std::size_t kCustomBand = kPaperBands.size();
 
 void drawBandChoice(VariantsView& view) {
     for (std::size_t i = 0; i <= kPaperBands.size(); ++i) {
-        if (i > 0) ImGui::SameLine();
         const char* label = i < kPaperBands.size() ? kPaperBands[i].label.data() : "custom";
+        if (i > 0) sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), label));
         if (ImGui::RadioButton(label, view.bandChoice == int(i))) {
             view.bandChoice = int(i);
             if (i < kPaperBands.size()) {
@@ -40,15 +40,16 @@ void drawRequest(VariantsView& view, VariantsActions& actions) {
     drawBandChoice(view);
     ImGui::SetNextItemWidth(120.0f);
     ImGui::SliderInt("Count", &view.count, 1, 48);
-    ImGui::SameLine();
+    sameLineIfFits(labelledWidth(120.0f, "Min. apart"));
     ImGui::SetNextItemWidth(120.0f);
     ImGui::SliderFloat("Min. apart", &view.minApart, 0.0f, 10.0f, "%.1f");
     hoverHint("Mean ΔE00 between any two variants of the set");
-    ImGui::SameLine();
+    // The seed's field and its -/+ buttons.
+    sameLineIfFits(labelledWidth(90.0f + 2.0f * (ImGui::GetFrameHeight() + 4.0f), "Seed"));
     ImGui::SetNextItemWidth(90.0f);
     ImGui::InputInt("Seed", &view.seed);
     view.seed = std::max(view.seed, 0);
-    ImGui::SameLine();
+    sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Hue variety"));
     ImGui::Checkbox("Hue variety", &view.hueVariety);
     hoverHint("Beyond the paper: evolve the metal's extinction (kappa, RGB, each in [1, 4]) "
               "too, so variants may differ in colour. Off: every variant keeps the preset's "
@@ -82,14 +83,15 @@ void drawSetActions(EditorState& state, VariantsActions& actions) {
     ImGui::BeginDisabled(view.variants.empty() || view.running);
     if (ImGui::Button("Keep all")) keepVariants(state, std::nullopt);
     hoverHint("Put every variant of the set in the kept bin");
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Export set…"));
     actions.exportSet = ImGui::Button("Export set…");
-    hoverHint("glTF, GLB or MaterialX (from the extension), fitted by ΔE00 as matevo export");
-    ImGui::SameLine();
+    hoverHint("glTF, GLB or MaterialX (from the extension), fitted by ΔE00 as matevo export; "
+              "glTF checked as delivered");
+    sameLineIfFits(buttonWidth("Send to Scene window"));
     actions.sendToScene = ImGui::Button("Send to Scene window");
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Save as folder"));
     actions.save = ImGui::Button("Save as folder");
-    ImGui::SameLine();
+    sameLineIfFits(120.0f);
     ImGui::SetNextItemWidth(-1.0f);
     char path[512];
     std::snprintf(path, sizeof path, "%s", view.savePath.c_str());
@@ -122,26 +124,15 @@ int nearestOf(const VariantsView& view, std::size_t index) {
     return nearest;
 }
 
-// The selected variant beside the target, both at the size they were rendered at (or smaller
-// when the window is narrower): never enlarged.
+// Where the clicked variant is shown: the Inspect panel, beside the target at its size.
 void drawSelected(const VariantsView& view) {
     if (view.selected < 0 || std::size_t(view.selected) >= view.variants.size()) return;
-    const VariantTileView& tile = view.variants[std::size_t(view.selected)];
-    const float side = std::min(float(view.imageSize),
-                                (ImGui::GetContentRegionAvail().x - 8.0f) / 2.0f);
-    ImDrawList& drawList = *ImGui::GetWindowDrawList();
-    ImGui::BeginGroup();
-    ImGui::TextColored(kMutedTextColor, "target");
-    drawImage(drawList, ImGui::GetCursorScreenPos(), side, view.target);
-    ImGui::Dummy(ImVec2(side, side));
-    ImGui::EndGroup();
-    ImGui::SameLine(0.0f, 8.0f);
-    ImGui::BeginGroup();
-    ImGui::TextColored(kMutedTextColor, "variant %03d: ΔE00 %.2f to the target", view.selected,
-                       tile.deltaEToTarget);
-    drawImage(drawList, ImGui::GetCursorScreenPos(), side, tile.image);
-    ImGui::Dummy(ImVec2(side, side));
-    ImGui::EndGroup();
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "variant %03d is in the Inspect panel, beside the target at its size; click "
+                  "its tile again to hide it",
+                  view.selected);
+    mutedText(text);
 }
 
 void drawTiles(EditorState& state) {
@@ -170,7 +161,7 @@ void drawTiles(EditorState& state) {
             const int nearest = nearestOf(view, i);
             if (nearest >= 0)
                 ImGui::SetTooltip("variant %03zu: ΔE00 %.2f to the target; nearest: variant %03d "
-                                  "at %.2f\nClick to see it beside the target",
+                                  "at %.2f\nClick to see it beside the target in the Inspect panel",
                                   i, tile.deltaEToTarget, nearest, tile.nearestSibling);
             else
                 ImGui::SetTooltip("variant %03zu: ΔE00 %.2f to the target", i,
@@ -244,11 +235,13 @@ void keepVariants(EditorState& state, std::optional<std::size_t> index) {
                       "; the kept bin holds " + std::to_string(state.preset.kept.size()));
 }
 
-VariantsActions drawVariantsWindow(EditorState& state) {
+VariantsActions drawVariantsWindow(EditorState& state, float inspectorLeft) {
     VariantsView& view = state.variants;
     VariantsActions actions;
     if (!view.open) return actions;
-    placeFloatingWindow(ImVec2(960, 700));  // the tiles scroll
+    // The tiles scroll; the Inspect panel stays in view beside it (placeFloatingWindow's margin
+    // on the left, a gap on the right).
+    placeFloatingWindow(ImVec2(std::clamp(inspectorLeft - 48.0f, 480.0f, 960.0f), 700.0f));
     if (!ImGui::Begin("Variants", &view.open)) {
         ImGui::End();
         return actions;

@@ -7,12 +7,15 @@
 // `matevo variants --out` writes it. The set is part of the document (Preset::variantSet):
 // discarding and keeping edit the preset here, so they are undone and saved like any edit. The
 // app runs the search and the measuring (core/variants) on a worker and fills the view.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <imgui.h>
 
+#include "color/ImageDifference.h"
+#include "common/Image.h"
 #include "genome/Genome.h"
 
 namespace matevo::ui {
@@ -23,6 +26,22 @@ struct VariantTileView {
     double deltaEToTarget = 0;
     double nearestSibling = 0;
     bool kept = false;  // kept from before the last refill
+};
+
+// The selected variant as the Inspect panel shows it beside the target: both rendered at the
+// target's size (not the tiles enlarged), with the variant's ΔE00 map. Filled by the app.
+struct VariantInspection {
+    Genome genome;  // the variant shown
+    int index = 0;  // its tile
+    int size = 0;   // what both were rendered at, in pixels
+    double meanDeltaE00 = 0;
+    ImTextureID target = nullptr;
+    ImTextureID variant = nullptr;
+    ImTextureID heatmap = nullptr;  // the ΔE00 map, coloured
+    // Host copies, for the inspector's readout of the pixel under the pointer.
+    std::shared_ptr<const Image> targetPicture;
+    std::shared_ptr<const Image> picture;
+    std::shared_ptr<const ErrorMap> deltaEMap;
 };
 
 struct VariantsView {
@@ -46,7 +65,11 @@ struct VariantsView {
     ImTextureID target = nullptr;
     int imageSize = 0;  // what the target and variants were rendered at, in pixels
     std::vector<VariantTileView> variants;
-    int selected = -1;  // the variant shown beside the target at imageSize (a click on its tile)
+    // The variant the Inspect panel shows beside the target (a click on its tile; a click on a
+    // candidate's tile clears it).
+    int selected = -1;
+    std::optional<VariantInspection> inspection;  // its renders, once made
+    std::string inspectionError;                  // why they could not be made
     std::vector<std::vector<double>> pairwise;
     std::string savePath = "variants-out";
     int keptInFamily = 0;       // kept materials of the preset's family (the editor's kept bin)
@@ -70,7 +93,9 @@ void discardVariant(EditorState& state, std::size_t index);
 // Puts variant `index` (nothing: all of them) into the kept bin; says so in the status bar.
 void keepVariants(EditorState& state, std::optional<std::size_t> index);
 
-// A floating window, drawn while state.variants.open; its close button clears it.
-VariantsActions drawVariantsWindow(EditorState& state);
+// A floating window, drawn while state.variants.open; its close button clears it. It first opens
+// left of `inspectorLeft` (the Inspect panel's left edge), so that a clicked variant is seen
+// there beside the target.
+VariantsActions drawVariantsWindow(EditorState& state, float inspectorLeft);
 
 }  // namespace matevo::ui

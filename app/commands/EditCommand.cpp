@@ -3,6 +3,8 @@
 #include "ChoiceHelp.h"
 #include "PresetOption.h"
 #include "RenderBackend.h"
+#include "WorkEstimate.h"
+#include "common/MemoryBudget.h"
 #include "commands/Commands.h"
 #include "editor/EditorApp.h"
 #include "files/TextFile.h"
@@ -30,7 +32,7 @@ constexpr const char* kHelp =
     "                     wait-scene, undo, redo, resize W H, check-layout,\n"
     "                     screenshot PATH, redraw, save PATH, variants-hue on|off,\n"
     "                     variants N, wait-variants, discard-variant I, refill-variants,\n"
-    "                     save-variants PATH, quit\n"
+    "                     variants-inspect I, save-variants PATH, export-set PATH, quit\n"
     "  --frames N         quit after N frames\n"
     "  --size WxH         initial window size (default 1280x800)\n"
     "  --backend {backends}  where candidate tiles and Compare metrics render (default gpu;\n"
@@ -70,6 +72,12 @@ int runEdit(CommandLine& args) {
     if (auto backend = args.option("--backend"))
         options.backend = parseRenderBackend(*backend, "--backend");
     options.validation = args.flag("--validate");
+    // Export set is refused past --max-memory as `matevo export` is, by the same estimate.
+    options.checkExportMemory = [](const ui::ExportRequest& request,
+                                   const ExportSettings& settings) -> Status {
+        const WorkEstimate estimate = exportSetEstimate(request.materials, settings, {});
+        return checkMemoryEstimate(estimate.bytes, "Export set of " + estimate.what);
+    };
     options.reportTimings = args.flag("--report-timings");
     const auto positionals = args.positionals();
     if (positionals.size() > 1) throw UsageError("expected at most one PRESET");

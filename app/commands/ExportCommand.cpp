@@ -177,19 +177,6 @@ void writeImages(const ExportReport& report, const fs::path& folder) {
     }
 }
 
-// The set's textures are read here to be counted (fitting reads them again; they are small
-// next to the renders); a set whose textures cannot be read fails in the fit, naming them.
-void checkExportEstimate(const std::vector<MaterialFile>& materials,
-                         const ExportSettings& settings, const GltfAsset& asset) {
-    const auto textures = loadSceneTextures(materials.front(), materials.front().name);
-    const SceneTextures none;
-    const bool meshed = asset.arrangement != GltfArrangement::Spheres;
-    beginEstimatedWork(exportEstimate(
-        materials.size(), settings.fit.imageSize, settings.fit.maxEvaluations, settings.reportSize,
-        asset.instances.size(),
-        sceneContentsOf(meshed ? &asset.mesh : nullptr, textures ? *textures : none)));
-}
-
 }  // namespace
 
 int runExport(CommandLine& args) {
@@ -256,7 +243,7 @@ int runExport(CommandLine& args) {
         asset.instances = layoutInstances(
             int(instanceCount.value_or((long long)materials.size())), InstanceLayout::Crowd,
             int(materials.size()), seed);
-    checkExportEstimate(materials, settings, asset);
+    beginEstimatedWork(exportSetEstimate(materials, settings, asset));
     auto renderer = createCommandRenderer(rendererRequest, SceneTextures{});
     ProgressBar progress(int(materials.size()));
     auto report = exportMaterials(

@@ -154,15 +154,6 @@ struct VariantsJob {
     GltfDelivery* gltf = nullptr;   // with --deliver gltf
 };
 
-// --deliver gltf: the check's view of the glTF conversion (variants/DeliveryCheck.h).
-DeliveryFormat gltfFormat(GltfDelivery& gltf, const ExportSettings& settings) {
-    return {"gltf",
-            [&gltf](std::span<const Genome> genomes, int attempt) {
-                return gltf.render(genomes, attempt);
-            },
-            GltfDelivery::kConversions, settings.fit.goalMeanDeltaE00};
-}
-
 // One search and the set chosen from it: the whole set, or one block.
 struct FoundSet {
     VariantSet set;
@@ -173,7 +164,7 @@ struct FoundSet {
 FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
                  const std::string& progressLabel) {
     std::optional<DeliveryFormat> delivery;
-    if (job.gltf) delivery = gltfFormat(*job.gltf, ExportSettings{});
+    if (job.gltf) delivery = job.gltf->format();
     auto found = findVariants({job.preset.target, job.preset.family, job.preset.baseKappa}, request,
                               job.settings, job.fitnessRender, job.outputRender, stopToken(),
                               [&progressLabel](const VariantSearchProgress& progress) {

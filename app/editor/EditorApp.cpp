@@ -257,7 +257,7 @@ EditorApp::EditorApp(const EditorOptions& options)
     evolution_ = &add(std::make_unique<EvolutionController>(context, timings_));
     add(std::make_unique<CompareMetricsController>(context));
     variants_ = &add(std::make_unique<VariantsController>(context));
-    export_ = &add(std::make_unique<ExportController>(context));
+    export_ = &add(std::make_unique<ExportController>(context, options.checkExportMemory));
     scene_ = &add(std::make_unique<SceneController>(context, sceneTimings_));
     std::signal(SIGTERM, onTerminationSignal);
     std::signal(SIGINT, onTerminationSignal);

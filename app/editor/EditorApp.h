@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "EditorScript.h"
+#include "ExportWorker.h"
 #include "documents/Preset.h"
 #include "render/PopulationRenderer.h"
 
@@ -22,6 +23,8 @@ struct EditorOptions {
     bool reportTimings = false;
     int width = 1280;
     int height = 800;
+    // Refuses an export past the memory limit (--max-memory), by `matevo export`'s estimate.
+    ExportMemoryCheck checkExportMemory;
 };
 
 // Exit status: 0 normal close, 2 no display (the message names the headless commands),

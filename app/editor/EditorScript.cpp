@@ -62,6 +62,7 @@ const std::map<std::string, Grammar>& grammar() {
         {"variants", {Kind::Variants, 1, false, 1, 48}},
         {"wait-variants", {Kind::WaitVariants, 0, false}},
         {"discard-variant", {Kind::DiscardVariant, 1, false, 0, 47}},
+        {"variants-inspect", {Kind::InspectVariant, 1, false, 0, 47}},
         {"refill-variants", {Kind::RefillVariants, 0, false}},
         {"save-variants", {Kind::SaveVariants, 0, true}},
         {"variants-keep", {Kind::KeepVariants, 0, true}},

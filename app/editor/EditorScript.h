@@ -34,6 +34,8 @@
 //   variants N              open the Variants window and find N variants (its band and spacing)
 //   wait-variants           draw until the variant search is finished and shown (120 s at most)
 //   discard-variant I       drop variant I from the set
+//   variants-inspect I      show variant I beside the target in the Inspect panel, as a click on
+//                           its tile does (wait-variants then waits for its renders)
 //   refill-variants         keep the set and find the missing variants
 //   save-variants PATH      save the set into the folder PATH, as `matevo variants --out`
 //   variants-keep all|I     put the whole set (or variant I) into the kept bin
@@ -80,6 +82,7 @@ struct ScriptAction {
         Variants,
         WaitVariants,
         DiscardVariant,
+        InspectVariant,
         RefillVariants,
         SaveVariants,
         KeepVariants,

@@ -15,8 +15,8 @@ gpu::RendererRequest exportRenderer(const FeatureContext& context) {
 
 }  // namespace
 
-ExportController::ExportController(const FeatureContext& context)
-    : worker_(context.wake, exportRenderer(context)) {}
+ExportController::ExportController(const FeatureContext& context, ExportMemoryCheck checkMemory)
+    : worker_(context.wake, exportRenderer(context), {}, std::move(checkMemory)) {}
 
 Status ExportController::showResults(ui::EditorState& state) {
     worker_.update(state);

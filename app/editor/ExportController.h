@@ -7,7 +7,7 @@ namespace matevo::editor {
 
 class ExportController final : public FeatureController {
 public:
-    explicit ExportController(const FeatureContext& context);
+    ExportController(const FeatureContext& context, ExportMemoryCheck checkMemory);
 
     Status showResults(ui::EditorState& state) override;
     void handleRequests(const ui::FrameRequests& requests, ui::EditorState& state) override;

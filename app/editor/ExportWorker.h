@@ -1,38 +1,45 @@
 #pragma once
 // Runs the editor's "Export set…" on a worker thread (BackgroundWorker, one job at a time;
-// `onUpdate` wakes the UI) with core/export, the code `matevo export` runs: each kept material
-// rendered by our renderer, its glTF parameters fitted by ΔE00, the file written atomically.
-// While it runs the status bar shows its progress; at the end, where it went and the fitted
-// ΔE00 of each material (or why it failed).
+// `onUpdate` wakes the UI) with core/export, the code `matevo export` runs: each material
+// rendered by our renderer, its glTF parameters fitted by ΔE00, the file written atomically. A
+// variant set written as glTF is also checked as delivered, as `matevo variants --deliver gltf`
+// checks it (variants/DeliveryCheck.h): each fit rendered with the glTF BRDF must still lie in
+// the band and apart from the others; the file holds the fits that were checked, and a report
+// beside it (exportReportFile) gives the figures. Before it starts, the export's memory is
+// estimated as `matevo export` estimates it, and work past the limit is refused. While it
+// runs the status bar shows its progress; at the end, the status bar and the outcome window
+// (ui::ExportOutcome) say where it went and each material's figures, or why it failed.
 #include <functional>
-#include <optional>
-#include <string>
 
 #include "BackgroundWorker.h"
 #include "EditorState.h"
 #include "ExportDialog.h"
+#include "ExportOutcome.h"
 #include "export/ExportSet.h"
 #include "gpu/PopulationRendererFactory.h"
 
 namespace matevo::editor {
 
-struct ExportResult {
-    std::optional<ExportReport> report;
-    std::string error;  // the export could not be done (e.g. a missing texture)
-};
+// Whether an export of `request` with `settings` fits in the memory limit
+// (common/MemoryBudget.h): a one-line Error when it does not. The app gives the estimate of
+// `matevo export` (app/WorkEstimate.h).
+using ExportMemoryCheck =
+    std::function<Status(const ui::ExportRequest& request, const ExportSettings& settings)>;
 
 class ExportWorker {
 public:
     // `renderer` says where our own renders are drawn (the editor's --backend); `settings` are
-    // the fit's (the defaults of `matevo export` unless a test asks for a quicker fit).
+    // the fit's (the defaults of `matevo export` unless a test asks for a quicker fit);
+    // `checkMemory` refuses work past the memory limit (none: nothing is refused).
     ExportWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer,
-                 ExportSettings settings = {});
+                 ExportSettings settings = {}, ExportMemoryCheck checkMemory = {});
     // Destroying it stops a running export after the material being fitted; nothing is written.
 
-    // Starts the export unless one is running, and says so in `state` (status bar and task).
+    // Starts the export unless one is running or it is past the memory limit, and says so in
+    // `state` (status bar and task; a refusal in the outcome window too).
     bool start(ui::ExportRequest request, ui::EditorState& state);
     // Each frame: the running export's progress into `state.task`; once it ends, its outcome in
-    // the status bar and the task cleared.
+    // the status bar and state.exportOutcome, and the task cleared.
     void update(ui::EditorState& state);
     bool busy() const { return worker_.busy(); }
     // No export running or waiting to be reported.
@@ -42,13 +49,13 @@ public:
 private:
     using Worker = BackgroundWorker<ui::ExportRequest, ExportResult>;
     ExportResult compute(const ui::ExportRequest& request, Worker::Context& context);
+    ExportResult deliver(const ui::ExportRequest& request, Worker::Context& context);
+    ExportSettings settingsFor(const ui::ExportRequest& request) const;
 
     gpu::RendererRequest rendererRequest_;
     ExportSettings settings_;
+    ExportMemoryCheck checkMemory_;
     Worker worker_;  // last: stopped first
 };
-
-// "Exported 3 materials to sets/rust.gltf (glTF 2.0): fitted ΔE00 rust 1: 0.84, …; mean 1.12".
-std::string describeExport(const ExportReport& report);
 
 }  // namespace matevo::editor

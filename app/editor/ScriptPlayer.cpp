@@ -96,6 +96,15 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::DiscardVariant:
             ui::discardVariant(state, std::size_t(action.first));
             return true;
+        case Kind::InspectVariant:
+            if (std::size_t(action.first) >= state.variants.variants.size()) {
+                effects.error = "script line " + std::to_string(action.line) +
+                                ": variants-inspect: the set shows " +
+                                std::to_string(state.variants.variants.size()) + " variants";
+                return true;
+            }
+            state.variants.selected = int(action.first);
+            return true;
         case Kind::KeepVariants:
             ui::keepVariants(state, action.text == "all" ? std::nullopt
                                                          : variantIndexOf(action.text));
@@ -103,8 +112,7 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::ExportSet: {
             if (!exportAsked_) {
                 const std::filesystem::path file = action.text;
-                std::vector<MaterialFile> materials = ui::variantSetMaterialFiles(state);
-                if (materials.empty()) {
+                if (ui::variantSetMaterialFiles(state).empty()) {
                     effects.error = "script line " + std::to_string(action.line) +
                                     ": export-set: no variant set to export";
                     return true;
@@ -114,13 +122,19 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
                                     ": export-set: " + folder.error().message;
                     return true;
                 }
-                effects.exportSet =
-                    ui::ExportRequest{std::move(materials), *exportFormatOfFile(file), file};
+                effects.exportSet = ui::exportRequest(state, ui::ExportSource::VariantSet,
+                                                      *exportFormatOfFile(file), file);
+                state.exportOutcome.reset();
                 exportAsked_ = true;
                 return false;
             }
             if (!waitFor(settled.exported, action, "export-set: the export", effects)) return false;
             exportAsked_ = false;
+            // A refused or failed export fails the script, with the editor's own words.
+            if (!state.exportOutcome || state.exportOutcome->failed)
+                effects.error = "script line " + std::to_string(action.line) + ": export-set: " +
+                                (state.exportOutcome ? state.exportOutcome->summary
+                                                     : "the export did not start");
             return true;
         }
         case Kind::Open:

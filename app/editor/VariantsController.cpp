@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "EvolutionWorker.h"
 #include "LightingPanel.h"
 #include "VariantsDisplay.h"
 #include "documents/MaterialFile.h"
@@ -36,6 +37,17 @@ Preset presetOfSet(Preset preset, const SavedVariantSet& set) {
     return preset;
 }
 
+// Whether two inspector jobs draw the same pictures.
+bool drawsTheSame(const VariantInspectJob& a, const VariantInspectJob& b) {
+    return a.variant == b.variant && a.index == b.index && a.size == b.size &&
+           a.madeFor.target == b.madeFor.target && a.madeFor.family == b.madeFor.family &&
+           a.madeFor.baseKappa == b.madeFor.baseKappa && a.madeFor.scene == b.madeFor.scene &&
+           a.madeFor.roughnessTexture == b.madeFor.roughnessTexture &&
+           a.madeFor.baseColorTexture == b.madeFor.baseColorTexture &&
+           a.presetFile == b.presetFile && a.heatmap.minDeltaE == b.heatmap.minDeltaE &&
+           a.heatmap.maxDeltaE == b.heatmap.maxDeltaE;
+}
+
 // Whether `fewer` is `more` with some members left out, the rest in order.
 bool isSubsequence(const std::vector<Genome>& fewer, const std::vector<Genome>& more) {
     std::size_t next = 0;
@@ -47,7 +59,9 @@ bool isSubsequence(const std::vector<Genome>& fewer, const std::vector<Genome>& 
 }  // namespace
 
 VariantsController::VariantsController(const FeatureContext& context)
-    : bridge_(context.bridge), worker_(context.wake, variantsRenderer(context)) {}
+    : bridge_(context.bridge),
+      inspector_(context.wake, variantsRenderer(context)),
+      worker_(context.wake, variantsRenderer(context)) {}
 
 VariantRequest VariantsController::request(const ui::VariantsView& view) const {
     VariantRequest request;
@@ -81,7 +95,64 @@ Status VariantsController::showResults(ui::EditorState& state) {
         shown_ = std::move(result);
         if (Status shown = show(state); !shown) return shown;
     }
-    return follow(state);
+    if (Status followed = follow(state); !followed) return followed;
+    return followInspection(state);
+}
+
+Status VariantsController::followInspection(ui::EditorState& state) {
+    ui::VariantsView& view = state.variants;
+    const auto& document = state.preset.variantSet;
+    const bool selected = document && view.selected >= 0 &&
+                          std::size_t(view.selected) < view.variants.size();
+    if (!selected) {
+        inspecting_.reset();
+        view.inspection.reset();
+        view.inspectionError.clear();
+        inspectionImages_.clear();
+        return Ok{};
+    }
+    VariantInspectJob wanted{presetOfSet(state.preset, *document),
+                             state.presetPath,
+                             view.variants[std::size_t(view.selected)].genome,
+                             view.selected,
+                             EvolutionWorker::kTargetSize,
+                             {double(state.heatmap.minDeltaE), double(state.heatmap.maxDeltaE)}};
+    if (!inspecting_ || !drawsTheSame(*inspecting_, wanted)) {
+        view.inspectionError.clear();
+        inspector_.start(wanted);
+        inspecting_ = std::move(wanted);
+    }
+    std::optional<VariantInspectResult> result = inspector_.take();
+    if (!result || result->variant != inspecting_->variant || result->index != inspecting_->index)
+        return Ok{};
+    if (!result->error.empty()) {
+        view.inspectionError = result->error;
+        return Ok{};
+    }
+    const std::vector<Image> pictures{result->target, result->render, result->heatmap};
+    auto shown = bridge_.upload(pictures);
+    if (!shown) return shown.error();
+    inspectionImages_ = std::move(shown).value();
+    view.inspection = ui::VariantInspection{
+        result->variant,
+        result->index,
+        result->size,
+        result->deltaE.stats.mean,
+        inspectionImages_[0]->render(),
+        inspectionImages_[1]->render(),
+        inspectionImages_[2]->render(),
+        std::make_shared<const Image>(std::move(result->target)),
+        std::make_shared<const Image>(std::move(result->render)),
+        std::make_shared<const ErrorMap>(std::move(result->deltaE))};
+    return Ok{};
+}
+
+bool VariantsController::inspectionSettled(const ui::VariantsView& view) const {
+    if (!inspecting_) return true;
+    if (inspector_.busy()) return false;
+    return !view.inspectionError.empty() ||
+           (view.inspection && view.inspection->genome == inspecting_->variant &&
+            view.inspection->index == inspecting_->index);
 }
 
 Status VariantsController::follow(ui::EditorState& state) {

@@ -10,6 +10,7 @@
 
 #include "FeatureController.h"
 #include "ImageBridge.h"
+#include "VariantInspectWorker.h"
 #include "VariantsWorker.h"
 
 namespace matevo::editor {
@@ -20,12 +21,16 @@ public:
 
     Status showResults(ui::EditorState& state) override;
     void handleRequests(const ui::FrameRequests& requests, ui::EditorState& state) override;
-    bool running() const override { return worker_.busy(); }
-    void cancel() override { worker_.cancel(); }
-    // The search or measuring is done and its result shown (what a script's wait-variants
-    // waits for).
+    bool running() const override { return worker_.busy() || inspector_.busy(); }
+    void cancel() override {
+        worker_.cancel();
+        inspector_.cancel();
+    }
+    // The search or measuring is done and its result shown, and so is the Inspect panel's
+    // variant (what a script's wait-variants waits for).
     bool settled(const ui::EditorState& state) const {
-        return !worker_.busy() && !worker_.hasResult() && shownFor_ == state.preset.variantSet;
+        return !worker_.busy() && !worker_.hasResult() && shownFor_ == state.preset.variantSet &&
+               inspectionSettled(state.variants);
     }
 
 private:
@@ -34,6 +39,10 @@ private:
     Status follow(ui::EditorState& state);
     Status show(ui::EditorState& state);
     void saveFolder(ui::EditorState& state);
+    // Keeps the Inspect panel's variant in step with the clicked tile: renders it (and the
+    // target) at the target's size on the inspector's worker, and shows the renders.
+    Status followInspection(ui::EditorState& state);
+    bool inspectionSettled(const ui::VariantsView& view) const;
     VariantRequest request(const ui::VariantsView& view) const;
 
     ImageBridge& bridge_;
@@ -41,7 +50,10 @@ private:
     std::optional<SavedVariantSet> shownFor_;    // the document's set it shows
     std::vector<Genome> discarded_;              // since the last fresh search
     std::vector<std::shared_ptr<ShownImage>> images_;  // what the window shows
-    VariantsWorker worker_;                            // last: stopped first
+    std::optional<VariantInspectJob> inspecting_;      // the Inspect panel's variant, as asked
+    std::vector<std::shared_ptr<ShownImage>> inspectionImages_;  // what the inspector shows
+    VariantInspectWorker inspector_;
+    VariantsWorker worker_;  // last: stopped first
 };
 
 }  // namespace matevo::editor

@@ -64,6 +64,14 @@ Result<std::vector<Image>> GltfDelivery::render(std::span<const Genome> genomes,
     return looks;
 }
 
+DeliveryFormat GltfDelivery::format() {
+    return {"gltf",
+            [this](std::span<const Genome> genomes, int attempt) {
+                return render(genomes, attempt);
+            },
+            kConversions, settings_.fit.goalMeanDeltaE00};
+}
+
 Result<FittedSet> GltfDelivery::fittedSet(const std::vector<Member>& members) const {
     FittedSet set{settings_, textures_, {}};
     set.settings.reportSize = outputSize_;

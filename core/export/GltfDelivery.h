@@ -16,6 +16,7 @@
 
 #include "common/Image.h"
 #include "common/Result.h"
+#include "evolve/DeliveryFormat.h"
 #include "evolve/RenderGenomes.h"
 #include "export/ExportSet.h"
 #include "genome/Genome.h"
@@ -40,6 +41,9 @@ public:
     // The delivered look of each genome by conversion `attempt` (0 or 1); fits not made yet
     // are made side by side on the worker threads.
     Result<std::vector<Image>> render(std::span<const Genome> genomes, int attempt);
+    // This conversion as the delivery check sees it: "gltf", render(), kConversions, and the
+    // fit's goal. It refers to this object, which must outlive it.
+    DeliveryFormat format();
 
     // The target (first, named targetName) and the variants (named as given) with the fits of
     // the conversions that were delivered, ready for writeExport; the report's ΔE00 is the

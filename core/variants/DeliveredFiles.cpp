@@ -21,27 +21,36 @@ std::filesystem::path deliveredFolder(const std::filesystem::path& dir) {
     return dir / "delivered";
 }
 
-nlohmann::ordered_json deliveredEntry(const DeliveredSet& delivered, std::size_t member,
-                                      std::size_t index) {
+nlohmann::ordered_json deliveredFigures(const DeliveredSet& delivered, std::size_t member) {
     const DeliveredVariant& variant = delivered.variants[member];
-    return {{"image", "delivered/" + variantStem(index) + ".png"},
-            {"de00_to_target", variant.deltaEToTarget},
+    return {{"de00_to_target", variant.deltaEToTarget},
             {"de00_to_nearest_sibling", nearestSiblings(delivered.pairwise)[member]},
             {"de00_to_matevo", variant.deltaEToMatevo},
             {"within_goal", delivered.withinGoal(member)},
             {"refitted", variant.attempt > 0}};
 }
 
-nlohmann::ordered_json deliveryJson(const DeliveredSet& delivered) {
-    return {{"format", delivered.format},
-            {"folder", "delivered"},
-            {"goal_mean_de00", delivered.goalDeltaE},
+nlohmann::ordered_json deliveredEntry(const DeliveredSet& delivered, std::size_t member,
+                                      std::size_t index) {
+    nlohmann::ordered_json entry{{"image", "delivered/" + variantStem(index) + ".png"}};
+    entry.update(deliveredFigures(delivered, member));
+    return entry;
+}
+
+nlohmann::ordered_json deliveryFigures(const DeliveredSet& delivered) {
+    return {{"goal_mean_de00", delivered.goalDeltaE},
             {"target_de00_to_matevo", delivered.targetToMatevo},
             {"pairwise_de00", delivered.pairwise},
             {"smallest_pairwise_de00", delivered.smallestPairwise},
             {"conversions", delivered.conversions},
             {"refitted", delivered.refitted},
             {"replaced", delivered.replaced}};
+}
+
+nlohmann::ordered_json deliveryJson(const DeliveredSet& delivered) {
+    nlohmann::ordered_json json{{"format", delivered.format}, {"folder", "delivered"}};
+    json.update(deliveryFigures(delivered));
+    return json;
 }
 
 std::string deliverySummary(const DeliveredSet& delivered, const VariantRequest& request) {

@@ -21,16 +21,21 @@ namespace matevo {
 // DIR/delivered.
 std::filesystem::path deliveredFolder(const std::filesystem::path& dir);
 
+// Delivered variant `member`'s measurements: ΔE00 to the target's delivered look and to its
+// nearest sibling's, ΔE00 to matevo's own render of it, whether that is within the format's
+// goal, and whether a refit was needed.
+nlohmann::ordered_json deliveredFigures(const DeliveredSet& delivered, std::size_t member);
+
 // Variant `member` of the delivered set (variant `index` of the whole set) in the report: its
-// delivered look's file, ΔE00 to the target's delivered look and to its nearest sibling's, ΔE00
-// to matevo's own render of it, whether that is within the format's goal, and whether a refit
-// was needed.
+// delivered look's file and deliveredFigures.
 nlohmann::ordered_json deliveredEntry(const DeliveredSet& delivered, std::size_t member,
                                       std::size_t index);
 
-// The report's "delivery": format, folder, goal, the target's conversion, the pairwise ΔE00 of
-// the delivered looks and its smallest entry, and how many conversions, refits and
-// replacements it took.
+// The delivered set's measurements: the goal, the target's conversion, the pairwise ΔE00 of
+// the delivered looks and its smallest entry, and the conversions, refits and replacements.
+nlohmann::ordered_json deliveryFigures(const DeliveredSet& delivered);
+
+// The report's "delivery": format, folder and deliveryFigures.
 nlohmann::ordered_json deliveryJson(const DeliveredSet& delivered);
 
 // "; delivered as gltf: 12 in band, smallest pairwise 2.10, 11 within the export goal".

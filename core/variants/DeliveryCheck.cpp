@@ -55,8 +55,10 @@ public:
         std::vector<double> belcourDistances = distancesTo(belcourLab, belcourLabs_);
         if (!variant.kept && !holds(variant.deltaEToTarget, belcourDistances)) return false;
         // The first conversion that holds, unless it misses the conversion's own goal and a
-        // later one holds within it.
+        // later one holds within it. A kept variant is delivered whatever its looks, by the
+        // first conversion that holds too, else by the first within the goal.
         std::optional<Look> chosen;
+        int chosenRank = -1;
         for (int attempt = 0; attempt < std::max(format_.attempts, 1); ++attempt) {
             auto look = checkedImages(format_.render(std::span(&variant.genome, 1), attempt), 1,
                                       format_.name);
@@ -67,11 +69,15 @@ public:
             candidate.variant.deltaEToTarget = meanDeltaE00(deliveredTargetLab_, candidate.lab);
             candidate.variant.deltaEToMatevo = meanDeltaE00(candidate.lab, belcourLab);
             candidate.distances = distancesTo(candidate.lab, deliveredLabs_);
-            if (!variant.kept && !holds(candidate.variant.deltaEToTarget, candidate.distances))
-                continue;
-            if (!chosen || candidate.variant.deltaEToMatevo <= format_.goalDeltaE)
+            const bool holdsHere = holds(candidate.variant.deltaEToTarget, candidate.distances);
+            if (!variant.kept && !holdsHere) continue;
+            const int rank = (holdsHere ? 2 : 0) +
+                             (candidate.variant.deltaEToMatevo <= format_.goalDeltaE ? 1 : 0);
+            if (rank > chosenRank) {
                 chosen = std::move(candidate);
-            if (chosen->variant.deltaEToMatevo <= format_.goalDeltaE) break;
+                chosenRank = rank;
+            }
+            if (chosenRank == 3) break;
         }
         if (!chosen) return false;
         if (chosen->variant.attempt > 0) ++result_.delivered.refitted;
@@ -171,6 +177,30 @@ Result<DeliveredVariants> checkDelivery(const VariantArchive& archive, VariantSe
         }
     }
     return std::move(checker).finish();
+}
+
+Result<DeliveredSet> deliverSetAsItIs(VariantSet set, const VariantRequest& request,
+                                      const Genome& target, const DeliveryFormat& format) {
+    for (Variant& variant : set.variants) variant.kept = true;
+    VariantRequest whole = request;
+    whole.count = int(set.variants.size());
+    // No archive: nothing is replaced, so nothing is rendered on matevo's side.
+    const RenderGenomes renderNothing = [](std::span<const Genome>) -> Result<std::vector<Image>> {
+        return internalError("the delivery of a set as it is renders no replacement");
+    };
+    auto delivered = checkDelivery(VariantArchive(request.minApart), std::move(set), whole,
+                                   target, renderNothing, format);
+    if (!delivered) return delivered.error();
+    return std::move(delivered->delivered);
+}
+
+bool deliveredHolds(const DeliveredSet& delivered, std::size_t member,
+                    const VariantRequest& request) {
+    if (!request.band.contains(delivered.variants[member].deltaEToTarget)) return false;
+    const std::vector<double>& distances = delivered.pairwise[member];
+    for (std::size_t other = 0; other < distances.size(); ++other)
+        if (other != member && distances[other] < request.minApart) return false;
+    return true;
 }
 
 }  // namespace matevo

@@ -9,13 +9,12 @@
 // member of the search's archive, in chooseVariantSet's order, that holds on both renders. So
 // the set delivered meets the request on the Belcour render and in its delivery format.
 #include <cstddef>
-#include <functional>
-#include <span>
 #include <string>
 #include <vector>
 
 #include "common/Image.h"
 #include "common/Result.h"
+#include "evolve/DeliveryFormat.h"
 #include "evolve/RenderGenomes.h"
 #include "genome/Genome.h"
 #include "variants/VariantArchive.h"
@@ -23,18 +22,6 @@
 #include "variants/VariantSet.h"
 
 namespace matevo {
-
-// A format a set is delivered in, as the check sees it.
-struct DeliveryFormat {
-    std::string name;  // "gltf", for reports
-    // Each genome's delivered look at the output size, by conversion `attempt` (0: the ordinary
-    // conversion; each later one spends more effort). The same genome and attempt give the
-    // same image every time.
-    std::function<Result<std::vector<Image>>(std::span<const Genome> genomes, int attempt)> render;
-    int attempts = 2;
-    // The conversion's goal: mean ΔE00 between a delivered look and matevo's render of it.
-    double goalDeltaE = 2.0;
-};
 
 struct DeliveredVariant {
     Image image;                // the delivered look at the output size
@@ -68,10 +55,23 @@ struct DeliveredVariants {
 
 // Checks `chosen` (chooseVariantSet's set from `archive`) in `format`, refitting and refilling
 // as above; `outputRender` as for chooseVariantSet (it renders refill candidates). Variants the
-// user kept stay whatever their delivered look. An Error when rendering or converting failed.
+// user kept stay whatever their delivered look (by the first conversion that holds, else the
+// first within the goal). An Error when rendering or converting failed.
 Result<DeliveredVariants> checkDelivery(const VariantArchive& archive, VariantSet chosen,
                                         const VariantRequest& request, const Genome& target,
                                         const RenderGenomes& outputRender,
                                         const DeliveryFormat& format);
+
+// `set` delivered as it is (the editor's Export set exports the user's set whole): every
+// variant is delivered whatever its look, as kept variants are above, refitted when its first
+// conversion leaves the band or the spacing or misses the goal; none is replaced. Which
+// variants still hold as delivered is deliveredHolds'.
+Result<DeliveredSet> deliverSetAsItIs(VariantSet set, const VariantRequest& request,
+                                      const Genome& target, const DeliveryFormat& format);
+
+// Whether delivered variant `member` lies in the band from the target's delivered look and at
+// least minApart from every other delivered variant.
+bool deliveredHolds(const DeliveredSet& delivered, std::size_t member,
+                    const VariantRequest& request);
 
 }  // namespace matevo

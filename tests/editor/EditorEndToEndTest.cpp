@@ -227,35 +227,85 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     auto shotFile = readImage(dir / "variants.png");
     ASSERT_TRUE(shotFile.ok()) << shotFile.error().message;
     const Screenshot shot(*shotFile);
-    // The row of tiles in the Variants window (first shown at ImGui's (60, 60), 960 wide, below
-    // its two lines of text and three rows of controls): the target and the four variants.
-    // They are dark red in the paper scene, so "lit" starts low: above the tiles' dark backdrop,
-    // which keeps each sphere apart from the window's lighter background.
-    const auto tiles = spheres(shot, {60, 230, 1020, 385}, 3000, 30);
+    // The tiles in the Variants window (first shown at (40, 40), left of the Inspect panel, below
+    // its two lines of text and three rows of controls): the target and the four variants, in
+    // two rows. They are dark red in the paper scene, so "lit" starts low: above the tiles' dark
+    // backdrop, which keeps each sphere apart from the window's lighter background.
+    const ui::PanelLayout layout = ui::layoutPanels(ImVec2(float(kWidth), float(kHeight)));
+    const auto tiles =
+        spheres(shot, {45, 230, int(layout.inspect.position.x) - 20, 600}, 3000, 30);
     EXPECT_EQ(tiles.size(), 5u) << "sphere tiles in the Variants window";
     fs::remove_all(dir);
 }
 
-// The goal session, in the editor alone: find a set, keep all of it, export it to GLB, save the
-// document, reopen it; then a new editor process restores the set from the saved document.
-// Checked in the files: the document holds the set and the kept bin, the GLB (read back with
-// tinygltf) holds the set's materials by name, and the restored set saves the same members.
+// Mean absolute difference of two screenshots' sRGB values over `area`, per channel value.
+double meanDifference(const Screenshot& a, const Screenshot& b, const PixelRect& area) {
+    double sum = 0.0;
+    for (int y = area.y0; y < area.y1; ++y)
+        for (int x = area.x0; x < area.x1; ++x)
+            for (int c = 0; c < 3; ++c) sum += std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c]));
+    return sum / (3.0 * double(area.x1 - area.x0) * double(area.y1 - area.y0));
+}
+
+// The spheres the Inspect panel sets side by side, left to right (target first).
+std::vector<Blob> inspectedSpheres(const Screenshot& shot) {
+    const ui::PanelLayout layout = ui::layoutPanels(ImVec2(float(kWidth), float(kHeight)));
+    std::vector<Blob> found = spheres(shot, toPixels(layout.inspect, 60), 150, 60);
+    std::sort(found.begin(), found.end(),
+              [](const Blob& a, const Blob& b) { return a.bounds.x0 < b.bounds.x0; });
+    return found;
+}
+
+// The goal session, in the editor alone: the studio lighting, find a set, see a variant beside
+// the target in the Inspect panel, show the set in the Scene window on the shader ball, keep
+// all of it, export it to GLB (checked as delivered), save the document, reopen it; then a new
+// editor process restores the set from the saved document. Checked in the files: the document
+// holds the lighting, the set and the kept bin; the GLB (read back with tinygltf) holds the set's
+// materials by name and the report beside it the delivered figures; the screenshots show the
+// clicked variants in the inspector and the set (not the population) in the Scene window; the
+// restored set saves the same members.
 TEST(EditorVariantDocument, FindKeepExportSaveAndReopen) {
     const fs::path dir = freshDirectory("document");
     const std::string preset = std::string(MATEVO_SOURCE_DIR) + "/presets/validation_metal.json";
+    const auto shot = [&dir](const std::string& name) {
+        return "screenshot " + (dir / (name + ".png")).string() + "\n";
+    };
     const CommandOutput run = playSession(dir,
+                                          "lighting studio\n"
                                           "variants 4\n"
                                           "wait-variants\n"
-                                          "variants-keep all\n"
-                                          "export-set " + (dir / "set.glb").string() + "\n"
-                                          "save-document " + (dir / "doc.json").string() + "\n"
-                                          "open " + (dir / "doc.json").string() + "\n"
-                                          "wait-variants\n",
+                                          "variants-inspect 1\n"
+                                          "wait-variants\n" +
+                                              shot("inspect1") +
+                                              "variants-inspect 2\n"
+                                              "wait-variants\n" +
+                                              shot("inspect2") +
+                                              "variants-keep all\n"
+                                              "scene open\n"
+                                              "scene-mesh shaderball\n"
+                                              "scene-show variants\n"
+                                              "wait-scene\n" +
+                                              shot("scene_variants") +
+                                              "scene-show kept\n"
+                                              "wait-scene\n" +
+                                              shot("scene_kept") +
+                                              "scene-show population\n"
+                                              "wait-scene\n" +
+                                              shot("scene_population") +
+                                              "scene-show variants\n"
+                                              "export-set " + (dir / "set.glb").string() + "\n"
+                                              "save-document " + (dir / "doc.json").string() + "\n"
+                                              "open " + (dir / "doc.json").string() + "\n"
+                                              "wait-variants\n",
                                           preset);
     ASSERT_EQ(run.exitCode, 0) << run.err;
 
     std::ifstream documentFile(dir / "doc.json");
     const auto document = nlohmann::json::parse(documentFile);
+    // The studio lighting is the document's scene.
+    ASSERT_TRUE(document.contains("scene")) << document.dump(2);
+    EXPECT_EQ(document.at("scene").value("mode", ""), "environment") << document.dump(2);
+    EXPECT_EQ(document.at("scene").value("environment", "studio"), "studio") << document.dump(2);
     ASSERT_TRUE(document.contains("variant_set")) << document.dump(2);
     const auto& variants = document.at("variant_set").at("variants");
     ASSERT_EQ(variants.size(), 4u);
@@ -272,18 +322,97 @@ TEST(EditorVariantDocument, FindKeepExportSaveAndReopen) {
     for (std::size_t i = 0; i < 4; ++i)
         EXPECT_EQ(model.materials[i].name, name + " variant_00" + std::to_string(i));
 
+    // The export was checked as delivered: per variant its fitted ΔE00 and whether it is within
+    // the goal, where it lies on the glTF BRDF's render, and the count of those that hold.
+    std::ifstream reportFile(dir / "set.export.json");
+    ASSERT_TRUE(reportFile.good()) << "no report beside set.glb";
+    const auto report = nlohmann::json::parse(reportFile);
+    const auto& delivery = report.at("delivery");
+    EXPECT_EQ(delivery.at("format"), "gltf");
+    EXPECT_EQ(delivery.at("band"), nlohmann::json::array({2.0, 5.0}));
+    int holding = 0;
+    ASSERT_EQ(report.at("variants").size(), 4u);
+    for (const auto& variant : report.at("variants")) {
+        const auto& delivered = variant.at("delivered");
+        const double toTarget = delivered.at("de00_to_target").get<double>();
+        const bool holds = toTarget >= 2.0 && toTarget <= 5.0 &&
+                           delivered.at("de00_to_nearest_sibling").get<double>() >= 2.0;
+        EXPECT_EQ(delivered.at("in_band_and_apart").get<bool>(), holds) << variant.dump();
+        EXPECT_EQ(variant.at("within_goal").get<bool>(),
+                  delivered.at("de00_to_matevo").get<double>() <= 2.0)
+            << variant.dump();
+        holding += holds ? 1 : 0;
+    }
+    EXPECT_EQ(delivery.at("in_band_and_apart").get<int>(), holding);
+
+    // The Inspect panel follows the clicked variant: the target stays, the variant beside it
+    // changes from variant 1 to variant 2.
+    auto first = readImage(dir / "inspect1.png");
+    auto second = readImage(dir / "inspect2.png");
+    ASSERT_TRUE(first.ok() && second.ok());
+    const std::vector<Blob> one = inspectedSpheres(Screenshot(*first));
+    const std::vector<Blob> two = inspectedSpheres(Screenshot(*second));
+    ASSERT_GE(one.size(), 2u) << "target and variant in the Inspect panel";
+    ASSERT_GE(two.size(), 2u) << "target and variant in the Inspect panel";
+    const auto rgbDistance = [](const Blob& a, const Blob& b) {
+        return std::abs(a.meanRgb[0] - b.meanRgb[0]) + std::abs(a.meanRgb[1] - b.meanRgb[1]) +
+               std::abs(a.meanRgb[2] - b.meanRgb[2]);
+    };
+    EXPECT_LT(rgbDistance(one[0], two[0]), 0.5) << "the target stays";
+    EXPECT_GT(rgbDistance(one[1], two[1]) + std::abs(one[1].pixels - two[1].pixels), 1.0)
+        << "the variant beside it is the clicked one";
+    EXPECT_EQ(one[0].bounds.y0, one[1].bounds.y0) << "side by side";
+
+    // The Scene window wears the set: what it shows for the set is what it shows for the kept
+    // bin (which holds the same four), and not what it shows for the population.
+    auto sceneVariants = readImage(dir / "scene_variants.png");
+    auto sceneKept = readImage(dir / "scene_kept.png");
+    auto scenePopulation = readImage(dir / "scene_population.png");
+    ASSERT_TRUE(sceneVariants.ok() && sceneKept.ok() && scenePopulation.ok());
+    const PixelRect sceneImage{50, 140, 790, 550};  // inside the Scene window, first at (40, 40)
+    const Screenshot variantsShot(*sceneVariants);
+    EXPECT_GE(variantsShot.litBlobs(sceneImage, 40, 170).size(), 4u) << "lit shader balls";
+    const double sameSet = meanDifference(variantsShot, Screenshot(*sceneKept), sceneImage);
+    const double otherMaterials =
+        meanDifference(variantsShot, Screenshot(*scenePopulation), sceneImage);
+    EXPECT_LT(sameSet, 0.2) << "the set and the kept bin are the same four materials";
+    EXPECT_GT(otherMaterials, 4.0 * sameSet + 0.2) << "the population is not the set";
+
     // A new session on the saved document shows the same set: saved as a folder, the same
     // four members in order.
     const CommandOutput reopened = playSession(
         dir, "wait-variants\nsave-variants " + (dir / "again").string() + "\nwait 2\n",
         (dir / "doc.json").string());
     ASSERT_EQ(reopened.exitCode, 0) << reopened.err;
-    std::ifstream reportFile(dir / "again/report.json");
-    const auto report = nlohmann::json::parse(reportFile);
-    ASSERT_EQ(report.at("variants").size(), 4u);
+    std::ifstream againFile(dir / "again/report.json");
+    const auto again = nlohmann::json::parse(againFile);
+    ASSERT_EQ(again.at("variants").size(), 4u);
     for (std::size_t i = 0; i < 4; ++i)
-        EXPECT_DOUBLE_EQ(report.at("variants")[i].at("genome").at("eta2").get<double>(),
+        EXPECT_DOUBLE_EQ(again.at("variants")[i].at("genome").at("eta2").get<double>(),
                          variants[i].at("genome").value("eta2", 0.0));
+    fs::remove_all(dir);
+}
+
+// Export set past --max-memory is refused before it starts, as `matevo export` refuses it: the
+// script's export-set fails with the editor's one-line reason, and nothing is written.
+TEST(EditorVariantDocument, ExportSetPastTheMemoryLimitIsRefused) {
+    const fs::path dir = freshDirectory("memory");
+    fs::create_directories(dir / "config");
+    std::ofstream(dir / "script.txt") << "wait 2\nvariants 2\nwait-variants\nexport-set "
+                                      << (dir / "set.glb").string() << "\nquit\n";
+    const CommandOutput run = runCommand(
+        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+        "/matevo' edit '" + MATEVO_SOURCE_DIR + "/presets/validation_metal.json' --validate " +
+        "--max-memory 1M --script '" + (dir / "script.txt").string() + "' --frames 100000");
+    EXPECT_EQ(run.exitCode, 1) << run.err;
+    EXPECT_NE(run.err.find("export-set: Export refused: Export set of 2 materials reported at "
+                           "256x256 needs about "),
+              std::string::npos)
+        << run.err;
+    EXPECT_NE(run.err.find("more than the limit of 1 MiB (--max-memory raises it"),
+              std::string::npos)
+        << run.err;
+    EXPECT_FALSE(fs::exists(dir / "set.glb"));
     fs::remove_all(dir);
 }
 

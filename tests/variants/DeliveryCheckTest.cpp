@@ -143,3 +143,51 @@ TEST(DeliveryCheck, AConversionPastItsGoalIsRefittedAndKeptOnlyWhenTheRefitIsWit
 
 }  // namespace
 }  // namespace matevo
+
+namespace matevo {
+namespace {
+
+// The editor's Export set delivers the user's set as it is: every variant is delivered, none is
+// replaced; one whose first conversion leaves the band is refitted, and the check says which
+// still hold as delivered.
+TEST(DeliveryCheck, ASetDeliveredAsItIsKeepsEveryVariantAndSaysWhichHold) {
+    VariantRequest request;
+    request.band = {2.0, 8.0};
+    request.minApart = 2.0;
+    const Genome target = genomeOfLightness(50.0);
+    const std::vector<Genome> genomes{genomeOfLightness(55.0), genomeOfLightness(44.5),
+                                      genomeOfLightness(47.0)};
+    auto set = measureVariantSet(target, genomes, RenderGenomes(renderGreys));
+    ASSERT_TRUE(set.ok());
+    // 55 converts to 50.5 (out of the band) at first and right when refitted; 44.5 converts to
+    // 46.5 every time: in band, but 0.5 L* from 47.
+    std::map<std::pair<double, int>, int> conversions;
+    const DeliveryFormat format{
+        "grey",
+        [&](std::span<const Genome> asked, int attempt) -> Result<std::vector<Image>> {
+            std::vector<Image> images;
+            for (const Genome& genome : asked) {
+                ++conversions[{genome[0], attempt}];
+                const double look = genome[0] == 55.0 && attempt == 0 ? 50.5
+                                    : genome[0] == 44.5               ? 46.5
+                                                                      : genome[0];
+                images.push_back(greyOfLightness(look));
+            }
+            return images;
+        },
+        2, 2.0};
+    auto delivered = deliverSetAsItIs(std::move(set).value(), request, target, format);
+    ASSERT_TRUE(delivered.ok()) << delivered.error().message;
+    ASSERT_EQ(delivered->variants.size(), 3u) << "nothing is dropped";
+    EXPECT_EQ(delivered->replaced, 0u);
+    EXPECT_EQ(delivered->variants[0].attempt, 1) << "refitted into the band";
+    EXPECT_TRUE(deliveredHolds(*delivered, 0, request));
+    // 44.5 and 47 are both delivered, too close: neither holds; each tried its refit too.
+    EXPECT_FALSE(deliveredHolds(*delivered, 1, request));
+    EXPECT_FALSE(deliveredHolds(*delivered, 2, request));
+    EXPECT_EQ(conversions[std::pair(47.0, 1)], 1);
+    EXPECT_LT(delivered->pairwise[1][2], request.minApart);
+}
+
+}  // namespace
+}  // namespace matevo
