@@ -36,6 +36,24 @@ void drawBandChoice(VariantsView& view) {
         view.bandChoice = int(kCustomBand);
 }
 
+// Unavailable while the set must hold under several lightings: glTF is checked in the chosen
+// one, as its reference renders it (as `matevo variants --deliver gltf` refuses --env).
+void drawHoldAsDelivered(VariantsView& view) {
+    const bool severalLightings = !lightingsToHold(view.lighting, view.holdAlsoUnder).empty();
+    bool held = view.holdAsDelivered && !severalLightings;
+    ImGui::BeginDisabled(severalLightings);
+    if (ImGui::Checkbox(kHoldAsDelivered, &held)) view.holdAsDelivered = held;
+    ImGui::EndDisabled();
+    if (severalLightings) {
+        ImGui::SameLine();
+        mutedText("(not with several lightings: glTF is checked in the chosen one)");
+    } else {
+        hoverHint("Check the set as delivered in glTF too, as matevo variants --deliver gltf: "
+                  "a variant whose glTF fit leaves the band or the spacing is refitted, or "
+                  "replaced from the search's archive");
+    }
+}
+
 void drawRequest(VariantsView& view, VariantsActions& actions) {
     drawBandChoice(view);
     ImGui::SetNextItemWidth(120.0f);
@@ -55,6 +73,7 @@ void drawRequest(VariantsView& view, VariantsActions& actions) {
               "too, so variants may differ in colour. Off: every variant keeps the preset's "
               "kappa");
     drawHoldUnderLightings(view.holdAlsoUnder, view.lighting);
+    drawHoldAsDelivered(view);
     if (view.running) {
         char overlay[32];
         std::snprintf(overlay, sizeof overlay, "%.0f%%", view.progress * 100.0f);
@@ -135,6 +154,29 @@ void drawSelected(const VariantsView& view) {
     mutedText(text);
 }
 
+// The tile's figures on matevo's render, and as delivered when the set was held so.
+void drawTileHint(const VariantsView& view, std::size_t i) {
+    const VariantTileView& tile = view.variants[i];
+    char text[512];
+    int length = std::snprintf(text, sizeof text, "variant %03zu: ΔE00 %.2f to the target", i,
+                               tile.deltaEToTarget);
+    const int nearest = nearestOf(view, i);
+    if (nearest >= 0)
+        length += std::snprintf(text + length, sizeof text - std::size_t(length),
+                                "; nearest: variant %03d at %.2f", nearest, tile.nearestSibling);
+    if (tile.delivered)
+        length += std::snprintf(text + length, sizeof text - std::size_t(length),
+                                "\nas delivered in glTF: ΔE00 %.2f to the target, %.2f to the "
+                                "nearest%s; fitted ΔE00 %.2f",
+                                tile.delivered->toTarget, tile.delivered->nearest,
+                                tile.delivered->holds ? "" : " (out of band or too close)",
+                                tile.delivered->toMatevo);
+    if (nearest >= 0)
+        std::snprintf(text + length, sizeof text - std::size_t(length),
+                      "\nClick to see it beside the target in the Inspect panel");
+    ImGui::SetTooltip("%s", text);
+}
+
 void drawTiles(EditorState& state) {
     VariantsView& view = state.variants;
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
@@ -157,16 +199,7 @@ void drawTiles(EditorState& state) {
         drawImage(drawList, corner, kTileSize, tile.image);
         if (ImGui::InvisibleButton("tile", ImVec2(kTileSize, kTileSize)))
             view.selected = view.selected == int(i) ? -1 : int(i);
-        if (ImGui::IsItemHovered()) {
-            const int nearest = nearestOf(view, i);
-            if (nearest >= 0)
-                ImGui::SetTooltip("variant %03zu: ΔE00 %.2f to the target; nearest: variant %03d "
-                                  "at %.2f\nClick to see it beside the target in the Inspect panel",
-                                  i, tile.deltaEToTarget, nearest, tile.nearestSibling);
-            else
-                ImGui::SetTooltip("variant %03zu: ΔE00 %.2f to the target", i,
-                                  tile.deltaEToTarget);
-        }
+        if (ImGui::IsItemHovered()) drawTileHint(view, i);
         if (view.selected == int(i))
             drawList.AddRect(corner, ImVec2(corner.x + kTileSize, corner.y + kTileSize),
                              ImGui::GetColorU32(kAccentColor), 0.0f, 0, 2.0f);
@@ -253,6 +286,10 @@ VariantsActions drawVariantsWindow(EditorState& state, float inspectorLeft) {
     if (!view.summary.empty())
         ImGui::TextColored(view.met ? kMutedTextColor : ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s",
                            view.summary.c_str());
+    if (!view.deliveredSummary.empty())
+        ImGui::TextColored(
+            view.deliveredMet ? kMutedTextColor : ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s",
+            view.deliveredSummary.c_str());
     if (variantSetMadeForAnotherTarget(state.preset)) drawOtherTargetNotice(view, actions);
     drawSetActions(state, actions);
     drawSelected(view);

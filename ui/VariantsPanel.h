@@ -26,6 +26,14 @@ struct VariantTileView {
     double deltaEToTarget = 0;
     double nearestSibling = 0;
     bool kept = false;  // kept from before the last refill
+    // Held as delivered (VariantsView::holdAsDelivered): its delivered look's figures.
+    struct Delivered {
+        double toTarget = 0;  // mean ΔE00 to the target's delivered look
+        double nearest = 0;   // to the nearest other delivered look
+        double toMatevo = 0;  // the fit: delivered look vs matevo's render
+        bool holds = true;    // in band and apart as delivered
+    };
+    std::optional<Delivered> delivered;
 };
 
 // The selected variant as the Inspect panel shows it beside the target: both rendered at the
@@ -54,6 +62,9 @@ struct VariantsView {
     int seed = 1;
     // Beyond the paper: evolve the conductor base's kappa too, so variants may differ in colour.
     bool hueVariety = false;
+    // The search holds the set as delivered in glTF (`matevo variants --deliver gltf`); only in
+    // the chosen lighting, as the glTF reference renders it.
+    bool holdAsDelivered = false;
     // Lightings the set must hold under besides the chosen one (LightingPanel.h); `lighting`
     // is the chosen one, filled by the app.
     std::vector<std::string> holdAlsoUnder;
@@ -62,6 +73,8 @@ struct VariantsView {
     float progress = 0.0f;  // of the running search, in [0, 1]
     std::string summary;    // what the last run achieved, or why it failed
     bool met = false;
+    std::string deliveredSummary;  // held as delivered: how the set holds in glTF
+    bool deliveredMet = false;
     ImTextureID target = nullptr;
     int imageSize = 0;  // what the target and variants were rendered at, in pixels
     std::vector<VariantTileView> variants;
@@ -76,6 +89,9 @@ struct VariantsView {
     // A fresh set starts from them: they join it as they are, in band or not, apart or not.
     bool startFromKept = false;
 };
+
+// The checkbox that holds the set as delivered (VariantsView::holdAsDelivered).
+inline constexpr const char* kHoldAsDelivered = "Hold as delivered (glTF)";
 
 struct VariantsActions {
     bool run = false;        // a fresh set

@@ -59,6 +59,7 @@ const std::map<std::string, Grammar>& grammar() {
         {"save", {Kind::Save, 0, true}},
         {"variants-hue", {Kind::VariantsHue, 0, true}},
         {"variants-from-kept", {Kind::VariantsFromKept, 0, true}},
+        {"variants-deliver", {Kind::VariantsDeliver, 0, true}},
         {"variants", {Kind::Variants, 1, false, 1, 48}},
         {"wait-variants", {Kind::WaitVariants, 0, false}},
         {"discard-variant", {Kind::DiscardVariant, 1, false, 0, 47}},
@@ -96,7 +97,8 @@ std::string validateText(const ScriptAction& action) {
         for (const auto& metric : kImageMetrics) words.emplace_back(metric.name);
         return "expected " + inWords(words) + ", got '" + shortText(action.text, 40) + "'";
     }
-    if ((action.kind == Kind::VariantsHue || action.kind == Kind::VariantsFromKept) &&
+    if ((action.kind == Kind::VariantsHue || action.kind == Kind::VariantsFromKept ||
+         action.kind == Kind::VariantsDeliver) &&
         action.text != "on" && action.text != "off")
         return "expected on or off, got '" + shortText(action.text, 40) + "'";
     if (action.kind == Kind::KeepVariants && action.text != "all" &&

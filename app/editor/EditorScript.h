@@ -31,6 +31,7 @@
 //   save PATH               save the preset
 //   variants-hue on|off     the Variants window's "Hue variety" (evolve the metal's kappa too)
 //   variants-from-kept on|off  "Start from the kept bin" (off by default)
+//   variants-deliver on|off  "Hold as delivered (glTF)" (off by default; not with variants-hold)
 //   variants N              open the Variants window and find N variants (its band and spacing)
 //   wait-variants           draw until the variant search is finished and shown (120 s at most)
 //   discard-variant I       drop variant I from the set
@@ -79,6 +80,7 @@ struct ScriptAction {
         Save,
         VariantsHue,
         VariantsFromKept,
+        VariantsDeliver,
         Variants,
         WaitVariants,
         DiscardVariant,

@@ -79,6 +79,9 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::VariantsFromKept:
             state.variants.startFromKept = action.text == "on";
             return true;
+        case Kind::VariantsDeliver:
+            state.variants.holdAsDelivered = action.text == "on";
+            return true;
         case Kind::Idle:
             if (!idleUntil_) {
                 idleUntil_ =

@@ -180,6 +180,8 @@ Status VariantsController::follow(ui::EditorState& state) {
                           set.variants[i].genome) == document->variants.end()) {
                 discarded_.push_back(set.variants[i].genome);
                 removeVariant(set, i);
+                // The delivered figures were the whole set's: its spacing is no longer theirs.
+                shown_->delivered.reset();
             }
         shownFor_ = document;
         return show(state);
@@ -187,7 +189,7 @@ Status VariantsController::follow(ui::EditorState& state) {
     VariantRequest measuring = request(view);
     measuring.count = int(document->variants.size());
     if (worker_.start({presetOfSet(state.preset, *document), state.presetPath, measuring,
-                       document->variants}))
+                       document->variants, false}))
         view.running = true;
     return Ok{};
 }
@@ -208,7 +210,8 @@ void VariantsController::handleRequests(const ui::FrameRequests& requests,
         // The kept bin is where a set may start: its materials join as they are.
         if (view.startFromKept) fresh.keep = keptGenomesOfFamily(state.preset);
         discarded_.clear();
-        if (worker_.start({state.preset, state.presetPath, fresh, std::nullopt}))
+        if (worker_.start({state.preset, state.presetPath, fresh, std::nullopt,
+                           view.holdAsDelivered}))
             view.running = true;
     }
     auto& document = state.preset.variantSet;
@@ -229,7 +232,8 @@ void VariantsController::handleRequests(const ui::FrameRequests& requests,
         const Preset preset = variantSetMadeForAnotherTarget(state.preset)
                                   ? state.preset
                                   : presetOfSet(state.preset, *document);
-        if (worker_.start({preset, state.presetPath, refill, std::nullopt})) view.running = true;
+        if (worker_.start({preset, state.presetPath, refill, std::nullopt, view.holdAsDelivered}))
+            view.running = true;
     }
     if (actions.save) saveFolder(state);
 }

@@ -2,15 +2,20 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <utility>
 
 #include "documents/PresetTextures.h"
+#include "export/GltfDelivery.h"
+#include "fitness/RenderGenomesWith.h"
 #include "scene/SceneTextures.h"
 
 namespace matevo::editor {
 
-VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer)
+VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer,
+                               VariantSearchSettings search)
     : rendererRequest_(std::move(renderer)),
+      search_(search),
       worker_(
           JobPolicy::OneAtATime, std::move(onUpdate),
           [this](const VariantsJob& job, Worker::Context& context) {
@@ -25,7 +30,7 @@ VariantsWorker::VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequ
 VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& context) {
     const auto started = std::chrono::steady_clock::now();
     VariantsResult result{
-        job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, false, {}};
+        job.preset, job.presetFile, {job.request, kOutputSize, kFitnessSize}, {}, false, {}, {}};
     const Preset& preset = job.preset;
     auto textures = loadSceneTextures(preset, job.presetFile);
     if (!textures) {
@@ -61,7 +66,22 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& 
         result.measured = true;
         return result;
     }
-    const VariantSearchSettings settings;
+    VariantSearchSettings settings = search_;
+    // Held as delivered: as `matevo variants --deliver gltf`, the archive keeps as many spare
+    // variants as are asked for, to replace those whose delivered look fails, and the glTF
+    // fits are made on the search's renderer at the export's fitting size.
+    const bool deliver = job.deliver && job.request.lightings.empty();
+    std::optional<GltfDelivery> gltf;
+    std::optional<DeliveryFormat> format;
+    if (deliver) {
+        settings.spare = std::max(settings.spare, job.request.count);
+        const ExportSettings exportSettings;
+        gltf.emplace(preset.target, preset.family, preset.baseKappa, *textures, preset.scene,
+                     renderGenomesWith(lit->front().renderer, preset.family, preset.baseKappa,
+                                       preset.scene, exportSettings.fit.imageSize),
+                     kOutputSize, exportSettings);
+        format = gltf->format();
+    }
     const double wanted = double(job.request.count + settings.spare);
     auto found = findVariants(
         {preset.target, preset.family, preset.baseKappa}, job.request, settings,
@@ -70,7 +90,8 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& 
             context.reportProgress(float(std::max(double(progress.archived) / wanted,
                                                   double(progress.evaluations) /
                                                       settings.maxEvaluations)));
-        });
+        },
+        format ? &*format : nullptr);
     if (context.cancelled()) {
         result.error = "stopped";
         return result;
@@ -80,6 +101,7 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& 
         return result;
     }
     result.set = std::move(found->set);
+    result.delivered = std::move(found->delivered);
     result.run.evaluations = found->progress.evaluations;
     result.run.archived = found->progress.archived;
     result.run.closestDeltaE = found->progress.closestDeltaE;

@@ -23,6 +23,9 @@ struct VariantsJob {
     // No search: these genomes, as they are, rendered and measured against the preset's target
     // (a saved set reopened, a set after undo, or one re-measured for a changed target).
     std::optional<std::vector<Genome>> measure;
+    // The search holds the set as delivered in glTF, as `matevo variants --deliver gltf` does
+    // (the request's own lighting only; ignored when it asks for several or for `measure`).
+    bool deliver = false;
 };
 
 struct VariantsResult {
@@ -31,6 +34,7 @@ struct VariantsResult {
     VariantRun run;
     VariantSet set;
     bool measured = false;  // a set measured as it was (VariantsJob::measure), not searched
+    std::optional<DeliveredSet> delivered;  // with VariantsJob::deliver: the set as delivered
     std::string error;  // the job could not run (e.g. a missing texture)
 };
 
@@ -39,9 +43,11 @@ public:
     static constexpr int kOutputSize = 256;  // as `matevo variants`, so a saved set matches it
     static constexpr int kFitnessSize = 64;
 
-    // `renderer` says where the search renders (the editor's --backend).
+    // `renderer` says where the search renders (the editor's --backend); `search`, how long it
+    // searches (the defaults, as `matevo variants`; a test asks for less).
     // Destroying it stops a running job at its next generation.
-    VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer);
+    VariantsWorker(std::function<void()> onUpdate, gpu::RendererRequest renderer,
+                   VariantSearchSettings search = {});
     VariantsWorker(const VariantsWorker&) = delete;
     VariantsWorker& operator=(const VariantsWorker&) = delete;
 
@@ -59,6 +65,7 @@ private:
     VariantsResult compute(const VariantsJob& job, Worker::Context& context);
 
     gpu::RendererRequest rendererRequest_;
+    VariantSearchSettings search_;
     Worker worker_;  // last: stopped first
 };
 

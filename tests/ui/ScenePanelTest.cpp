@@ -51,8 +51,8 @@ TEST_F(ScenePanel, ShowsThePopulationTheVariantSetOrTheKeptBin) {
                                                    ui.state().preset.target,
                                                    ui.state().preset.baseKappa,
                                                    {variant(0.2), variant(0.3)}};
-    ui.state().variants.variants = {{variant(0.2), nullptr, 3.1, 2.5, false},
-                                    {variant(0.3), nullptr, 4.2, 2.5, false}};
+    ui.state().variants.variants = {{variant(0.2), nullptr, 3.1, 2.5, false, {}},
+                                    {variant(0.3), nullptr, 4.2, 2.5, false, {}}};
     ui.state().sceneView.open = false;
     ui::showVariantSet(ui.state().sceneView);
     EXPECT_TRUE(ui.state().sceneView.open);

@@ -29,7 +29,7 @@ protected:
         state.variants.variants.clear();
         for (std::size_t i = 0; i < 3; ++i)
             state.variants.variants.push_back(
-                {set.variants[i], nullptr, 2.0 + double(i), 2.5, false});
+                {set.variants[i], nullptr, 2.0 + double(i), 2.5, false, {}});
         state.variants.pairwise = {{0.0, 2.5, 3.0}, {2.5, 0.0, 2.6}, {3.0, 2.6, 0.0}};
         imgui.frame(draw);
     }
@@ -45,6 +45,39 @@ protected:
 
 TEST_F(VariantSetPanel, StartFromTheKeptBinIsOffByDefault) {
     EXPECT_FALSE(ui::VariantsView{}.startFromKept);
+}
+
+// As `matevo variants --deliver gltf` refuses --env: glTF is checked in the chosen lighting, so
+// the box is unavailable, and shown unticked, while the set must hold under several.
+TEST_F(VariantSetPanel, HoldAsDeliveredIsUnavailableUnderSeveralLightings) {
+    ui::VariantsView& view = ui.state().variants;
+    EXPECT_FALSE(view.holdAsDelivered) << "off by default";
+    view.open = true;
+    imgui.frame(draw);
+    imgui.click(locate("Variants", ui::kHoldAsDelivered), draw);
+    EXPECT_TRUE(view.holdAsDelivered) << "one lighting: the box ticks";
+    imgui.click(locate("Variants", ui::kHoldAsDelivered), draw);
+    EXPECT_FALSE(view.holdAsDelivered);
+    // The chosen lighting again is still one lighting.
+    view.holdAlsoUnder = {view.lighting};
+    imgui.frame(draw);
+    imgui.click(locate("Variants", ui::kHoldAsDelivered), draw);
+    EXPECT_TRUE(view.holdAsDelivered);
+    view.holdAsDelivered = false;
+
+    view.holdAlsoUnder = {"studio"};
+    imgui.frame(draw);
+    imgui.click(locate("Variants", ui::kHoldAsDelivered), draw);
+    EXPECT_FALSE(view.holdAsDelivered) << "several lightings: a click does nothing";
+    // A box ticked before stays the user's choice; unavailable, it reads unticked.
+    view.holdAsDelivered = true;
+    imgui.frame(draw);
+    imgui.click(locate("Variants", ui::kHoldAsDelivered), draw);
+    EXPECT_TRUE(view.holdAsDelivered) << "a click on the unavailable box changed it";
+    view.holdAlsoUnder.clear();
+    imgui.frame(draw);
+    imgui.click(locate("Variants", ui::kHoldAsDelivered), draw);
+    EXPECT_FALSE(view.holdAsDelivered) << "available again, the box unticks";
 }
 
 TEST_F(VariantSetPanel, KeepAllPutsTheSetInTheKeptBinAsAnUndoableEdit) {
