@@ -19,6 +19,7 @@
 #include "documents/PresetTextures.h"
 #include "experiment/Experiment.h"
 #include "export/GltfDelivery.h"
+#include "export/PresetGltfDelivery.h"
 #include "files/AtomicFile.h"
 #include "files/JsonReader.h"
 #include "files/OutputFolder.h"
@@ -472,10 +473,8 @@ int runVariants(CommandLine& args) {
     if (deliver) settings.spare = std::max(settings.spare, request.count);
     std::optional<GltfDelivery> gltf;
     if (deliver)
-        gltf.emplace(preset.target, preset.family, preset.baseKappa, *textures, preset.scene,
-                     renderGenomesWith(lit->front().renderer, preset.family, preset.baseKappa, preset.scene,
-                                       ExportSettings{}.fit.imageSize),
-                     size, ExportSettings{});
+        gltf.emplace(presetGltfDelivery(preset, *textures, lit->front().renderer, size,
+                                        ExportSettings{}));
     const VariantsJob job{preset,
                           materialFromPreset(preset, choice.file, preset.target, preset.name),
                           request,

@@ -5,6 +5,7 @@
 #include "VariantsWorker.h"
 #include "documents/PresetTextures.h"
 #include "export/GltfDelivery.h"
+#include "export/PresetGltfDelivery.h"
 #include "files/AtomicFile.h"
 #include "fitness/RenderGenomesWith.h"
 #include "variants/VariantFiles.h"
@@ -109,8 +110,8 @@ ExportResult ExportWorker::deliver(const ui::ExportRequest& request, Worker::Con
     if (!set) return failed(set.error());
     context.reportProgress(0.1f);
     // The check and the file as `matevo variants --deliver gltf` make them.
-    GltfDelivery gltf(preset.target, preset.family, preset.baseKappa, *textures, preset.scene,
-                      renderAt(settings.fit.imageSize), VariantsWorker::kOutputSize, settings);
+    GltfDelivery gltf =
+        presetGltfDelivery(preset, *textures, renderer, VariantsWorker::kOutputSize, settings);
     DeliveryFormat format = gltf.format();
     // Closing the editor stops the check before its next conversion; nothing is written.
     format.render = [&context, convert = std::move(format.render)](

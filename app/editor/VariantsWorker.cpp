@@ -6,8 +6,7 @@
 #include <utility>
 
 #include "documents/PresetTextures.h"
-#include "export/GltfDelivery.h"
-#include "fitness/RenderGenomesWith.h"
+#include "export/PresetGltfDelivery.h"
 #include "scene/SceneTextures.h"
 
 namespace matevo::editor {
@@ -75,11 +74,8 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& 
     std::optional<DeliveryFormat> format;
     if (deliver) {
         settings.spare = std::max(settings.spare, job.request.count);
-        const ExportSettings exportSettings;
-        gltf.emplace(preset.target, preset.family, preset.baseKappa, *textures, preset.scene,
-                     renderGenomesWith(lit->front().renderer, preset.family, preset.baseKappa,
-                                       preset.scene, exportSettings.fit.imageSize),
-                     kOutputSize, exportSettings);
+        gltf.emplace(presetGltfDelivery(preset, *textures, lit->front().renderer, kOutputSize,
+                                        ExportSettings{}));
         format = gltf->format();
     }
     const double wanted = double(job.request.count + settings.spare);
