@@ -1,7 +1,7 @@
 // The Variants window's search held as delivered in glTF ("Hold as delivered (glTF)"): the worker
 // runs it as `matevo variants --deliver gltf` does, on real Vulkan (lavapipe) with validation,
 // and every variant of the set it gives holds the band and the spacing as delivered, by the
-// delivered figures it keeps with the set.
+// delivered figures it keeps with the set. A script ticks the box with variants-deliver.
 #include "VariantsWorker.h"
 
 #include <chrono>
@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "../gpu/GpuTestContext.h"
+#include "EditorScript.h"
 #include "VariantsDisplay.h"
 
 namespace matevo::editor {
@@ -94,6 +95,17 @@ TEST(VariantsWorker, ASearchNotHeldAsDeliveredHasNoDeliveredFigures) {
     ASSERT_TRUE(result->error.empty()) << result->error;
     EXPECT_FALSE(result->delivered.has_value());
     test::expectNoValidationMessages(*context);
+}
+
+TEST(VariantsScript, DeliverTakesOnOrOff) {
+    auto script = parseEditorScript("variants-deliver on\nvariants-deliver off\n", "demo.txt");
+    ASSERT_TRUE(script.ok()) << script.error().message;
+    ASSERT_EQ(script->size(), 2u);
+    EXPECT_EQ((*script)[0].kind, ScriptAction::Kind::VariantsDeliver);
+    EXPECT_EQ((*script)[0].text, "on");
+    auto bad = parseEditorScript("variants-deliver gltf\n", "demo.txt");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().message, "demo.txt:1: variants-deliver: expected on or off, got 'gltf'");
 }
 
 }  // namespace
