@@ -80,8 +80,7 @@ std::optional<double> CommandLine::numberOption(const std::string& name) {
 bool CommandLine::given(const std::string& name) const { return given_.count(name) != 0; }
 
 void CommandLine::onlyWith(const std::string& option, const std::string& other) const {
-    if (given(option) && !given(other))
-        throw UsageError(option + " does nothing without " + other);
+    if (given(option) && !given(other)) throw UsageError(option + " does nothing without " + other);
 }
 
 std::vector<std::string> CommandLine::positionals() {

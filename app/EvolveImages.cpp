@@ -53,8 +53,8 @@ EvolveImagesWritten writeEvolveImages(const PresetChoice& choice,
     for (const char* folder : {"candidates", "heatmaps"}) {
         std::filesystem::create_directories(outDir / folder, error);
         if (error)
-            throw UsageError("--out: cannot create '" + (outDir / folder).string() +
-                             "' (" + error.message() + ")");
+            throw UsageError("--out: cannot create '" + (outDir / folder).string() + "' (" +
+                             error.message() + ")");
     }
     const MaterialInstance target{preset.target, preset.family, preset.baseKappa};
     const EvaluationOptions options;  // heatmaps are drawn below from the images as written

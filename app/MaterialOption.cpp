@@ -8,8 +8,8 @@ MaterialSource::MaterialSource(CommandLine& args) : presetOption_(args.option("-
 
 const PresetChoice& MaterialSource::preset() const {
     if (!preset_) {
-        preset_ = presetOption_ ? loadPresetFile(resolvePreset(*presetOption_))
-                                : loadDefaultPreset();
+        preset_ =
+            presetOption_ ? loadPresetFile(resolvePreset(*presetOption_)) : loadDefaultPreset();
         preset_->named = presetOption_.has_value();
     }
     return *preset_;

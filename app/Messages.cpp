@@ -59,10 +59,13 @@ void installStatusSinks() { matevo::setStatusSinks(printNotice, printProgress); 
 
 ExitStatus exitStatusOf(ErrorKind kind) {
     switch (kind) {
-        case ErrorKind::BadInput: return ExitStatus::BadUsage;
+        case ErrorKind::BadInput:
+            return ExitStatus::BadUsage;
         case ErrorKind::Environment:
-        case ErrorKind::Internal: return ExitStatus::InternalFailure;
-        case ErrorKind::Cancelled: return ExitStatus::Interrupted;
+        case ErrorKind::Internal:
+            return ExitStatus::InternalFailure;
+        case ErrorKind::Cancelled:
+            return ExitStatus::Interrupted;
     }
     return ExitStatus::InternalFailure;
 }

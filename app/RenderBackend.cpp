@@ -13,8 +13,9 @@ gpu::RendererRequest backendOptions(CommandLine& args, const std::string& who) {
         parseRenderBackend(args.option("--backend").value_or("gpu"), "--backend"), who);
     request.noFallback = args.flag("--no-fallback");
     if (request.noFallback && request.backend == RenderBackend::Cpu)
-        throw UsageError("--no-fallback: forbids falling back from the GPU; --backend cpu has "
-                         "nothing to fall back from");
+        throw UsageError(
+            "--no-fallback: forbids falling back from the GPU; --backend cpu has "
+            "nothing to fall back from");
     return request;
 }
 

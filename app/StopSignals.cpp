@@ -66,9 +66,12 @@ void stopIfCancelled() {
 
 std::string stoppedBy() {
     switch (stopToken().reason()) {
-        case CancelReason::None: return {};
-        case CancelReason::Request: return signalName(stopSignal());
-        case CancelReason::MemoryLimit: return "memory limit";
+        case CancelReason::None:
+            return {};
+        case CancelReason::Request:
+            return signalName(stopSignal());
+        case CancelReason::MemoryLimit:
+            return "memory limit";
     }
     return {};
 }

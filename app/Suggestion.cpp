@@ -17,8 +17,8 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
     for (std::size_t i = 1; i <= a.size(); ++i) {
         for (std::size_t j = 1; j <= b.size(); ++j) {
             const std::size_t substitution = a[i - 1] == b[j - 1] ? 0 : 1;
-            at(i, j) = std::min({at(i - 1, j) + 1, at(i, j - 1) + 1,
-                                 at(i - 1, j - 1) + substitution});
+            at(i, j) =
+                std::min({at(i - 1, j) + 1, at(i, j - 1) + 1, at(i - 1, j - 1) + substitution});
             if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
                 at(i, j) = std::min(at(i, j), at(i - 2, j - 2) + 1);
         }
@@ -28,8 +28,7 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 
 }  // namespace
 
-std::optional<std::string> closestWord(std::string_view typed,
-                                       std::span<const std::string> known) {
+std::optional<std::string> closestWord(std::string_view typed, std::span<const std::string> known) {
     // A third of the word may be wrong, at least one character and at most three.
     const std::size_t allowed = std::clamp<std::size_t>(typed.size() / 3, 1, 3);
     std::optional<std::string> best;

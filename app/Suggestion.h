@@ -8,8 +8,7 @@
 
 namespace matevo::cli {
 
-std::optional<std::string> closestWord(std::string_view typed,
-                                       std::span<const std::string> known);
+std::optional<std::string> closestWord(std::string_view typed, std::span<const std::string> known);
 // " (did you mean 'WORD'?)" or "" when nothing known is close.
 std::string didYouMean(std::string_view typed, std::span<const std::string> known);
 

@@ -200,10 +200,10 @@ WorkEstimate exportSetEstimate(const std::vector<MaterialFile>& materials,
     const auto textures = loadSceneTextures(materials.front(), materials.front().name);
     const SceneTextures none;
     const bool meshed = asset.arrangement != GltfArrangement::Spheres;
-    return exportEstimate(materials.size(), settings.fit.imageSize, settings.fit.maxEvaluations,
-                          settings.reportSize, asset.instances.size(),
-                          sceneContentsOf(meshed ? &asset.mesh : nullptr,
-                                          textures ? *textures : none));
+    return exportEstimate(
+        materials.size(), settings.fit.imageSize, settings.fit.maxEvaluations, settings.reportSize,
+        asset.instances.size(),
+        sceneContentsOf(meshed ? &asset.mesh : nullptr, textures ? *textures : none));
 }
 
 std::string describeDuration(double seconds) {

@@ -106,10 +106,11 @@ int dispatch(std::vector<std::string> args) {
         std::printf("matevo %s\n", MATEVO_VERSION);
         // What this process may use here, e.g. inside a batch job's allocation.
         if (args.size() > 1 && args[1] == "--verbose")
-            std::printf("threads: %u (CPUs this process may use: %u; MATEVO_THREADS sets it)\n"
-                        "memory limit: %s (--max-memory sets it)\n",
-                        matevo::workerThreadCount(), matevo::usableCpusOfProcess(),
-                        matevo::describeBytes(matevo::memoryLimitBytes()).c_str());
+            std::printf(
+                "threads: %u (CPUs this process may use: %u; MATEVO_THREADS sets it)\n"
+                "memory limit: %s (--max-memory sets it)\n",
+                matevo::workerThreadCount(), matevo::usableCpusOfProcess(),
+                matevo::describeBytes(matevo::memoryLimitBytes()).c_str());
         return exitCode(ExitStatus::Success);
     }
     if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {

@@ -38,8 +38,8 @@ std::optional<WallAndCpu> gridTimes(PopulationRenderer& renderer, const Grid& gr
                                     int repetitions) {
     bool failed = false;
     auto evaluateGrid = [&] {
-        failed |= !renderer.evaluate(grid.target, grid.candidates, SceneSettings{}, kImageSize)
-                       .ok();
+        failed |=
+            !renderer.evaluate(grid.target, grid.candidates, SceneSettings{}, kImageSize).ok();
     };
     evaluateGrid();
     const WallAndCpu times = medianWallAndCpu(repetitions, evaluateGrid);
@@ -79,11 +79,11 @@ void benchGpuGrid(BenchReport& report) {
     if (!cpuGrid) return;
     report.push_back({"cpu_grid64_ms", cpuGrid->wallMilliseconds,
                       "the same grid on the CPU reference renderer and core/color"});
-    report.push_back({"cpu_grid64_cpu_ms", cpuGrid->cpuMilliseconds,
-                      "the same, CPU time of every thread"});
+    report.push_back(
+        {"cpu_grid64_cpu_ms", cpuGrid->cpuMilliseconds, "the same, CPU time of every thread"});
     if (gpuGrid)
-        report.push_back({"gpu_over_cpu_grid64", gpuGrid->wallMilliseconds /
-                                                     cpuGrid->wallMilliseconds,
+        report.push_back({"gpu_over_cpu_grid64",
+                          gpuGrid->wallMilliseconds / cpuGrid->wallMilliseconds,
                           "gpu_grid64_ms / cpu_grid64_ms of this run (< 1: the GPU is faster)"});
 }
 

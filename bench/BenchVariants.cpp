@@ -52,9 +52,9 @@ Outcome measure(const Preset& preset, const SceneTextures& textures, bool novelt
         auto found = findVariants({preset.target, preset.family, preset.baseKappa}, request,
                                   settings, renderAt(kFitnessSize), renderAt(kOutputSize));
         if (!found) throw std::runtime_error(found.error().message);
-        milliseconds.push_back(std::chrono::duration<double, std::milli>(
-                                   std::chrono::steady_clock::now() - start)
-                                   .count());
+        milliseconds.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
         delivered.push_back(double(found->set.variants.size()));
         evaluations.push_back(double(found->progress.evaluations));
     }

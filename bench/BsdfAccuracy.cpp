@@ -90,7 +90,8 @@ int main(int argc, char** argv) {
     const int size = argc > 1 ? std::atoi(argv[1]) : 32;
     const int samplesPerAxis = argc > 2 ? std::atoi(argv[2]) : 32;
     if (size < 8 || size > 1024 || samplesPerAxis < 4 || samplesPerAxis > 512) {
-        std::fprintf(stderr, "usage: matevo_bsdf_accuracy [SIZE 8-1024 [SAMPLES_PER_AXIS 4-512]]\n");
+        std::fprintf(stderr,
+                     "usage: matevo_bsdf_accuracy [SIZE 8-1024 [SAMPLES_PER_AXIS 4-512]]\n");
         return 2;
     }
     std::vector<AccuracyCase> cases;

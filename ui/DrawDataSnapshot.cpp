@@ -110,11 +110,10 @@ std::vector<PixelArea> DrawDataSnapshot::changedSince(const DrawDataSnapshot& be
     const auto same = [&](std::size_t begin, std::size_t end, std::size_t otherBegin,
                           std::size_t otherEnd) {
         return end - begin == otherEnd - otherBegin &&
-               std::memcmp(bytes_.data() + begin, before.bytes_.data() + otherBegin,
-                           end - begin) == 0;
+               std::memcmp(bytes_.data() + begin, before.bytes_.data() + otherBegin, end - begin) ==
+                   0;
     };
-    if (before.empty() || empty() || !unitScale_ ||
-        !same(0, headerEnd_, 0, before.headerEnd_))
+    if (before.empty() || empty() || !unitScale_ || !same(0, headerEnd_, 0, before.headerEnd_))
         return {whole_};
     // Lists are matched by position (ImGui orders them by window depth): a window that opens,
     // closes or comes to the front changes the lists after it. Comparing the triangles of two

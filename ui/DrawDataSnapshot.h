@@ -44,8 +44,8 @@ private:
         PixelArea scissor;
     };
     struct List {
-        std::size_t begin, end;  // its bytes
-        PixelArea area;          // where it draws
+        std::size_t begin, end;                  // its bytes
+        PixelArea area;                          // where it draws
         std::size_t firstCommand, commandCount;  // in commands_
         std::size_t vertices, indices;           // where its buffers start in bytes_
     };
@@ -59,9 +59,8 @@ private:
     void appendBytes(const void* data, std::size_t size);
     std::vector<Primitive> primitives(const List& list) const;
     ImDrawVert vertex(const List& list, const Command& command, unsigned element) const;
-    bool samePrimitive(const List& list, const Primitive& primitive,
-                       const DrawDataSnapshot& other, const List& otherList,
-                       const Primitive& otherPrimitive) const;
+    bool samePrimitive(const List& list, const Primitive& primitive, const DrawDataSnapshot& other,
+                       const List& otherList, const Primitive& otherPrimitive) const;
     PixelArea primitiveArea(const List& list, const Primitive& primitive) const;
     // Where the triangles of `list` differ from those of `before`'s `beforeList`.
     std::vector<PixelArea> changedAreas(const List& list, const DrawDataSnapshot& before,

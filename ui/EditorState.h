@@ -28,7 +28,7 @@ namespace matevo::ui {
 // How the heatmap is drawn over the candidate tiles: ΔE00 (viridis over a range the user sets)
 // or ꟻLIP (magma over its fixed range [0, 1]).
 struct HeatmapView {
-    bool enabled = false;     // off at first: the first view shows the materials themselves
+    bool enabled = false;  // off at first: the first view shows the materials themselves
     ImageMetric metric = ImageMetric::DeltaE00;
     float minDeltaE = 0.0f;   // maps to the cold end of the colour ramp
     float maxDeltaE = 10.0f;  // maps to the hot end
@@ -42,7 +42,7 @@ enum class TileOrder { Fitness, DeltaE };
 struct GridView {
     float tileSize = 120.0f;  // pixels; the user's choice, kept when the window grows
     TileOrder order = TileOrder::Fitness;
-    int band = -1;  // show only this PerceptualBand (index); -1: all
+    int band = -1;               // show only this PerceptualBand (index); -1: all
     bool hideDuplicates = true;  // identical individuals as one tile with a count
 
     bool operator==(const GridView&) const = default;
@@ -131,14 +131,14 @@ struct EditorState {
     std::optional<Genome> selected;
     std::vector<Genome> marked;  // tiles picked with Ctrl+click, for "Keep"
     CompareMode compareMode = CompareMode::SideBySide;
-    float wipePosition = 0.5f;        // Wipe: the split, 0 = all candidate, 1 = all target
-    bool inspectShowsTarget = false;  // Flip: the target instead of the candidate (Space)
-    int gridColumns = 1;              // as last drawn, for the arrow keys
-    bool revealSelected = false;      // scroll the grid to the selected tile (arrow keys)
-    StatusLog status;                 // every action's outcome; the status bar shows the newest
-    bool statusLogOpen = false;       // the window listing the recent messages
+    float wipePosition = 0.5f;         // Wipe: the split, 0 = all candidate, 1 = all target
+    bool inspectShowsTarget = false;   // Flip: the target instead of the candidate (Space)
+    int gridColumns = 1;               // as last drawn, for the arrow keys
+    bool revealSelected = false;       // scroll the grid to the selected tile (arrow keys)
+    StatusLog status;                  // every action's outcome; the status bar shows the newest
+    bool statusLogOpen = false;        // the window listing the recent messages
     std::optional<TaskProgress> task;  // while one runs
-    std::optional<ExportOutcome> exportOutcome;  // of the last export
+    std::optional<ExportOutcome> exportOutcome;      // of the last export
     std::vector<std::filesystem::path> recentFiles;  // newest first, remembered in imgui.ini
 
     bool hasUnsavedChanges() const { return preset != savedPreset; }

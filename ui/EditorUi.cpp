@@ -34,8 +34,7 @@ std::string documentName(const EditorState& state) {
 void closeDropdownOnEscape() {
     ImGuiContext& context = *ImGui::GetCurrentContext();
     const int escape = ImGui::GetKeyIndex(ImGuiKey_Escape);
-    if (context.OpenPopupStack.empty() || escape < 0 || !ImGui::IsKeyPressed(escape, false))
-        return;
+    if (context.OpenPopupStack.empty() || escape < 0 || !ImGui::IsKeyPressed(escape, false)) return;
     const ImGuiWindow* top = context.OpenPopupStack.back().Window;
     if (top && (top->Flags & ImGuiWindowFlags_Modal)) return;
     ImGui::ClosePopupToLevel(context.OpenPopupStack.Size - 1, true);

@@ -29,8 +29,8 @@ struct ShortcutKeys {
 struct FrameRequests {
     bool quit = false;  // confirmed: nothing unsaved, or the user chose
     bool snapshot = false;
-    bool runCompareMetrics = false;  // the "Compare metrics" window asked for a run
-    VariantsActions variants;        // what the "Variants" window asked for
+    bool runCompareMetrics = false;          // the "Compare metrics" window asked for a run
+    VariantsActions variants;                // what the "Variants" window asked for
     std::optional<ExportRequest> exportSet;  // "Export set…" confirmed: run it
 };
 

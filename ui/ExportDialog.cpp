@@ -40,9 +40,8 @@ std::vector<MaterialFile> variantSetMaterialFiles(const EditorState& state) {
     const MaterialFile target =
         materialFromPreset(madeFor, state.presetPath, set->target, state.preset.name);
     for (std::size_t i = 0; i < set->variants.size(); ++i)
-        files.push_back(
-            variantMaterial(target, Variant{set->variants[i], {}, 0.0, false, {}}, i,
-                            set->variants.size()));
+        files.push_back(variantMaterial(target, Variant{set->variants[i], {}, 0.0, false, {}}, i,
+                                        set->variants.size()));
     return files;
 }
 
@@ -68,8 +67,8 @@ ExportRequest exportRequest(const EditorState& state, ExportSource source, Expor
 
 void drawExportOutcomeLines(const ExportOutcome& outcome) {
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(outcome.failed ? kErrorColor : ImGui::GetStyleColorVec4(ImGuiCol_Text),
-                       "%s", outcome.summary.c_str());
+    ImGui::TextColored(outcome.failed ? kErrorColor : ImGui::GetStyleColorVec4(ImGuiCol_Text), "%s",
+                       outcome.summary.c_str());
     if (!outcome.lines.empty()) ImGui::Separator();
     for (const ExportOutcome::Line& line : outcome.lines)
         ImGui::TextColored(line.holds ? ImGui::GetStyleColorVec4(ImGuiCol_Text) : kWarningColor,

@@ -20,7 +20,7 @@ namespace matevo::ui {
 // `matevo variants --deliver gltf` checks it): each variant's fit rendered with the glTF BRDF,
 // against the Variants window's band and spacing.
 struct VariantSetDelivery {
-    Preset madeFor;  // the preset with the set's own target, family and kappa
+    Preset madeFor;                    // the preset with the set's own target, family and kappa
     std::filesystem::path presetFile;  // its textures are relative to its folder
     std::vector<Genome> variants;      // in the set's order, as `materials`
     VariantRequest request;            // the band and the spacing

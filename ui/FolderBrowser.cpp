@@ -59,8 +59,7 @@ bool drawFolderBrowser(std::string& path, float height) {
     const std::string shown = path;  // the listing of this frame, even if a click changes path
     for (const FolderEntry& entry : listFolder(browsedFolder(shown))) {
         const std::string label = entry.folder ? entry.name + "/" : entry.name;
-        const bool current =
-            !entry.folder && fs::path(shown).filename().string() == entry.name;
+        const bool current = !entry.folder && fs::path(shown).filename().string() == entry.name;
         if (ImGui::Selectable(label.c_str(), current, ImGuiSelectableFlags_AllowDoubleClick)) {
             path = pathAfterChoosing(shown, entry);
             chosen = !entry.folder && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);

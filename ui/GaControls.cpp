@@ -42,8 +42,9 @@ void drawMetric(DistanceMetric& metric, bool& imageFitness) {
     }
     sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Image ΔE00"));
     if (ImGui::RadioButton("Image ΔE00", imageFitness)) imageFitness = true;
-    hoverHint("Beyond the paper: each candidate rendered (64 px) and ranked by its mean ΔE00 from "
-              "the target, what is seen, instead of a distance between genotypes.");
+    hoverHint(
+        "Beyond the paper: each candidate rendered (64 px) and ranked by its mean ΔE00 from "
+        "the target, what is seen, instead of a distance between genotypes.");
 }
 
 // Two columns with the name inside each slider. Only the family's active chromosomes: the
@@ -119,8 +120,7 @@ void drawGaControls(GaSettings& settings, const MaterialFamily& family, bool& im
     if (ImGui::Button("New seed")) settings.seed = drawSeed();
 
     sectionHeader("Fitness weights");
-    if (imageFitness)
-        mutedText("Not used: the Image ΔE00 metric compares renders, not genotypes.");
+    if (imageFitness) mutedText("Not used: the Image ΔE00 metric compares renders, not genotypes.");
     ImGui::BeginDisabled(imageFitness);
     drawWeights(settings.weights, family, status);
     ImGui::EndDisabled();

@@ -198,10 +198,10 @@ std::optional<ImVec2> drawComparison(EditorState& state, const Comparison& compa
         case CompareMode::Flip: {
             const float size = std::max(48.0f, std::min(height, width));
             drawImage(drawList, origin, size, state.inspectShowsTarget ? target : candidate.image);
-            drawLabel(drawList, origin, size,
-                      (std::string(state.inspectShowsTarget ? "target" : compared.name) +
-                       " (Space)")
-                          .c_str());
+            drawLabel(
+                drawList, origin, size,
+                (std::string(state.inspectShowsTarget ? "target" : compared.name) + " (Space)")
+                    .c_str());
             ImGui::Dummy(ImVec2(size, size));
             return pointerOver(origin, size, {});
         }
@@ -295,9 +295,9 @@ void drawInspectPanel(EditorState& state) {
     sameLineIfFits(buttonWidth("Promote to target"));
     if (drawActions(state, candidate)) return;  // promoted: the grid is about to change
 
-    const Comparison compared{state.evolution.targetImage, state.evolution.targetPicture.get(),
-                              candidate, "candidate",
-                              std::string(choiceLabel(kImageMetrics, state.evolution.heatmapMetric))};
+    const Comparison compared{
+        state.evolution.targetImage, state.evolution.targetPicture.get(), candidate, "candidate",
+        std::string(choiceLabel(kImageMetrics, state.evolution.heatmapMetric))};
     drawComparisonAndGenes(state, compared, state.preset.family, state.preset.target);
 }
 

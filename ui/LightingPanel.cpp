@@ -51,8 +51,9 @@ bool drawLightingChoice(SceneSettings& scene, LightingView& view) {
         }
         ImGui::EndCombo();
     }
-    hoverHint("What every view draws in: the target, the grid, the inspector, the variant "
-              "search and the Scene window; saved with the preset (scene.mode)");
+    hoverHint(
+        "What every view draws in: the target, the grid, the inspector, the variant "
+        "search and the Scene window; saved with the preset (scene.mode)");
     if (current != kFileChoice && !view.typingFile) return changed;
     char path[512];
     std::snprintf(path, sizeof path, "%s", view.hdrFile.c_str());
@@ -83,8 +84,9 @@ void drawHoldUnderLightings(std::vector<std::string>& also, const std::string& c
         }
         ImGui::EndDisabled();
     }
-    hoverHint("A variant counts only when it is in band and apart from the others under every "
-              "checked lighting; the chosen lighting (the toolbar's) is always one of them");
+    hoverHint(
+        "A variant counts only when it is in band and apart from the others under every "
+        "checked lighting; the chosen lighting (the toolbar's) is always one of them");
 }
 
 std::vector<std::string> lightingsToHold(const std::string& chosen,

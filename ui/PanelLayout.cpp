@@ -26,10 +26,9 @@ PanelLayout layoutPanels(ImVec2 displaySize, const PanelSplits& splits) {
     const float rest = width - controlsWidth;
     // The target is the reference everything is judged against: keep it large and square.
     const float defaultTarget = std::clamp(std::min(rest * 0.42f, height * 0.58f), 220.0f, 560.0f);
-    const float targetWidth =
-        std::round(std::clamp(splits.targetFraction > 0.0f ? splits.targetFraction * width
-                                                           : defaultTarget,
-                              kMinMiddleWidth, std::max(kMinMiddleWidth, rest - kMinGridWidth)));
+    const float targetWidth = std::round(
+        std::clamp(splits.targetFraction > 0.0f ? splits.targetFraction * width : defaultTarget,
+                   kMinMiddleWidth, std::max(kMinMiddleWidth, rest - kMinGridWidth)));
     const float targetHeight = std::min(targetWidth + 52.0f, height - kMinPanelHeight);
     const float gridX = controlsWidth + targetWidth;
     const float gridHeight =

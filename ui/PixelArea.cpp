@@ -13,8 +13,7 @@ PixelArea intersect(const PixelArea& a, const PixelArea& b) {
 PixelArea unite(const PixelArea& a, const PixelArea& b) {
     if (a.empty()) return b;
     if (b.empty()) return a;
-    return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1),
-            std::max(a.y1, b.y1)};
+    return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
 
 namespace {
@@ -69,11 +68,10 @@ void addDisjoint(std::vector<PixelArea>& areas, const PixelArea& area) {
                 left.push_back(piece);
                 continue;
             }
-            const PixelArea strips[4] = {
-                {piece.x0, piece.y0, piece.x1, overlap.y0},
-                {piece.x0, overlap.y1, piece.x1, piece.y1},
-                {piece.x0, overlap.y0, overlap.x0, overlap.y1},
-                {overlap.x1, overlap.y0, piece.x1, overlap.y1}};
+            const PixelArea strips[4] = {{piece.x0, piece.y0, piece.x1, overlap.y0},
+                                         {piece.x0, overlap.y1, piece.x1, piece.y1},
+                                         {piece.x0, overlap.y0, overlap.x0, overlap.y1},
+                                         {overlap.x1, overlap.y0, piece.x1, overlap.y1}};
             for (const PixelArea& strip : strips)
                 if (!strip.empty()) left.push_back(strip);
         }

@@ -60,7 +60,7 @@ Status createParentFolder(const fs::path& file) {
     fs::create_directories(file.parent_path(), error);
     if (error)
         return badInput("cannot create the folder " + file.parent_path().string() + " (" +
-                     error.message() + ")");
+                        error.message() + ")");
     return Ok{};
 }
 

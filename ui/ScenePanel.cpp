@@ -40,9 +40,8 @@ void drawMeshChoice(SceneView& view) {
         }
         ImGui::Separator();
         if (ImGui::Selectable("Open file…"))
-            view.meshDialog.open("Open a mesh (.obj, .gltf, .glb)", isMeshFile(controls.mesh)
-                                                                        ? controls.mesh
-                                                                        : std::string());
+            view.meshDialog.open("Open a mesh (.obj, .gltf, .glb)",
+                                 isMeshFile(controls.mesh) ? controls.mesh : std::string());
         ImGui::EndCombo();
     }
     hoverHint(isMeshFile(controls.mesh)
@@ -60,8 +59,9 @@ void drawControls(SceneView& view) {
                 controls.source = SceneSource(i);
         ImGui::EndCombo();
     }
-    hoverHint("what the instances wear: the GA population (best first), the variant set of "
-              "the Variants window, or the kept bin");
+    hoverHint(
+        "what the instances wear: the GA population (best first), the variant set of "
+        "the Variants window, or the kept bin");
     sameLineIfFits(labelledWidth(kItemWidth + 30.0f, "mesh"));
     drawMeshChoice(view);
     sameLineIfFits(labelledWidth(kItemWidth, "instances"));
@@ -86,8 +86,8 @@ void handleMouse(EditorState& state, ImVec2 topLeft, ImVec2 size) {
     SceneView& view = state.sceneView;
     const ImGuiIO& io = ImGui::GetIO();
     view.hovered = -1;
-    view.cameraHeld = view.orbitByScript ||
-                      (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left));
+    view.cameraHeld =
+        view.orbitByScript || (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left));
     if (!ImGui::IsItemHovered() && !ImGui::IsItemActive()) return;
     if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
         view.controls.yawDegrees -= io.MouseDelta.x * 0.4f;
@@ -95,12 +95,12 @@ void handleMouse(EditorState& state, ImVec2 topLeft, ImVec2 size) {
             std::clamp(view.controls.pitchDegrees + io.MouseDelta.y * 0.3f, 2.0f, 85.0f);
     }
     if (io.MouseWheel != 0.0f)
-        view.controls.zoom = std::clamp(view.controls.zoom * std::pow(0.9f, io.MouseWheel), 0.2f, 4.0f);
+        view.controls.zoom =
+            std::clamp(view.controls.zoom * std::pow(0.9f, io.MouseWheel), 0.2f, 4.0f);
     if (view.instances.empty() || view.imageWidth == 0) return;
     const glm::dvec2 ndc(2.0 * (io.MousePos.x - topLeft.x) / size.x - 1.0,
                          1.0 - 2.0 * (io.MousePos.y - topLeft.y) / size.y);
-    const auto picked =
-        pickInstance(view.camera, double(size.x) / size.y, ndc, view.instances);
+    const auto picked = pickInstance(view.camera, double(size.x) / size.y, ndc, view.instances);
     if (!picked) return;
     view.hovered = int(*picked);
     const std::size_t material = view.instances[*picked].material;
@@ -123,8 +123,7 @@ void drawPicture(const SceneView& view, ImVec2 topLeft, ImVec2 size) {
     else
         drawList.AddRectFilled(topLeft, bottomRight, IM_COL32(30, 32, 36, 255));
     if (!view.rendering) return;
-    const char* words = view.preview ? "rendering… (preview while the camera moves)"
-                                     : "rendering…";
+    const char* words = view.preview ? "rendering… (preview while the camera moves)" : "rendering…";
     const ImVec2 text = ImGui::CalcTextSize(words);
     const ImVec2 at(topLeft.x + 8.0f, topLeft.y + 8.0f);
     drawList.AddRectFilled(ImVec2(at.x - 4.0f, at.y - 2.0f),

@@ -39,12 +39,12 @@ struct SceneViewControls {
     SceneSource source = SceneSource::Population;
     std::string mesh = "shaderball";  // a kSceneMeshes name or a mesh file
     int instances = 24;
-    int layout = 0;      // grid, crowd
+    int layout = 0;         // grid, crowd
     float exposure = 0.0f;  // stops, before the ACES tone map
     float yawDegrees = 0.0f;
     float pitchDegrees = 25.0f;
-    float zoom = 1.0f;   // distance relative to the framing that shows every instance
-    int width = 0;       // of the image, from the window's size
+    float zoom = 1.0f;  // distance relative to the framing that shows every instance
+    int width = 0;      // of the image, from the window's size
     int height = 0;
 
     bool operator==(const SceneViewControls&) const = default;
@@ -69,11 +69,11 @@ struct SceneView {
     SceneCamera camera;
     std::vector<SceneInstance> instances;
     std::vector<SceneMaterial> shownMaterials;  // what instances[i].material indexes
-    std::string status;     // what was drawn and how long it took
-    std::string meshError;  // why the last mesh chosen could not be shown (one line)
-    bool cameraHeld = false;  // the left button is down on the picture (orbiting)
+    std::string status;                         // what was drawn and how long it took
+    std::string meshError;       // why the last mesh chosen could not be shown (one line)
+    bool cameraHeld = false;     // the left button is down on the picture (orbiting)
     bool orbitByScript = false;  // an editor script drags the camera: held as by the mouse
-    int hovered = -1;    // instance under the mouse, -1 when none
+    int hovered = -1;            // instance under the mouse, -1 when none
 };
 
 // The camera for the controls: orbit about the framing of the instances.

@@ -35,8 +35,8 @@ std::vector<SceneMaterial> variantMaterials(const EditorState& state) {
                           i + 1, tiles[i].deltaEToTarget, tiles[i].nearestSibling);
         else
             std::snprintf(label, sizeof label, "variant %zu", i + 1);
-        materials.push_back({materialOf(set.variants[i], set.family, set.baseKappa),
-                             set.variants[i], label});
+        materials.push_back(
+            {materialOf(set.variants[i], set.family, set.baseKappa), set.variants[i], label});
     }
     return materials;
 }
@@ -53,19 +53,24 @@ std::vector<SceneMaterial> keptMaterials(const EditorState& state) {
 
 std::vector<SceneMaterial> sceneMaterials(const EditorState& state) {
     switch (state.sceneView.controls.source) {
-        case SceneSource::Population: return populationMaterials(state);
-        case SceneSource::Variants: return variantMaterials(state);
-        case SceneSource::Kept: return keptMaterials(state);
+        case SceneSource::Population:
+            return populationMaterials(state);
+        case SceneSource::Variants:
+            return variantMaterials(state);
+        case SceneSource::Kept:
+            return keptMaterials(state);
     }
     return {};
 }
 
 std::string emptySourceNote(SceneSource source) {
     switch (source) {
-        case SceneSource::Population: return "No candidates yet: the GA run fills the population";
+        case SceneSource::Population:
+            return "No candidates yet: the GA run fills the population";
         case SceneSource::Variants:
             return "No variant set: find one in the Variants window";
-        case SceneSource::Kept: return "The kept bin is empty: keep candidates from the grid";
+        case SceneSource::Kept:
+            return "The kept bin is empty: keep candidates from the grid";
     }
     return {};
 }

@@ -6,8 +6,8 @@
 
 #include "EditorState.h"
 #include "ImageView.h"
-#include "LightingPanel.h"
 #include "KeptBin.h"
+#include "LightingPanel.h"
 #include "Widgets.h"
 #include "color/Colormap.h"
 #include "fitness/DeltaEBand.h"
@@ -48,9 +48,10 @@ void drawHoldAsDelivered(VariantsView& view) {
         ImGui::SameLine();
         mutedText("(not with several lightings: glTF is checked in the chosen one)");
     } else {
-        hoverHint("Check the set as delivered in glTF too, as matevo variants --deliver gltf: "
-                  "a variant whose glTF fit leaves the band or the spacing is refitted, or "
-                  "replaced from the search's archive");
+        hoverHint(
+            "Check the set as delivered in glTF too, as matevo variants --deliver gltf: "
+            "a variant whose glTF fit leaves the band or the spacing is refitted, or "
+            "replaced from the search's archive");
     }
 }
 
@@ -69,9 +70,10 @@ void drawRequest(VariantsView& view, VariantsActions& actions) {
     view.seed = std::max(view.seed, 0);
     sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Hue variety"));
     ImGui::Checkbox("Hue variety", &view.hueVariety);
-    hoverHint("Beyond the paper: evolve the metal's extinction (kappa, RGB, each in [1, 4]) "
-              "too, so variants may differ in colour. Off: every variant keeps the preset's "
-              "kappa");
+    hoverHint(
+        "Beyond the paper: evolve the metal's extinction (kappa, RGB, each in [1, 4]) "
+        "too, so variants may differ in colour. Off: every variant keeps the preset's "
+        "kappa");
     drawHoldUnderLightings(view.holdAlsoUnder, view.lighting);
     drawHoldAsDelivered(view);
     if (view.running) {
@@ -104,8 +106,9 @@ void drawSetActions(EditorState& state, VariantsActions& actions) {
     hoverHint("Put every variant of the set in the kept bin");
     sameLineIfFits(buttonWidth("Export set…"));
     actions.exportSet = ImGui::Button("Export set…");
-    hoverHint("glTF, GLB or MaterialX (from the extension), fitted by ΔE00 as matevo export; "
-              "glTF checked as delivered");
+    hoverHint(
+        "glTF, GLB or MaterialX (from the extension), fitted by ΔE00 as matevo export; "
+        "glTF checked as delivered");
     sameLineIfFits(buttonWidth("Send to Scene window"));
     actions.sendToScene = ImGui::Button("Send to Scene window");
     sameLineIfFits(buttonWidth("Save as folder"));
@@ -137,8 +140,8 @@ void drawOtherTargetNotice(VariantsView& view, VariantsActions& actions) {
 int nearestOf(const VariantsView& view, std::size_t index) {
     int nearest = -1;
     for (std::size_t j = 0; j < view.variants.size(); ++j)
-        if (j != index && (nearest < 0 || view.pairwise[index][j] <
-                                              view.pairwise[index][std::size_t(nearest)]))
+        if (j != index &&
+            (nearest < 0 || view.pairwise[index][j] < view.pairwise[index][std::size_t(nearest)]))
             nearest = int(j);
     return nearest;
 }
@@ -287,9 +290,8 @@ VariantsActions drawVariantsWindow(EditorState& state, float inspectorLeft) {
         ImGui::TextColored(view.met ? kMutedTextColor : ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s",
                            view.summary.c_str());
     if (!view.deliveredSummary.empty())
-        ImGui::TextColored(
-            view.deliveredMet ? kMutedTextColor : ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s",
-            view.deliveredSummary.c_str());
+        ImGui::TextColored(view.deliveredMet ? kMutedTextColor : ImVec4(1.0f, 0.6f, 0.3f, 1.0f),
+                           "%s", view.deliveredSummary.c_str());
     if (variantSetMadeForAnotherTarget(state.preset)) drawOtherTargetNotice(view, actions);
     drawSetActions(state, actions);
     drawSelected(view);

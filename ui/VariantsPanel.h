@@ -85,7 +85,7 @@ struct VariantsView {
     std::string inspectionError;                  // why they could not be made
     std::vector<std::vector<double>> pairwise;
     std::string savePath = "variants-out";
-    int keptInFamily = 0;       // kept materials of the preset's family (the editor's kept bin)
+    int keptInFamily = 0;  // kept materials of the preset's family (the editor's kept bin)
     // A fresh set starts from them: they join it as they are, in band or not, apart or not.
     bool startFromKept = false;
 };
@@ -94,11 +94,11 @@ struct VariantsView {
 inline constexpr const char* kHoldAsDelivered = "Hold as delivered (glTF)";
 
 struct VariantsActions {
-    bool run = false;        // a fresh set
-    bool refill = false;     // keep the shown variants, find the missing ones
-    bool remeasure = false;  // the set's genomes measured against the present target
-    bool save = false;       // to view.savePath
-    bool exportSet = false;  // "Export set…": the export dialog for the set
+    bool run = false;          // a fresh set
+    bool refill = false;       // keep the shown variants, find the missing ones
+    bool remeasure = false;    // the set's genomes measured against the present target
+    bool save = false;         // to view.savePath
+    bool exportSet = false;    // "Export set…": the export dialog for the set
     bool sendToScene = false;  // the Scene window shows the set
 };
 

@@ -98,10 +98,11 @@ void writeAll(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out
 
 ViewSettings viewSettingsOf(const EditorState& state) {
     const SceneViewControls& scene = state.sceneView.controls;
-    return {state.heatmap,      state.grid,        state.compareMode,
-            state.splits,       state.recentFiles, state.plotFromZero,
-            scene.mesh,         scene.instances,   scene.layout,
-            state.sceneView.recentMeshes};
+    return {state.heatmap,     state.grid,
+            state.compareMode, state.splits,
+            state.recentFiles, state.plotFromZero,
+            scene.mesh,        scene.instances,
+            scene.layout,      state.sceneView.recentMeshes};
 }
 
 void rememberViewSettings(EditorState& state) {

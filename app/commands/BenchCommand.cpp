@@ -12,7 +12,8 @@ namespace matevo::cli {
 int runBench(CommandLine& args) {
     if (args.wantsHelp()) {
         std::printf(
-            "usage: matevo bench [--json] [--only grid|scene|color] [--scene-instances N] [--variants]\n\n"
+            "usage: matevo bench [--json] [--only grid|scene|color] [--scene-instances N] "
+            "[--variants]\n\n"
             "Measures medians of the genetic algorithm (pop 100 x 10 generations, genotype\n"
             "fitness), CIEDE2000 throughput and the renderers. Prints a table, or one JSON object\n"
             "with --json. scripts/bench.sh runs the Python peers beside it and prints ratios.\n"
@@ -24,7 +25,8 @@ int runBench(CommandLine& args) {
         return 0;
     }
     const bool asJson = args.flag("--json");
-    const int sceneInstances = int(args.integerOption("--scene-instances", 1, 1000000).value_or(100));
+    const int sceneInstances =
+        int(args.integerOption("--scene-instances", 1, 1000000).value_or(100));
     const bool variants = args.flag("--variants");
     const std::optional<std::string> only = args.option("--only");
     args.finish();

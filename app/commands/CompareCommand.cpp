@@ -152,8 +152,7 @@ int runCompare(CommandLine& args) {
     args.onlyWith("--range", "--heatmap");
     const auto files = args.positionals();
     args.finish();
-    if (files.size() != 2)
-        throw UsageError("expected two images A B (see matevo compare --help)");
+    if (files.size() != 2) throw UsageError("expected two images A B (see matevo compare --help)");
     if (metric == ImageMetric::Flip && range)
         throw UsageError("--range is for dE00; FLIP's colour map spans its fixed range [0, 1]");
     if (metric == ImageMetric::DeltaE00 && pixelsPerDegree)

@@ -4,8 +4,8 @@
 #include "PresetOption.h"
 #include "RenderBackend.h"
 #include "WorkEstimate.h"
-#include "common/MemoryBudget.h"
 #include "commands/Commands.h"
+#include "common/MemoryBudget.h"
 #include "editor/EditorApp.h"
 #include "files/TextFile.h"
 

@@ -34,7 +34,8 @@ constexpr const char* kHelp =
     "                     [--normalize] [--elitism N] [--seed S] [--out DIR] [--json]\n"
     "                     [--size N] [--format png|exr] [--heatmap {image-metrics}]\n"
     "                     [--backend {backends} [--no-fallback]] [--force]\n"
-    "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N] [--hue]\n"
+    "                     [--fitness genotype|image|flip] [--band LO,HI] [--fitness-size N] "
+    "[--hue]\n"
     "                     [--checkpoint FILE [--checkpoint-every N]] [--resume FILE]\n\n"
     "Runs the genetic algorithm of Bernardi et al. (2020) towards the preset's target material\n"
     "(--preset: a file or a name from matevo presets; default validation_metal). Options\n"
@@ -74,7 +75,8 @@ constexpr const char* kHelp =
     "  --band LO,HI   with image or flip fitness: how far outside the band of the mean a\n"
     "                 candidate lies (0 inside: the objective is met)\n"
     "  --fitness-size N  image side the image fitness renders at (default 64)\n"
-    "  --hue          with image or flip fitness, beyond the paper: evolve the conductor base's kappa\n"
+    "  --hue          with image or flip fitness, beyond the paper: evolve the conductor base's "
+    "kappa\n"
     "                 too (RGB, each in [1, 4]), so candidates may differ in colour\n"
     "Progress goes to stderr. Ctrl-C (SIGINT) or SIGTERM stops after the current generation or\n"
     "batch of images and writes what is complete, marked \"partial\" (exit 130 or 143).\n";
@@ -132,8 +134,8 @@ int runEvolve(CommandLine& args) {
     const bool asJson = args.flag("--json");
     const auto outDir = args.option("--out");
     const bool replaceOutput = args.flag("--force");
-    const int imageSize = int(
-        args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
+    const int imageSize =
+        int(args.integerOption("--size", 8, 4096).value_or(choice.preset.scene.imageSize));
     const std::string format = args.option("--format").value_or("png");
     if (format != "png" && format != "exr")
         throw UsageError("--format: expected png or exr, got '" + format + "'");
@@ -150,12 +152,14 @@ int runEvolve(CommandLine& args) {
     const auto fitnessSizeOption = args.integerOption("--fitness-size", 8, 1024);
     const bool hue = args.flag("--hue");
     if (!imageFitness && (bandText || fitnessSizeOption || hue))
-        throw UsageError(std::string(bandText ? "--band" : fitnessSizeOption ? "--fitness-size"
-                                                                            : "--hue") +
+        throw UsageError(std::string(bandText            ? "--band"
+                                     : fitnessSizeOption ? "--fitness-size"
+                                                         : "--hue") +
                          " does nothing without --fitness image or flip");
     if (hue && choice.preset.family.base != Base::Conductor)
-        throw UsageError("--hue: the preset's base is a dielectric; hue variety evolves a "
-                         "conductor's kappa");
+        throw UsageError(
+            "--hue: the preset's base is a dielectric; hue variety evolves a "
+            "conductor's kappa");
     if (hue) choice.preset.ga.kappaGenes = KappaGenes::On;
     const DeltaEBand band = parseDeltaEBand(bandText.value_or("0,0"), "--band");
     const int fitnessSize = int(fitnessSizeOption.value_or(64));
@@ -200,9 +204,9 @@ int runEvolve(CommandLine& args) {
         if (!cache) throw CommandFailure(cache.error());
         fitness.emplace(std::move(cache).value(), band);
     }
-    GeneticAlgorithm ga = fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga,
-                                                     fitness->evaluator())
-                                  : GeneticAlgorithm(preset.family, preset.target, preset.ga);
+    GeneticAlgorithm ga =
+        fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga, fitness->evaluator())
+                : GeneticAlgorithm(preset.family, preset.target, preset.ga);
     if (resumeFile)
         resume(ga, preset, *resumeFile);
     else
@@ -248,9 +252,9 @@ int runEvolve(CommandLine& args) {
     }
     if (output) {
         try {
-            const auto written = writeEvolveImages(choice, ranked, imageSize, rendererRequest,
-                                                   "." + format, heatmapMetric, output->staging(),
-                                                   stopToken());
+            const auto written =
+                writeEvolveImages(choice, ranked, imageSize, rendererRequest, "." + format,
+                                  heatmapMetric, output->staging(), stopToken());
             addImageStatistics(report, written.candidates);
             report["candidates_written"] = written.candidates.size();
             renderedBy = written.madeBy;

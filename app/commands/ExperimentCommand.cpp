@@ -95,8 +95,7 @@ bool usesImageMetric(const ExperimentSettings& settings) {
 
 std::vector<PresetChoice> choosePresets(CommandLine& args) {
     if (!args.flag("--all")) return {loadPresetOption(args)};
-    if (args.option("--preset"))
-        throw UsageError("--preset and --all exclude each other");
+    if (args.option("--preset")) throw UsageError("--preset and --all exclude each other");
     auto folder = findResourceDirectory("presets");
     if (!folder) throw CommandFailure(folder.error());
     std::vector<PresetChoice> presets;

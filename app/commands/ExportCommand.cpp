@@ -193,8 +193,8 @@ int runExport(CommandLine& args) {
     ExportSettings settings;
     settings.fit.imageSize =
         int(args.integerOption("--fit-size", 16, 512).value_or(settings.fit.imageSize));
-    settings.fit.maxEvaluations = int(
-        args.integerOption("--fit-renders", 20, 100000).value_or(settings.fit.maxEvaluations));
+    settings.fit.maxEvaluations =
+        int(args.integerOption("--fit-renders", 20, 100000).value_or(settings.fit.maxEvaluations));
     settings.reportSize =
         int(args.integerOption("--report-size", 16, 2048).value_or(settings.reportSize));
     gpu::RendererRequest rendererRequest = backendOptions(args, "matevo export");
@@ -224,10 +224,9 @@ int runExport(CommandLine& args) {
     if (arrangement == GltfArrangement::MaterialVariants)
         materials.push_back(targetOf(variantsFolder, source));
     if (!genomeFile && !variantsFolder) materials.push_back(source.presetMaterial());
-    const std::vector<fs::path> files =
-        genomeFile      ? std::vector<fs::path>{*genomeFile}
-        : variantsFolder ? variantFiles(*variantsFolder)
-                         : std::vector<fs::path>{};
+    const std::vector<fs::path> files = genomeFile       ? std::vector<fs::path>{*genomeFile}
+                                        : variantsFolder ? variantFiles(*variantsFolder)
+                                                         : std::vector<fs::path>{};
     for (const auto& file : files) {
         materials.push_back(source.load(file));
         if (materials.back().name.empty()) materials.back().name = file.stem().string();
@@ -240,9 +239,8 @@ int runExport(CommandLine& args) {
         asset.mesh = std::move(*mesh);
     }
     if (arrangement == GltfArrangement::Instances)
-        asset.instances = layoutInstances(
-            int(instanceCount.value_or((long long)materials.size())), InstanceLayout::Crowd,
-            int(materials.size()), seed);
+        asset.instances = layoutInstances(int(instanceCount.value_or((long long)materials.size())),
+                                          InstanceLayout::Crowd, int(materials.size()), seed);
     beginEstimatedWork(exportSetEstimate(materials, settings, asset));
     auto renderer = createCommandRenderer(rendererRequest, SceneTextures{});
     ProgressBar progress(int(materials.size()));

@@ -166,16 +166,14 @@ FoundSet findSet(const VariantsJob& job, const VariantRequest& request,
                  const std::string& progressLabel) {
     std::optional<DeliveryFormat> delivery;
     if (job.gltf) delivery = job.gltf->format();
-    auto found = findVariants({job.preset.target, job.preset.family, job.preset.baseKappa}, request,
-                              job.settings, job.fitnessRender, job.outputRender, stopToken(),
-                              [&progressLabel](const VariantSearchProgress& progress) {
-                                  printProgress(progressLabel +
-                                                std::to_string(progress.evaluations) +
-                                                " evaluations, " +
-                                                std::to_string(progress.archived) +
-                                                " in the archive");
-                              },
-                              delivery ? &*delivery : nullptr);
+    auto found = findVariants(
+        {job.preset.target, job.preset.family, job.preset.baseKappa}, request, job.settings,
+        job.fitnessRender, job.outputRender, stopToken(),
+        [&progressLabel](const VariantSearchProgress& progress) {
+            printProgress(progressLabel + std::to_string(progress.evaluations) + " evaluations, " +
+                          std::to_string(progress.archived) + " in the archive");
+        },
+        delivery ? &*delivery : nullptr);
     printProgress("");
     if (!found) throw CommandFailure(found.error());
     const VariantSearchProgress& progress = found->progress;
@@ -209,7 +207,8 @@ void writeDeliveredGltf(const VariantsJob& job, const FoundSet& found) {
     auto exported =
         writeExport(*fitted, ExportFormat::Glb, folder / "set.glb",
                     GltfAsset{GltfArrangement::MaterialVariants, std::move(*sphere), {}});
-    if (!exported) throw CommandFailure(withContext(job.output->userFacing(exported.error()), "--out"));
+    if (!exported)
+        throw CommandFailure(withContext(job.output->userFacing(exported.error()), "--out"));
     exported->file = "set.glb";  // beside export.json, wherever the set is moved
     if (auto written =
             writeFileAtomically(folder / "export.json", exportReportJson(*exported).dump(2) + "\n");
@@ -397,8 +396,9 @@ int runVariants(CommandLine& args) {
     if (deliver && blockSize)
         throw UsageError("--deliver checks one set; it does not take --block");
     if (deliver && !request.lightings.empty())
-        throw UsageError("--deliver checks the set in the preset's own lighting, as the glTF "
-                         "reference renders it; it does not take --env");
+        throw UsageError(
+            "--deliver checks the set in the preset's own lighting, as the glTF "
+            "reference renders it; it does not take --env");
     args.onlyWith("--force", "--out");
     args.onlyWith("--shard", "--block");
     args.onlyWith("--shard", "--out");
@@ -413,8 +413,9 @@ int runVariants(CommandLine& args) {
     const std::vector<int> blocks = blocksOfShard(plan, shard.value_or(Shard{}));
 
     if (request.kappaGenes == KappaGenes::On && choice.preset.family.base != Base::Conductor)
-        throw UsageError("--hue: the preset's base is a dielectric; hue variety evolves a "
-                         "conductor's kappa");
+        throw UsageError(
+            "--hue: the preset's base is a dielectric; hue variety evolves a "
+            "conductor's kappa");
     installStopSignalHandlers();
     // Refused before the search: a folder with other files, or one we cannot write beside, no
     // font for the contact sheets, and work past the memory limit.
@@ -473,8 +474,8 @@ int runVariants(CommandLine& args) {
     if (deliver) settings.spare = std::max(settings.spare, request.count);
     std::optional<GltfDelivery> gltf;
     if (deliver)
-        gltf.emplace(presetGltfDelivery(preset, *textures, lit->front().renderer, size,
-                                        ExportSettings{}));
+        gltf.emplace(
+            presetGltfDelivery(preset, *textures, lit->front().renderer, size, ExportSettings{}));
     const VariantsJob job{preset,
                           materialFromPreset(preset, choice.file, preset.target, preset.name),
                           request,

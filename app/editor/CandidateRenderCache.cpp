@@ -98,8 +98,8 @@ Status CandidateRenderCache::drawTarget(const Preset& preset) {
     auto target = std::make_shared<gpu::DisplayTile>(std::move(tile).value());
     const MaterialInstance material{preset.target, preset.family, preset.baseKappa};
     const gpu::DisplayTile* tiles[] = {target.get()};
-    if (Status drawn = renderer_->renderIntoTile(material, preset.scene, targetSize_,
-                                                 tileOutput(tiles));
+    if (Status drawn =
+            renderer_->renderIntoTile(material, preset.scene, targetSize_, tileOutput(tiles));
         !drawn)
         return drawn;
     target_ = std::move(target);
@@ -124,9 +124,9 @@ Status CandidateRenderCache::draw(std::span<const Genome> genomes) {
         materials.push_back(material(genome));
     }
     const MaterialInstance target = material(preset_->target);
-    auto evaluation = renderer_->evaluateIntoTiles(target, materials, preset_->scene, tileSize_,
-                                                   evaluationOptions(heatmapMetric_),
-                                                   tileOutput(targets));
+    auto evaluation =
+        renderer_->evaluateIntoTiles(target, materials, preset_->scene, tileSize_,
+                                     evaluationOptions(heatmapMetric_), tileOutput(targets));
     if (!evaluation) return evaluation.error();
     std::vector<ErrorMap>& deltaE = evaluation->errors.at(ImageMetric::DeltaE00);
     const auto flip = evaluation->errors.find(ImageMetric::Flip);

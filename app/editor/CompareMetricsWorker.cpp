@@ -55,8 +55,8 @@ CompareMetricsResult CompareMetricsWorker::compute(const CompareMetricsJob& job,
     // The paper's three genotype metrics only: nothing to render while evolving.
     auto evolved = evolveRuns(
         experimentTarget, settings,
-        [&](int done, int total) { context.reportProgress(0.5f * float(done) / float(total)); },
-        {}, context.token());
+        [&](int done, int total) { context.reportProgress(0.5f * float(done) / float(total)); }, {},
+        context.token());
     if (context.cancelled()) return {{}, {}, result.backend, "stopped", true};
     if (!evolved) {
         result.error = evolved.error().message;

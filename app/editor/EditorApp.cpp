@@ -171,7 +171,7 @@ private:
     std::string title_;
     std::string failure_;
     bool quitRequested_ = false;
-    bool redrawRequested_ = false;  // by a script: the whole window, on the next frame
+    bool redrawRequested_ = false;   // by a script: the whole window, on the next frame
     ui::DrawDataSnapshot onScreen_;  // what the last frame drawn shows
     ui::DrawDataSnapshot next_;      // this frame's, compared with it
     // Frames drawn after input or a finished job, so that hover states and popups settle
@@ -335,8 +335,8 @@ int EditorApp::run() {
         if (resultWaiting && !running) framesToSettle = std::max(framesToSettle, kSettleFrames);
         const bool firstResult = resultWaiting && evolution_->newJobUnshown();
         const bool progressDue =
-            running && (firstResult ||
-                        std::chrono::steady_clock::now() - lastDrawn >= kProgressInterval);
+            running &&
+            (firstResult || std::chrono::steady_clock::now() - lastDrawn >= kProgressInterval);
         if (!due && !progressDue && framesToSettle == 0) continue;  // draw nothing now
         framesToSettle = std::max(0, framesToSettle - 1);
         if (script_.idling()) timings_.frameWhileScriptIdle();
@@ -409,8 +409,8 @@ EditorApp::FrameOutcome EditorApp::frame(std::optional<std::filesystem::path>& s
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
     ImDrawData* drawData = ImGui::GetDrawData();
-    const HeatmapDisplay heatmap{ui_.state().evolution.heatmapMetric,
-                                 ui_.state().heatmap.minDeltaE, ui_.state().heatmap.maxDeltaE};
+    const HeatmapDisplay heatmap{ui_.state().evolution.heatmapMetric, ui_.state().heatmap.minDeltaE,
+                                 ui_.state().heatmap.maxDeltaE};
     bridge_->setHeatmap(heatmap.metric, heatmap.minDeltaE, heatmap.maxDeltaE);
     // Hover, progress and worker wakes often end in the picture already on screen.
     next_.capture(*drawData, std::as_bytes(std::span(&heatmap, 1)));

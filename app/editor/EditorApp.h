@@ -16,7 +16,7 @@ struct EditorOptions {
     Preset preset;
     std::filesystem::path presetFile;
     std::vector<ScriptAction> script;
-    int maxFrames = 0;     // 0: until the window closes
+    int maxFrames = 0;  // 0: until the window closes
     // Where candidate tiles and Compare metrics render (the CPU when no device is usable).
     RenderBackend backend = RenderBackend::Gpu;
     bool validation = false;

@@ -10,8 +10,8 @@
 #include "color/ImageMetric.h"
 #include "common/ShortText.h"
 #include "evolve/GaSettings.h"
-#include "render/LightingScenes.h"
 #include "export/ExportSet.h"
+#include "render/LightingScenes.h"
 
 namespace matevo::editor {
 namespace {
@@ -101,8 +101,7 @@ std::string validateText(const ScriptAction& action) {
          action.kind == Kind::VariantsDeliver) &&
         action.text != "on" && action.text != "off")
         return "expected on or off, got '" + shortText(action.text, 40) + "'";
-    if (action.kind == Kind::KeepVariants && action.text != "all" &&
-        !variantIndexOf(action.text))
+    if (action.kind == Kind::KeepVariants && action.text != "all" && !variantIndexOf(action.text))
         return "expected all or a variant index in [0, 47], got '" + shortText(action.text, 40) +
                "'";
     if (action.kind == Kind::ExportSet && !exportFormatOfFile(action.text))
@@ -147,7 +146,7 @@ Result<std::vector<ScriptAction>> parseEditorScript(const std::string& text,
         const auto found = grammar().find(name);
         if (found == grammar().end())
             return badInput(sourceName + ":" + std::to_string(number) + ": unknown action '" +
-                         shortText(name, 40) + "'");
+                            shortText(name, 40) + "'");
         const Grammar& rule = found->second;
         ScriptAction action{rule.kind, 0, 0, {}, number};
         for (int i = 0; i < rule.numbers; ++i) {

@@ -25,9 +25,7 @@ double median(const std::vector<EditorTimings::Span>& spans, double EditorTiming
 
 }  // namespace
 
-EditorTimings::Mark EditorTimings::now() {
-    return {Clock::now(), processCpuMilliseconds()};
-}
+EditorTimings::Mark EditorTimings::now() { return {Clock::now(), processCpuMilliseconds()}; }
 
 EditorTimings::Span EditorTimings::between(const Mark& from, const Mark& to) {
     return {std::chrono::duration<double, std::milli>(to.wall - from.wall).count(),

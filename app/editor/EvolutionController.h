@@ -23,8 +23,7 @@ public:
 
     // Starts a GA job when the preset changed; `changed`: the start of the frame that showed
     // the change.
-    void submitChanges(ui::EditorState& state, bool sliderHeld,
-                       const EditorTimings::Mark& changed);
+    void submitChanges(ui::EditorState& state, bool sliderHeld, const EditorTimings::Mark& changed);
     // A job is queued or running, or its last update is not shown yet.
     bool busy() const { return worker_.busy(); }
     // The run is done and shown (what a script's wait-evolution waits for).

@@ -108,8 +108,7 @@ void EvolutionWorker::evolve(const EvolutionJob& job, Worker::Context& context) 
         request.who = "matevo edit";
         fitnessRenderer_ = request;
         fitnessRenderer_.device = &device_;
-        renderCache_.emplace(kTileSize, kTargetSize, kRenderCacheSize, device_,
-                             std::move(request));
+        renderCache_.emplace(kTileSize, kTargetSize, kRenderCacheSize, device_, std::move(request));
     }
     CandidateRenderCache& renderCache = *renderCache_;
     // The job's token: cancelled once a newer job is submitted or the editor closes.
@@ -152,9 +151,9 @@ void EvolutionWorker::evolve(const EvolutionJob& job, Worker::Context& context) 
         if (!cache) return context.cancelled() ? void() : failed(cache.error().message);
         fitness.emplace(std::move(cache).value());
     }
-    GeneticAlgorithm ga = fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga,
-                                                     fitness->evaluator())
-                                  : GeneticAlgorithm(preset.family, preset.target, preset.ga);
+    GeneticAlgorithm ga =
+        fitness ? GeneticAlgorithm(preset.family, preset.target, preset.ga, fitness->evaluator())
+                : GeneticAlgorithm(preset.family, preset.target, preset.ga);
     ga.initialize();
     const std::vector<Genome> kept = keptGenomesOfFamily(preset);
     for (;;) {
@@ -169,7 +168,8 @@ void EvolutionWorker::evolve(const EvolutionJob& job, Worker::Context& context) 
         update.distinctGenomes = distinct.total;
         std::size_t drawn = std::min(distinct.first.size(), std::size_t(kGridTiles));
         for (;;) {
-            if (Status filled = fillTiles(update, ranked, distinct, drawn, kept, renderCache, cancel);
+            if (Status filled =
+                    fillTiles(update, ranked, distinct, drawn, kept, renderCache, cancel);
                 !filled) {
                 if (context.cancelled()) return;
                 update.finished = true;

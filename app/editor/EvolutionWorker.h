@@ -54,11 +54,11 @@ struct EvolutionUpdate {
     bool targetOnly = false;  // a preview: the target alone, the candidates left as they are
     std::shared_ptr<const gpu::DisplayTile> target;  // large, for the target panel
     std::shared_ptr<const Image> targetPicture;      // at tile size, as the ΔE00 maps saw it
-    std::string backend;                      // what rendered the tiles: "GPU (name)" or "CPU"
+    std::string backend;  // what rendered the tiles: "GPU (name)" or "CPU"
     ImageMetric heatmapMetric = ImageMetric::DeltaE00;  // what the tiles' error maps hold
-    std::vector<CandidateResult> candidates;  // best first, one per distinct genome
-    int distinctGenomes = 0;                  // in the population, drawn or not
-    std::vector<CandidateResult> kept;        // the preset's kept materials of its family
+    std::vector<CandidateResult> candidates;            // best first, one per distinct genome
+    int distinctGenomes = 0;                            // in the population, drawn or not
+    std::vector<CandidateResult> kept;                  // the preset's kept materials of its family
     std::vector<ui::GenerationPoint> history;
     std::string error;  // the job could not run (e.g. a missing texture)
 };

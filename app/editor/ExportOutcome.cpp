@@ -9,7 +9,6 @@
 namespace matevo::editor {
 namespace {
 
-
 std::string fixed2(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.2f", value);
@@ -89,7 +88,6 @@ nlohmann::ordered_json deliveredReportJson(const ExportReport& report,
     return json;
 }
 
-
 std::string describeExport(const ExportReport& report) {
     std::string text = "Exported " + materialCount(report.variants.size()) + " to " +
                        report.file.string() + " (" + std::string(toString(report.format)) +
@@ -103,8 +101,8 @@ std::string describeExport(const ExportReport& report) {
         withinGoal += withinExportGoal(variant, report.settings) ? 1 : 0;
     }
     if (!report.variants.empty()) text += "; mean " + fixed2(sum / double(report.variants.size()));
-    return text + " (at " + std::to_string(report.settings.reportSize) + " px); within the goal of " +
-           number(report.settings.fit.goalMeanDeltaE00) + ": " +
+    return text + " (at " + std::to_string(report.settings.reportSize) +
+           " px); within the goal of " + number(report.settings.fit.goalMeanDeltaE00) + ": " +
            fraction(withinGoal, report.variants.size());
 }
 
@@ -124,8 +122,8 @@ std::string describeDeliveredExport(const ExportReport& report, const DeliveredS
     std::string text = "Exported " + std::to_string(count) +
                        (count == 1 ? " variant" : " variants") + " to " + report.file.string() +
                        " (" + std::string(toString(report.format)) + "): fitted ΔE00 within " +
-                       number(delivered.goalDeltaE) + " for " + fraction(withinGoal, count) +
-                       "; " + bandInWords(request) + ": " + fraction(holding, count);
+                       number(delivered.goalDeltaE) + " for " + fraction(withinGoal, count) + "; " +
+                       bandInWords(request) + ": " + fraction(holding, count);
     // The first three that do not hold, by name and why; the outcome window lists them all.
     for (std::size_t i = 0; i < failures.size() && i < 3; ++i)
         text += (i == 0 ? " — " : ", ") + failures[i];
@@ -147,8 +145,9 @@ ui::ExportOutcome exportOutcome(const ExportResult& result) {
             const bool within = withinExportGoal(variant, report.settings);
             outcome.lines.push_back(
                 {variant.name + ": fitted ΔE00 " + fixed2(variant.deltaE.stats.mean) +
-                     (within ? ", within the goal" : ", past the goal of " +
-                                                         number(report.settings.fit.goalMeanDeltaE00)),
+                     (within
+                          ? ", within the goal"
+                          : ", past the goal of " + number(report.settings.fit.goalMeanDeltaE00)),
                  within});
         }
         return outcome;
@@ -163,8 +162,7 @@ ui::ExportOutcome exportOutcome(const ExportResult& result) {
         // By number, as the summary and the Variants window's tiles name them.
         std::string text = numbered(i) + ": fitted ΔE00 " + fixed2(variant.deltaEToMatevo) +
                            (delivered.withinGoal(i) ? " (within the goal)" : " (past the goal)") +
-                           "; as delivered " + fixed2(variant.deltaEToTarget) +
-                           " from the target";
+                           "; as delivered " + fixed2(variant.deltaEToTarget) + " from the target";
         if (delivered.variants.size() > 1) text += ", " + fixed2(nearest[i]) + " from the nearest";
         if (variant.attempt > 0) text += ", refitted";
         text += why.empty() ? "" : " — " + why;

@@ -115,7 +115,8 @@ ExportResult ExportWorker::deliver(const ui::ExportRequest& request, Worker::Con
     DeliveryFormat format = gltf.format();
     // Closing the editor stops the check before its next conversion; nothing is written.
     format.render = [&context, convert = std::move(format.render)](
-                        std::span<const Genome> genomes, int attempt) -> Result<std::vector<Image>> {
+                        std::span<const Genome> genomes,
+                        int attempt) -> Result<std::vector<Image>> {
         if (context.cancelled()) return cancelledError();
         return convert(genomes, attempt);
     };
@@ -132,8 +133,7 @@ ExportResult ExportWorker::deliver(const ui::ExportRequest& request, Worker::Con
     auto report = writeExport(*fitted, request.format, request.file);
     if (!report) return failed(report.error());
     const nlohmann::ordered_json json = deliveredReportJson(*report, *delivered, job.request);
-    if (Status written =
-            writeFileAtomically(exportReportFile(request.file), json.dump(2) + "\n");
+    if (Status written = writeFileAtomically(exportReportFile(request.file), json.dump(2) + "\n");
         !written)
         return failed(withContext(written.error(), "the report beside the export"));
     result.report = std::move(report).value();

@@ -21,10 +21,10 @@ class ImageBridge;
 
 // What every controller may use: all outlive the controllers.
 struct FeatureContext {
-    ImageBridge& bridge;          // uploads and shows pictures in the window
-    const gpu::Device& device;    // the window's: workers render on it
-    RenderBackend backend;        // the editor's --backend
-    std::function<void()> wake;   // thread-safe: a worker has something to show
+    ImageBridge& bridge;         // uploads and shows pictures in the window
+    const gpu::Device& device;   // the window's: workers render on it
+    RenderBackend backend;       // the editor's --backend
+    std::function<void()> wake;  // thread-safe: a worker has something to show
 };
 
 class FeatureController {

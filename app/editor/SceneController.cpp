@@ -45,8 +45,7 @@ Status SceneController::show(SceneViewResult& result, ui::SceneView& view) {
     if (result.meshFailed) {
         view.meshError = result.status;
         auto& recent = view.recentMeshes;
-        recent.erase(std::remove(recent.begin(), recent.end(), result.controls.mesh),
-                     recent.end());
+        recent.erase(std::remove(recent.begin(), recent.end(), result.controls.mesh), recent.end());
         if (view.controls.mesh == result.controls.mesh)
             view.controls.mesh = shownMesh_.empty() ? ui::SceneViewControls{}.mesh : shownMesh_;
         return Ok{};

@@ -39,7 +39,7 @@ struct SceneViewRenderer {
     std::string texturesKey;  // lighting and texture files of `textures`
     SceneSettings settings;   // the preset's, lit as `textures` are
     DrawnMesh whole;
-    DrawnMesh preview;          // made at the first preview, from previewMesh
+    DrawnMesh preview;  // made at the first preview, from previewMesh
     std::optional<Mesh> previewMesh;
     std::string key;  // mesh and texturesKey of `whole`
 };
@@ -67,8 +67,8 @@ SceneViewWorker::SceneViewWorker(std::function<void()> onUpdate, const gpu::Devi
                   result.status = rendered.error().message;
               result.controls = job.controls;
               result.materials = job.materials;
-              const bool firstWhole = result.tile && !result.preview && renderer_ &&
-                                      !renderer_->preview.renderer;
+              const bool firstWhole =
+                  result.tile && !result.preview && renderer_ && !renderer_->preview.renderer;
               context.publish(std::move(result));
               // The first preview of a mesh would make its renderer and compile its shaders
               // (lavapipe compiles on first use): done now, while the whole picture is looked
@@ -95,7 +95,7 @@ std::string meshName(const std::string& mesh) {
 }
 
 Result<gpu::GpuSceneRenderer*> rendererOf(SceneViewRenderer& renderer, DrawnMesh& drawn,
-                                        const gpu::Device& device, const Mesh& mesh) {
+                                          const gpu::Device& device, const Mesh& mesh) {
     if (!drawn.renderer) {
         auto made = gpu::GpuSceneRenderer::create(device, renderer.runner, defaultFgdTables(),
                                                   *renderer.textures, mesh);
@@ -117,13 +117,13 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
     if (!renderer) {
         auto runner = gpu::CommandRunner::create(device);
         if (!runner) return runner.error();
-        renderer.reset(new SceneViewRenderer{std::move(runner).value(), {}, {}, {}, {}, {}, {}, {}});
+        renderer.reset(
+            new SceneViewRenderer{std::move(runner).value(), {}, {}, {}, {}, {}, {}, {}});
     }
     // The editor's one lighting choice (ui/LightingPanel.h): the preset's scene.
     const std::string lighting = lightingChoiceOf(job.preset.scene);
     const std::string texturesKey = lighting + "|" + job.presetFile.string() + "|" +
-                                    job.preset.roughnessTexture + "|" +
-                                    job.preset.baseColorTexture;
+                                    job.preset.roughnessTexture + "|" + job.preset.baseColorTexture;
     const std::string key = controls.mesh + "|" + texturesKey;
     if (!renderer->whole.renderer || renderer->key != key) {
         // A mesh that does not load leaves the scene it had: the window keeps its picture.
@@ -166,10 +166,9 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
         drawn.materials = std::move(materials);
     }
 
-    result.instances = layoutInstances(controls.instances,
-                                       controls.layout == 0 ? InstanceLayout::Grid
-                                                            : InstanceLayout::Crowd,
-                                       int(job.materials.size()));
+    result.instances = layoutInstances(
+        controls.instances, controls.layout == 0 ? InstanceLayout::Grid : InstanceLayout::Crowd,
+        int(job.materials.size()));
     result.camera = ui::sceneCamera(controls, result.instances);
     const int divisor = std::max(1, job.previewDivisor);
     const int width = std::max(16, controls.width / divisor);
@@ -182,8 +181,8 @@ Result<SceneViewResult> render(std::unique_ptr<SceneViewRenderer>& renderer,
     const gpu::SceneFrame frame{width, height, result.camera, result.instances};
     if (auto recorded = (*scene)->record(*commands, frame, renderer->settings); !recorded)
         return recorded.error();
-    if (auto shown = (*scene)->recordDisplay(*commands, tile->render,
-                                                    {controls.exposure, ToneMap::Aces});
+    if (auto shown =
+            (*scene)->recordDisplay(*commands, tile->render, {controls.exposure, ToneMap::Aces});
         !shown)
         return shown.error();
     if (auto submitted = renderer->runner.submitAndWait(); !submitted) return submitted.error();

@@ -25,7 +25,7 @@ namespace matevo::editor {
 
 struct SceneViewJob {
     ui::SceneViewControls controls;
-    Preset preset;                      // lighting, textures (relative to presetFile)
+    Preset preset;  // lighting, textures (relative to presetFile)
     std::filesystem::path presetFile;
     std::vector<ui::SceneMaterial> materials;  // instance i wears materials[i mod count]
     // A preview while the camera moves: width and height divided by this (1: the whole
@@ -44,7 +44,7 @@ struct SceneViewResult {
     double frameMilliseconds = 0.0;  // recording and rendering the frame (no mesh loading)
     SceneCamera camera;
     std::vector<SceneInstance> instances;
-    std::string status;  // what was drawn and how long it took, or why not
+    std::string status;       // what was drawn and how long it took, or why not
     bool meshFailed = false;  // the mesh could not be loaded: `status` says why in one line
 };
 

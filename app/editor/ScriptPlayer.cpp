@@ -5,10 +5,10 @@
 #include "ExportDialog.h"
 #include "LayoutCheck.h"
 #include "LightingPanel.h"
-#include "render/LightingScenes.h"
-#include "scene/LightingChoice.h"
 #include "PresetFiles.h"
 #include "VariantsPanel.h"
+#include "render/LightingScenes.h"
+#include "scene/LightingChoice.h"
 
 namespace matevo::editor {
 namespace {
@@ -55,8 +55,8 @@ bool ScriptPlayer::waitFor(bool settled, const ScriptAction& action, const char*
     // One extra frame after settling so the final result is on screen.
     if (settled && framesWaited_++ >= 1) return true;
     if (std::chrono::steady_clock::now() - *waitingSince_ > kEvolutionTimeout)
-        effects.error = "script line " + std::to_string(action.line) + ": " + what +
-                        " did not finish in 120 s";
+        effects.error =
+            "script line " + std::to_string(action.line) + ": " + what + " did not finish in 120 s";
     return false;
 }
 
@@ -71,8 +71,7 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
         case Kind::WaitEvolution:
             return waitFor(settled.evolution, action, "wait-evolution: the GA run", effects);
         case Kind::WaitVariants:
-            return waitFor(settled.variants, action, "wait-variants: the variant search",
-                           effects);
+            return waitFor(settled.variants, action, "wait-variants: the variant search", effects);
         case Kind::VariantsHue:
             state.variants.hueVariety = action.text == "on";
             return true;
@@ -109,8 +108,8 @@ bool ScriptPlayer::apply(const ScriptAction& action, ui::EditorUi& ui, Settled s
             state.variants.selected = int(action.first);
             return true;
         case Kind::KeepVariants:
-            ui::keepVariants(state, action.text == "all" ? std::nullopt
-                                                         : variantIndexOf(action.text));
+            ui::keepVariants(state,
+                             action.text == "all" ? std::nullopt : variantIndexOf(action.text));
             return true;
         case Kind::ExportSet: {
             if (!exportAsked_) {

@@ -16,8 +16,8 @@ struct ScriptEffects {
     bool quit = false;
     std::optional<std::filesystem::path> screenshot;
     std::optional<std::pair<int, int>> resize;
-    bool redraw = false;  // the whole window, on the next frame
-    ui::VariantsActions variants;  // as if pressed in the Variants window
+    bool redraw = false;                         // the whole window, on the next frame
+    ui::VariantsActions variants;                // as if pressed in the Variants window
     std::optional<ui::ExportRequest> exportSet;  // as if confirmed in the export dialog
     std::string error;  // a failed action (e.g. wait-evolution timed out); the app exits 1
 };
@@ -55,11 +55,16 @@ public:
     bool awaitedWorkSettled(Settled settled) const {
         if (finished()) return false;
         switch (actions_[next_].kind) {
-            case ScriptAction::Kind::WaitEvolution: return settled.evolution;
-            case ScriptAction::Kind::WaitVariants: return settled.variants;
-            case ScriptAction::Kind::ExportSet: return settled.exported;
-            case ScriptAction::Kind::WaitScene: return settled.scene;
-            default: return false;
+            case ScriptAction::Kind::WaitEvolution:
+                return settled.evolution;
+            case ScriptAction::Kind::WaitVariants:
+                return settled.variants;
+            case ScriptAction::Kind::ExportSet:
+                return settled.exported;
+            case ScriptAction::Kind::WaitScene:
+                return settled.scene;
+            default:
+                return false;
         }
     }
     // Runs the actions due this frame.

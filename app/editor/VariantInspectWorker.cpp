@@ -39,9 +39,9 @@ VariantInspectResult VariantInspectWorker::compute(const VariantInspectJob& job,
     gpu::RendererRequest request = rendererRequest_;
     request.cancel = context.token();
     // As the Variants window measures its set: the renders as a PNG file would hold them.
-    const RenderGenomes render = asStoredInPng(renderGenomesWith(
-        gpu::createPopulationRenderer(request, *textures), preset.family, preset.baseKappa,
-        preset.scene, job.size));
+    const RenderGenomes render =
+        asStoredInPng(renderGenomesWith(gpu::createPopulationRenderer(request, *textures),
+                                        preset.family, preset.baseKappa, preset.scene, job.size));
     const std::array<Genome, 2> genomes{preset.target, job.variant};
     auto images = render(genomes);
     if (!images || images->size() != 2) {

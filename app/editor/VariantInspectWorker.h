@@ -18,11 +18,11 @@
 namespace matevo::editor {
 
 struct VariantInspectJob {
-    Preset madeFor;  // the preset with the set's own target, family and kappa
+    Preset madeFor;                    // the preset with the set's own target, family and kappa
     std::filesystem::path presetFile;  // its textures are relative to its folder
     Genome variant;
-    int index = 0;  // in the set, as the window numbers it
-    int size = 0;   // the target's image size
+    int index = 0;            // in the set, as the window numbers it
+    int size = 0;             // the target's image size
     HeatmapSettings heatmap;  // the range the ΔE00 map is coloured over
 };
 
@@ -32,7 +32,7 @@ struct VariantInspectResult {
     int size = 0;
     Image target, render, heatmap;  // as a PNG holds them, and the map through viridis
     ErrorMap deltaE;                // the variant against the target
-    std::string error;  // the render could not be made (e.g. a missing texture)
+    std::string error;              // the render could not be made (e.g. a missing texture)
 };
 
 class VariantInspectWorker {

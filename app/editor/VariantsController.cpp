@@ -102,8 +102,8 @@ Status VariantsController::showResults(ui::EditorState& state) {
 Status VariantsController::followInspection(ui::EditorState& state) {
     ui::VariantsView& view = state.variants;
     const auto& document = state.preset.variantSet;
-    const bool selected = document && view.selected >= 0 &&
-                          std::size_t(view.selected) < view.variants.size();
+    const bool selected =
+        document && view.selected >= 0 && std::size_t(view.selected) < view.variants.size();
     if (!selected) {
         inspecting_.reset();
         view.inspection.reset();
@@ -133,17 +133,17 @@ Status VariantsController::followInspection(ui::EditorState& state) {
     auto shown = bridge_.upload(pictures);
     if (!shown) return shown.error();
     inspectionImages_ = std::move(shown).value();
-    view.inspection = ui::VariantInspection{
-        result->variant,
-        result->index,
-        result->size,
-        result->deltaE.stats.mean,
-        inspectionImages_[0]->render(),
-        inspectionImages_[1]->render(),
-        inspectionImages_[2]->render(),
-        std::make_shared<const Image>(std::move(result->target)),
-        std::make_shared<const Image>(std::move(result->render)),
-        std::make_shared<const ErrorMap>(std::move(result->deltaE))};
+    view.inspection =
+        ui::VariantInspection{result->variant,
+                              result->index,
+                              result->size,
+                              result->deltaE.stats.mean,
+                              inspectionImages_[0]->render(),
+                              inspectionImages_[1]->render(),
+                              inspectionImages_[2]->render(),
+                              std::make_shared<const Image>(std::move(result->target)),
+                              std::make_shared<const Image>(std::move(result->render)),
+                              std::make_shared<const ErrorMap>(std::move(result->deltaE))};
     return Ok{};
 }
 
@@ -201,8 +201,7 @@ Status VariantsController::show(ui::EditorState& state) {
     return Ok{};
 }
 
-void VariantsController::handleRequests(const ui::FrameRequests& requests,
-                                        ui::EditorState& state) {
+void VariantsController::handleRequests(const ui::FrameRequests& requests, ui::EditorState& state) {
     const ui::VariantsActions& actions = requests.variants;
     ui::VariantsView& view = state.variants;
     if (actions.run) {
@@ -210,8 +209,8 @@ void VariantsController::handleRequests(const ui::FrameRequests& requests,
         // The kept bin is where a set may start: its materials join as they are.
         if (view.startFromKept) fresh.keep = keptGenomesOfFamily(state.preset);
         discarded_.clear();
-        if (worker_.start({state.preset, state.presetPath, fresh, std::nullopt,
-                           view.holdAsDelivered}))
+        if (worker_.start(
+                {state.preset, state.presetPath, fresh, std::nullopt, view.holdAsDelivered}))
             view.running = true;
     }
     auto& document = state.preset.variantSet;
@@ -253,12 +252,11 @@ void VariantsController::saveFolder(ui::EditorState& state) {
         if (!output) return output.error();
         auto font = Font::dejaVuSans();  // the contact sheet's
         if (!font) return font.error();
-        return saveVariantFolder(
-            *output,
-            materialFromPreset(shown.preset, shown.presetFile, shown.preset.target,
-                               shown.preset.name),
-            shown.set, variantReport(shown.preset, shown.run, shown.set), *font,
-            state.heatmap.metric);
+        return saveVariantFolder(*output,
+                                 materialFromPreset(shown.preset, shown.presetFile,
+                                                    shown.preset.target, shown.preset.name),
+                                 shown.set, variantReport(shown.preset, shown.run, shown.set),
+                                 *font, state.heatmap.metric);
     };
     const Status saved = save();
     view.summary = saved ? "Saved the set to " + view.savePath

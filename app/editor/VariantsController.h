@@ -46,9 +46,9 @@ private:
     VariantRequest request(const ui::VariantsView& view) const;
 
     ImageBridge& bridge_;
-    std::optional<VariantsResult> shown_;        // the measured set in the window
-    std::optional<SavedVariantSet> shownFor_;    // the document's set it shows
-    std::vector<Genome> discarded_;              // since the last fresh search
+    std::optional<VariantsResult> shown_;              // the measured set in the window
+    std::optional<SavedVariantSet> shownFor_;          // the document's set it shows
+    std::vector<Genome> discarded_;                    // since the last fresh search
     std::vector<std::shared_ptr<ShownImage>> images_;  // what the window shows
     std::optional<VariantInspectJob> inspecting_;      // the Inspect panel's variant, as asked
     std::vector<std::shared_ptr<ShownImage>> inspectionImages_;  // what the inspector shows

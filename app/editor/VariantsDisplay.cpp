@@ -29,10 +29,11 @@ std::string deliveredSummary(const DeliveredSet& delivered, const VariantRequest
     }
     const std::string format = delivered.format == "gltf" ? "glTF" : delivered.format;
     char text[320];
-    int length = std::snprintf(
-        text, sizeof text, "as delivered in %s: %zu/%zu in band %g–%g and ≥ %g apart; fitted "
-        "ΔE00 ≤ %g for %zu/%zu", format.c_str(), holding, count, request.band.low,
-        request.band.high, request.minApart, delivered.goalDeltaE, withinGoal, count);
+    int length = std::snprintf(text, sizeof text,
+                               "as delivered in %s: %zu/%zu in band %g–%g and ≥ %g apart; fitted "
+                               "ΔE00 ≤ %g for %zu/%zu",
+                               format.c_str(), holding, count, request.band.low, request.band.high,
+                               request.minApart, delivered.goalDeltaE, withinGoal, count);
     if (std::size_t(length) < sizeof text && (delivered.refitted > 0 || delivered.replaced > 0))
         std::snprintf(text + length, sizeof text - std::size_t(length),
                       " (%zu refitted, %zu replaced from the archive)", delivered.refitted,
@@ -68,8 +69,12 @@ Result<std::vector<std::shared_ptr<ShownImage>>> showVariants(const VariantsResu
     const std::vector<double> nearest = set.nearestSibling();
     for (std::size_t i = 0; i < set.variants.size(); ++i) {
         const Variant& variant = set.variants[i];
-        view.variants.push_back({variant.genome, (*shown)[i + 1]->render(),
-                                 variant.deltaEToTarget, nearest[i], variant.kept, {}});
+        view.variants.push_back({variant.genome,
+                                 (*shown)[i + 1]->render(),
+                                 variant.deltaEToTarget,
+                                 nearest[i],
+                                 variant.kept,
+                                 {}});
         if (!delivered) continue;
         const bool holds = deliveredHolds(*delivered, i, result.run.request);
         view.deliveredMet = view.deliveredMet && holds;

@@ -40,12 +40,12 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& 
     // token.
     gpu::RendererRequest request = rendererRequest_;
     request.cancel = context.token();
-    auto lit = lightingScenes(job.request.lightings, preset.scene, *textures,
-                              [&request](const SceneTextures& lighting)
-                                  -> Result<std::shared_ptr<PopulationRenderer>> {
-                                  return std::shared_ptr<PopulationRenderer>(
-                                      gpu::createPopulationRenderer(request, lighting));
-                              });
+    auto lit = lightingScenes(
+        job.request.lightings, preset.scene, *textures,
+        [&request](const SceneTextures& lighting) -> Result<std::shared_ptr<PopulationRenderer>> {
+            return std::shared_ptr<PopulationRenderer>(
+                gpu::createPopulationRenderer(request, lighting));
+        });
     if (!lit) {
         result.error = lit.error().message;
         return result;
@@ -83,9 +83,9 @@ VariantsResult VariantsWorker::compute(const VariantsJob& job, Worker::Context& 
         {preset.target, preset.family, preset.baseKappa}, job.request, settings,
         renderAt(kFitnessSize), renderAt(kOutputSize), context.token(),
         [&](const VariantSearchProgress& progress) {
-            context.reportProgress(float(std::max(double(progress.archived) / wanted,
-                                                  double(progress.evaluations) /
-                                                      settings.maxEvaluations)));
+            context.reportProgress(
+                float(std::max(double(progress.archived) / wanted,
+                               double(progress.evaluations) / settings.maxEvaluations)));
         },
         format ? &*format : nullptr);
     if (context.cancelled()) {

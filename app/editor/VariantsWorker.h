@@ -35,7 +35,7 @@ struct VariantsResult {
     VariantSet set;
     bool measured = false;  // a set measured as it was (VariantsJob::measure), not searched
     std::optional<DeliveredSet> delivered;  // with VariantsJob::deliver: the set as delivered
-    std::string error;  // the job could not run (e.g. a missing texture)
+    std::string error;                      // the job could not run (e.g. a missing texture)
 };
 
 class VariantsWorker {

@@ -48,8 +48,8 @@ WindowInput::WindowInput(GLFWwindow* window)
         ImGui::GetIO().AddFocusEvent(focused != 0);
         of(w).changed_ = true;
     });
-    glfwSetWindowRefreshCallback(window,
-                                 [](GLFWwindow* w) { of(w).changed_ = of(w).refreshRequested_ = true; });
+    glfwSetWindowRefreshCallback(
+        window, [](GLFWwindow* w) { of(w).changed_ = of(w).refreshRequested_ = true; });
     glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { of(w).changed_ = true; });
     glfwSetWindowCloseCallback(window, [](GLFWwindow* w) {
         glfwSetWindowShouldClose(w, GLFW_FALSE);  // the editor decides, after asking

@@ -155,9 +155,8 @@ Status WindowRenderer::createSwapchain(VkExtent2D size) {
         if (!view) return view.error();
         target.view = std::move(view).value();
         const VkImageView imageView = target.view.get();
-        auto framebuffer = gpu::createFramebuffer(device_, renderPass_.get(),
-                                                  std::span(&imageView, 1), extent_.width,
-                                                  extent_.height);
+        auto framebuffer = gpu::createFramebuffer(
+            device_, renderPass_.get(), std::span(&imageView, 1), extent_.width, extent_.height);
         if (!framebuffer) return framebuffer.error();
         target.framebuffer = std::move(framebuffer).value();
         auto renderDone = gpu::createSemaphore(device_);

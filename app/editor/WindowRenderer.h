@@ -95,7 +95,7 @@ private:
     VkExtent2D extent_{};
     std::uint32_t minImageCount_ = 2;
     bool needsRebuild_ = false;
-    ui::PictureHistory pictures_;  // what each swapchain image shows
+    ui::PictureHistory pictures_;         // what each swapchain image shows
     std::vector<SwapchainImage> images_;  // after the swapchain: released before it
     std::optional<gpu::Buffer> readback_;
 };

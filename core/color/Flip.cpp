@@ -70,8 +70,7 @@ template <int Count, int Vectors>
                               (taps[f]->odd ? pairDifference : pairSum);
         }
     }
-    for (int f = 0; f < Count; ++f)
-        std::memcpy(out[f] + x0, &sums[f][0], sizeof sums[f]);
+    for (int f = 0; f < Count; ++f) std::memcpy(out[f] + x0, &sums[f][0], sizeof sums[f]);
 }
 
 // out[f][x] = Σ_k taps[f][k] lines[k][x] for `Count` filters of one radius over the same
@@ -111,9 +110,15 @@ MATEVO_VECTORISED_KERNEL void filterLines(std::initializer_list<const Taps*> tap
                                           const float* const* lines,
                                           std::initializer_list<float*> out) {
     switch (taps.size()) {
-    case 1: filterLinesOf<1>(taps.begin(), width, lines, out.begin()); break;
-    case 2: filterLinesOf<2>(taps.begin(), width, lines, out.begin()); break;
-    default: filterLinesOf<3>(taps.begin(), width, lines, out.begin()); break;
+        case 1:
+            filterLinesOf<1>(taps.begin(), width, lines, out.begin());
+            break;
+        case 2:
+            filterLinesOf<2>(taps.begin(), width, lines, out.begin());
+            break;
+        default:
+            filterLinesOf<3>(taps.begin(), width, lines, out.begin());
+            break;
     }
 }
 
@@ -200,16 +205,21 @@ struct Kernels {
 Kernels makeKernels(double pixelsPerDegree) {
     const flip::CsfKernels csf = flip::makeCsfKernels(pixelsPerDegree);
     const flip::FeatureKernels feature = flip::makeFeatureKernels(pixelsPerDegree);
-    return {halfOf(csf.achromatic),      halfOf(csf.redGreen),
-            halfOf(csf.blueYellow[0]),   halfOf(csf.blueYellow[1]),
-            halfOf(feature.gaussian),    halfOf(feature.firstDerivative),
+    return {halfOf(csf.achromatic),           halfOf(csf.redGreen),
+            halfOf(csf.blueYellow[0]),        halfOf(csf.blueYellow[1]),
+            halfOf(feature.gaussian),         halfOf(feature.firstDerivative),
             halfOf(feature.secondDerivative), float(flip::maxColorDistance())};
 }
 
 // The planes a tile's row passes fill for one image, each filtered along x.
 enum Plane {
-    kAchromatic, kRedGreen, kBlueYellow0, kBlueYellow1,  // contrast sensitivity, step 2
-    kSlope, kCurvature, kBlurred,                        // first, second derivative, Gaussian
+    kAchromatic,
+    kRedGreen,
+    kBlueYellow0,
+    kBlueYellow1,  // contrast sensitivity, step 2
+    kSlope,
+    kCurvature,
+    kBlurred,  // first, second derivative, Gaussian
     kPlaneCount
 };
 
@@ -225,16 +235,15 @@ MATEVO_VECTORISED_KERNEL void colorErrorRow(const float* const* filtered, int wi
 
 // Steps 4 and 5 along one row from both images' ∂x, ∂y, ∂xx, ∂yy; error holds the colour error
 // and receives ꟻLIP.
-MATEVO_VECTORISED_KERNEL void combineRow(const float* const* derivatives, int width,
-                                         float* error) {
+MATEVO_VECTORISED_KERNEL void combineRow(const float* const* derivatives, int width, float* error) {
     for (int x = 0; x < width; ++x) {
         auto length = [&](int dx, int dy) {
             return std::sqrt(derivatives[dx][x] * derivatives[dx][x] +
                              derivatives[dy][x] * derivatives[dy][x]);
         };
         error[x] = flip::formulas::combine(
-            error[x], flip::formulas::featureDifference(length(0, 1), length(4, 5),
-                                                        length(2, 3), length(6, 7)));
+            error[x], flip::formulas::featureDifference(length(0, 1), length(4, 5), length(2, 3),
+                                                        length(6, 7)));
     }
 }
 
@@ -296,17 +305,18 @@ void rowPasses(const Image& reference, const Image& test, const Tile& tile, int 
             filterLines({&kernels.blueYellow0, &kernels.blueYellow1}, width,
                         shiftsOf(row, row.blueYellow, csfRadius, scratch.lines),
                         {planes[kBlueYellow0].row(y), planes[kBlueYellow1].row(y)});
-            filterLines({&kernels.firstDerivative, &kernels.secondDerivative, &kernels.gaussian},
-                        width, shiftsOf(row, row.lightness, featureRadius, scratch.lines),
-                        {planes[kSlope].row(y), planes[kCurvature].row(y), planes[kBlurred].row(y)});
+            filterLines(
+                {&kernels.firstDerivative, &kernels.secondDerivative, &kernels.gaussian}, width,
+                shiftsOf(row, row.lightness, featureRadius, scratch.lines),
+                {planes[kSlope].row(y), planes[kCurvature].row(y), planes[kBlurred].row(y)});
         }
     }
 }
 
 // ꟻLIP of one tile: the row passes, then row by row the column passes, the colour error
 // (step 3), the feature error (step 4) and their combination (step 5).
-void flipOfTile(const Image& reference, const Image& test, const Tile& tile,
-                const Kernels& kernels, TileScratch& scratch, float* error) {
+void flipOfTile(const Image& reference, const Image& test, const Tile& tile, const Kernels& kernels,
+                TileScratch& scratch, float* error) {
     const int width = tile.width();
     const int csfRadius = kernels.achromatic.radius(), featureRadius = kernels.gaussian.radius();
     // Columns, clamped at the image's edges: a tile's stored rows already repeat them.
@@ -331,8 +341,7 @@ void flipOfTile(const Image& reference, const Image& test, const Tile& tile,
             float* const* derivative = derivativeSums + 4 * image;
             for (int c = 0; c < 4; ++c)
                 filterLines({csf[c].second}, width, around(csf[c].first, csfRadius), {color[c]});
-            filterLines({&kernels.gaussian}, width, around(kSlope, featureRadius),
-                        {derivative[0]});
+            filterLines({&kernels.gaussian}, width, around(kSlope, featureRadius), {derivative[0]});
             filterLines({&kernels.firstDerivative, &kernels.secondDerivative}, width,
                         around(kBlurred, featureRadius), {derivative[1], derivative[3]});
             filterLines({&kernels.gaussian}, width, around(kCurvature, featureRadius),

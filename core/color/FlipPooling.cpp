@@ -81,18 +81,21 @@ ErrorStats FlipPooling::finish(std::span<const float> errors, std::span<const st
     using InBucket = std::array<std::vector<float>, 3>;
     const std::size_t chunkCount = (errors.size() + kChunkPixels - 1) / kChunkPixels;
     std::vector<InBucket> chunks(chunkCount);
-    parallelForChunks(int(chunkCount), [&](int chunk) {
-        const std::size_t first = std::size_t(chunk) * kChunkPixels;
-        const std::size_t end = std::min(errors.size(), first + kChunkPixels);
-        for (std::size_t i = first; i < end; ++i) {
-            if (pooled[i] == 0) continue;
-            const float error = std::clamp(errors[i], 0.0f, 1.0f);
-            const std::size_t errorBucket = bucketOf(error);
-            for (std::size_t q = 0; q < kFractions.size(); ++q)
-                if (errorBucket == bucketOfQuartile[q])
-                    chunks[std::size_t(chunk)][q].push_back(error);
-        }
-    }, {}, workerCount);
+    parallelForChunks(
+        int(chunkCount),
+        [&](int chunk) {
+            const std::size_t first = std::size_t(chunk) * kChunkPixels;
+            const std::size_t end = std::min(errors.size(), first + kChunkPixels);
+            for (std::size_t i = first; i < end; ++i) {
+                if (pooled[i] == 0) continue;
+                const float error = std::clamp(errors[i], 0.0f, 1.0f);
+                const std::size_t errorBucket = bucketOf(error);
+                for (std::size_t q = 0; q < kFractions.size(); ++q)
+                    if (errorBucket == bucketOfQuartile[q])
+                        chunks[std::size_t(chunk)][q].push_back(error);
+            }
+        },
+        {}, workerCount);
     InBucket inBucket;
     for (const InBucket& chunk : chunks)
         for (std::size_t q = 0; q < kFractions.size(); ++q)

@@ -92,8 +92,8 @@ FeatureKernels makeFeatureKernels(double pixelsPerDegree) {
         const double g = gaussianAt(x, sigma);
         const std::size_t at = std::size_t(i + kernels.radius);
         gaussian[at] = g;
-        first[at] = -x * g;                                    // ∝ g'(x)
-        second[at] = (x * x / (sigma * sigma) - 1.0) * g;      // ∝ g''(x)
+        first[at] = -x * g;                                // ∝ g'(x)
+        second[at] = (x * x / (sigma * sigma) - 1.0) * g;  // ∝ g''(x)
     }
     kernels.gaussian = scaled(gaussian, 1.0 / sum(gaussian));
     kernels.firstDerivative = balanced(first);

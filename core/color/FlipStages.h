@@ -33,9 +33,9 @@ namespace matevo::flip {
 // from 0.7 m, i.e. 3840 π / 180 ≈ 67.02 pixels per degree.
 inline constexpr double kDefaultPixelsPerDegree = 3840.0 * 3.14159265358979323846 / 180.0;
 
-inline constexpr double kColorExponent = 0.7;      // q_c
-inline constexpr double kColorCutoff = 0.4;        // p_c: fraction of c_max ...
-inline constexpr double kColorCutoffTarget = 0.95;  // p_t: ... that maps to this error
+inline constexpr double kColorExponent = 0.7;          // q_c
+inline constexpr double kColorCutoff = 0.4;            // p_c: fraction of c_max ...
+inline constexpr double kColorCutoffTarget = 0.95;     // p_t: ... that maps to this error
 inline constexpr double kFeatureWidthDegrees = 0.082;  // w
 inline constexpr double kFeatureExponent = 0.5;        // q_f
 
@@ -56,8 +56,8 @@ struct CsfTerm {
 // columns. Normalised so that each channel's 2D filter sums to 1.
 struct CsfKernels {
     int radius = 0;
-    std::vector<float> achromatic;             // one term
-    std::vector<float> redGreen;               // one term
+    std::vector<float> achromatic;                 // one term
+    std::vector<float> redGreen;                   // one term
     std::array<std::vector<float>, 2> blueYellow;  // two terms, summed after filtering
 };
 int csfRadius(double pixelsPerDegree);
@@ -78,8 +78,7 @@ float colorDifference(const Ycxcz& filteredReference, const Ycxcz& filteredTest)
 double maxColorDistance();
 
 // Step 4 for one pixel from the edge and point magnitudes of both images.
-float featureDifference(float edgeReference, float edgeTest, float pointReference,
-                        float pointTest);
+float featureDifference(float edgeReference, float edgeTest, float pointReference, float pointTest);
 
 // Step 5.
 float combineFlip(float colorError, float featureError);

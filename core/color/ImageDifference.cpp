@@ -23,8 +23,8 @@ constexpr std::size_t kBlockPixels = 256;
 
 // Float math through the shared formulas: flattened, this loop has no calls and no branches, so
 // the compiler vectorises it.
-MATEVO_VECTORISED_KERNEL void deltaERange(
-    const float* rgbaA, const float* rgbaB, float* deltaE, std::size_t count) {
+MATEVO_VECTORISED_KERNEL void deltaERange(const float* rgbaA, const float* rgbaB, float* deltaE,
+                                          std::size_t count) {
     using formulas::FastFloatMath;
     for (std::size_t i = 0; i < count; ++i) {
         const float* pa = rgbaA + 4 * i;
@@ -39,8 +39,7 @@ MATEVO_VECTORISED_KERNEL void deltaERange(
     }
 }
 
-bool anyCoveredInBoth(const float* rgbaA, const float* rgbaB, std::size_t begin,
-                      std::size_t end) {
+bool anyCoveredInBoth(const float* rgbaA, const float* rgbaB, std::size_t begin, std::size_t end) {
     bool any = false;
     for (std::size_t i = begin; i < end; ++i) {
         const bool coveredA = isCovered(rgbaA[4 * i + 3]);
@@ -86,8 +85,8 @@ DeltaEPooling compareChunk(const Image& a, const Image& b, bool useAlpha, std::s
 Status requireComparable(const Image& a, const Image& b) {
     if (a.width != b.width || a.height != b.height)
         return badInput("image sizes differ: " + std::to_string(a.width) + "x" +
-                     std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
-                     std::to_string(b.height));
+                        std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
+                        std::to_string(b.height));
     if (a.rgba.size() != a.pixelCount() * 4 || b.rgba.size() != b.pixelCount() * 4)
         return internalError("malformed image: pixel data does not match its size");
     return Ok{};
@@ -106,11 +105,14 @@ Result<ErrorMap> compareImages(const Image& a, const Image& b, bool useAlpha,
     resizeOnHugePages(map.covered, pixelCount);
     const std::size_t chunkCount = (pixelCount + kChunkPixels - 1) / kChunkPixels;
     std::vector<DeltaEPooling> chunks(chunkCount);
-    parallelForChunks(int(chunkCount), [&](int chunk) {
-        const std::size_t begin = std::size_t(chunk) * kChunkPixels;
-        chunks[std::size_t(chunk)] =
-            compareChunk(a, b, useAlpha, begin, std::min(begin + kChunkPixels, pixelCount), map);
-    }, {}, workerCount);
+    parallelForChunks(
+        int(chunkCount),
+        [&](int chunk) {
+            const std::size_t begin = std::size_t(chunk) * kChunkPixels;
+            chunks[std::size_t(chunk)] = compareChunk(
+                a, b, useAlpha, begin, std::min(begin + kChunkPixels, pixelCount), map);
+        },
+        {}, workerCount);
 
     // Pooled in chunk order, whichever thread did which chunk.
     DeltaEPooling pooling;

@@ -16,8 +16,8 @@ constexpr std::size_t kBlockPixels = 1024;
 // The same formulas and math policy as compareImages, so each pixel's value is the same. A map
 // without a reduction, so it vectorises (summing in the loop would not, as float addition must
 // keep its order).
-MATEVO_VECTORISED_KERNEL void deltaERange(
-    const LabImage& a, const LabImage& b, std::size_t begin, std::size_t count, float* deltaE) {
+MATEVO_VECTORISED_KERNEL void deltaERange(const LabImage& a, const LabImage& b, std::size_t begin,
+                                          std::size_t count, float* deltaE) {
     using formulas::FastFloatMath;
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t p = begin + i;

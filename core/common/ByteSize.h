@@ -39,11 +39,20 @@ inline std::optional<std::uint64_t> parseByteSize(std::string_view text) {
     int shift = 0;
     if (i < text.size()) {
         switch (std::toupper(static_cast<unsigned char>(text[i]))) {
-            case 'K': shift = 10; break;
-            case 'M': shift = 20; break;
-            case 'G': shift = 30; break;
-            case 'T': shift = 40; break;
-            default: return std::nullopt;
+            case 'K':
+                shift = 10;
+                break;
+            case 'M':
+                shift = 20;
+                break;
+            case 'G':
+                shift = 30;
+                break;
+            case 'T':
+                shift = 40;
+                break;
+            default:
+                return std::nullopt;
         }
         std::string_view unit = text.substr(i + 1);
         if (!unit.empty() && unit != "B" && unit != "b" && unit != "iB" && unit != "ib")

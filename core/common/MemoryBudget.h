@@ -49,8 +49,8 @@ inline Status checkMemoryEstimate(std::uint64_t bytes, const std::string& what) 
     const std::uint64_t limit = memoryLimitBytes();
     if (bytes <= limit) return Ok{};
     return badInput(what + " needs about " + describeBytes(bytes) +
-                 " of memory, more than the limit of " + describeBytes(limit) +
-                 " (--max-memory raises it, e.g. --max-memory 32G)");
+                    " of memory, more than the limit of " + describeBytes(limit) +
+                    " (--max-memory raises it, e.g. --max-memory 32G)");
 }
 
 }  // namespace matevo

@@ -56,8 +56,7 @@ void runChunks(int chunkCount, int threadCount, const std::function<void(int, in
 }  // namespace detail
 
 void parallelForChunks(int chunkCount, const std::function<void(int chunk)>& work,
-                       const std::function<void(int chunksDone)>& onProgress,
-                       unsigned maxThreads) {
+                       const std::function<void(int chunksDone)>& onProgress, unsigned maxThreads) {
     detail::runChunks(
         chunkCount, detail::loopThreadCount(chunkCount, maxThreads),
         [&](int, int chunk) { work(chunk); }, onProgress);

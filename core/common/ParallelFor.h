@@ -42,15 +42,15 @@ void parallelForChunks(int chunkCount, const std::function<void(int chunk)>& wor
 // work(scratch, chunk) it runs, so buffers are reused from chunk to chunk. Returns the
 // scratch objects, for what they gathered (which chunks each saw depends on scheduling).
 template <typename MakeScratch, typename Work>
-auto parallelForChunksWithScratch(int chunkCount, const MakeScratch& makeScratch,
-                                  const Work& work, unsigned maxThreads = 0) {
+auto parallelForChunksWithScratch(int chunkCount, const MakeScratch& makeScratch, const Work& work,
+                                  unsigned maxThreads = 0) {
     std::vector<decltype(makeScratch())> scratches;
     if (chunkCount <= 0) return scratches;
     const int threadCount = detail::loopThreadCount(chunkCount, maxThreads);
     for (int i = 0; i < threadCount; ++i) scratches.push_back(makeScratch());
-    detail::runChunks(
-        chunkCount, threadCount,
-        [&](int thread, int chunk) { work(scratches[std::size_t(thread)], chunk); }, {});
+    detail::runChunks(chunkCount, threadCount,
+                      [&](int thread, int chunk) { work(scratches[std::size_t(thread)], chunk); },
+                      {});
     return scratches;
 }
 

@@ -14,10 +14,9 @@ constexpr double kMaxChromosomeValue = 1000.0;
 }  // namespace
 
 nlohmann::ordered_json genomeToJson(const Genome& genome) {
-    return {{"eta1", genome.eta1()},       {"eta2", genome.eta2()},
-            {"alpha1", genome.alpha1()},   {"alpha2", genome.alpha2()},
-            {"depth", genome.depth()},     {"sigma_s", genome.sigmaS()},
-            {"sigma_a", genome.sigmaA()},  {"g", genome.g()}};
+    return {{"eta1", genome.eta1()},      {"eta2", genome.eta2()},   {"alpha1", genome.alpha1()},
+            {"alpha2", genome.alpha2()},  {"depth", genome.depth()}, {"sigma_s", genome.sigmaS()},
+            {"sigma_a", genome.sigmaA()}, {"g", genome.g()}};
 }
 
 Genome readGenome(JsonReader& reader) {

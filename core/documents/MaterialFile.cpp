@@ -73,8 +73,7 @@ MaterialFile readAnyMaterial(const nlohmann::json& json, const fs::path& folder,
         result.material.genome = readGenome(root);
         root.warnAboutUnknownFields();
         if (auto problem = validateGenome(result.material.genome, context.material.family))
-            throw JsonFieldError(*problem + " (family " + describe(context.material.family) +
-                                 ")");
+            throw JsonFieldError(*problem + " (family " + describe(context.material.family) + ")");
     }
     return result;
 }
@@ -84,11 +83,9 @@ MaterialFile readAnyMaterial(const nlohmann::json& json, const fs::path& folder,
 MaterialFile materialFromPreset(const Preset& preset, const fs::path& presetFile,
                                 const Genome& genome, std::string name) {
     const fs::path folder = presetFile.parent_path();
-    MaterialFile material{std::move(name),
-                          materialOf(genome, preset.family, preset.baseKappa),
+    MaterialFile material{std::move(name), materialOf(genome, preset.family, preset.baseKappa),
                           resolvedTexture(folder, preset.roughnessTexture),
-                          resolvedTexture(folder, preset.baseColorTexture),
-                          preset.scene};
+                          resolvedTexture(folder, preset.baseColorTexture), preset.scene};
     if (material.scene.environment != "studio")
         material.scene.environment = resolvedTexture(folder, material.scene.environment).string();
     return material;

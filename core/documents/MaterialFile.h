@@ -59,8 +59,7 @@ struct LoadedMaterial {
 //   family: it takes family, kappa, textures and scene from `context`, and is checked against
 //   that family.
 // Errors name the file and field; texture files must exist.
-Result<LoadedMaterial> loadMaterial(const std::filesystem::path& file,
-                                    const MaterialFile& context);
+Result<LoadedMaterial> loadMaterial(const std::filesystem::path& file, const MaterialFile& context);
 
 // The same from text; `folder` resolves relative texture paths (their existence is not checked).
 Result<LoadedMaterial> parseMaterial(const std::string& jsonText, const std::string& sourceName,

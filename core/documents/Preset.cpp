@@ -90,11 +90,11 @@ nlohmann::ordered_json minimalFamilyJson(const MaterialFamily& family) {
 
 Result<LoadedPreset> parsePreset(const std::string& jsonText, const std::string& sourceName) {
     std::vector<std::string> warnings;
-    auto preset = readJsonDocument<Preset>(jsonText, sourceName, warnings,
-                                           [&](const nlohmann::json& json) {
-                                               JsonReader root(json, "", warnings);
-                                               return readPreset(root);
-                                           });
+    auto preset =
+        readJsonDocument<Preset>(jsonText, sourceName, warnings, [&](const nlohmann::json& json) {
+            JsonReader root(json, "", warnings);
+            return readPreset(root);
+        });
     if (!preset) return preset.error();
     return LoadedPreset{std::move(*preset), std::move(warnings)};
 }
@@ -112,7 +112,7 @@ Result<LoadedPreset> loadPreset(const std::filesystem::path& file) {
         std::error_code error;
         if (!name.empty() && !std::filesystem::is_regular_file(file.parent_path() / name, error))
             return badInput(file.string() + ": " + field + ": no such file '" +
-                         displayPath(file.parent_path() / name) + "'");
+                            displayPath(file.parent_path() / name) + "'");
     }
     return loaded;
 }

@@ -75,8 +75,7 @@ TextureNames readTextures(JsonReader& parent, const MaterialFamily& family) {
 SceneSettings readScene(JsonReader reader, bool writtenBeforeModes) {
     SceneSettings scene;
     if (reader.has("mode"))
-        scene.mode =
-            reader.enumeration("mode", parseSceneMode, choiceNamesInWords(kSceneModes));
+        scene.mode = reader.enumeration("mode", parseSceneMode, choiceNamesInWords(kSceneModes));
     if (reader.has("environment")) scene.environment = reader.string("environment");
     if (reader.has("image_size")) scene.imageSize = int(reader.integer("image_size", 8, 4096));
     if (reader.has("camera_position"))
@@ -124,11 +123,10 @@ GaSettings readGaSettings(JsonReader reader) {
     ga.population = int(reader.integer("population", 2, kMaxPopulation));
     ga.generations = int(reader.integer("generations", 0, kMaxGenerations));
     if (reader.has("metric"))
-        ga.metric = reader.enumeration("metric", parseDistanceMetric,
-                                       choiceNamesInWords(kDistanceMetrics));
+        ga.metric =
+            reader.enumeration("metric", parseDistanceMetric, choiceNamesInWords(kDistanceMetrics));
     if (reader.has("weights"))
-        ga.weights =
-            reader.numbers<kPaperChromosomeCount>("weights", 0.0, kMaxChromosomeWeight);
+        ga.weights = reader.numbers<kPaperChromosomeCount>("weights", 0.0, kMaxChromosomeWeight);
     if (reader.has("normalize_by_range"))
         ga.normalizeByRange = reader.boolean("normalize_by_range");
     if (reader.has("elitism")) ga.elitism = int(reader.integer("elitism", 0, ga.population - 1));

@@ -11,7 +11,8 @@ double scaledDistance(const Genome& a, const Genome& b, DistanceMetric metric,
     double result = 0;
     switch (metric) {
         case DistanceMetric::Chebyshev:
-            for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) result = std::max(result, term(i));
+            for (std::size_t i = 0; i < kPaperChromosomeCount; ++i)
+                result = std::max(result, term(i));
             return result;
         case DistanceMetric::Manhattan:
             for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) result += term(i);

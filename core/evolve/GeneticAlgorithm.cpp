@@ -62,8 +62,9 @@ double diversity(const std::vector<Individual>& population, const FamilyRules& r
 
 GeneticAlgorithm::GeneticAlgorithm(const MaterialFamily& family, const Genome& target,
                                    const GaSettings& settings)
-    : GeneticAlgorithm(family, target, settings,
-                       genotypeEvaluator(target, familyRules(family, settings.kappaGenes), settings)) {}
+    : GeneticAlgorithm(
+          family, target, settings,
+          genotypeEvaluator(target, familyRules(family, settings.kappaGenes), settings)) {}
 
 GeneticAlgorithm::GeneticAlgorithm(const MaterialFamily& family, const Genome& /*target*/,
                                    const GaSettings& settings, FitnessEvaluator evaluate)

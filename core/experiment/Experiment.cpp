@@ -46,8 +46,9 @@ Result<std::vector<RunRecord>> evolveRuns(const ExperimentTarget& target,
     std::vector<char> finished(records.size(), 0);
     auto record = [&](int chunk, const GaSettings& ga, const Individual& best) {
         const ExperimentMetric metric = settings.metrics[std::size_t(chunk / settings.runs)];
-        records[std::size_t(chunk)] = {target.name,  metric, settings.size, ga.seed,
-                                       chunk % settings.runs, best.fitness, 0.0, best.genome};
+        records[std::size_t(chunk)] = {
+            target.name,           metric,       settings.size, ga.seed,
+            chunk % settings.runs, best.fitness, 0.0,           best.genome};
         finished[std::size_t(chunk)] = 1;
     };
     auto gaSettingsOf = [&](int chunk) {
@@ -139,7 +140,10 @@ Result<std::vector<RunRecord>> runExperiment(const ExperimentTarget& target,
 
     const int total = 2 * settings.runs * int(settings.metrics.size());
     auto evolved = evolveRuns(
-        target, settings, [&](int done, int) { if (progress) progress(done, total); },
+        target, settings,
+        [&](int done, int) {
+            if (progress) progress(done, total);
+        },
         fitnessRender, cancel);
     if (!evolved) return evolved.error();
     std::vector<RunRecord> records = std::move(evolved).value();

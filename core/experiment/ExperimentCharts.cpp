@@ -67,8 +67,8 @@ std::vector<MetricChart> metricHistogramCharts(std::span<const RunRecord> record
         const RunSummary& summary = summaries[i];
         const HistogramChartLabels labels{
             summary.preset + " – " + std::string(toString(summary.metric)), subtitle(summary)};
-        charts.push_back({summary.metric,
-                          histogramChart(histograms[i], bands, countAxisMax, labels, font)});
+        charts.push_back(
+            {summary.metric, histogramChart(histograms[i], bands, countAxisMax, labels, font)});
     }
     return charts;
 }

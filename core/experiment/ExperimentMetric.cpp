@@ -15,19 +15,26 @@ std::optional<ExperimentMetric> parseExperimentMetric(std::string_view text) {
 
 ExperimentMetric experimentMetric(DistanceMetric metric) {
     switch (metric) {
-        case DistanceMetric::Chebyshev: return ExperimentMetric::Chebyshev;
-        case DistanceMetric::Manhattan: return ExperimentMetric::Manhattan;
-        case DistanceMetric::Euclidean: break;
+        case DistanceMetric::Chebyshev:
+            return ExperimentMetric::Chebyshev;
+        case DistanceMetric::Manhattan:
+            return ExperimentMetric::Manhattan;
+        case DistanceMetric::Euclidean:
+            break;
     }
     return ExperimentMetric::Euclidean;
 }
 
 std::optional<DistanceMetric> genotypeMetric(ExperimentMetric metric) {
     switch (metric) {
-        case ExperimentMetric::Chebyshev: return DistanceMetric::Chebyshev;
-        case ExperimentMetric::Euclidean: return DistanceMetric::Euclidean;
-        case ExperimentMetric::Manhattan: return DistanceMetric::Manhattan;
-        case ExperimentMetric::Image: break;
+        case ExperimentMetric::Chebyshev:
+            return DistanceMetric::Chebyshev;
+        case ExperimentMetric::Euclidean:
+            return DistanceMetric::Euclidean;
+        case ExperimentMetric::Manhattan:
+            return DistanceMetric::Manhattan;
+        case ExperimentMetric::Image:
+            break;
     }
     return std::nullopt;
 }

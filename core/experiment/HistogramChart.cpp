@@ -146,8 +146,8 @@ ChartDrawing histogramChart(const DeltaEHistogram& histogram, std::span<const Ch
     addBars(chart, layout, histogram);
     addDeltaEAxis(chart, layout, histogram.axis, bands, font);
     addCountAxis(chart, layout);
-    chart.add(ChartText{12, 8 + kTitleSize, labels.title, kTitleSize, kInk, TextAnchor::Start,
-                        "title"});
+    chart.add(
+        ChartText{12, 8 + kTitleSize, labels.title, kTitleSize, kInk, TextAnchor::Start, "title"});
     chart.add(ChartText{12, 8 + kTitleSize + 6 + kSubtitleSize, labels.subtitle, kSubtitleSize,
                         kInk, TextAnchor::Start, "subtitle"});
     return chart;

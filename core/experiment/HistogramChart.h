@@ -37,7 +37,6 @@ inline constexpr ChartPlotArea histogramPlotArea() {
 // that are meant to be compared side by side. `font` measures text, so that labels which would
 // not fit or would touch are left out.
 ChartDrawing histogramChart(const DeltaEHistogram& histogram, std::span<const ChartBand> bands,
-                            int countAxisMax, const HistogramChartLabels& labels,
-                            const Font& font);
+                            int countAxisMax, const HistogramChartLabels& labels, const Font& font);
 
 }  // namespace matevo

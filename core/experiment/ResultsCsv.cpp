@@ -49,8 +49,7 @@ std::string resultsCsvRow(const RunRecord& record) {
     addField(std::to_string(record.run));
     addField(exactNumber(record.fitness));
     addField(exactNumber(record.meanDeltaE00));
-    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i)
-        addField(exactNumber(record.genome[i]));
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) addField(exactNumber(record.genome[i]));
     return row;
 }
 

@@ -53,7 +53,7 @@ Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
         if (material.roughnessTexture != first.roughnessTexture ||
             material.baseColorTexture != first.baseColorTexture)
             return badInput(material.name + ": its textures differ from " + first.name +
-                         "'s; export the materials of one preset at a time");
+                            "'s; export the materials of one preset at a time");
     auto textures = loadSceneTextures(first, first.name);
     if (!textures) return textures.error();
 
@@ -87,7 +87,7 @@ Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
                                  const std::filesystem::path& file, const GltfAsset& asset) {
     if (format == ExportFormat::MaterialX && asset.arrangement != GltfArrangement::Spheres)
         return badInput(file.string() + ": MaterialX holds materials only; a " +
-                     std::string(toString(asset.arrangement)) + " arrangement needs glTF");
+                        std::string(toString(asset.arrangement)) + " arrangement needs glTF");
     std::vector<NamedGltfMaterial> materials;
     for (const auto& variant : set.variants)
         materials.push_back({variant.name, variant.fit.material});
@@ -103,9 +103,8 @@ Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,
 Result<ExportReport> exportMaterials(const std::vector<MaterialFile>& materials,
                                      PopulationRenderer& belcour, ExportFormat format,
                                      const std::filesystem::path& file,
-                                     const ExportSettings& settings,
-                                     const ExportProgress& progress, const GltfAsset& asset,
-                                     const CancelToken& cancel) {
+                                     const ExportSettings& settings, const ExportProgress& progress,
+                                     const GltfAsset& asset, const CancelToken& cancel) {
     auto set = fitForExport(materials, belcour, settings, progress, cancel);
     if (!set) return set.error();
     if (cancel.cancelled()) return cancelledError("export stopped");  // during the last fit
@@ -114,9 +113,12 @@ Result<ExportReport> exportMaterials(const std::vector<MaterialFile>& materials,
 
 std::string_view toString(GltfArrangement arrangement) {
     switch (arrangement) {
-        case GltfArrangement::Spheres: return "spheres";
-        case GltfArrangement::MaterialVariants: return "variants";
-        case GltfArrangement::Instances: return "instances";
+        case GltfArrangement::Spheres:
+            return "spheres";
+        case GltfArrangement::MaterialVariants:
+            return "variants";
+        case GltfArrangement::Instances:
+            return "instances";
     }
     return "spheres";
 }

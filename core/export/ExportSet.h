@@ -1,8 +1,9 @@
 #pragma once
 // Export of one material or a set (all from one preset: the same textures) to an engine format:
-// each material is rendered with our Belcour model (through the one render interface), the glTF parameters are fitted to
-// that render (GltfFit.h), the fit is rendered again at the report size and compared, and the
-// file is written (GltfWriter.h, MaterialXWriter.h). Shared by `matevo export` and the editor.
+// each material is rendered with our Belcour model (through the one render interface), the glTF
+// parameters are fitted to that render (GltfFit.h), the fit is rendered again at the report size
+// and compared, and the file is written (GltfWriter.h, MaterialXWriter.h). Shared by `matevo
+// export` and the editor.
 #include <array>
 #include <filesystem>
 #include <functional>
@@ -49,8 +50,8 @@ struct ExportSettings {
 
 struct ExportedVariant {
     std::string name;
-    GltfFit fit;        // the parameters and the ΔE00 at the fitting size
-    ErrorMap deltaE;    // fitted glTF render vs Belcour render at the report size
+    GltfFit fit;         // the parameters and the ΔE00 at the fitting size
+    ErrorMap deltaE;     // fitted glTF render vs Belcour render at the report size
     Image matevoRender;  // the two renders at the report size, for a look
     Image gltfRender;
 };
@@ -83,8 +84,7 @@ using ExportProgress = std::function<void(std::size_t, std::size_t)>;
 // material; cancelled, the fit ends with cancelledError().
 Result<FittedSet> fitForExport(const std::vector<MaterialFile>& materials,
                                PopulationRenderer& belcour, const ExportSettings& settings = {},
-                               const ExportProgress& progress = {},
-                               const CancelToken& cancel = {});
+                               const ExportProgress& progress = {}, const CancelToken& cancel = {});
 // Writes the fitted set in `format` to `file`; glTF arranged as `asset` says (GltfWriter.h),
 // MaterialX only as a list of materials (Spheres).
 Result<ExportReport> writeExport(const FittedSet& set, ExportFormat format,

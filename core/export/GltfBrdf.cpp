@@ -66,12 +66,9 @@ GltfSurface gltfSurface(const GltfMaterial& material, const std::array<double, 3
     // The texture's green channel (GltfMaterial.h).
     const double textureGreen =
         std::sqrt(std::clamp(roughnessTexel * material.roughnessTexelScale, 0.0, 1.0));
-    const double roughness =
-        material.roughness *
-        (material.roughnessTextured ? textureGreen : 1.0);
+    const double roughness = material.roughness * (material.roughnessTextured ? textureGreen : 1.0);
     const double clearcoatRoughness =
-        material.clearcoatRoughness *
-        (material.clearcoatRoughnessTextured ? textureGreen : 1.0);
+        material.clearcoatRoughness * (material.clearcoatRoughnessTextured ? textureGreen : 1.0);
     surface.metallic = material.metallic;
     // A delta light would make a perfectly smooth lobe invisible; both models clamp alike.
     surface.alpha = std::max(roughness * roughness, kMinimumLobeAlpha);
@@ -83,8 +80,8 @@ GltfSurface gltfSurface(const GltfMaterial& material, const std::array<double, 3
     return surface;
 }
 
-std::array<double, 3> evaluateGltfBrdf(const GltfSurface& surface, double cosView,
-                                       double cosLight, double cosHalf, double viewDotHalf) {
+std::array<double, 3> evaluateGltfBrdf(const GltfSurface& surface, double cosView, double cosLight,
+                                       double cosHalf, double viewDotHalf) {
     if (cosView <= 0.0 || cosLight <= 0.0) return {0.0, 0.0, 0.0};
     const double specular = specularBrdf(surface.alpha, cosView, cosLight, cosHalf);
     const double fresnelWeight = schlickWeight(viewDotHalf);
@@ -98,10 +95,9 @@ std::array<double, 3> evaluateGltfBrdf(const GltfSurface& surface, double cosVie
         std::max({dielectricFresnel[0], dielectricFresnel[1], dielectricFresnel[2]});
     // fresnel_coat: the layer weighs clearcoat Fc, the base 1 - clearcoat Fc.
     const double coatWeight = surface.clearcoat * (0.04 + 0.96 * schlickWeight(cosView));
-    const double coat =
-        coatWeight > 0.0
-            ? coatWeight * specularBrdf(surface.clearcoatAlpha, cosView, cosLight, cosHalf)
-            : 0.0;
+    const double coat = coatWeight > 0.0 ? coatWeight * specularBrdf(surface.clearcoatAlpha,
+                                                                     cosView, cosLight, cosHalf)
+                                         : 0.0;
     std::array<double, 3> result;
     for (int c = 0; c < 3; ++c) {
         const double base = surface.baseColor[c];
@@ -139,7 +135,8 @@ std::array<double, 3> gltfDirectionalAlbedo(const GltfSurface& surface, double c
             accumulate(sampleCosine(u1, u2));
             accumulate(reflect(view, sampleGgxHalfVector(view, surface.alpha, u1, u2)));
             if (coated)
-                accumulate(reflect(view, sampleGgxHalfVector(view, surface.clearcoatAlpha, u1, u2)));
+                accumulate(
+                    reflect(view, sampleGgxHalfVector(view, surface.clearcoatAlpha, u1, u2)));
         }
     }
     const double samplesPerStrategy = double(strata * strata);

@@ -8,7 +8,8 @@
 //   dielectric_brdf   = (1 - specular max(F)) baseColor / pi + specular F specular_brdf
 //   material          = mix(dielectric_brdf, metal_brdf, metallic)
 //   Fc                = 0.04 + 0.96 (1 - |n.v|)^5
-//   coated            = material (1 - clearcoat Fc) + clearcoat Fc specular_brdf(clearcoatRoughness^2)
+//   coated            = material (1 - clearcoat Fc) + clearcoat Fc
+//   specular_brdf(clearcoatRoughness^2)
 // Both GGX lobes use the separable Smith term, as Appendix B does (and as our Belcour lobes do).
 #include <array>
 
@@ -34,8 +35,8 @@ GltfSurface gltfSurface(const GltfMaterial& material, const std::array<double, 3
 
 // f_r(v, l) without the cosine factor; zero unless both cosines are positive. Cosines with the
 // macro normal (n.v, n.l, n.h) and v.h, h = normalize(v + l).
-std::array<double, 3> evaluateGltfBrdf(const GltfSurface& surface, double cosView,
-                                       double cosLight, double cosHalf, double viewDotHalf);
+std::array<double, 3> evaluateGltfBrdf(const GltfSurface& surface, double cosView, double cosLight,
+                                       double cosHalf, double viewDotHalf);
 
 // The integral of f_r cos over the hemisphere for a view at cosView: what a uniform environment
 // of unit radiance reflects. Deterministic quadrature: strata^2 stratified directions from each of

@@ -65,11 +65,10 @@ Result<std::vector<Image>> GltfDelivery::render(std::span<const Genome> genomes,
 }
 
 DeliveryFormat GltfDelivery::format() {
-    return {"gltf",
-            [this](std::span<const Genome> genomes, int attempt) {
-                return render(genomes, attempt);
-            },
-            kConversions, settings_.fit.goalMeanDeltaE00};
+    return {
+        "gltf",
+        [this](std::span<const Genome> genomes, int attempt) { return render(genomes, attempt); },
+        kConversions, settings_.fit.goalMeanDeltaE00};
 }
 
 Result<FittedSet> GltfDelivery::fittedSet(const std::vector<Member>& members) const {

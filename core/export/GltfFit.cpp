@@ -48,16 +48,25 @@ double toVariable(double value, Range range) {
 
 double& valueOf(GltfMaterial& material, Parameter parameter) {
     switch (parameter) {
-        case kBaseRed: return material.baseColor[0];
-        case kBaseGreen: return material.baseColor[1];
-        case kBaseBlue: return material.baseColor[2];
-        case kMetallic: return material.metallic;
-        case kRoughness: return material.roughness;
-        case kClearcoat: return material.clearcoat;
-        case kClearcoatRoughness: return material.clearcoatRoughness;
-        case kIor: return material.ior;
+        case kBaseRed:
+            return material.baseColor[0];
+        case kBaseGreen:
+            return material.baseColor[1];
+        case kBaseBlue:
+            return material.baseColor[2];
+        case kMetallic:
+            return material.metallic;
+        case kRoughness:
+            return material.roughness;
+        case kClearcoat:
+            return material.clearcoat;
+        case kClearcoatRoughness:
+            return material.clearcoatRoughness;
+        case kIor:
+            return material.ior;
         case kSpecular:
-        case kParameterCount: break;
+        case kParameterCount:
+            break;
     }
     return material.specular;
 }
@@ -135,8 +144,8 @@ GltfMaterial physicalGuess(const MaterialInstance& instance, const SceneTextures
         guess.metallic = 1.0;
         const double eta = genome.eta2() / std::max(genome.eta1(), 1e-3);
         for (int c = 0; c < 3; ++c)
-            guess.baseColor[c] = fresnelConductor(1.0, eta, instance.baseKappa[c] /
-                                                                std::max(genome.eta1(), 1e-3));
+            guess.baseColor[c] =
+                fresnelConductor(1.0, eta, instance.baseKappa[c] / std::max(genome.eta1(), 1e-3));
     } else {
         guess.metallic = 0.0;
         guess.baseColor = {0.5, 0.5, 0.5};

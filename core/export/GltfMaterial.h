@@ -22,10 +22,10 @@ struct GltfMaterial {
     std::array<double, 3> baseColor = {1.0, 1.0, 1.0};  // linear
     double metallic = 1.0;
     double roughness = 1.0;
-    double ior = kDefaultIor;                                // KHR_materials_ior
-    double specular = 1.0;                                   // KHR_materials_specular
+    double ior = kDefaultIor;                               // KHR_materials_ior
+    double specular = 1.0;                                  // KHR_materials_specular
     std::array<double, 3> specularColor = {1.0, 1.0, 1.0};  // KHR_materials_specular
-    double clearcoat = 0.0;                                  // KHR_materials_clearcoat
+    double clearcoat = 0.0;                                 // KHR_materials_clearcoat
     double clearcoatRoughness = 0.0;
     bool baseColorTextured = false;
     // Which roughnesses the scene's roughness texture drives: a textured top layer roughens

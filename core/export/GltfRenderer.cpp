@@ -70,11 +70,10 @@ public:
             for (int di = 0; di <= 1; ++di) {
                 const double weight =
                     (di ? wx : 1.0 - wx) * (texelSteps_ ? (dt ? wy : 1.0 - wy) : 1.0);
-                const Entry& entry =
-                    entries_[std::size_t((t + dt) * (cosViewSteps_ + 1) + i + di)];
+                const Entry& entry = entries_[std::size_t((t + dt) * (cosViewSteps_ + 1) + i + di)];
                 for (int c = 0; c < 3; ++c)
-                    result[c] += weight * (entry.zero[c] +
-                                           baseColor[c] * (entry.one[c] - entry.zero[c]));
+                    result[c] +=
+                        weight * (entry.zero[c] + baseColor[c] * (entry.one[c] - entry.zero[c]));
             }
         }
         return result;
@@ -113,25 +112,25 @@ Image renderGltfSphere(const GltfMaterial& material, const SceneTextures& textur
     const glm::dvec3 toLight = glm::normalize(toVector(scene.lightDirection));
     const glm::dvec3 lightRadiance = toVector(scene.lightRadiance);
     const bool textured = textures.roughness.width > 0 || textures.baseColor.width > 0;
-    return renderSphereImage(scene, size, [&](const glm::dvec3& normal,
-                                              const glm::dvec3& toViewer) {
-        SurfaceTexels texels;
-        if (textured) {
-            const auto [u, v] = sphereUv(normal);
-            texels = texelsAt(textures, u, v);
-        }
-        const GltfSurface surface = gltfSurface(material, texels.baseColor, texels.roughness);
-        const double cosView = std::max(glm::dot(normal, toViewer), 0.0);
-        const double cosLight = glm::dot(normal, toLight);
-        const glm::dvec3 half = glm::normalize(toViewer + toLight);
-        const auto f = evaluateGltfBrdf(surface, cosView, cosLight, glm::dot(normal, half),
-                                        glm::dot(toViewer, half));
-        glm::dvec3 radiance = toVector(f) * lightRadiance * std::max(cosLight, 0.0);
-        if (albedo)
-            radiance += toVector(albedo->at(cosView, texels.roughness, surface.baseColor)) *
-                        environmentRadiance;
-        return radiance;
-    });
+    return renderSphereImage(
+        scene, size, [&](const glm::dvec3& normal, const glm::dvec3& toViewer) {
+            SurfaceTexels texels;
+            if (textured) {
+                const auto [u, v] = sphereUv(normal);
+                texels = texelsAt(textures, u, v);
+            }
+            const GltfSurface surface = gltfSurface(material, texels.baseColor, texels.roughness);
+            const double cosView = std::max(glm::dot(normal, toViewer), 0.0);
+            const double cosLight = glm::dot(normal, toLight);
+            const glm::dvec3 half = glm::normalize(toViewer + toLight);
+            const auto f = evaluateGltfBrdf(surface, cosView, cosLight, glm::dot(normal, half),
+                                            glm::dot(toViewer, half));
+            glm::dvec3 radiance = toVector(f) * lightRadiance * std::max(cosLight, 0.0);
+            if (albedo)
+                radiance += toVector(albedo->at(cosView, texels.roughness, surface.baseColor)) *
+                            environmentRadiance;
+            return radiance;
+        });
 }
 
 }  // namespace matevo

@@ -1,16 +1,16 @@
 #include "export/GltfWriter.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
 #include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include "files/AtomicFile.h"
 #include "files/CompanionFiles.h"
@@ -21,9 +21,9 @@ namespace matevo {
 
 namespace {
 
-constexpr int kArrayBuffer = 34962;         // glTF bufferView targets
+constexpr int kArrayBuffer = 34962;  // glTF bufferView targets
 constexpr int kElementArrayBuffer = 34963;
-constexpr double kSphereSpacing = 2.5;      // centre to centre, unit spheres (Spheres)
+constexpr double kSphereSpacing = 2.5;  // centre to centre, unit spheres (Spheres)
 
 // Appends bytes to the one buffer as a new buffer view (4-byte aligned); returns its index.
 int addBufferView(tinygltf::Model& model, const void* data, std::size_t size, int target) {
@@ -67,9 +67,8 @@ int addVertexAttribute(tinygltf::Model& model, const Mesh& mesh, Attribute MeshV
 MeshAccessors addMesh(tinygltf::Model& model, const Mesh& mesh) {
     const std::size_t count = mesh.vertices.size();
     MeshAccessors accessors;
-    accessors.positions =
-        addAccessor(model, addVertexAttribute(model, mesh, &MeshVertex::position),
-                    TINYGLTF_COMPONENT_TYPE_FLOAT, count, TINYGLTF_TYPE_VEC3);
+    accessors.positions = addAccessor(model, addVertexAttribute(model, mesh, &MeshVertex::position),
+                                      TINYGLTF_COMPONENT_TYPE_FLOAT, count, TINYGLTF_TYPE_VEC3);
     // glTF requires the bounds of positions.
     glm::vec3 lowest(std::numeric_limits<float>::max()), highest(-lowest);
     for (const auto& vertex : mesh.vertices) {
@@ -168,8 +167,7 @@ tinygltf::Material toGltf(const NamedGltfMaterial& named, const SharedTextures& 
     pbr.metallicFactor = m.metallic;
     pbr.roughnessFactor = m.roughness;
     if (m.baseColorTextured) pbr.baseColorTexture.index = textures.baseColor;
-    if (m.roughnessTextured)
-        pbr.metallicRoughnessTexture.index = textures.roughness;
+    if (m.roughnessTextured) pbr.metallicRoughnessTexture.index = textures.roughness;
 
     auto use = [&](const std::string& extension, tinygltf::Value::Object values) {
         material.extensions[extension] = tinygltf::Value(std::move(values));
@@ -189,10 +187,9 @@ tinygltf::Material toGltf(const NamedGltfMaterial& named, const SharedTextures& 
     if (specularActs(m))
         use("KHR_materials_specular",
             {{"specularFactor", number(m.specular)},
-             {"specularColorFactor",
-              tinygltf::Value(tinygltf::Value::Array{number(m.specularColor[0]),
-                                                     number(m.specularColor[1]),
-                                                     number(m.specularColor[2])})}});
+             {"specularColorFactor", tinygltf::Value(tinygltf::Value::Array{
+                                         number(m.specularColor[0]), number(m.specularColor[1]),
+                                         number(m.specularColor[2])})}});
     return material;
 }
 
@@ -218,8 +215,8 @@ void arrangeMaterialVariants(tinygltf::Model& model,
     tinygltf::Primitive primitive = primitiveOf(addMesh(model, mesh), 0);
     tinygltf::Value::Array variants, mappings;
     for (std::size_t i = 1; i < materials.size(); ++i) {
-        variants.push_back(tinygltf::Value(
-            tinygltf::Value::Object{{"name", tinygltf::Value(materials[i].name)}}));
+        variants.push_back(
+            tinygltf::Value(tinygltf::Value::Object{{"name", tinygltf::Value(materials[i].name)}}));
         mappings.push_back(tinygltf::Value(tinygltf::Value::Object{
             {"material", tinygltf::Value(int(i))},
             {"variants", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(int(i - 1))})}}));
@@ -270,10 +267,9 @@ Result<tinygltf::Model> buildModel(const std::vector<NamedGltfMaterial>& materia
     const bool anyBaseColor = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
         return m.material.baseColorTextured;
     });
-    const auto roughnessUser =
-        std::find_if(materials.begin(), materials.end(), [](const auto& m) {
-            return m.material.roughnessTextured || m.material.clearcoatRoughnessTextured;
-        });
+    const auto roughnessUser = std::find_if(materials.begin(), materials.end(), [](const auto& m) {
+        return m.material.roughnessTextured || m.material.clearcoatRoughnessTextured;
+    });
     if (anyBaseColor) {
         auto texture = addTexture(model, textures.baseColor, PngValues::Srgb, "base_color");
         if (!texture) return texture.error();
@@ -293,7 +289,9 @@ Result<tinygltf::Model> buildModel(const std::vector<NamedGltfMaterial>& materia
     tinygltf::Scene scene;
     scene.name = "matevo variants";
     switch (asset.arrangement) {
-        case GltfArrangement::Spheres: arrangeSpheres(model, materials, scene); break;
+        case GltfArrangement::Spheres:
+            arrangeSpheres(model, materials, scene);
+            break;
         case GltfArrangement::MaterialVariants:
             arrangeMaterialVariants(model, materials, asset.mesh, scene);
             break;

@@ -19,7 +19,8 @@ std::string identifier(const std::string& text, std::set<std::string>& taken) {
     for (unsigned char c : text) name += std::isalnum(c) ? char(c) : '_';
     if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) name.insert(0, "m_");
     std::string unique = name;
-    for (int suffix = 2; taken.count(unique); ++suffix) unique = name + "_" + std::to_string(suffix);
+    for (int suffix = 2; taken.count(unique); ++suffix)
+        unique = name + "_" + std::to_string(suffix);
     taken.insert(unique);
     return unique;
 }
@@ -76,15 +77,14 @@ std::string materialXDocument(const std::vector<NamedGltfMaterial>& materials,
         const std::string id = identifier(name, taken);
         std::string baseColorNode, roughnessNode, clearcoatRoughnessNode;
         if (m.baseColorTextured)
-            baseColorNode = texturedFactor(out, id + "_base_color", baseColorFile, true,
-                                           color(m.baseColor));
+            baseColorNode =
+                texturedFactor(out, id + "_base_color", baseColorFile, true, color(m.baseColor));
         if (m.roughnessTextured)
             roughnessNode = texturedFactor(out, id + "_roughness", roughnessFile, false,
                                            xmlNumber(m.roughness));
         if (m.clearcoatRoughnessTextured && clearcoatActs(m))
-            clearcoatRoughnessNode = texturedFactor(out, id + "_clearcoat_roughness",
-                                                    roughnessFile, false,
-                                                    xmlNumber(m.clearcoatRoughness));
+            clearcoatRoughnessNode = texturedFactor(out, id + "_clearcoat_roughness", roughnessFile,
+                                                    false, xmlNumber(m.clearcoatRoughness));
         const std::string shader = id + "_shader";
         out << "  <gltf_pbr name=\"" << shader << "\" type=\"surfaceshader\">\n";
         if (baseColorNode.empty())
@@ -145,11 +145,10 @@ Status writeMaterialX(const std::vector<NamedGltfMaterial>& materials,
         if (!png) return withContext(png.error(), file.string());
         roughness.contents.assign(png->begin(), png->end());
     }
-    return writeWithCompanions(
-        file,
-        materialXDocument(materials, companionFileName(file, baseColor),
-                          companionFileName(file, roughness)),
-        {baseColor, roughness});
+    return writeWithCompanions(file,
+                               materialXDocument(materials, companionFileName(file, baseColor),
+                                                 companionFileName(file, roughness)),
+                               {baseColor, roughness});
 }
 
 }  // namespace matevo

@@ -30,8 +30,8 @@ bool isCompanionOfKind(const std::string& name, const std::string& stem,
     const std::string prefix = stem + kind.suffix + ".";
     if (name.size() != prefix.size() + kHashDigits + kind.extension.size()) return false;
     if (name.compare(0, prefix.size(), prefix) != 0) return false;
-    if (name.compare(name.size() - kind.extension.size(), kind.extension.size(),
-                     kind.extension) != 0)
+    if (name.compare(name.size() - kind.extension.size(), kind.extension.size(), kind.extension) !=
+        0)
         return false;
     for (std::size_t i = prefix.size(); i < prefix.size() + kHashDigits; ++i)
         if (!std::isxdigit(static_cast<unsigned char>(name[i]))) return false;

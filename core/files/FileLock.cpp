@@ -26,7 +26,8 @@ std::filesystem::path lockFileBeside(const std::filesystem::path& guarded) {
 
 // Whether `fd` is still the file `path` names (the holder before us may have removed it).
 bool stillNamedBy(int fd, const std::filesystem::path& path) {
-    struct stat opened {}, named {};
+    struct stat opened {
+    }, named{};
     return ::fstat(fd, &opened) == 0 && ::stat(path.c_str(), &named) == 0 &&
            opened.st_dev == named.st_dev && opened.st_ino == named.st_ino;
 }
@@ -47,7 +48,7 @@ Result<FileLock> FileLock::lock(const std::filesystem::path& guarded, bool wait)
         const int fd = ::open(lockFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
         if (fd < 0)
             return badInput(displayPath(guarded) + ": cannot write beside it in " +
-                         displayPath(lockFile.parent_path()) + ": " + std::strerror(errno));
+                            displayPath(lockFile.parent_path()) + ": " + std::strerror(errno));
         int locked;
         do locked = ::flock(fd, LOCK_EX | (wait ? 0 : LOCK_NB));
         while (locked != 0 && errno == EINTR);
@@ -56,10 +57,10 @@ Result<FileLock> FileLock::lock(const std::filesystem::path& guarded, bool wait)
             ::close(fd);
             if (reason == EWOULDBLOCK)
                 return badInput(displayPath(guarded) +
-                             ": another matevo run is writing it now (it holds " +
-                             displayPath(lockFile) + "); wait for it or choose another name");
+                                ": another matevo run is writing it now (it holds " +
+                                displayPath(lockFile) + "); wait for it or choose another name");
             return badInput(displayPath(guarded) + ": cannot lock " + displayPath(lockFile) + ": " +
-                         std::strerror(reason));
+                            std::strerror(reason));
         }
         if (stillNamedBy(fd, lockFile)) return FileLock(lockFile, fd);
         ::close(fd);  // we locked a file its holder had just removed: take the current one

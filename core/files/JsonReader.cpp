@@ -21,15 +21,17 @@ Status checkJsonNesting(std::string_view text, const std::string& sourceName) {
     for (std::size_t at = 0; at < text.size(); ++at) {
         const char c = text[at];
         if (inString) {
-            if (c == '\\') ++at;  // the escaped character cannot end the string
-            else if (c == '"') inString = false;
+            if (c == '\\')
+                ++at;  // the escaped character cannot end the string
+            else if (c == '"')
+                inString = false;
         } else if (c == '"') {
             inString = true;
         } else if (c == '[' || c == '{') {
             if (++depth > kMaxJsonNesting)
                 return badInput(sourceName + ": JSON nested deeper than " +
-                             std::to_string(kMaxJsonNesting) + " levels (at byte " +
-                             std::to_string(at) + ")");
+                                std::to_string(kMaxJsonNesting) + " levels (at byte " +
+                                std::to_string(at) + ")");
         } else if ((c == ']' || c == '}') && depth > 0) {
             --depth;
         }

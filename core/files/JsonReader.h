@@ -136,8 +136,7 @@ std::array<double, N> JsonReader::numbers(const std::string& key, double min, do
 }
 
 template <typename Enum>
-Enum JsonReader::enumeration(const std::string& key,
-                             std::optional<Enum> (*parse)(std::string_view),
+Enum JsonReader::enumeration(const std::string& key, std::optional<Enum> (*parse)(std::string_view),
                              const std::string& expected) {
     auto text = string(key);
     auto value = parse(text);

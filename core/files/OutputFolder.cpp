@@ -32,7 +32,8 @@ bool isEmptyFolder(const std::filesystem::path& folder) {
 }
 
 bool isMountPoint(const std::filesystem::path& folder, const std::filesystem::path& parent) {
-    struct statx own {}, above {};
+    struct statx own {
+    }, above{};
     const unsigned mask = STATX_BASIC_STATS | STATX_MNT_ID;
     if (::statx(AT_FDCWD, folder.c_str(), 0, mask, &own) != 0 ||
         ::statx(AT_FDCWD, parent.c_str(), 0, mask, &above) != 0)
@@ -52,7 +53,8 @@ std::optional<std::string> whyNotReplaceable(const std::filesystem::path& folder
     if (isMountPoint(folder, parent))
         return "is a mount point, which matevo cannot replace as a whole; write into a folder "
                "inside it";
-    struct stat own {}, above {};
+    struct stat own {
+    }, above{};
     if (::stat(folder.c_str(), &own) == 0 && ::stat(parent.c_str(), &above) == 0 &&
         (above.st_mode & S_ISVTX) && ::geteuid() != 0 && own.st_uid != ::geteuid() &&
         above.st_uid != ::geteuid())
@@ -148,14 +150,14 @@ Status OutputFolder::commit() {
     if (!renameWithoutReplacing(staging_, target_)) {
         if (errno != EEXIST)
             return badInput(displayPath(target_) +
-                         ": cannot create the folder: " + std::strerror(errno));
+                            ": cannot create the folder: " + std::strerror(errno));
         if (!std::filesystem::is_directory(std::filesystem::symlink_status(target_)))
             return badInput(displayPath(target_) + ": was replaced by something that is not a " +
-                         "folder while the run went on; the run is not written");
+                            "folder while the run went on; the run is not written");
         if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) !=
             0)
             return badInput(displayPath(target_) +
-                         ": cannot replace the folder: " + std::strerror(errno));
+                            ": cannot replace the folder: " + std::strerror(errno));
         committed_ = true;
         Status retired = previous_.retire(staging_, target_);
         lock_.reset();

@@ -103,7 +103,8 @@ Status PreviousRunFiles::retire(const std::filesystem::path& replaced,
     }
     if (moveToKeptName(replaced, output)) return Ok{};
     return badInput(displayPath(output) + ": cannot keep the files matevo did not write in the " +
-                 "folder it replaced, now " + displayPath(replaced) + ": " + std::strerror(errno));
+                    "folder it replaced, now " + displayPath(replaced) + ": " +
+                    std::strerror(errno));
 }
 
 }  // namespace matevo

@@ -25,8 +25,7 @@ public:
     // `replaced` is the folder this object recorded, taken out of the way (under a temporary
     // name); `output` is the new run now in its place. Removes the recorded files from
     // `replaced` and keeps the rest as the header says.
-    Status retire(const std::filesystem::path& replaced,
-                  const std::filesystem::path& output) const;
+    Status retire(const std::filesystem::path& replaced, const std::filesystem::path& output) const;
 
 private:
     struct Identity {

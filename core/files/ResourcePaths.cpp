@@ -33,7 +33,7 @@ Result<std::filesystem::path> findResourceDirectory(std::string_view name) {
         lookedIn += (lookedIn.empty() ? "" : ", ") + candidate.string();
     }
     return badInput("cannot find the '" + std::string(name) + "' folder; looked in " + lookedIn +
-                 " (set MATEVO_DATA_DIR to the folder that holds it)");
+                    " (set MATEVO_DATA_DIR to the folder that holds it)");
 }
 
 Result<std::filesystem::path> defaultPresetPath() {

@@ -35,7 +35,8 @@ std::vector<std::filesystem::path> xdgDataSearchPath() {
     const std::string_view list = dirs && *dirs ? dirs : "/usr/local/share:/usr/share";
     for (std::size_t start = 0; start <= list.size();) {
         const std::size_t end = std::min(list.find(':', start), list.size());
-        if (end > start && list[start] == '/') folders.emplace_back(list.substr(start, end - start));
+        if (end > start && list[start] == '/')
+            folders.emplace_back(list.substr(start, end - start));
         start = end + 1;
     }
     return folders;

@@ -2,9 +2,7 @@
 
 namespace matevo {
 
-std::string_view toString(Coat coat) {
-    return coat == Coat::Roughcoat ? "roughcoat" : "clearcoat";
-}
+std::string_view toString(Coat coat) { return coat == Coat::Roughcoat ? "roughcoat" : "clearcoat"; }
 
 std::string_view toString(Base base) {
     return base == Base::Conductor ? "conductor" : "dielectric";
@@ -12,9 +10,12 @@ std::string_view toString(Base base) {
 
 std::string_view toString(TexturedLayer layer) {
     switch (layer) {
-        case TexturedLayer::Top: return "top";
-        case TexturedLayer::Bottom: return "bottom";
-        case TexturedLayer::None: break;
+        case TexturedLayer::Top:
+            return "top";
+        case TexturedLayer::Bottom:
+            return "bottom";
+        case TexturedLayer::None:
+            break;
     }
     return "none";
 }
@@ -39,7 +40,8 @@ std::optional<TexturedLayer> parseTexturedLayer(std::string_view text) {
 }
 
 std::string describe(const MaterialFamily& family) {
-    std::string label = std::string(toString(family.coat)) + "/" + std::string(toString(family.base));
+    std::string label =
+        std::string(toString(family.coat)) + "/" + std::string(toString(family.base));
     if (family.hasMedium) label += "+medium";
     if (family.texturedLayer != TexturedLayer::None)
         label += "+textured-" + std::string(toString(family.texturedLayer));

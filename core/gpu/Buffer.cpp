@@ -66,8 +66,8 @@ Result<Buffer> Buffer::create(const Device& device, VkDeviceSize size, VkBufferU
         return vulkanError("binding buffer memory", result);
 
     if (use != MemoryUse::DeviceLocal) {
-        if (VkResult result = vkMapMemory(device.handle(), memory, 0, VK_WHOLE_SIZE, 0,
-                                          &buffer.mapped_);
+        if (VkResult result =
+                vkMapMemory(device.handle(), memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped_);
             result != VK_SUCCESS)
             return vulkanError("mapping a buffer", result);
     }
@@ -105,8 +105,8 @@ Result<Buffer> Buffer::createFilled(const Device& device, CommandRunner& runner,
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.buffer = buffer->handle();
     barrier.size = VK_WHOLE_SIZE;
-    vkCmdPipelineBarrier(*commands, VK_PIPELINE_STAGE_TRANSFER_BIT, readers.stages, 0, 0,
-                         nullptr, 1, &barrier, 0, nullptr);
+    vkCmdPipelineBarrier(*commands, VK_PIPELINE_STAGE_TRANSFER_BIT, readers.stages, 0, 0, nullptr,
+                         1, &barrier, 0, nullptr);
     if (auto submitted = runner.submitAndWait(); !submitted) return submitted.error();
     return buffer;
 }
@@ -122,8 +122,8 @@ Result<UniqueBufferView> createTexelView(const Device& device, const Buffer& buf
 }
 
 Result<TexelBuffer> createTexelBuffer(const Device& device, VkDeviceSize size, VkFormat format) {
-    auto buffer = Buffer::create(device, size, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
-                                 MemoryUse::Upload);
+    auto buffer =
+        Buffer::create(device, size, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, MemoryUse::Upload);
     if (!buffer) return buffer.error();
     auto view = createTexelView(device, *buffer, format);
     if (!view) return view.error();

@@ -20,8 +20,8 @@ enum class FillPath {
 
 class Buffer {
 public:
-    static Result<Buffer> create(const Device& device, VkDeviceSize size,
-                                 VkBufferUsageFlags usage, MemoryUse use);
+    static Result<Buffer> create(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
+                                 MemoryUse use);
     // A buffer of `usage` holding `bytes`, for data written once and then read by the GPU
     // (the scene's mesh). Where upload memory is device-local (lavapipe, integrated GPUs) the
     // host writes it. Otherwise it is device-local, filled from a host-visible staging buffer
@@ -29,8 +29,8 @@ public:
     // visible to every read that `usage` allows (vertex, index and shader reads, transfers).
     // At least 16 bytes: Vulkan has no empty buffers.
     static Result<Buffer> createFilled(const Device& device, CommandRunner& runner,
-                                       std::span<const std::byte> bytes,
-                                       VkBufferUsageFlags usage, FillPath path = FillPath::Auto);
+                                       std::span<const std::byte> bytes, VkBufferUsageFlags usage,
+                                       FillPath path = FillPath::Auto);
 
     VkBuffer handle() const { return buffer_.get(); }
     VkDeviceSize size() const { return size_; }

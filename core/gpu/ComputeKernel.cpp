@@ -15,8 +15,7 @@ std::atomic<std::uint64_t> pipelineCount{0};
 
 std::uint64_t ComputeKernel::pipelinesCreated() { return pipelineCount.load(); }
 
-Result<ComputeKernel> ComputeKernel::create(const Device& device,
-                                            std::span<const uint32_t> spirv,
+Result<ComputeKernel> ComputeKernel::create(const Device& device, std::span<const uint32_t> spirv,
                                             std::vector<VkDescriptorType> bindings,
                                             uint32_t pushConstantBytes,
                                             std::span<const uint32_t> specialization) {
@@ -33,9 +32,8 @@ Result<ComputeKernel> ComputeKernel::create(const Device& device,
     kernel.set_ = std::move(set).value();
 
     const VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
-    auto pipelineLayout =
-        createPipelineLayout(vkDevice, kernel.set_.layout(),
-                             std::span(&pushRange, pushConstantBytes > 0 ? 1 : 0));
+    auto pipelineLayout = createPipelineLayout(
+        vkDevice, kernel.set_.layout(), std::span(&pushRange, pushConstantBytes > 0 ? 1 : 0));
     if (!pipelineLayout) return pipelineLayout.error();
     kernel.pipelineLayout_ = std::move(pipelineLayout).value();
 
@@ -62,8 +60,7 @@ void ComputeKernel::bindBuffer(uint32_t binding, const Buffer& buffer) const {
     set_.bindBuffer(binding, buffer);
 }
 
-void ComputeKernel::bindSampledImage(uint32_t binding, VkImageView view,
-                                     VkSampler sampler) const {
+void ComputeKernel::bindSampledImage(uint32_t binding, VkImageView view, VkSampler sampler) const {
     set_.bindSampledImage(binding, view, sampler);
 }
 
@@ -71,12 +68,12 @@ void ComputeKernel::bindStorageImage(uint32_t binding, VkImageView view) const {
     set_.bindStorageImage(binding, view);
 }
 
-void ComputeKernel::record(VkCommandBuffer commands, const void* pushConstants,
-                           uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) const {
+void ComputeKernel::record(VkCommandBuffer commands, const void* pushConstants, uint32_t groupsX,
+                           uint32_t groupsY, uint32_t groupsZ) const {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
     const VkDescriptorSet set = set_.handle();
-    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_.get(), 0,
-                            1, &set, 0, nullptr);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_.get(), 0, 1,
+                            &set, 0, nullptr);
     if (pushConstantBytes_ > 0)
         vkCmdPushConstants(commands, pipelineLayout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                            pushConstantBytes_, pushConstants);

@@ -15,11 +15,16 @@ std::atomic<int> devicesCreated{0};
 
 int preference(VkPhysicalDeviceType type) {
     switch (type) {
-        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
-        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
-        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-        case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
-        default: return 0;
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            return 3;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            return 1;
+        default:
+            return 0;
     }
 }
 
@@ -29,9 +34,8 @@ bool supportsExtensions(VkPhysicalDevice device, const std::vector<std::string>&
     std::vector<VkExtensionProperties> available(count);
     vkEnumerateDeviceExtensionProperties(device, nullptr, &count, available.data());
     return std::all_of(required.begin(), required.end(), [&](const std::string& name) {
-        return std::any_of(available.begin(), available.end(), [&](const auto& extension) {
-            return name == extension.extensionName;
-        });
+        return std::any_of(available.begin(), available.end(),
+                           [&](const auto& extension) { return name == extension.extensionName; });
     });
 }
 
@@ -87,8 +91,12 @@ Result<uint32_t> Device::memoryTypeFor(uint32_t typeBits, MemoryUse use) const {
     VkMemoryPropertyFlags required = 0;
     VkMemoryPropertyFlags preferred = 0;
     switch (use) {
-        case MemoryUse::DeviceLocal: preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT; break;
-        case MemoryUse::Upload: required = host; break;
+        case MemoryUse::DeviceLocal:
+            preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+            break;
+        case MemoryUse::Upload:
+            required = host;
+            break;
         case MemoryUse::Readback:
             required = host;
             preferred = VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
@@ -141,9 +149,10 @@ Result<Device> DeviceBuilder::build() const {
         device.maxTexelBufferElements_ = properties.limits.maxTexelBufferElements;
     }
     if (device.physicalDevice_ == VK_NULL_HANDLE)
-        return environmentError(count == 0 ? "Vulkan: no device found"
-                                : "Vulkan: no device supports Vulkan 1.2 with a graphics and "
-                                  "compute queue and the needed extensions");
+        return environmentError(count == 0
+                                    ? "Vulkan: no device found"
+                                    : "Vulkan: no device supports Vulkan 1.2 with a graphics and "
+                                      "compute queue and the needed extensions");
     vkGetPhysicalDeviceMemoryProperties(device.physicalDevice_, &device.memory_);
     const auto uploadType = device.memoryTypeFor(~0u, MemoryUse::Upload);
     device.uploadsAreDeviceLocal_ =

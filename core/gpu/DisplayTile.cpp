@@ -8,9 +8,9 @@ namespace {
 
 // Storage: the scene renderer's display pass writes a tile directly; transfer source: tests
 // read tiles back to check what the window shows.
-constexpr VkImageUsageFlags kTileUsage = VK_IMAGE_USAGE_SAMPLED_BIT |
-                                         VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+constexpr VkImageUsageFlags kTileUsage =
+    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+    VK_IMAGE_USAGE_STORAGE_BIT;
 
 void copyImage(VkCommandBuffer commands, const Buffer& batch, VkDeviceSize bytesPerImage,
                uint32_t index, const GpuImage& image) {

@@ -15,8 +15,8 @@
 namespace matevo::gpu {
 namespace {
 
-constexpr uint32_t kRowGroupSize = 8;             // local_size_x and _y in FlipRowFilter.comp
-constexpr uint32_t kCombineGroupSize = 64;        // local_size_x in FlipCombine.comp
+constexpr uint32_t kRowGroupSize = 8;       // local_size_x and _y in FlipRowFilter.comp
+constexpr uint32_t kCombineGroupSize = 64;  // local_size_x in FlipCombine.comp
 // Pixels each invocation filters, and how many at a time (kRun and kBlock in
 // shaders/FlipCommon.glsl). Only a block is unrolled, so the blocks set lavapipe's compile time
 // and the runs the loads per output; docs/flip.md has the measured trade-off.
@@ -102,9 +102,9 @@ Result<const FlipPass::Kernels*> FlipPass::kernelsFor(int csfRadius, int feature
                               sizeof(PushConstants), rowConstants);
     if (!rowFilter) return rowFilter.error();
     // The combination reads the planes, not the images: bindings 0 and 1 are bound, not read.
-    auto combine = ComputeKernel::create(
-        *device_, kFlipCombineSpirv, {texels, texels, uniform, texels, storage},
-        sizeof(PushConstants), combineConstants);
+    auto combine = ComputeKernel::create(*device_, kFlipCombineSpirv,
+                                         {texels, texels, uniform, texels, storage},
+                                         sizeof(PushConstants), combineConstants);
     if (!combine) return combine.error();
     kernels_.push_back(
         {csfRadius, featureRadius, std::move(rowFilter).value(), std::move(combine).value()});

@@ -8,8 +8,8 @@
 namespace matevo::gpu {
 
 struct GpuContextOptions {
-    bool validation = false;     // VK_LAYER_KHRONOS_validation + synchronization validation
-    bool printMessages = true;   // echo validation errors and warnings to stderr
+    bool validation = false;    // VK_LAYER_KHRONOS_validation + synchronization validation
+    bool printMessages = true;  // echo validation errors and warnings to stderr
 };
 
 struct GpuContext {

@@ -42,8 +42,8 @@ Result<GpuImage> GpuImage::create(const Device& device, const GpuImageSpec& spec
 
     auto view = createImageView(
         vkDevice, handle,
-        spec.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D,
-        spec.format, spec.aspect);
+        spec.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D, spec.format,
+        spec.aspect);
     if (!view) return view.error();
     image.view_ = std::move(view).value();
     return image;
@@ -54,8 +54,8 @@ Result<GpuImage> GpuImage::createFilled(const Device& device, CommandRunner& run
                                         std::span<const std::byte> texels) {
     auto image = create(device, spec);
     if (!image) return image;
-    auto staging = Buffer::create(device, texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                  MemoryUse::Upload);
+    auto staging =
+        Buffer::create(device, texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
     if (!staging) return staging.error();
     std::memcpy(staging->bytes().data(), texels.data(), texels.size());
 
@@ -92,10 +92,9 @@ VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLay
     return barrier;
 }
 
-void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from,
-                     VkImageLayout to, VkPipelineStageFlags sourceStage,
-                     VkAccessFlags sourceAccess, VkPipelineStageFlags destinationStage,
-                     VkAccessFlags destinationAccess) {
+void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
+                     VkPipelineStageFlags sourceStage, VkAccessFlags sourceAccess,
+                     VkPipelineStageFlags destinationStage, VkAccessFlags destinationAccess) {
     const VkImageMemoryBarrier barrier =
         layoutBarrier(image, from, to, sourceAccess, destinationAccess);
     vkCmdPipelineBarrier(commands, sourceStage, destinationStage, 0, 0, nullptr, 0, nullptr, 1,

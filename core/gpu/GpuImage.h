@@ -48,9 +48,8 @@ VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLay
 
 // Records a layout transition of a whole colour image with a full barrier between the given
 // stages and accesses.
-void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from,
-                     VkImageLayout to, VkPipelineStageFlags sourceStage,
-                     VkAccessFlags sourceAccess, VkPipelineStageFlags destinationStage,
-                     VkAccessFlags destinationAccess);
+void transitionImage(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
+                     VkPipelineStageFlags sourceStage, VkAccessFlags sourceAccess,
+                     VkPipelineStageFlags destinationStage, VkAccessFlags destinationAccess);
 
 }  // namespace matevo::gpu

@@ -81,9 +81,9 @@ Result<std::vector<ErrorMap>> GpuImageComparer::compare(const Image& reference,
                                                         std::span<const Image> candidates) {
     return measure(reference, candidates, ImageMetric::DeltaE00,
                    [&](VkCommandBuffer commands, const ImageBatchShape& shape) -> Status {
-                       deltaEPass_.record(commands, {&buffers_.reference, &buffers_.candidates,
-                                                     &buffers_.maps, shape.pixelCount(),
-                                                     shape.count, 0, 0});
+                       deltaEPass_.record(
+                           commands, {&buffers_.reference, &buffers_.candidates, &buffers_.maps,
+                                      shape.pixelCount(), shape.count, 0, 0});
                        return Ok{};
                    });
 }
@@ -93,11 +93,11 @@ Result<std::vector<ErrorMap>> GpuImageComparer::compareFlip(const Image& referen
                                                             const FlipSettings& settings) {
     return measure(reference, candidates, ImageMetric::Flip,
                    [&](VkCommandBuffer commands, const ImageBatchShape& shape) {
-                       return flipPass_.record(commands,
-                                               {&buffers_.reference, &buffers_.candidates,
-                                                &buffers_.maps, shape.width, shape.height,
-                                                shape.count, 0, 0},
-                                               settings);
+                       return flipPass_.record(
+                           commands,
+                           {&buffers_.reference, &buffers_.candidates, &buffers_.maps, shape.width,
+                            shape.height, shape.count, 0, 0},
+                           settings);
                    });
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// ΔE00 or ꟻLIP maps on the GPU for images that already exist on the host (e.g. CPU renders): upload, one submission of the compute pass, read back. The GPU renderer feeds the
-// same passes straight from its own buffers instead.
+// ΔE00 or ꟻLIP maps on the GPU for images that already exist on the host (e.g. CPU renders):
+// upload, one submission of the compute pass, read back. The GPU renderer feeds the same passes
+// straight from its own buffers instead.
 #include <functional>
 #include <span>
 #include <vector>
@@ -28,9 +29,10 @@ public:
                                               const FlipSettings& settings = {});
 
 private:
-    // The images in upload buffers, and a read-back buffer for one map per candidate: kept from call to call, made anew only for a larger batch. (Fresh buffers at
-    // every call cost a page fault per 4 KiB touched, or not, as the C library's allocator
-    // happened to hand out memory: at 256² that was up to four times the ΔE00 pass's time.)
+    // The images in upload buffers, and a read-back buffer for one map per candidate: kept from
+    // call to call, made anew only for a larger batch. (Fresh buffers at every call cost a page
+    // fault per 4 KiB touched, or not, as the C library's allocator happened to hand out memory: at
+    // 256² that was up to four times the ΔE00 pass's time.)
     struct Buffers {
         Buffer reference, candidates, maps;
     };
@@ -38,9 +40,8 @@ private:
     Result<ImageBatchShape> upload(const Image& reference, std::span<const Image> candidates);
     // Uploads, records the metric's pass with `record`, submits and reads the maps back.
     using RecordPass = std::function<Status(VkCommandBuffer, const ImageBatchShape&)>;
-    Result<std::vector<ErrorMap>> measure(const Image& reference,
-                                          std::span<const Image> candidates, ImageMetric metric,
-                                          const RecordPass& record);
+    Result<std::vector<ErrorMap>> measure(const Image& reference, std::span<const Image> candidates,
+                                          ImageMetric metric, const RecordPass& record);
 
     const Device* device_ = nullptr;
     DeltaE00Pass deltaEPass_;

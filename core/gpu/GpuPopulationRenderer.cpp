@@ -164,13 +164,11 @@ Result<PopulationEvaluation> GpuPopulationRenderer::evaluateOnDevice(
     computeWriteToComputeReadBarrier(*commands);
     if (flip)
         if (auto recorded = flipPass_->record(
-                *commands,
-                {&targetRender_, &renders_, &flip_, size, size, shape.count, 0, 0},
+                *commands, {&targetRender_, &renders_, &flip_, size, size, shape.count, 0, 0},
                 options.flipSettings);
             !recorded)
             return recorded.error();
-    const Buffer& tileMaps =
-        flip && options.heatmapMetric == ImageMetric::Flip ? flip_ : deltaE_;
+    const Buffer& tileMaps = flip && options.heatmapMetric == ImageMetric::Flip ? flip_ : deltaE_;
     if (!tiles.empty()) recordCopiesToTiles(*commands, renders_, &tileMaps, shape, tiles);
     computeWriteToHostReadBarrier(*commands);
     backgroundFilledFor_.reset();  // unknown until the submission is done
@@ -204,8 +202,7 @@ Status GpuPopulationRenderer::renderIntoTile(const MaterialInstance& material,
     if (!buffer) return buffer.error();
     auto commands = runner_.begin();
     if (!commands) return commands.error();
-    if (auto recorded =
-            renderer_.record(*commands, std::span(&material, 1), scene, size, *buffer);
+    if (auto recorded = renderer_.record(*commands, std::span(&material, 1), scene, size, *buffer);
         !recorded)
         return recorded.error();
     recordCopiesToTiles(*commands, *buffer, nullptr, shape, tile.tiles);

@@ -1,8 +1,9 @@
 #pragma once
 // The render interface on Vulkan: the target and every candidate are rendered by
 // GpuSphereRenderer, the ΔE00 pass (and, when asked, the ꟻLIP pass) compares each candidate
-// with the target's render, and everything is read back, in one submission. The target's render stays in
-// its own buffer until the target changes. Buffers are kept between calls of the same shape.
+// with the target's render, and everything is read back, in one submission. The target's render
+// stays in its own buffer until the target changes. Buffers are kept between calls of the same
+// shape.
 #include <memory>
 #include <optional>
 #include <span>
@@ -23,9 +24,10 @@ public:
     // Renders on `device`, which must outlive the renderer. `tables` too (the process-wide
     // defaultFgdTables() does). `cancel` is checked before each submission; once it is
     // cancelled a call ends with cancelledError().
-    static Result<std::unique_ptr<GpuPopulationRenderer>> create(
-        const Device& device, const FgdTables& tables, const SceneTextures& textures,
-        CancelToken cancel = {});
+    static Result<std::unique_ptr<GpuPopulationRenderer>> create(const Device& device,
+                                                                 const FgdTables& tables,
+                                                                 const SceneTextures& textures,
+                                                                 CancelToken cancel = {});
     // Renders on a headless device of its own.
     static Result<std::unique_ptr<GpuPopulationRenderer>> createHeadless(
         const GpuContextOptions& options, const FgdTables& tables, const SceneTextures& textures,

@@ -254,9 +254,10 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
     renderer.visibilityPass_ = resolve(device, visibility);
     const bool raster = renderer.visibilityPass_ == SceneVisibilityPass::Raster;
     if (!raster && !device.int64Atomics())
-        return environmentError("Vulkan: " + device.name() +
-                     " lacks 64-bit integer atomics on storage buffers, which the scene's "
-                     "compute visibility pass needs");
+        return environmentError(
+            "Vulkan: " + device.name() +
+            " lacks 64-bit integer atomics on storage buffers, which the scene's "
+            "compute visibility pass needs");
     auto uploaded = GpuSceneTextures::create(device, runner, textures);
     if (!uploaded) return uploaded.error();
     renderer.textures_ = std::move(uploaded).value();
@@ -270,9 +271,9 @@ Result<GpuSceneRenderer> GpuSceneRenderer::create(const Device& device, CommandR
         triangles[t] = {clustered.mesh.indices[t * 3], clustered.mesh.indices[t * 3 + 1],
                         clustered.mesh.indices[t * 3 + 2], 0u};
     const VkBufferUsageFlags texelUsage = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
-    auto vertices = Buffer::createFilled(device, runner,
-                                         std::as_bytes(std::span(clustered.mesh.vertices)),
-                                         texelUsage | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, meshFill);
+    auto vertices =
+        Buffer::createFilled(device, runner, std::as_bytes(std::span(clustered.mesh.vertices)),
+                             texelUsage | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, meshFill);
     if (!vertices) return vertices.error();
     auto triangleBuffer = Buffer::createFilled(device, runner, std::as_bytes(std::span(triangles)),
                                                texelUsage, meshFill);
@@ -410,8 +411,8 @@ Status GpuSceneRenderer::prepareInstances(const SceneFrame& frame) {
         const SceneInstance& instance = instances[i];
         if (instance.material >= materialCount_)
             return internalError("scene instance " + std::to_string(i) + " names material " +
-                         std::to_string(instance.material) + " of " +
-                         std::to_string(materialCount_));
+                                 std::to_string(instance.material) + " of " +
+                                 std::to_string(materialCount_));
         GpuInstance& gpu = gpuInstances[i];
         std::memcpy(gpu.transform, glm::value_ptr(instance.transform), sizeof gpu.transform);
         gpu.material[0] = float(instance.material);
@@ -431,7 +432,7 @@ Status GpuSceneRenderer::prepareInstances(const SceneFrame& frame) {
     }
     if (entries.size() > std::numeric_limits<uint32_t>::max() / kClusterTriangles)
         return badInput("the scene has too many instances of too large a mesh (" +
-                     std::to_string(entries.size()) + " clusters in view)");
+                        std::to_string(entries.size()) + " clusters in view)");
     trianglesSubmitted_ = 0;
     for (const glm::uvec2& entry : entries)
         trianglesSubmitted_ += std::min<uint64_t>(

@@ -16,7 +16,7 @@ Status requireLinearSampling(const Device& device) {
         VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
     if ((properties.optimalTilingFeatures & needed) != needed)
         return environmentError("Vulkan: " + device.name() +
-                     " cannot filter R32G32B32A32_SFLOAT textures linearly");
+                                " cannot filter R32G32B32A32_SFLOAT textures linearly");
     return Ok{};
 }
 

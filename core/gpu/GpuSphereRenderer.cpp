@@ -73,13 +73,13 @@ Result<GpuSphereRenderer> GpuSphereRenderer::create(const Device& device, Comman
         if (compared) bindings.insert(bindings.end(), {texels, storage});
         // One pipeline for the pixels of one point, one for the silhouette's of several.
         for (bool silhouette : {false, true}) {
-            const uint32_t specialization[] = {
-                renderer.textures_.textured() ? 1u : 0u,
-                renderer.textures_.environmentLevels() > 0 ? 1u : 0u,
-                uint32_t(silhouette ? kMaxPointsPerPixel : 1)};
+            const uint32_t specialization[] = {renderer.textures_.textured() ? 1u : 0u,
+                                               renderer.textures_.environmentLevels() > 0 ? 1u : 0u,
+                                               uint32_t(silhouette ? kMaxPointsPerPixel : 1)};
             auto kernel = ComputeKernel::create(
-                device, compared ? std::span<const uint32_t>(kSphereRenderComparedSpirv)
-                                 : std::span<const uint32_t>(kSphereRenderSpirv),
+                device,
+                compared ? std::span<const uint32_t>(kSphereRenderComparedSpirv)
+                         : std::span<const uint32_t>(kSphereRenderSpirv),
                 bindings, sizeof(PushConstants), specialization);
             if (!kernel) return kernel.error();
             renderer.textures_.bind(kernel->descriptors(), 2, 3, 6);
@@ -96,8 +96,7 @@ Status GpuSphereRenderer::record(VkCommandBuffer commands,
                                  const TargetComparison* comparison, bool backgroundFilled) {
     if (auto uploaded = materials_.upload(*device_, *tables_, materials); !uploaded)
         return uploaded.error();
-    if (auto prepared = samples_.prepare(*device_, scene, size); !prepared)
-        return prepared.error();
+    if (auto prepared = samples_.prepare(*device_, scene, size); !prepared) return prepared.error();
     const GpuScene gpuScene = toGpu(scene, textures_);
     std::memcpy(sceneBuffer_.bytes().data(), &gpuScene, sizeof(gpuScene));
 

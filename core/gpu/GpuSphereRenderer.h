@@ -27,7 +27,7 @@ namespace matevo::gpu {
 // into the render): buffers in ImageBatch layout of the render's shape.
 struct TargetComparison {
     VkBufferView targetLab = VK_NULL_HANDLE;  // RGBA32F per pixel of one image: L*, a*, b*, alpha
-    const Buffer* deltaE = nullptr;     // 1 float per pixel, -1 where not covered in both
+    const Buffer* deltaE = nullptr;           // 1 float per pixel, -1 where not covered in both
 };
 
 class GpuSphereRenderer {

@@ -71,10 +71,9 @@ Status GpuSphereSamples::prepare(const Device& device, const SceneSettings& scen
     pixels_ = std::move(pixelBuffer).value();
     points_ = std::move(pointBuffer).value();
     coveredPixels_ = uint32_t(pixels.size());
-    singlePointPixels_ = uint32_t(std::count_if(samples.pixels.begin(), samples.pixels.end(),
-                                                [](const SpherePixel& pixel) {
-                                                    return pixel.sampleCount == 1;
-                                                }));
+    singlePointPixels_ =
+        uint32_t(std::count_if(samples.pixels.begin(), samples.pixels.end(),
+                               [](const SpherePixel& pixel) { return pixel.sampleCount == 1; }));
     key_ = key;
     return Ok{};
 }

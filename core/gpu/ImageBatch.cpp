@@ -10,8 +10,8 @@
 
 namespace matevo::gpu {
 
-Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& shape,
-                                 int channels, MemoryUse use) {
+Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& shape, int channels,
+                                 MemoryUse use) {
     const VkDeviceSize size =
         VkDeviceSize(shape.pixelCount()) * shape.count * VkDeviceSize(channels) * sizeof(float);
     return Buffer::create(device, std::max<VkDeviceSize>(size, 4),
@@ -45,10 +45,9 @@ void recordRewrite(VkCommandBuffer commands) {
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
     barrier.dstAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    vkCmdPipelineBarrier(commands,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0,
-                         nullptr);
+    vkCmdPipelineBarrier(
+        commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
 }
 
 void uploadImage(const Buffer& batch, const ImageBatchShape& shape, uint32_t index,

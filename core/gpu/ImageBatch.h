@@ -22,8 +22,8 @@ struct ImageBatchShape {
 
 // A buffer for `shape.count` RGBA float images (channels = 4) or float maps (channels = 1):
 // a storage buffer, also usable as a uniform texel buffer (the ꟻLIP pass reads images so).
-Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& shape,
-                                 int channels, MemoryUse use);
+Result<Buffer> createBatchBuffer(const Device& device, const ImageBatchShape& shape, int channels,
+                                 MemoryUse use);
 
 // Records filling the batch's `shape.count` slots with `value` in every channel, ordered after
 // earlier work on the buffer and before compute shaders of the same submission read or write

@@ -41,9 +41,9 @@ bool hasLayer(const char* name) {
 }  // namespace
 
 struct MessengerCallback {
-    static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(
-        VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
-        const VkDebugUtilsMessengerCallbackDataEXT* data, void* userData) {
+    static VKAPI_ATTR VkBool32 VKAPI_CALL
+    onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
+              const VkDebugUtilsMessengerCallbackDataEXT* data, void* userData) {
         auto& sink = *static_cast<Instance::MessageSink*>(userData);
         const std::string message = data && data->pMessage ? data->pMessage : "(no message)";
         const bool isError = severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
@@ -54,11 +54,12 @@ struct MessengerCallback {
         const bool fromLoader = data && data->pMessageIdName &&
                                 std::strcmp(data->pMessageIdName, "Loader Message") == 0;
         if (fromLoader && !isError) return VK_FALSE;
-        if (isError) sink.log.addError(message);
-        else sink.log.addWarning(message);
+        if (isError)
+            sink.log.addError(message);
+        else
+            sink.log.addWarning(message);
         if (sink.echoToStderr && !fromLoader)
-            std::fprintf(stderr, "vulkan %s: %s\n", isError ? "error" : "warning",
-                         message.c_str());
+            std::fprintf(stderr, "vulkan %s: %s\n", isError ? "error" : "warning", message.c_str());
         return VK_FALSE;
     }
 };

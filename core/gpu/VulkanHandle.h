@@ -31,7 +31,8 @@ public:
     explicit operator bool() const { return handle_ != VK_NULL_HANDLE; }
 
     void reset() {
-        if (handle_ != VK_NULL_HANDLE) Destroy(parent_, std::exchange(handle_, VK_NULL_HANDLE), nullptr);
+        if (handle_ != VK_NULL_HANDLE)
+            Destroy(parent_, std::exchange(handle_, VK_NULL_HANDLE), nullptr);
     }
 
 private:

@@ -114,8 +114,7 @@ Result<VkCommandBuffer> allocateCommandBuffer(VkDevice device, VkCommandPool poo
     info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     info.commandBufferCount = 1;
     VkCommandBuffer commands = VK_NULL_HANDLE;
-    if (VkResult result = vkAllocateCommandBuffers(device, &info, &commands);
-        result != VK_SUCCESS)
+    if (VkResult result = vkAllocateCommandBuffers(device, &info, &commands); result != VK_SUCCESS)
         return vulkanError("allocating a command buffer", result);
     return commands;
 }

@@ -46,7 +46,8 @@ Image Canvas::release() && {
     Image image(width_, height_);
     for (int y = 0; y < height_; ++y) {
         for (int x = 0; x < width_; ++x) {
-            const float* encoded = &encoded_[(std::size_t(y) * std::size_t(width_) + std::size_t(x)) * 3];
+            const float* encoded =
+                &encoded_[(std::size_t(y) * std::size_t(width_) + std::size_t(x)) * 3];
             float* pixel = image.pixel(x, y);
             for (int c = 0; c < 3; ++c) pixel[c] = float(srgbToLinear(double(encoded[c])));
             pixel[3] = 1.0f;

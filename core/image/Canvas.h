@@ -30,8 +30,8 @@ public:
     void horizontalLine(int x0, int x1, int y, Srgb8 colour);
     void verticalLine(int x, int y0, int y1, Srgb8 colour);
     // UTF-8 text whose baseline starts at (x, baseline); size in pixels per em.
-    void drawText(const Font& font, double x, double baseline, std::string_view text,
-                  double size, Srgb8 colour);
+    void drawText(const Font& font, double x, double baseline, std::string_view text, double size,
+                  Srgb8 colour);
 
     Image release() &&;
 

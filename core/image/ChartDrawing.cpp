@@ -16,9 +16,12 @@ std::string hexColour(Srgb8 colour) {
 
 std::string_view anchorName(TextAnchor anchor) {
     switch (anchor) {
-        case TextAnchor::Start: return "start";
-        case TextAnchor::Middle: return "middle";
-        case TextAnchor::End: return "end";
+        case TextAnchor::Start:
+            return "start";
+        case TextAnchor::Middle:
+            return "middle";
+        case TextAnchor::End:
+            return "end";
     }
     return "start";
 }
@@ -28,10 +31,10 @@ std::string classAttribute(const std::string& role) {
 }
 
 std::string svgElement(const ChartRect& rect) {
-    std::string element = "<rect" + classAttribute(rect.role) + " x=\"" + xmlNumber(rect.x0) +
-                          "\" y=\"" + xmlNumber(rect.y0) + "\" width=\"" +
-                          xmlNumber(rect.x1 - rect.x0) + "\" height=\"" + xmlNumber(rect.y1 - rect.y0) +
-                          "\" fill=\"" + hexColour(rect.colour) + "\"";
+    std::string element =
+        "<rect" + classAttribute(rect.role) + " x=\"" + xmlNumber(rect.x0) + "\" y=\"" +
+        xmlNumber(rect.y0) + "\" width=\"" + xmlNumber(rect.x1 - rect.x0) + "\" height=\"" +
+        xmlNumber(rect.y1 - rect.y0) + "\" fill=\"" + hexColour(rect.colour) + "\"";
     if (rect.opacity < 1.0f) element += " fill-opacity=\"" + xmlNumber(rect.opacity) + "\"";
     if (rect.tooltip.empty()) return element + "/>\n";
     return element + "><title>" + xmlEscaped(rect.tooltip) + "</title></rect>\n";
@@ -50,10 +53,11 @@ std::string svgElement(const ChartText& text) {
 
 std::string chartSvg(const ChartDrawing& chart) {
     const std::string width = xmlNumber(chart.width), height = xmlNumber(chart.height);
-    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                      "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
-                      width + "\" height=\"" + height + "\" viewBox=\"0 0 " + width + " " +
-                      height + "\" font-family=\"" + std::string(Font::kSvgFamily) + "\">\n";
+    std::string svg =
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
+        width + "\" height=\"" + height + "\" viewBox=\"0 0 " + width + " " + height +
+        "\" font-family=\"" + std::string(Font::kSvgFamily) + "\">\n";
     svg += svgElement(ChartRect{0, 0, chart.width, chart.height, chart.background, 1.0f, "", ""});
     for (const auto& shape : chart.shapes)
         std::visit([&](const auto& element) { svg += svgElement(element); }, shape);

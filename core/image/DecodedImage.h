@@ -16,8 +16,7 @@ struct DecodedImage {
     int channels = 0;  // 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
     // Interleaved samples. Integer samples are sRGB-encoded (PNG, JPEG, 8/16-bit TIFF);
     // floating-point samples are linear (OpenEXR, Radiance HDR, float TIFF).
-    std::variant<std::vector<std::uint8_t>, std::vector<std::uint16_t>, std::vector<float>>
-        samples;
+    std::variant<std::vector<std::uint8_t>, std::vector<std::uint16_t>, std::vector<float>> samples;
 };
 
 // Called with the size a file declares before its samples are allocated; an error stops the

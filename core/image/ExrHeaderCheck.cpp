@@ -49,10 +49,10 @@ constexpr std::array<std::pair<const char*, std::size_t>, 26> kFixedSizeTypes{{
 
 // What OpenEXR sizes its block buffers by, from one header.
 struct BlockLayout {
-    std::int64_t width = 0;                   // of the data window
-    int compression = 0;                      // OpenEXR's Compression enum
+    std::int64_t width = 0;                      // of the data window
+    int compression = 0;                         // OpenEXR's Compression enum
     std::int64_t tileWidth = 0, tileHeight = 0;  // 0 for scan-line files
-    std::uint64_t bytesPerPixel = 0;          // summed over the channels
+    std::uint64_t bytesPerPixel = 0;             // summed over the channels
 };
 
 // Rows per compressed block of a scan-line file: NONE, RLE, ZIPS, ZIP, PIZ, PXR24, B44, B44A,
@@ -72,8 +72,8 @@ Status checkBlockMemory(const BlockLayout& layout) {
     if (width <= 0 || rows <= 0) return Ok{};
     const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(rows) *
                                 std::max<std::uint64_t>(layout.bytesPerPixel, 1) * 2;
-    return checkMemoryEstimate(bytes, "its blocks of " + std::to_string(width) + "x" +
-                                          std::to_string(rows) + " pixels");
+    return checkMemoryEstimate(
+        bytes, "its blocks of " + std::to_string(width) + "x" + std::to_string(rows) + " pixels");
 }
 
 std::uint32_t readUint32(std::string_view bytes, std::size_t at) {

@@ -31,8 +31,11 @@ std::vector<char32_t> decodeUtf8(std::string_view text) {
     std::vector<char32_t> codePoints;
     for (std::size_t i = 0; i < text.size();) {
         const auto lead = static_cast<unsigned char>(text[i]);
-        const int length = lead < 0x80 ? 1 : lead >> 5 == 0x6 ? 2 : lead >> 4 == 0xE ? 3
-                                                                 : lead >> 3 == 0x1E ? 4 : 0;
+        const int length = lead < 0x80         ? 1
+                           : lead >> 5 == 0x6  ? 2
+                           : lead >> 4 == 0xE  ? 3
+                           : lead >> 3 == 0x1E ? 4
+                                               : 0;
         if (length == 0 || i + std::size_t(length) > text.size()) {
             codePoints.push_back(kReplacement);
             ++i;
@@ -73,7 +76,7 @@ Result<Font> Font::dejaVuSans() {
         looked += (looked.empty() ? "" : ", ") + file.string();
     }
     return badInput("cannot find the DejaVu Sans font (Debian: fonts-dejavu-core); looked in " +
-                 looked);
+                    looked);
 }
 
 bool Font::hasGlyph(char32_t codePoint) const {

@@ -76,11 +76,10 @@ Result<Image> toLinearRgba(const std::vector<Sample>& samples, const DecodedImag
         if constexpr (std::is_same_v<Sample, float>) {
             for (int c = 0; c < 4; ++c)
                 if (!std::isfinite(rgba[c]))
-                    return fileError(file, "pixel (" +
-                                               std::to_string(i % std::size_t(decoded.width)) +
-                                               ", " +
-                                               std::to_string(i / std::size_t(decoded.width)) +
-                                               ") is not a finite number");
+                    return fileError(
+                        file, "pixel (" + std::to_string(i % std::size_t(decoded.width)) + ", " +
+                                  std::to_string(i / std::size_t(decoded.width)) +
+                                  ") is not a finite number");
         }
     }
     return image;
@@ -104,9 +103,9 @@ Result<ImageFileContents> decodeImageFile(std::string_view bytes,
             return badInput("unsupported channel count " + std::to_string(channels));
         if (width <= 0 || height <= 0) return badInput("empty image");
         const std::uint64_t pixelCount = std::uint64_t(width) * std::uint64_t(height);
-        return checkMemoryEstimate(pixelCount * (std::uint64_t(channels) + 4) * sizeof(float),
-                                   "decoding " + std::to_string(width) + "x" +
-                                       std::to_string(height) + " pixels");
+        return checkMemoryEstimate(
+            pixelCount * (std::uint64_t(channels) + 4) * sizeof(float),
+            "decoding " + std::to_string(width) + "x" + std::to_string(height) + " pixels");
     };
     const std::string extension = lowerCaseExtension(file);
     if (extension == ".exr")
@@ -117,9 +116,9 @@ Result<ImageFileContents> decodeImageFile(std::string_view bytes,
     if (!decoded) return fileError(file, decoded.error().message);
 
     const bool hasAlpha = decoded->channels == 2 || decoded->channels == 4;
-    auto image = std::visit(
-        [&](const auto& samples) { return toLinearRgba(samples, *decoded, file); },
-        decoded->samples);
+    auto image =
+        std::visit([&](const auto& samples) { return toLinearRgba(samples, *decoded, file); },
+                   decoded->samples);
     if (!image) return image.error();
     return ImageFileContents{std::move(*image), hasAlpha};
 }
@@ -155,9 +154,9 @@ Status checkImageEncoder(const std::filesystem::path& file) {
 Result<std::vector<unsigned char>> encodePng(const Image& image, PngValues values) {
     if (image.width <= 0 || image.height <= 0 || image.rgba.size() != image.pixelCount() * 4)
         return internalError("cannot encode an empty or malformed image as PNG");
-    auto encoded = encodePngRgba8(
-        encode8(image, values).data(), image.width, image.height,
-        values == PngValues::Srgb ? PngEncodingTag::Srgb : PngEncodingTag::Linear);
+    auto encoded =
+        encodePngRgba8(encode8(image, values).data(), image.width, image.height,
+                       values == PngValues::Srgb ? PngEncodingTag::Srgb : PngEncodingTag::Linear);
     if (!encoded) return withContext(encoded.error(), "cannot encode PNG");
     return std::vector<unsigned char>(encoded->begin(), encoded->end());
 }

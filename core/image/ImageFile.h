@@ -5,8 +5,8 @@
 // linear. In memory an Image is always linear with straight (unassociated) alpha, so colour
 // values are stored as they are and alpha is never multiplied in.
 #include <filesystem>
-#include <vector>
 #include <string_view>
+#include <vector>
 
 #include "common/Image.h"
 #include "common/Result.h"

@@ -53,7 +53,7 @@ Status checkChunkLengths(std::string_view bytes) {
                                      std::uint64_t(chunk[2]) << 8 | std::uint64_t(chunk[3]);
         if (length > bytes.size() - at - kFramingBytes)
             return badInput("a chunk claims " + std::to_string(length) +
-                         " bytes, more than the file holds");
+                            " bytes, more than the file holds");
         if (std::memcmp(chunk + 4, "IEND", 4) == 0) break;
         at += kFramingBytes + length;
     }

@@ -13,8 +13,7 @@ std::array<double, 3> evaluateBsdf(const LobeSet& lobes, double cosView, double 
     for (const Lobe* lobe : {&lobes.coat, &lobes.base}) {
         const double alpha = std::clamp(lobe->alpha, kMinimumLobeAlpha, 1.0);
         const double shape = ggxDistribution(cosHalf, alpha) *
-                             smithShadowing(cosView, cosLight, alpha) /
-                             (4.0 * cosView * cosLight);
+                             smithShadowing(cosView, cosLight, alpha) / (4.0 * cosView * cosLight);
         for (int c = 0; c < 3; ++c) value[c] += lobe->energy[c] * shape;
     }
     return value;

@@ -9,9 +9,8 @@ namespace {
 template <typename Integrand>
 double integrate(double cosTheta, double alpha, int samplesPerAxis, Integrand&& integrand) {
     double sum = 0.0;
-    forEachReflectionSample(cosTheta, alpha, samplesPerAxis, [&](const ReflectionSample& s) {
-        sum += s.weight * integrand(s);
-    });
+    forEachReflectionSample(cosTheta, alpha, samplesPerAxis,
+                            [&](const ReflectionSample& s) { sum += s.weight * integrand(s); });
     return sum / (double(samplesPerAxis) * samplesPerAxis);
 }
 
@@ -42,18 +41,18 @@ double integrateMaskingAlbedo(double cosTheta, double alpha, int samplesPerAxis)
 
 double integrateEscapeFraction(double cosTheta, double alpha, double eta, int samplesPerAxis) {
     const double clampedEta = std::max(eta, kIntegrationFloor);
-    const double escaping = integrate(cosTheta, alpha, samplesPerAxis,
-                                      [&](const ReflectionSample& s) {
-                                          return 1.0 - fresnelDielectric(s.cosOutgoing, clampedEta);
-                                      });
+    const double escaping =
+        integrate(cosTheta, alpha, samplesPerAxis, [&](const ReflectionSample& s) {
+            return 1.0 - fresnelDielectric(s.cosOutgoing, clampedEta);
+        });
     const double total = integrateMaskingAlbedo(cosTheta, alpha, samplesPerAxis);
     return total > 0.0 ? escaping / total : 1.0;
 }
 
 double averageFresnel(double eta, double kappa) {
     const double clampedEta = std::max(eta, kIntegrationFloor);
-    return cosineWeightedAverage(512,
-                                 [&](double mu) { return fresnelConductor(mu, clampedEta, kappa); });
+    return cosineWeightedAverage(
+        512, [&](double mu) { return fresnelConductor(mu, clampedEta, kappa); });
 }
 
 double averageMaskingAlbedo(double alpha, int samplesPerAxis) {

@@ -36,8 +36,8 @@ void forEachReflectionSample(double cosTheta, double alpha, int samplesPerAxis, 
             const double d = glm::dot(incident, half);
             const double cosOut = 2.0 * d * half.z - mu;
             if (cosOut <= 0.0) continue;
-            visit(ReflectionSample{std::min(d, 1.0), std::min(cosOut, 1.0),
-                                   smithMasking(cosOut, a)});
+            visit(
+                ReflectionSample{std::min(d, 1.0), std::min(cosOut, 1.0), smithMasking(cosOut, a)});
         }
     }
 }
@@ -48,8 +48,7 @@ double integrateFgdSingleScattering(double cosTheta, double alpha, double eta, d
 // E(mu, alpha): the same without Fresnel.
 double integrateMaskingAlbedo(double cosTheta, double alpha, int samplesPerAxis = 128);
 // TIR(mu, alpha, eta): G1-weighted mean of (1 - F_dielectric(omega_o . n; eta)) (§3.4).
-double integrateEscapeFraction(double cosTheta, double alpha, double eta,
-                               int samplesPerAxis = 128);
+double integrateEscapeFraction(double cosTheta, double alpha, double eta, int samplesPerAxis = 128);
 // F_avg = 2 int F(mu) mu dmu and E_avg = 2 int E(mu) mu dmu (Kulla and Conty 2017).
 double averageFresnel(double eta, double kappa);
 double averageMaskingAlbedo(double alpha, int samplesPerAxis = 32);

@@ -4,8 +4,8 @@
 // otherwise it is rebuilt, with a one-line notice when a file was there.
 //
 // File layout (little-endian): 8-byte magic "MVFGDTIR", uint32 format version, then per axis
-// (mu, alpha, eta, kappa) int32 count, float64 min, max and int32 spacing; int32 samplesPerAxis, int32
-// histogramIntervals, the FGD floats, the TIR floats, and a uint64 FNV-1a checksum of all the
+// (mu, alpha, eta, kappa) int32 count, float64 min, max and int32 spacing; int32 samplesPerAxis,
+// int32 histogramIntervals, the FGD floats, the TIR floats, and a uint64 FNV-1a checksum of all the
 // bytes before it.
 #include <filesystem>
 #include <string>

@@ -57,7 +57,8 @@ FgdTables generateFgdTables(const TableGenerationSettings& settings,
     for (int e = 0; e < grid.eta.count; ++e) {
         for (int b = 0; b < bins; ++b) {
             const double cosine = double(b) / settings.histogramIntervals;
-            escapeAtBins[std::size_t(e) * bins + b] = 1.0 - fresnelDielectric(cosine, nodeEta(grid, e));
+            escapeAtBins[std::size_t(e) * bins + b] =
+                1.0 - fresnelDielectric(cosine, nodeEta(grid, e));
             for (int k = 0; k < grid.kappa.count; ++k)
                 fresnelAtBins[std::size_t(e * grid.kappa.count + k) * bins + b] =
                     fresnelConductor(cosine, nodeEta(grid, e), grid.kappa.nodeValue(k));
@@ -91,14 +92,14 @@ FgdTables generateFgdTables(const TableGenerationSettings& settings,
         const auto outMass = outgoingCosines.nonEmpty();
         for (int e = 0; e < grid.eta.count; ++e) {
             for (int k = 0; k < grid.kappa.count; ++k) {
-                const double* fresnel = &fresnelAtBins[std::size_t(e * grid.kappa.count + k) * bins];
+                const double* fresnel =
+                    &fresnelAtBins[std::size_t(e * grid.kappa.count + k) * bins];
                 double sum = 0.0;
                 for (const auto& [bin, mass] : dMass) sum += mass * fresnel[bin];
                 double value = sum / sampleCount;
                 if (isConductorKappa(grid.kappa.nodeValue(k)))
-                    value = addMultipleScattering(value, albedo,
-                                                  fresnelAverage[e * grid.kappa.count + k],
-                                                  albedoAverage[a]);
+                    value = addMultipleScattering(
+                        value, albedo, fresnelAverage[e * grid.kappa.count + k], albedoAverage[a]);
                 fgd[std::size_t(cell * grid.eta.count + e) * grid.kappa.count + k] = float(value);
             }
             const double* escape = &escapeAtBins[std::size_t(e) * bins];

@@ -49,9 +49,9 @@ double interpolate(const std::vector<float>& data, const std::array<const TableA
         }
         if (pairedWithLower || cornerWeight <= 0.0) continue;
         const double value =
-            geometricAxis < D ? blendGeometric(data[index], data[index + geometricStride],
-                                               weight[geometricAxis])
-                              : double(data[index]);
+            geometricAxis < D
+                ? blendGeometric(data[index], data[index + geometricStride], weight[geometricAxis])
+                : double(data[index]);
         sum += cornerWeight * value;
     }
     return sum;

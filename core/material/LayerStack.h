@@ -16,7 +16,7 @@ struct InterfaceLayer {
     Rgb eta{1.0};    // real IOR of the medium below the interface
     Rgb kappa{0.0};  // extinction below; non-zero makes the interface a conductor
     double alpha = 0.0;
-    Rgb tint{1.0};   // multiplies the interface's reflectance: the base-colour texture
+    Rgb tint{1.0};  // multiplies the interface's reflectance: the base-colour texture
 };
 
 struct MediumLayer {
@@ -34,7 +34,7 @@ struct LayerStack {
 
 // What the textures say at one surface point. Without a texture both stay at their neutral 1.
 struct SurfaceTexels {
-    double roughness = 1.0;                        // weight: alpha = chromosome * texel
+    double roughness = 1.0;                             // weight: alpha = chromosome * texel
     std::array<double, 3> baseColor = {1.0, 1.0, 1.0};  // linear RGB
 };
 

@@ -84,7 +84,8 @@ LobeTable LobeTable::build(const MaterialInstance& material, const InterfaceAlbe
 
 LobeSet LobeTable::lobesAt(double cosView, const SurfaceTexels& texels) const {
     const AxisPosition cosine = locate(cosView, cosineNodes_);
-    const AxisPosition texel = nodePosition(texelAxis_.position(texels.roughness), texelAxis_.nodes);
+    const AxisPosition texel =
+        nodePosition(texelAxis_.position(texels.roughness), texelAxis_.nodes);
     std::array<double, kFloatsPerEntry> v{};
     for (int dt = 0; dt < std::min(texelAxis_.nodes, 2); ++dt) {
         for (int dm = 0; dm < 2; ++dm) {

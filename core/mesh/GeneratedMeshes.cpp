@@ -73,13 +73,13 @@ Mesh makeLathe(const std::vector<ProfilePoint>& profile, int segments) {
     return mesh;
 }
 
-void appendArc(std::vector<ProfilePoint>& profile, glm::vec2 centre, float radius,
-               float fromAngle, float toAngle, int steps) {
+void appendArc(std::vector<ProfilePoint>& profile, glm::vec2 centre, float radius, float fromAngle,
+               float toAngle, int steps) {
     for (int i = 0; i <= steps; ++i) {
         const float polar = fromAngle + (toAngle - fromAngle) * float(i) / float(steps);
         // Exactly on the axis at the poles (float sin(pi) is not 0), so that their triangles
         // are recognised as degenerate.
-        const float radial = i == 0 && fromAngle == 0.0f ? 0.0f
+        const float radial = i == 0 && fromAngle == 0.0f      ? 0.0f
                              : (i == steps && toAngle == kPi) ? 0.0f
                                                               : std::sin(polar);
         const glm::vec2 normal(radial, std::cos(polar));
@@ -89,8 +89,8 @@ void appendArc(std::vector<ProfilePoint>& profile, glm::vec2 centre, float radiu
 
 // A flat ring or cylinder from `from` to `to` with one normal, subdivided so that the light
 // varies smoothly across it; the ends repeat the neighbours' points as creases.
-void appendFlat(std::vector<ProfilePoint>& profile, glm::vec2 from, glm::vec2 to,
-                glm::vec2 normal, int steps) {
+void appendFlat(std::vector<ProfilePoint>& profile, glm::vec2 from, glm::vec2 to, glm::vec2 normal,
+                int steps) {
     for (int i = 0; i <= steps; ++i) {
         const glm::vec2 point = from + (to - from) * (float(i) / float(steps));
         profile.push_back({point.x, point.y, normal});
@@ -108,9 +108,12 @@ glm::vec3 torusKnotCentre(float t) {
 
 std::string_view toString(BuiltInMesh mesh) {
     switch (mesh) {
-        case BuiltInMesh::Sphere: return "sphere";
-        case BuiltInMesh::ShaderBall: return "shaderball";
-        case BuiltInMesh::TorusKnot: return "knot";
+        case BuiltInMesh::Sphere:
+            return "sphere";
+        case BuiltInMesh::ShaderBall:
+            return "shaderball";
+        case BuiltInMesh::TorusKnot:
+            return "knot";
     }
     return "sphere";
 }
@@ -162,7 +165,8 @@ Mesh makeTorusKnotMesh() {
         for (int j = 0; j <= aroundTube; ++j) {
             const float angle = 2.0f * kPi * float(j) / float(aroundTube);
             const glm::vec3 outward = std::cos(angle) * normal + std::sin(angle) * binormal;
-            mesh.vertices.push_back({here + tubeRadius * outward, outward,
+            mesh.vertices.push_back({here + tubeRadius * outward,
+                                     outward,
                                      {float(i) / float(alongCurve), float(j) / float(aroundTube)}});
         }
     }
@@ -173,9 +177,12 @@ Mesh makeTorusKnotMesh() {
 
 Mesh makeBuiltInMesh(BuiltInMesh mesh) {
     switch (mesh) {
-        case BuiltInMesh::Sphere: return makeSphereMesh();
-        case BuiltInMesh::ShaderBall: return makeShaderBallMesh();
-        case BuiltInMesh::TorusKnot: return makeTorusKnotMesh();
+        case BuiltInMesh::Sphere:
+            return makeSphereMesh();
+        case BuiltInMesh::ShaderBall:
+            return makeShaderBallMesh();
+        case BuiltInMesh::TorusKnot:
+            return makeTorusKnotMesh();
     }
     return makeSphereMesh();
 }

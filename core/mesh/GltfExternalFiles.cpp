@@ -59,16 +59,15 @@ bool GltfExternalFiles::readFile(std::vector<unsigned char>* bytes, std::string*
 bool GltfExternalFiles::read(std::vector<unsigned char>& bytes, std::string& error,
                              const std::string& joinedPath) {
     // tinygltf joined the URI to the base directory with one '/' (unless it ended in one).
-    const std::string prefix =
-        baseDirectory_.back() == '/' ? baseDirectory_ : baseDirectory_ + "/";
+    const std::string prefix = baseDirectory_.back() == '/' ? baseDirectory_ : baseDirectory_ + "/";
     const std::string uri = joinedPath.compare(0, prefix.size(), prefix) == 0
                                 ? joinedPath.substr(prefix.size())
                                 : joinedPath;
     std::string problem = escapeFromFolder(uri, baseDirectory_);
     if (problem.empty()) {
         // Read whole and then copied for tinygltf: twice the file's size for a moment.
-        const std::uintmax_t limit = std::min<std::uintmax_t>(kMaxMeshFileBytes,
-                                                              memoryLimitBytes() / 2);
+        const std::uintmax_t limit =
+            std::min<std::uintmax_t>(kMaxMeshFileBytes, memoryLimitBytes() / 2);
         auto contents = readInputFile(fs::path(baseDirectory_) / uri, limit);
         if (contents) {
             bytes.assign(contents->begin(), contents->end());

@@ -6,13 +6,13 @@
 #include <string>
 #include <string_view>
 
+#include <tiny_gltf.h>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
-#include <tiny_gltf.h>
 
 #include "common/MemoryBudget.h"
 #include "common/ShortText.h"
@@ -37,12 +37,16 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
 std::size_t componentBytes(int componentType) {
     switch (componentType) {
         case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return 1;
         case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return 2;
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-        default: return 0;
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return 4;
+        default:
+            return 0;
     }
 }
 
@@ -83,13 +87,12 @@ const unsigned char* locateElements(const tinygltf::Model& model,
         throw GltfError{what + ": bufferView reads past the end of its buffer"};
     if (stride < elementSize)
         throw GltfError{what + ": bufferView byteStride " + std::to_string(stride) +
-                        " is smaller than an element (" + std::to_string(elementSize) +
-                        " bytes)"};
+                        " is smaller than an element (" + std::to_string(elementSize) + " bytes)"};
     const std::size_t begin = checkedAdd(view.byteOffset, accessor.byteOffset, what + " accessor");
     if (accessor.count > 0) {
-        const std::size_t span = checkedAdd(
-            checkedMultiply(stride, accessor.count - 1, what + " accessor"), elementSize,
-            what + " accessor");
+        const std::size_t span =
+            checkedAdd(checkedMultiply(stride, accessor.count - 1, what + " accessor"), elementSize,
+                       what + " accessor");
         if (checkedAdd(begin, span, what + " accessor") > viewEnd)
             throw GltfError{what + ": accessor reads past the end of its buffer"};
     }
@@ -110,10 +113,9 @@ std::vector<float> readAccessor(const tinygltf::Model& model, int index, int com
     if (elementBytes == 0) throw GltfError{what + ": unsupported component type"};
     const std::size_t elementSize = elementBytes * std::size_t(components);
     const int viewIndex = accessor.bufferView;
-    const std::size_t viewStride =
-        viewIndex >= 0 && viewIndex < int(model.bufferViews.size())
-            ? model.bufferViews[std::size_t(viewIndex)].byteStride
-            : 0;
+    const std::size_t viewStride = viewIndex >= 0 && viewIndex < int(model.bufferViews.size())
+                                       ? model.bufferViews[std::size_t(viewIndex)].byteStride
+                                       : 0;
     const std::size_t stride = viewStride > 0 ? viewStride : elementSize;
     const unsigned char* first = locateElements(model, accessor, elementSize, stride, what);
     const std::size_t count = accessor.count;
@@ -125,7 +127,9 @@ std::vector<float> readAccessor(const tinygltf::Model& model, int index, int com
             const unsigned char* at = source + std::size_t(c) * elementBytes;
             float value = 0.0f;
             switch (accessor.componentType) {
-                case TINYGLTF_COMPONENT_TYPE_FLOAT: std::memcpy(&value, at, 4); break;
+                case TINYGLTF_COMPONENT_TYPE_FLOAT:
+                    std::memcpy(&value, at, 4);
+                    break;
                 case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
                     value = accessor.normalized ? float(*at) / 255.0f : float(*at);
                     break;
@@ -141,7 +145,8 @@ std::vector<float> readAccessor(const tinygltf::Model& model, int index, int com
                     value = float(raw);
                     break;
                 }
-                default: throw GltfError{what + ": unsupported component type"};
+                default:
+                    throw GltfError{what + ": unsupported component type"};
             }
             values[element * std::size_t(components) + std::size_t(c)] = value;
         }
@@ -175,8 +180,10 @@ std::vector<std::uint32_t> triangleCorners(int mode, const std::vector<std::uint
     } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
         for (std::size_t i = 2; i < order.size(); ++i) {
             // Every other triangle of a strip is flipped to keep the winding.
-            if (i % 2 == 0) corners.insert(corners.end(), {order[i - 2], order[i - 1], order[i]});
-            else corners.insert(corners.end(), {order[i - 1], order[i - 2], order[i]});
+            if (i % 2 == 0)
+                corners.insert(corners.end(), {order[i - 2], order[i - 1], order[i]});
+            else
+                corners.insert(corners.end(), {order[i - 1], order[i - 2], order[i]});
         }
     } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
         for (std::size_t i = 2; i < order.size(); ++i)
@@ -193,11 +200,11 @@ glm::mat4 localTransform(const tinygltf::Node& node) {
     }
     glm::dmat4 transform(1.0);
     if (node.translation.size() == 3)
-        transform = glm::translate(transform, glm::dvec3(node.translation[0], node.translation[1],
-                                                         node.translation[2]));
+        transform = glm::translate(
+            transform, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
     if (node.rotation.size() == 4)
-        transform *= glm::mat4_cast(glm::dquat(node.rotation[3], node.rotation[0],
-                                               node.rotation[1], node.rotation[2]));
+        transform *= glm::mat4_cast(
+            glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
     if (node.scale.size() == 3)
         transform = glm::scale(transform, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
     return glm::mat4(transform);
@@ -217,8 +224,8 @@ struct DecodedPrimitive {
     std::vector<std::uint32_t> corners;
 };
 
-DecodedPrimitive decodePrimitive(const tinygltf::Model& model,
-                                 const tinygltf::Primitive& primitive, const std::string& what) {
+DecodedPrimitive decodePrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                 const std::string& what) {
     DecodedPrimitive decoded;
     const auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) throw GltfError{what + ": no POSITION"};
@@ -281,13 +288,13 @@ struct MeshBuilder {
         const auto first = std::uint32_t(mesh.vertices.size());
         for (std::size_t v = 0; v < vertexCount; ++v) {
             MeshVertex vertex;
-            vertex.position = glm::vec3(
-                transform * glm::vec4(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2],
-                                      1.0f));
+            vertex.position =
+                glm::vec3(transform * glm::vec4(positions[3 * v], positions[3 * v + 1],
+                                                positions[3 * v + 2], 1.0f));
             if (!normals.empty()) {
                 const glm::vec3 normal =
-                    normalTransform * glm::vec3(normals[3 * v], normals[3 * v + 1],
-                                                normals[3 * v + 2]);
+                    normalTransform *
+                    glm::vec3(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
                 const float length = glm::length(normal);
                 vertex.normal = length > 0.0f ? normal / length : glm::vec3(0.0f, 1.0f, 0.0f);
             }
@@ -300,8 +307,10 @@ struct MeshBuilder {
         for (std::size_t i = 0; i + 2 < corners.size(); i += 3) {
             const std::uint32_t a = first + corners[i], b = first + corners[i + 1],
                                 c = first + corners[i + 2];
-            if (mirrored) mesh.indices.insert(mesh.indices.end(), {a, c, b});
-            else mesh.indices.insert(mesh.indices.end(), {a, b, c});
+            if (mirrored)
+                mesh.indices.insert(mesh.indices.end(), {a, c, b});
+            else
+                mesh.indices.insert(mesh.indices.end(), {a, b, c});
         }
     }
 

@@ -48,7 +48,7 @@ Status validateMesh(const Mesh& mesh, const std::string& source) {
     for (std::uint32_t index : mesh.indices)
         if (index >= mesh.vertices.size())
             return badInput(source + ": vertex index " + std::to_string(index) + " out of range (" +
-                         std::to_string(mesh.vertices.size()) + " vertices)");
+                            std::to_string(mesh.vertices.size()) + " vertices)");
     for (const MeshVertex& vertex : mesh.vertices)
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(vertex.position[c]) || !std::isfinite(vertex.normal[c]))

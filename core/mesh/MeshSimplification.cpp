@@ -65,11 +65,10 @@ Mesh simplifyByVertexClustering(const Mesh& mesh, int cellsPerSide) {
         Cell& cell = cellList[found->second];
         cell.positionSum += glm::dvec3(vertex.position);
         ++cell.vertices;
-        const auto same = std::find_if(cell.groups.begin(), cell.groups.end(),
-                                       [&](std::uint32_t g) {
-                                           return glm::dot(groups[g].firstNormal, vertex.normal) >
-                                                  kSameSurfaceCosine;
-                                       });
+        const auto same =
+            std::find_if(cell.groups.begin(), cell.groups.end(), [&](std::uint32_t g) {
+                return glm::dot(groups[g].firstNormal, vertex.normal) > kSameSurfaceCosine;
+            });
         std::uint32_t group = 0;
         if (same != cell.groups.end()) {
             group = *same;

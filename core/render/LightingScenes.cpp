@@ -15,8 +15,10 @@ Result<std::vector<std::string>> parseLightingList(const std::string& text) {
         const std::string name =
             text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         if (name.empty())
-            return badInput("expected lightings separated by commas (paper, ambient, studio or "
-                            "an environment file), got '" + text + "'");
+            return badInput(
+                "expected lightings separated by commas (paper, ambient, studio or "
+                "an environment file), got '" +
+                text + "'");
         if (std::find(names.begin(), names.end(), name) != names.end())
             return badInput("'" + name + "' is listed twice");
         names.push_back(name);

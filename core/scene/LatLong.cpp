@@ -15,7 +15,8 @@ glm::dvec3 latLongDirection(const glm::dvec2& uv) {
     constexpr double pi = std::numbers::pi;
     const double azimuth = (uv.x - 0.5) * 2.0 * pi;
     const double polar = uv.y * pi;
-    return {std::sin(polar) * std::sin(azimuth), std::cos(polar), -std::sin(polar) * std::cos(azimuth)};
+    return {std::sin(polar) * std::sin(azimuth), std::cos(polar),
+            -std::sin(polar) * std::cos(azimuth)};
 }
 
 }  // namespace matevo

@@ -4,8 +4,8 @@
 
 namespace matevo {
 
-Status applyLightingChoice(const std::string& choice, SceneSettings& scene,
-                           SceneTextures& textures, const PrefilterSettings& prefilter) {
+Status applyLightingChoice(const std::string& choice, SceneSettings& scene, SceneTextures& textures,
+                           const PrefilterSettings& prefilter) {
     textures.environment = {};
     const SceneMode mode = parseChoice(kLightings, choice).value_or(SceneMode::Environment);
     if (mode == SceneMode::Environment) {

@@ -26,8 +26,8 @@ inline constexpr std::array<Choice<SceneMode>, 3> kLightings{{
 }};
 
 // Errors name the environment file.
-Status applyLightingChoice(const std::string& choice, SceneSettings& scene,
-                           SceneTextures& textures, const PrefilterSettings& prefilter = {});
+Status applyLightingChoice(const std::string& choice, SceneSettings& scene, SceneTextures& textures,
+                           const PrefilterSettings& prefilter = {});
 
 // The scene's mode and environment for a choice, nothing loaded: for a preset, whose
 // environment loadSceneTextures loads where it is rendered (the editor's lighting choice).

@@ -84,8 +84,8 @@ glm::dvec3 prefilterDirection(const SourcePyramid& source, const glm::dvec3& r, 
         const double cos2 = (1.0 - u1) / (1.0 + (alpha * alpha - 1.0) * u1);
         const double cosHalf = std::sqrt(cos2), sinHalf = std::sqrt(std::max(0.0, 1.0 - cos2));
         const double azimuth = 2.0 * kPi * u2;
-        const glm::dvec3 h = sinHalf * std::cos(azimuth) * t + sinHalf * std::sin(azimuth) * b +
-                             cosHalf * r;
+        const glm::dvec3 h =
+            sinHalf * std::cos(azimuth) * t + sinHalf * std::sin(azimuth) * b + cosHalf * r;
         const glm::dvec3 l = 2.0 * cosHalf * h - r;
         const double cosLight = glm::dot(r, l);
         if (cosLight <= 0.0) continue;

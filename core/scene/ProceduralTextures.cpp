@@ -80,7 +80,8 @@ Image makePaintRoughnessTexture(int width, int height) {
 Image makeMetalDepthBaseColorTexture(int width, int height) {
     return fill(width, height, [](double u, double v) {
         const double turbulence = fractalNoise(u, v, 4, 5, 37u);
-        const double bands = 0.5 + 0.5 * std::sin(2.0 * std::numbers::pi * (3.0 * v + 2.5 * turbulence));
+        const double bands =
+            0.5 + 0.5 * std::sin(2.0 * std::numbers::pi * (3.0 * v + 2.5 * turbulence));
         const double t = smoothstep(0.2, 0.8, bands);
         const std::array<double, 3> light = {0.95, 0.85, 0.70};
         const std::array<double, 3> dark = {0.45, 0.30, 0.20};

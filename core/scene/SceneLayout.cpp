@@ -60,14 +60,14 @@ std::vector<SceneInstance> layoutInstances(int count, InstanceLayout layout, int
             position = {(2.0 * random.uniform() - 1.0) * radius,
                         (2.0 * random.uniform() - 1.0) * radius};
             if (glm::length(position) > radius) continue;
-            const bool free = std::none_of(taken.begin(), taken.end(), [&](const glm::dvec2& other) {
-                return glm::length(other - position) < 2.05;
-            });
+            const bool free = std::none_of(
+                taken.begin(), taken.end(),
+                [&](const glm::dvec2& other) { return glm::length(other - position) < 2.05; });
             if (free) break;
         }
         taken.push_back(position);
-        instances.push_back(placed(position, 2.0 * std::numbers::pi * random.uniform(), i,
-                                   materialCount));
+        instances.push_back(
+            placed(position, 2.0 * std::numbers::pi * random.uniform(), i, materialCount));
     }
     return instances;
 }
@@ -85,8 +85,8 @@ SceneCamera frameInstances(std::span<const SceneInstance> instances, double aspe
     const double tanHorizontal = tanVertical * aspect;
     // Every instance's unit bounding sphere inside the view, with a small margin.
     const auto fits = [&](double distance) {
-        const SceneCamera camera = orbitCamera(target, 0.0, kFramingPitchDegrees, distance,
-                                               fieldOfViewDegrees);
+        const SceneCamera camera =
+            orbitCamera(target, 0.0, kFramingPitchDegrees, distance, fieldOfViewDegrees);
         const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
         const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
         const glm::dvec3 up = glm::cross(right, forward);
@@ -95,8 +95,7 @@ SceneCamera frameInstances(std::span<const SceneInstance> instances, double aspe
             const double depth = glm::dot(offset, forward);
             if (depth < 1.5) return false;
             // Sphere inside a side plane: its centre at least r / cos(half angle) inside.
-            const double x = std::abs(glm::dot(offset, right)),
-                         y = std::abs(glm::dot(offset, up));
+            const double x = std::abs(glm::dot(offset, right)), y = std::abs(glm::dot(offset, up));
             if (x + std::sqrt(1.0 + tanHorizontal * tanHorizontal) * 1.05 > depth * tanHorizontal ||
                 y + std::sqrt(1.0 + tanVertical * tanVertical) * 1.05 > depth * tanVertical)
                 return false;
@@ -128,8 +127,8 @@ std::optional<std::size_t> pickInstance(const SceneCamera& camera, double aspect
     const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
     const glm::dvec3 up = glm::cross(right, forward);
     const double tanHalfFov = std::tan(camera.fieldOfViewDegrees * std::numbers::pi / 360.0);
-    const glm::dvec3 direction = glm::normalize(forward + ndc.x * tanHalfFov * aspect * right +
-                                                ndc.y * tanHalfFov * up);
+    const glm::dvec3 direction =
+        glm::normalize(forward + ndc.x * tanHalfFov * aspect * right + ndc.y * tanHalfFov * up);
     std::optional<std::size_t> nearest;
     double nearestDistance = std::numeric_limits<double>::max();
     for (std::size_t i = 0; i < instances.size(); ++i) {

@@ -42,11 +42,12 @@ inline std::string_view describe(SceneMode mode) { return choiceLabel(kSceneMode
 
 struct SceneSettings {
     SceneMode mode = SceneMode::Paper;
-    int imageSize = 256;                        // square images, pixels per side
+    int imageSize = 256;                                     // square images, pixels per side
     std::array<double, 3> cameraPosition = {0.0, 0.0, 4.0};  // looking at the origin, +y up
-    double fieldOfViewDegrees = 32.0;           // vertical
-    std::array<double, 3> lightDirection = {-0.5, 0.6, 0.62};  // towards the light, normalised on use
-    std::array<double, 3> lightRadiance = {1.5, 1.5, 1.5};     // irradiance at normal incidence
+    double fieldOfViewDegrees = 32.0;                        // vertical
+    std::array<double, 3> lightDirection = {-0.5, 0.6,
+                                            0.62};          // towards the light, normalised on use
+    std::array<double, 3> lightRadiance = {1.5, 1.5, 1.5};  // irradiance at normal incidence
     // The ambient mode's uniform environment; the paper mode has none (see ambientRadiance).
     std::array<double, 3> environmentRadiance = {0.25, 0.25, 0.25};
     // The environment mode's lighting: "studio" or a lat-long .hdr / .exr file.

@@ -22,9 +22,9 @@ Result<Image> loadTexture(const std::string& source, const std::string& field,
         if (value < 0.0f || value > 1.0f) {
             const std::size_t pixel = i / 4;
             return badInput(source + ": " + field + ": texel (" +
-                         std::to_string(pixel % std::size_t(image->width)) + ", " +
-                         std::to_string(pixel / std::size_t(image->width)) + ") value " +
-                         std::to_string(value) + " outside [0, 1]");
+                            std::to_string(pixel % std::size_t(image->width)) + ", " +
+                            std::to_string(pixel / std::size_t(image->width)) + ") value " +
+                            std::to_string(value) + " outside [0, 1]");
         }
     }
     return image;
@@ -46,8 +46,7 @@ Result<SceneTextures> withEnvironment(SceneTextures textures, const SceneSetting
                                       const std::string& source) {
     if (scene.mode != SceneMode::Environment) return textures;
     auto environment = loadEnvironment(environmentFile(scene, folder));
-    if (!environment)
-        return withContext(environment.error(), source + ": scene.environment");
+    if (!environment) return withContext(environment.error(), source + ": scene.environment");
     textures.environment = std::move(environment).value();
     return textures;
 }

@@ -56,8 +56,7 @@ template <class LobesAt>
 auto belcourShader(const LobesAt& lobesAt, const SceneTextures& textures,
                    const SceneSettings& scene) {
     const Shader<LobesAt> shader{lobesAt, textures, glm::normalize(toVector(scene.lightDirection)),
-                                 toVector(scene.lightRadiance),
-                                 toVector(ambientRadiance(scene))};
+                                 toVector(scene.lightRadiance), toVector(ambientRadiance(scene))};
     return [shader](const glm::dvec3& normal, const glm::dvec3& toViewer) {
         return shader.radiance(normal, toViewer);
     };

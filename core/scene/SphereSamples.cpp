@@ -50,8 +50,7 @@ double hitUnitSphere(const glm::dvec3& origin, const glm::dvec3& direction) {
 }
 
 // Where the ray through image position (x, y) meets the sphere.
-std::optional<SphereSurfacePoint> traceSphere(const Camera& camera, double x, double y,
-                                              int size) {
+std::optional<SphereSurfacePoint> traceSphere(const Camera& camera, double x, double y, int size) {
     const glm::dvec3 direction = camera.direction(x, y, size);
     const double distance = hitUnitSphere(camera.position, direction);
     if (distance <= 0.0) return std::nullopt;
@@ -79,9 +78,8 @@ SphereSamples traceSphereSamples(const SceneSettings& scene, int size) {
                 int hits = 0;
                 for (int sy = 0; sy < kSubsamplesPerAxis; ++sy) {
                     for (int sx = 0; sx < kSubsamplesPerAxis; ++sx) {
-                        const auto point =
-                            traceSphere(camera, x + (sx + 0.5) / kSubsamplesPerAxis,
-                                        y + (sy + 0.5) / kSubsamplesPerAxis, size);
+                        const auto point = traceSphere(camera, x + (sx + 0.5) / kSubsamplesPerAxis,
+                                                       y + (sy + 0.5) / kSubsamplesPerAxis, size);
                         if (point) hitPoints[hits++] = *point;
                     }
                 }
@@ -96,8 +94,10 @@ SphereSamples traceSphereSamples(const SceneSettings& scene, int size) {
                 auto& samples = chunk.samples[std::size_t(count)];
                 chunk.pixels[std::size_t(count)].push_back(
                     {x, y, int(samples.size()), count, hits});
-                if (centre) samples.push_back(*centre);
-                else samples.insert(samples.end(), hitPoints.begin(), hitPoints.begin() + hits);
+                if (centre)
+                    samples.push_back(*centre);
+                else
+                    samples.insert(samples.end(), hitPoints.begin(), hitPoints.begin() + hits);
             }
         }
     });

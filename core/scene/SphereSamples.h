@@ -25,7 +25,7 @@ struct SphereSurfacePoint {
 
 struct SpherePixel {
     int x = 0;
-    int y = 0;  // down from the top row
+    int y = 0;            // down from the top row
     int firstSample = 0;  // into SphereSamples::samples
     int sampleCount = 0;  // >= 1
     int hits = 0;         // subsamples that hit: coverage alpha = hits / kSubsamplesPerPixel

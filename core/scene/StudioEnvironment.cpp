@@ -80,8 +80,8 @@ Result<PrefilteredEnvironment> loadEnvironment(const std::string& studioOrFile,
     if (!image) return image.error();
     if (image->width < 2 * image->height - 1 || image->width > 2 * image->height + 1)
         return badInput(studioOrFile + ": not a latitude-longitude environment (" +
-                     std::to_string(image->width) + "x" + std::to_string(image->height) +
-                     "; width must be twice the height)");
+                        std::to_string(image->width) + "x" + std::to_string(image->height) +
+                        "; width must be twice the height)");
     for (float value : image->rgba)
         if (!std::isfinite(value) || value < 0.0f)
             return badInput(studioOrFile + ": has negative or non-finite radiance");

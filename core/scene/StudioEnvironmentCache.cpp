@@ -32,8 +32,8 @@ std::size_t floatsPerLevel(const PrefilterSettings& settings) {
 std::string header(const PrefilterSettings& settings) {
     std::string bytes(kMagic, sizeof(kMagic));
     append(bytes, std::uint32_t(kStudioCacheFormatVersion));
-    for (int value : {settings.width, settings.levels, settings.samplesPerTexel,
-                      kStudioSourceWidth})
+    for (int value :
+         {settings.width, settings.levels, settings.samplesPerTexel, kStudioSourceWidth})
         append(bytes, std::int32_t(value));
     append(bytes, studioFingerprint());
     return bytes;
@@ -53,9 +53,8 @@ std::uint64_t checksum(std::string_view bytes) {
 
 std::uint64_t studioFingerprint() {
     static const std::uint64_t fingerprint = [] {
-        const PrefilteredEnvironment small =
-            prefilterEnvironment(makeStudioEnvironment(32), {.width = 16, .levels = 3,
-                                                             .samplesPerTexel = 4});
+        const PrefilteredEnvironment small = prefilterEnvironment(
+            makeStudioEnvironment(32), {.width = 16, .levels = 3, .samplesPerTexel = 4});
         std::string bytes;
         for (const Image& level : small.levels)
             bytes.append(reinterpret_cast<const char*>(level.rgba.data()),
@@ -89,8 +88,7 @@ Result<PrefilteredEnvironment> parseStudioEnvironment(std::string_view bytes,
         for (float value : image.rgba)
             if (!std::isfinite(value) || value < 0.0f)
                 return environmentError(sourceName + ": level " + std::to_string(level) +
-                                        ": value " + std::to_string(value) +
-                                        " is not a radiance");
+                                        ": value " + std::to_string(value) + " is not a radiance");
         environment.levels.push_back(std::move(image));
     }
     return environment;
@@ -116,10 +114,10 @@ Result<PrefilteredEnvironment> readStudioEnvironment(const std::filesystem::path
 
 std::filesystem::path studioCacheFile(const std::filesystem::path& cacheDirectory,
                                       const PrefilterSettings& settings) {
-    return cacheDirectory / ("studio_v" + std::to_string(kStudioCacheFormatVersion) + "_" +
-                             std::to_string(settings.width) + "x" +
-                             std::to_string(settings.levels) + "x" +
-                             std::to_string(settings.samplesPerTexel) + ".bin");
+    return cacheDirectory /
+           ("studio_v" + std::to_string(kStudioCacheFormatVersion) + "_" +
+            std::to_string(settings.width) + "x" + std::to_string(settings.levels) + "x" +
+            std::to_string(settings.samplesPerTexel) + ".bin");
 }
 
 CachedStudio loadOrBuildStudioEnvironment(const std::filesystem::path& cacheDirectory,
@@ -132,12 +130,11 @@ CachedStudio loadOrBuildStudioEnvironment(const std::filesystem::path& cacheDire
     if (std::filesystem::symlink_status(file, error).type() !=
         std::filesystem::file_type::not_found)
         notice("notice: rebuilding the studio environment cache: " + cached.error().message);
-    CachedStudio built{prefilterEnvironment(makeStudioEnvironment(), settings),
-                       false};
+    CachedStudio built{prefilterEnvironment(makeStudioEnvironment(), settings), false};
     std::filesystem::create_directories(cacheDirectory, error);
     removeStaleTemporaryFiles(cacheDirectory);
-    if (auto written = writeFileAtomically(file, serializeStudioEnvironment(built.environment,
-                                                                             settings));
+    if (auto written =
+            writeFileAtomically(file, serializeStudioEnvironment(built.environment, settings));
         !written)
         notice("warning: studio environment not cached: " + written.error().message);
     return built;

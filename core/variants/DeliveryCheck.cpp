@@ -188,8 +188,8 @@ Result<DeliveredSet> deliverSetAsItIs(VariantSet set, const VariantRequest& requ
     const RenderGenomes renderNothing = [](std::span<const Genome>) -> Result<std::vector<Image>> {
         return internalError("the delivery of a set as it is renders no replacement");
     };
-    auto delivered = checkDelivery(VariantArchive(request.minApart), std::move(set), whole,
-                                   target, renderNothing, format);
+    auto delivered = checkDelivery(VariantArchive(request.minApart), std::move(set), whole, target,
+                                   renderNothing, format);
     if (!delivered) return delivered.error();
     return std::move(delivered->delivered);
 }

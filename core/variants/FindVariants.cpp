@@ -7,8 +7,7 @@ namespace matevo {
 Result<FoundVariants> findVariants(const MaterialInstance& target, const VariantRequest& request,
                                    const VariantSearchSettings& settings,
                                    const LightingRenders& fitnessRender,
-                                   const LightingRenders& outputRender,
-                                   const CancelToken& cancel,
+                                   const LightingRenders& outputRender, const CancelToken& cancel,
                                    const VariantSearchObserver& onGeneration,
                                    const DeliveryFormat* delivery) {
     // The delivered looks are measured under one lighting, as the glTF reference renders them.

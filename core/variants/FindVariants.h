@@ -8,9 +8,9 @@
 #include <optional>
 
 #include "common/Result.h"
-#include "variants/LightingMeasure.h"
 #include "material/MaterialInstance.h"
 #include "variants/DeliveryCheck.h"
+#include "variants/LightingMeasure.h"
 #include "variants/VariantSearch.h"
 #include "variants/VariantSet.h"
 
@@ -18,7 +18,7 @@ namespace matevo {
 
 struct FoundVariants {
     VariantSet set;
-    VariantSearchProgress progress;  // the search's at its end
+    VariantSearchProgress progress;         // the search's at its end
     std::optional<DeliveredSet> delivered;  // with a delivery format: the set's delivered looks
 };
 

@@ -28,9 +28,8 @@ double bandViolation(const DeltaEBand& band, const std::vector<double>& deltaEs)
 }
 
 bool inBandUnderEvery(const DeltaEBand& band, const std::vector<double>& deltaEs) {
-    return !deltaEs.empty() && std::all_of(deltaEs.begin(), deltaEs.end(), [&](double deltaE) {
-        return band.contains(deltaE);
-    });
+    return !deltaEs.empty() && std::all_of(deltaEs.begin(), deltaEs.end(),
+                                           [&](double deltaE) { return band.contains(deltaE); });
 }
 
 double worstDeltaE(const DeltaEBand& band, const std::vector<double>& deltaEs) {
@@ -43,7 +42,8 @@ double worstDeltaE(const DeltaEBand& band, const std::vector<double>& deltaEs) {
 
 double offCentre(const DeltaEBand& band, const std::vector<double>& deltaEs) {
     double farthest = 0;
-    for (const double deltaE : deltaEs) farthest = std::max(farthest, std::abs(deltaE - band.centre()));
+    for (const double deltaE : deltaEs)
+        farthest = std::max(farthest, std::abs(deltaE - band.centre()));
     return farthest;
 }
 

@@ -25,7 +25,8 @@ Status LightingRenderCache::renderMissing(std::span<const Genome> genomes) {
 std::vector<double> LightingRenderCache::deltaEsToTarget(const Genome& genome) const {
     std::vector<double> deltaEs;
     deltaEs.reserve(caches_.size());
-    for (const GenomeRenderCache& cache : caches_) deltaEs.push_back(cache.at(genome).deltaEToTarget);
+    for (const GenomeRenderCache& cache : caches_)
+        deltaEs.push_back(cache.at(genome).deltaEToTarget);
     return deltaEs;
 }
 

@@ -16,8 +16,7 @@ namespace matevo {
 
 class LightingRenderCache {
 public:
-    static Result<LightingRenderCache> create(const LightingRenders& renders,
-                                              const Genome& target);
+    static Result<LightingRenderCache> create(const LightingRenders& renders, const Genome& target);
 
     // Renders, one batch per lighting, each genome that is not held yet.
     Status renderMissing(std::span<const Genome> genomes);

@@ -213,7 +213,7 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
     for (int index = 0; index < shareCount; ++index)
         if (!byIndex[std::size_t(index)])
             return badInput("share " + std::to_string(index) + "/" + std::to_string(shareCount) +
-                         " is missing");
+                            " is missing");
 
     auto target = readInputFile(first.folder / "target.png", kMaxImageFileBytes);
     if (!target) return target.error();
@@ -222,8 +222,8 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
         if (!bytes) return bytes.error();
         if (*bytes != *target)
             return badInput(displayPath(share->folder / "target.png") + ": differs from " +
-                         displayPath(first.folder / "target.png") +
-                         " (rendered by another back end or version?)");
+                            displayPath(first.folder / "target.png") +
+                            " (rendered by another back end or version?)");
     }
 
     for (const fs::path& folder : {dir / "variants", (dir / blockContactSheet(0)).parent_path()}) {
@@ -231,7 +231,7 @@ Result<nlohmann::ordered_json> mergeShards(const std::vector<fs::path>& folders,
         fs::create_directories(folder, error);
         if (error)
             return badInput("cannot create folder '" + folder.string() + "' (" + error.message() +
-                         ")");
+                            ")");
     }
     BlockReport joined;
     for (const char* field : kBlockHeaderFields) joined.header[field] = first.report[field];

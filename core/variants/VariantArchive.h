@@ -22,7 +22,7 @@ struct ArchivedVariant {
     Genome genome;
     LabsPerLighting labs;
     std::vector<double> deltaEToTarget;  // per lighting
-    bool pinned = false;  // kept by the user: never replaced
+    bool pinned = false;                 // kept by the user: never replaced
 };
 
 class VariantArchive {

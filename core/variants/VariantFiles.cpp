@@ -18,7 +18,7 @@ namespace {
 
 constexpr int kSheetColumns = 5;
 constexpr int kSheetGap = 8;
-constexpr double kLabelSize = 14;   // pixels per em
+constexpr double kLabelSize = 14;  // pixels per em
 constexpr int kLabelLineHeight = 18;
 constexpr Srgb8 kSheetBackground{40, 40, 44};
 constexpr Srgb8 kLabelColour{230, 230, 230};
@@ -44,8 +44,7 @@ void placeTile(Image& sheet, const Image& tile, int x, int y) {
             const float* source = tile.pixel(column, row);
             float* target = sheet.pixel(x + column, y + row);
             const float alpha = std::clamp(source[3], 0.0f, 1.0f);
-            for (int c = 0; c < 3; ++c)
-                target[c] = alpha * source[c] + (1 - alpha) * target[c];
+            for (int c = 0; c < 3; ++c) target[c] = alpha * source[c] + (1 - alpha) * target[c];
         }
 }
 
@@ -60,8 +59,8 @@ std::string listOfLightings(const std::vector<std::string>& lightings) {
 }  // namespace
 
 RenderGenomes asStoredInPng(RenderGenomes render) {
-    return [render = std::move(render)](
-               std::span<const Genome> genomes) -> Result<std::vector<Image>> {
+    return [render =
+                std::move(render)](std::span<const Genome> genomes) -> Result<std::vector<Image>> {
         auto images = render(genomes);
         if (!images) return images.error();
         for (Image& image : *images) image = quantizeAsPng(image);
@@ -168,12 +167,11 @@ nlohmann::ordered_json variantReport(const Preset& preset, const VariantRun& run
 std::string variantSummary(const VariantRun& run, const VariantSet& set) {
     const VariantRequest& request = run.request;
     // Kept materials join a set as they are: the line says what holds, never more.
-    const auto inBand =
-        std::count_if(set.variants.begin(), set.variants.end(), [&](const Variant& variant) {
-            return request.band.contains(variant.deltaEToTarget);
-        });
-    std::string text = std::to_string(set.variants.size()) + " of " +
-                       std::to_string(request.count) + " variants";
+    const auto inBand = std::count_if(
+        set.variants.begin(), set.variants.end(),
+        [&](const Variant& variant) { return request.band.contains(variant.deltaEToTarget); });
+    std::string text =
+        std::to_string(set.variants.size()) + " of " + std::to_string(request.count) + " variants";
     if (std::size_t(inBand) == set.variants.size())
         text += " in band " + describe(request.band);
     else

@@ -35,8 +35,8 @@ namespace matevo {
 // How a set was made, for the report.
 struct VariantRun {
     VariantRequest request;
-    int size = 256;         // output resolution
-    int fitnessSize = 64;   // the search's resolution
+    int size = 256;               // output resolution
+    int fitnessSize = 64;         // the search's resolution
     std::size_t evaluations = 0;  // fitness-resolution renders
     std::size_t archived = 0;     // candidates the search held at its end
     double closestDeltaE = 0;     // the render nearest the band the search saw

@@ -38,8 +38,8 @@ Genome withKappaGenes(Genome genome, const std::array<double, 3>& presetKappa,
     if (genome.carriesKappa()) return genome;
     for (std::size_t i = kKappaR; i <= kKappaB; ++i)
         if (rules.ranges[i].active)
-            genome[i] = std::clamp(presetKappa[i - kKappaR], rules.ranges[i].min,
-                                   rules.ranges[i].max);
+            genome[i] =
+                std::clamp(presetKappa[i - kKappaR], rules.ranges[i].min, rules.ranges[i].max);
     return genome;
 }
 
@@ -71,8 +71,7 @@ Result<std::unique_ptr<VariantSearch>> VariantSearch::start(const MaterialInstan
     if (auto rendered = search->cache_.renderMissing(request.keep); !rendered)
         return rendered.error();
     for (const Genome& kept : request.keep)
-        search->archive_.pin(kept, search->cache_.labs(kept),
-                             search->cache_.deltaEsToTarget(kept));
+        search->archive_.pin(kept, search->cache_.labs(kept), search->cache_.deltaEsToTarget(kept));
 
     // Two streams from the one seed: the initial variants and the GA's operators.
     SplitMix64 seeds(request.seed);
@@ -87,11 +86,11 @@ Result<std::unique_ptr<VariantSearch>> VariantSearch::start(const MaterialInstan
     ga.kappaGenes = request.kappaGenes;
     const Genome origin =
         withKappaGenes(target.genome, target.baseKappa, familyRules(target.family, ga.kappaGenes));
-    search->ga_.emplace(target.family, origin, ga,
-                        [self = search.get()](std::span<const Genome> genomes,
-                                              std::span<double> fitness) {
-                            self->score(genomes, fitness);
-                        });
+    search->ga_.emplace(
+        target.family, origin, ga,
+        [self = search.get()](std::span<const Genome> genomes, std::span<double> fitness) {
+            self->score(genomes, fitness);
+        });
     const FamilyRules& rules = search->ga_->rules();
     std::vector<Genome> initial;
     for (const Genome& kept : request.keep)
@@ -99,10 +98,10 @@ Result<std::unique_ptr<VariantSearch>> VariantSearch::start(const MaterialInstan
             initial.push_back(withKappaGenes(kept, target.baseKappa, rules));
     while (initial.size() < std::size_t(ga.population))
         initial.push_back(mutantOf(origin, rules, initialRandom));
-    search->ga_->setOffspringHook([self = search.get()](std::span<Genome> offspring,
-                                                        Random& random) {
-        self->renewSeen(offspring, random);
-    });
+    search->ga_->setOffspringHook(
+        [self = search.get()](std::span<Genome> offspring, Random& random) {
+            self->renewSeen(offspring, random);
+        });
     search->ga_->initialize(std::move(initial));
     if (search->renderFailure_) return *search->renderFailure_;
     return search;

@@ -187,9 +187,11 @@ Result<VariantSet> measureVariantSet(const Genome& target, std::span<const Genom
     const std::size_t count = genomes.size();
     set.pairwise.assign(count, std::vector<double>(count, 0.0));
     for (std::size_t i = 0; i < count; ++i) {
-        set.variants.push_back(
-            {genomes[i], std::move((*images)[i + 1]), meanDeltaE00(labs[0], labs[i + 1]), false,
-             {}});
+        set.variants.push_back({genomes[i],
+                                std::move((*images)[i + 1]),
+                                meanDeltaE00(labs[0], labs[i + 1]),
+                                false,
+                                {}});
         for (std::size_t j = 0; j < i; ++j)
             set.pairwise[i][j] = set.pairwise[j][i] = meanDeltaE00(labs[i + 1], labs[j + 1]);
     }

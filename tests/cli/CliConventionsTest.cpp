@@ -49,7 +49,8 @@ TEST(CliConventions, MistypedOptionGetsTheClosestOptionOfItsCommand) {
 }
 
 TEST(CliConventions, OptionsThatWouldDoNothingAreRefused) {
-    expectUsageLine(runMatevo("evolve --size 32"), "matevo evolve: --size does nothing without --out");
+    expectUsageLine(runMatevo("evolve --size 32"),
+                    "matevo evolve: --size does nothing without --out");
     expectUsageLine(runMatevo("evolve --backend cpu"),
                     "matevo evolve: --backend does nothing without --out");
     expectUsageLine(runMatevo("compare a.png b.png --range 0,5"),
@@ -87,8 +88,9 @@ TEST(CliConventions, AMissingChartFontIsRefusedBeforeTheWork) {
     expectUsageLine(experiment, "matevo experiment" + looked);
     EXPECT_FALSE(std::filesystem::exists(scratch / "runs"));
     // Without --out nothing is drawn, so nothing needs the font.
-    const auto noOut = runCommand(noFont + "variants --count 1 --band 2,10 --size 16 "
-                                           "--fitness-size 8 --max-evaluations 40 --backend cpu");
+    const auto noOut = runCommand(noFont +
+                                  "variants --count 1 --band 2,10 --size 16 "
+                                  "--fitness-size 8 --max-evaluations 40 --backend cpu");
     EXPECT_TRUE(noOut.exitCode == 0 || noOut.exitCode == 3) << noOut.err;
     EXPECT_EQ(noOut.err.find("DejaVu"), std::string::npos) << noOut.err;
 }
@@ -101,13 +103,14 @@ TEST(CliConventions, AnExrOutputWithoutTheImageModuleIsRefusedBeforeTheWork) {
     std::filesystem::create_directories(scratch / "bin");
     std::filesystem::copy_file(std::string(MATEVO_BINARY_DIR) + "/matevo", scratch / "bin/matevo");
     const std::string alone = "timeout 120 " + shellQuoted(scratch / "bin/matevo") + " ";
-    const std::string preset =
-        " --preset " + shellQuoted(std::string(MATEVO_SOURCE_DIR) + "/presets/validation_metal.json");
+    const std::string preset = " --preset " + shellQuoted(std::string(MATEVO_SOURCE_DIR) +
+                                                          "/presets/validation_metal.json");
     const std::string missing = ": matevo's OpenImageIO module is not installed (looked in " +
                                 (scratch / "bin/lib/matevo/matevo_image_library.so").string();
-    const auto evolve =
-        runCommand(alone + "evolve" + preset + " --population 2000 --generations 100000 "
-                           "--format exr --out " + shellQuoted(scratch / "run"));
+    const auto evolve = runCommand(alone + "evolve" + preset +
+                                   " --population 2000 --generations 100000 "
+                                   "--format exr --out " +
+                                   shellQuoted(scratch / "run"));
     EXPECT_EQ(evolve.exitCode, 2) << evolve.err;
     EXPECT_EQ(evolve.err.rfind("matevo evolve: --format exr" + missing, 0), 0u) << evolve.err;
     EXPECT_EQ(evolve.err.find('\n'), evolve.err.size() - 1) << evolve.err;
@@ -172,16 +175,18 @@ TEST_F(PresetsByName, ListsShippedAndUserPresetsAndLoadsThemByName) {
 
     const auto list = runCommand(withUserFolder("presets"));
     ASSERT_EQ(list.exitCode, 0) << list.err;
-    for (const char* name : {"validation_metal ", "validation_painted_metal ",
-                             "validation_metal_depth ", "my_metal "})
+    for (const char* name :
+         {"validation_metal ", "validation_painted_metal ", "validation_metal_depth ", "my_metal "})
         EXPECT_NE(list.out.find(name), std::string::npos) << name << "\n" << list.out;
     EXPECT_NE(list.out.find("(yours)"), std::string::npos) << list.out;
 
-    const auto byName = runCommand(withUserFolder("evolve --preset my_metal --json "
-                                                  "--population 4 --generations 0"));
+    const auto byName =
+        runCommand(withUserFolder("evolve --preset my_metal --json "
+                                  "--population 4 --generations 0"));
     EXPECT_EQ(byName.exitCode, 0) << byName.err;
-    const auto shipped = runCommand(withUserFolder("evolve --preset validation_metal_depth "
-                                                   "--population 4 --generations 0"));
+    const auto shipped =
+        runCommand(withUserFolder("evolve --preset validation_metal_depth "
+                                  "--population 4 --generations 0"));
     EXPECT_EQ(shipped.exitCode, 0) << shipped.err;
 }
 

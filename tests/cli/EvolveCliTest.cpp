@@ -56,7 +56,8 @@ TEST(EvolveCli, SameSeedSameResultOtherSeedOtherResult) {
 
 TEST(EvolveCli, WeightsChangeTheFitness) {
     auto plain = evolveJson("--population 10 --generations 0 --seed 3");
-    auto weighted = evolveJson("--population 10 --generations 0 --seed 3 --weights 2,2,2,2,2,2,2,2,2,2,2,2");
+    auto weighted =
+        evolveJson("--population 10 --generations 0 --seed 3 --weights 2,2,2,2,2,2,2,2,2,2,2,2");
     // Same individuals (same seed, no selection yet); every distance doubles.
     ASSERT_EQ(plain["population"].size(), weighted["population"].size());
     EXPECT_NEAR(weighted["best"]["fitness"].get<double>(),
@@ -185,8 +186,8 @@ TEST(EvolveCli, MalformedPresetNamesFileAndField) {
 TEST(EvolveCli, HelpTellsTheOptions) {
     auto result = runMatevo("evolve --help");
     EXPECT_EQ(result.exitCode, 0);
-    for (const char* option : {"--preset", "--population", "--generations", "--metric",
-                               "--weights", "--seed", "--out", "--json"})
+    for (const char* option : {"--preset", "--population", "--generations", "--metric", "--weights",
+                               "--seed", "--out", "--json"})
         EXPECT_NE(result.out.find(option), std::string::npos) << option;
 }
 
@@ -200,8 +201,8 @@ namespace {
 // end); --resume continues. A run stopped after 3 of 7 generations and resumed prints exactly
 // what the uninterrupted run prints.
 TEST(EvolveCli, AResumedRunEqualsTheUninterruptedOne) {
-    const fs::path folder = fs::temp_directory_path() / ("matevo_resume_" +
-                                                         std::to_string(::getpid()));
+    const fs::path folder =
+        fs::temp_directory_path() / ("matevo_resume_" + std::to_string(::getpid()));
     fs::create_directories(folder);
     const std::string checkpoint = (folder / "run.json").string();
     const std::string settings = "--population 16 --seed 11 --elitism 1 --json ";
@@ -219,8 +220,10 @@ TEST(EvolveCli, AResumedRunEqualsTheUninterruptedOne) {
     EXPECT_EQ(runMatevo("evolve --checkpoint-every 2").exitCode, 2);
 
     // A checkpoint of another run is refused, naming what differs.
-    const auto otherSeed = runMatevo("evolve --population 16 --seed 12 --elitism 1 "
-                                     "--generations 7 --resume '" + checkpoint + "'");
+    const auto otherSeed = runMatevo(
+        "evolve --population 16 --seed 12 --elitism 1 "
+        "--generations 7 --resume '" +
+        checkpoint + "'");
     EXPECT_EQ(otherSeed.exitCode, 2);
     EXPECT_NE(otherSeed.err.find("--resume: " + checkpoint + ": ga:"), std::string::npos)
         << otherSeed.err;

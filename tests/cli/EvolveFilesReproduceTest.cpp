@@ -28,9 +28,10 @@ std::string rankedFile(const std::string& format, int rank) {
 // Runs evolve --out with `format`; checks compare on every written candidate against
 // result.json and returns the report's population.
 nlohmann::json checkRun(const std::filesystem::path& out, const std::string& format) {
-    const auto evolve = runMatevo("evolve --population 5 --generations 1 --seed 4 --size 40 "
-                                  "--backend cpu --format " + format + " --out " +
-                                  shellQuoted(out));
+    const auto evolve = runMatevo(
+        "evolve --population 5 --generations 1 --seed 4 --size 40 "
+        "--backend cpu --format " +
+        format + " --out " + shellQuoted(out));
     EXPECT_EQ(evolve.exitCode, 0) << evolve.err;
     std::ifstream resultFile(out / "result.json");
     const auto population = nlohmann::json::parse(resultFile)["population"];

@@ -78,9 +78,9 @@ TEST(HostileInputCli, ACheckpointWithAGenomeOutsideTable2IsRefusedOnResume) {
     testing::ScratchFolder folder("hostile_checkpoint");
     const std::string settings = "evolve --population 8 --seed 3 --json ";
     const fs::path checkpoint = folder / "run.json";
-    ASSERT_EQ(runMatevo(settings + "--generations 2 --checkpoint " + shellQuoted(checkpoint))
-                  .exitCode,
-              0);
+    ASSERT_EQ(
+        runMatevo(settings + "--generations 2 --checkpoint " + shellQuoted(checkpoint)).exitCode,
+        0);
     nlohmann::json saved = nlohmann::json::parse(std::ifstream(checkpoint));
     saved["population"][0]["genome"]["eta1"] = 7.5;  // Table 2 stops at 2 or 3
     std::ofstream(checkpoint) << saved.dump();
@@ -93,8 +93,9 @@ TEST(HostileInputCli, WeightsThatWouldMakeTheFitnessInfiniteAreRefused) {
                             "1e308,1,1,1,1,1,1,1,1,1,1,1"),
                   "--weights: weight of eta1 must be in [0, 1e6]");
     // The largest allowed weight keeps every fitness a finite number in the JSON.
-    const auto largest = runMatevo("evolve --population 4 --generations 1 --json --weights "
-                                   "1e6,1e6,1e6,1e6,1e6,1e6,1e6,1e6,1e6,1e6,1e6,1e6");
+    const auto largest = runMatevo(
+        "evolve --population 4 --generations 1 --json --weights "
+        "1e6,1e6,1e6,1e6,1e6,1e6,1e6,1e6,1e6,1e6,1e6,1e6");
     ASSERT_EQ(largest.exitCode, 0) << largest.err;
     EXPECT_EQ(largest.out.find("null"), std::string::npos) << largest.out;
     EXPECT_TRUE(nlohmann::json::parse(largest.out).is_object());

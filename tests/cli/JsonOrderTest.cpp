@@ -94,14 +94,13 @@ TEST(JsonOrder, VariantsReportUnderSeveralLightings) {
     const auto report = runForJson(
         "variants --count 2 --band 2,5 --size 16 --fitness-size 16 --backend cpu --json "
         "--env paper,studio");
-    EXPECT_EQ(keysOf(report),
-              (Keys{"preset", "family", "target", "request", "made_by", "met", "summary",
-                    "variants", "pairwise_de00", "pairwise_de00_by_lighting",
-                    "smallest_pairwise_de00", "evaluations", "archived", "output_renders",
-                    "wall_time_s", "seed"}));
-    EXPECT_EQ(keysOf(report["request"]),
-              (Keys{"count", "band", "min_apart", "seed", "hue_variety", "size", "fitness_size",
-                    "lightings"}));
+    EXPECT_EQ(
+        keysOf(report),
+        (Keys{"preset", "family", "target", "request", "made_by", "met", "summary", "variants",
+              "pairwise_de00", "pairwise_de00_by_lighting", "smallest_pairwise_de00", "evaluations",
+              "archived", "output_renders", "wall_time_s", "seed"}));
+    EXPECT_EQ(keysOf(report["request"]), (Keys{"count", "band", "min_apart", "seed", "hue_variety",
+                                               "size", "fitness_size", "lightings"}));
     EXPECT_EQ(keysOf(report["pairwise_de00_by_lighting"]), (Keys{"paper", "studio"}));
     ASSERT_FALSE(report["variants"].empty());
     EXPECT_EQ(keysOf(report["variants"][0]),

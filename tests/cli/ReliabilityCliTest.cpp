@@ -175,7 +175,8 @@ TEST_F(ReliabilityCli, MaxMemoryTakesOnlyAnAmountAndOnlyWhereItBoundsWork) {
     for (const std::string bad : {"lots", "0", "16X", "-1G", "12.5G", "99999999999999999999"})
         expectRefused(runMatevo("render --max-memory " + bad + " --out " + path("x.png")),
                       "render: --max-memory: expected an amount of memory such as 512M or 16G, "
-                      "got '" + bad + "'");
+                      "got '" +
+                          bad + "'");
     expectRefused(runMatevo("presets --max-memory 1G"), "presets: unknown option '--max-memory'");
     const auto help = runMatevo("evolve --help");
     EXPECT_EQ(help.exitCode, 0);
@@ -209,8 +210,7 @@ TEST_F(ReliabilityCli, LargeWorkSaysWhatItWillCostBeforeItStarts) {
                               "generations: about "),
               std::string::npos)
         << evolve.err;
-    EXPECT_NE(evolve.err.find(" of processor time (estimated)\n"), std::string::npos)
-        << evolve.err;
+    EXPECT_NE(evolve.err.find(" of processor time (estimated)\n"), std::string::npos) << evolve.err;
 
     // Small work goes ahead without a word.
     const CommandOutput small =
@@ -263,7 +263,8 @@ TEST_F(ReliabilityCli, SigintStopsAVariantSearchAndWritesWhatWasFoundMarkedParti
     // A band no render reaches and a budget of hours: only the signal ends the search.
     const CommandOutput run = interruptedRun(
         "variants --count 3 --band 60,80 --max-evaluations 1000000 --fitness-size 8 --size 16 "
-        "--backend cpu --out \"" + (folder_ / "set").string() + "\"",
+        "--backend cpu --out \"" +
+            (folder_ / "set").string() + "\"",
         folder_ / "set", "INT", 1);
     ASSERT_EQ(run.exitCode, 130) << run.err;
     EXPECT_NE(run.err.find("stopped by SIGINT"), std::string::npos) << run.err;
@@ -283,8 +284,8 @@ TEST_F(ReliabilityCli, TheEditorWithoutAVulkanDriverSaysSoAndExits2) {
         // its Xvfb at the same moment.
         "VK_DRIVER_FILES=/nonexistent/icd.json VK_ICD_FILENAMES=/nonexistent/icd.json "
         "xvfb-run -a -n " +
-        std::to_string(200 + ::getpid() % 500) + " -s '-screen 0 1280x800x24' sh -c \"" +
-        kMatevo + " edit --frames 2; echo editor-status=\\$? >&2\"");
+        std::to_string(200 + ::getpid() % 500) + " -s '-screen 0 1280x800x24' sh -c \"" + kMatevo +
+        " edit --frames 2; echo editor-status=\\$? >&2\"");
     // The editor's own status: xvfb-run's exit status also reflects its clean-up of its
     // temporary folder, which can fail on a loaded machine.
     EXPECT_NE(run.err.find("editor-status=2"), std::string::npos) << run.err;

@@ -46,8 +46,11 @@ Race whileStopped(const std::string& victim, const fs::path& out, const std::str
     staging += "/." + out.filename().string() + ".matevo-tmp-*";
     // In a subshell, so that what runCommand captures is all of it; the victim's stdout is not.
     const CommandOutput run = runCommand(
-        "(" + kMatevo + " " + victim + " >/dev/null & v=$!; caught=0; for i in $(seq 6000); do "
-        "if ls -d " + staging + " >/dev/null 2>&1; then kill -STOP $v && caught=1; break; fi; "
+        "(" + kMatevo + " " + victim +
+        " >/dev/null & v=$!; caught=0; for i in $(seq 6000); do "
+        "if ls -d " +
+        staging +
+        " >/dev/null 2>&1; then kill -STOP $v && caught=1; break; fi; "
         "kill -0 $v 2>/dev/null || break; sleep 0.01; done; " +
         meanwhile + " >/dev/null; m=$?; kill -CONT $v; wait $v; echo \"$? $m $caught\")");
     Race race;
@@ -97,8 +100,7 @@ TEST(SharedOutputCli, ASecondRunIntoTheSameFolderIsRefusedAtOnce) {
     ASSERT_TRUE(race.caught) << race.err;
     EXPECT_EQ(race.victimExit, 0) << race.err;
     EXPECT_EQ(race.meanwhileExit, 2) << race.err;
-    EXPECT_NE(race.err.find("another matevo run is writing it now"), std::string::npos)
-        << race.err;
+    EXPECT_NE(race.err.find("another matevo run is writing it now"), std::string::npos) << race.err;
     expectWholeEvolveRun(out, 60);
 }
 

@@ -28,8 +28,8 @@ TEST(TemporaryFilesCli, RenderSceneAndCheckpointsLeaveNoneAndRemoveThoseAKillLef
     for (const auto& name : written)
         std::ofstream(testing::temporaryPathOf(folder / name, testing::kDeadPid)) << "killed";
 
-    auto run = runMatevo("render --backend cpu --size 16 --out " +
-                         shellQuoted(folder / "render.png"));
+    auto run =
+        runMatevo("render --backend cpu --size 16 --out " + shellQuoted(folder / "render.png"));
     EXPECT_EQ(run.exitCode, 0) << run.err;
     run = runMatevo("scene --mesh sphere --size 32x32 --out " + shellQuoted(folder / "scene.png"));
     EXPECT_EQ(run.exitCode, 0) << run.err;

@@ -116,9 +116,8 @@ TEST_P(VariantsOnValidationPreset, TheWrittenSetHoldsBandAndDistanceAndReplays) 
 
     // `render --genome` reproduces a written variant from its material file alone.
     const fs::path replay = out / "replay.png";
-    auto rendered = runMatevo("render --genome '" +
-                              (out / "variants/variant_000.json").string() + "' --out '" +
-                              replay.string() + "'");
+    auto rendered = runMatevo("render --genome '" + (out / "variants/variant_000.json").string() +
+                              "' --out '" + replay.string() + "'");
     ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
     EXPECT_LT(meanDeltaE(readPng(replay), variants[0]), 0.01);
 }
@@ -242,8 +241,8 @@ TEST(VariantsCli, HueVarietyGivesEachVariantItsOwnKappaInsideTheBounds) {
         "base": "dielectric", "medium": false, "textured_layer": "none"},
         "target": {"eta1": 1.5, "eta2": 2.0, "alpha1": 0.005, "alpha2": 0.2},
         "ga": {"population": 50, "generations": 5}})";
-    auto refused = runMatevo("variants --hue --count 2 --band 2,5 --preset '" +
-                             dielectric.string() + "'");
+    auto refused =
+        runMatevo("variants --hue --count 2 --band 2,5 --preset '" + dielectric.string() + "'");
     EXPECT_EQ(refused.exitCode, 2) << refused.err;
     EXPECT_NE(refused.err.find("--hue"), std::string::npos) << refused.err;
 }
@@ -265,8 +264,10 @@ TEST(VariantsCli, AnUnreachableBandExitsThreeAndStillWrites) {
 
 TEST(VariantsCli, MoreVariantsThanFitApartExitThreeWithWhatWasFound) {
     testing::ScratchFolder scratch("variants_cli_crowded");
-    auto result = runMatevo("variants --count 40 --band 2,3 --min-apart 3 --max-evaluations 300 "
-                            "--out '" + scratch.path().string() + "'");
+    auto result = runMatevo(
+        "variants --count 40 --band 2,3 --min-apart 3 --max-evaluations 300 "
+        "--out '" +
+        scratch.path().string() + "'");
     EXPECT_EQ(result.exitCode, 3);
     EXPECT_NE(result.err.find(" of 40 variants"), std::string::npos) << result.err;
     const nlohmann::json report = readJson(scratch / "report.json");
@@ -274,14 +275,17 @@ TEST(VariantsCli, MoreVariantsThanFitApartExitThreeWithWhatWasFound) {
     const std::size_t found = report["variants"].size();
     EXPECT_LT(found, 40u);
     for (std::size_t i = 0; i < found; ++i)
-        EXPECT_TRUE(fs::is_regular_file(scratch / report["variants"][i]["image"].get<std::string>()));
+        EXPECT_TRUE(
+            fs::is_regular_file(scratch / report["variants"][i]["image"].get<std::string>()));
 }
 
 TEST(VariantsCli, TheOutputFolderHoldsOneWholeRunReplacedOnlyWithForce) {
     testing::ScratchFolder scratch("variants_cli_force");
     const fs::path out = scratch / "set";
-    const std::string run = "variants --band 2,5 --fitness-size 16 --size 32 --backend cpu "
-                            "--out '" + out.string() + "'";
+    const std::string run =
+        "variants --band 2,5 --fitness-size 16 --size 32 --backend cpu "
+        "--out '" +
+        out.string() + "'";
     ASSERT_EQ(runMatevo(run + " --count 3").exitCode, 0);
     auto refused = runMatevo(run + " --count 2");
     EXPECT_EQ(refused.exitCode, 2) << refused.err;
@@ -313,8 +317,9 @@ TEST(VariantsCli, BadUsageExitsTwoWithOneLine) {
 
 // The image-space fitness in `evolve`: beside the paper's metrics, not instead of them.
 TEST(EvolveImageFitness, ScoresRendersAndTheBandAndIsOffByDefault) {
-    auto result = runMatevo("evolve --json --fitness image --band 2,5 --population 12 "
-                            "--generations 2 --seed 3 --backend cpu");
+    auto result = runMatevo(
+        "evolve --json --fitness image --band 2,5 --population 12 "
+        "--generations 2 --seed 3 --backend cpu");
     ASSERT_EQ(result.exitCode, 0) << result.err;
     const auto json = nlohmann::json::parse(result.out);
     EXPECT_EQ(json["config"]["fitness"], "image");
@@ -328,8 +333,9 @@ TEST(EvolveImageFitness, ScoresRendersAndTheBandAndIsOffByDefault) {
     EXPECT_EQ(nlohmann::json::parse(paper.out)["config"]["fitness"], "genotype");
 
     // Hue variety: each individual's own kappa, inside the genes' bounds.
-    auto hue = runMatevo("evolve --json --fitness image --hue --population 8 --generations 1 "
-                         "--seed 3 --backend cpu --fitness-size 16");
+    auto hue = runMatevo(
+        "evolve --json --fitness image --hue --population 8 --generations 1 "
+        "--seed 3 --backend cpu --fitness-size 16");
     ASSERT_EQ(hue.exitCode, 0) << hue.err;
     const auto hueJson = nlohmann::json::parse(hue.out);
     EXPECT_TRUE(hueJson["config"]["hue_variety"].get<bool>());

@@ -38,9 +38,9 @@ nlohmann::ordered_json readJson(const fs::path& file) {
 
 // `matevo render` of a material file under one lighting, as the user would re-render it.
 fs::path renderUnder(const fs::path& material, const std::string& lighting, const fs::path& out) {
-    auto run = runMatevo("render --backend cpu --size " + std::to_string(kSize) + " --genome " +
-                         shellQuoted(material) + " --env " + lighting +
-                         " --out " + shellQuoted(out));
+    auto run =
+        runMatevo("render --backend cpu --size " + std::to_string(kSize) + " --genome " +
+                  shellQuoted(material) + " --env " + lighting + " --out " + shellQuoted(out));
     EXPECT_EQ(run.exitCode, 0) << run.err;
     return out;
 }
@@ -64,9 +64,9 @@ Remeasured remeasure(const fs::path& set, const nlohmann::ordered_json& report,
     std::vector<fs::path> images;
     Remeasured measured;
     for (const auto& entry : report["variants"]) {
-        images.push_back(renderUnder(set / entry["file"].get<std::string>(), lighting,
-                                     scratch / ("variant_" + entry["index"].dump() + "_" +
-                                                lighting + ".png")));
+        images.push_back(
+            renderUnder(set / entry["file"].get<std::string>(), lighting,
+                        scratch / ("variant_" + entry["index"].dump() + "_" + lighting + ".png")));
         measured.toTarget.push_back(compareMean(target, images.back()));
     }
     measured.pairwise.assign(images.size(), std::vector<double>(images.size(), 0.0));
@@ -94,8 +94,8 @@ std::string variantsArguments(const std::string& preset, int count, const fs::pa
 TEST(VariantsLighting, ASetForPaperAndStudioHoldsUnderBothWhenRenderedAgain) {
     testing::ScratchFolder scratch("variants_lighting_both");
     const fs::path set = scratch / "set";
-    auto run = runMatevo(variantsArguments("validation_metal_depth", 3, set) +
-                         " --env paper,studio");
+    auto run =
+        runMatevo(variantsArguments("validation_metal_depth", 3, set) + " --env paper,studio");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const nlohmann::ordered_json report = readJson(set / "report.json");
     EXPECT_EQ(report["request"]["lightings"], nlohmann::ordered_json(kLightings));

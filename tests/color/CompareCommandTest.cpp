@@ -77,8 +77,8 @@ TEST_F(CompareCommandTest, FlipJsonReportsTheLibraryStatisticsOverTheSamePixels)
     const auto deltaE = nlohmann::json::parse(runMatevo("compare " + files + " --json").out);
     EXPECT_EQ(json.at("pixels").get<std::size_t>(), deltaE.at("pixels").get<std::size_t>());
     // Another viewing condition changes the result.
-    const auto far = nlohmann::json::parse(
-        runMatevo("compare " + files + " --metric flip --ppd 20 --json").out);
+    const auto far =
+        nlohmann::json::parse(runMatevo("compare " + files + " --metric flip --ppd 20 --json").out);
     EXPECT_NE(far.at("mean_flip").get<double>(), map->stats.mean);
     // --fail-above judges the chosen metric's mean.
     EXPECT_EQ(runMatevo("compare " + files + " --metric flip --fail-above 0.01").exitCode, 3);
@@ -159,8 +159,7 @@ TEST_F(CompareCommandTest, BadInputExitsTwoWithOneLine) {
     expectUsageError(runMatevo("compare " + a + " " + a + " --range 3"), "--range");
     expectUsageError(runMatevo("compare " + a + " " + a + " --bogus"), "--bogus");
     expectUsageError(runMatevo("compare " + a + " " + a + " --metric ssim"), "--metric");
-    expectUsageError(runMatevo("compare " + a + " " + a + " --metric flip --range 0,1"),
-                     "--range");
+    expectUsageError(runMatevo("compare " + a + " " + a + " --metric flip --range 0,1"), "--range");
     expectUsageError(runMatevo("compare " + a + " " + a + " --ppd 30"), "--ppd");
     expectUsageError(runMatevo("compare " + a + " " + a + " --metric flip --ppd -1"), "--ppd");
     expectUsageError(
@@ -174,9 +173,9 @@ TEST_F(CompareCommandTest, BadInputExitsTwoWithOneLine) {
 TEST_F(CompareCommandTest, HelpDescribesEveryOption) {
     const auto run = runMatevo("compare --help");
     EXPECT_EQ(run.exitCode, 0);
-    for (const char* option : {"--heatmap", "--range", "--json", "p95", "alpha >= 0.5", "--metric",
-                               "--ppd", "mean_flip", "median_flip", "q1_flip", "q3_flip",
-                               "max_flip", "magma"})
+    for (const char* option :
+         {"--heatmap", "--range", "--json", "p95", "alpha >= 0.5", "--metric", "--ppd", "mean_flip",
+          "median_flip", "q1_flip", "q3_flip", "max_flip", "magma"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
 

@@ -90,8 +90,8 @@ TEST(FlipFilters, EveryFilterIsExactlyEvenOrOddAtAnyViewingCondition) {
             if (taps[k] != sign * taps[taps.size() - 1 - k]) return false;
         return true;
     };
-    for (double pixelsPerDegree : {1.0, 5.5, 20.0, 30.0, 45.3, kDefaultPixelsPerDegree, 120.0,
-                                   333.3, 1000.0}) {
+    for (double pixelsPerDegree :
+         {1.0, 5.5, 20.0, 30.0, 45.3, kDefaultPixelsPerDegree, 120.0, 333.3, 1000.0}) {
         const CsfKernels csf = makeCsfKernels(pixelsPerDegree);
         const FeatureKernels feature = makeFeatureKernels(pixelsPerDegree);
         for (const auto* even : {&csf.achromatic, &csf.redGreen, &csf.blueYellow[0],
@@ -110,12 +110,11 @@ TEST(FlipColorDifference, WorkedValuesFromHuntHyabAndTheRemapping) {
     // (41.277 − 16.51).
     EXPECT_NEAR(colorDifference(black, white), 0.967379, 1e-4);
     // A small chromatic step stays on the linear part: 2.6713 · 0.95 / 16.51.
-    EXPECT_NEAR(colorDifference(linearSrgbToYcxcz(0.2f, 0.2f, 0.2f),
-                                linearSrgbToYcxcz(0.25f, 0.2f, 0.2f)),
-                0.153701, 1e-4);
+    EXPECT_NEAR(
+        colorDifference(linearSrgbToYcxcz(0.2f, 0.2f, 0.2f), linearSrgbToYcxcz(0.25f, 0.2f, 0.2f)),
+        0.153701, 1e-4);
     // Pure green against pure blue is the largest error.
-    EXPECT_NEAR(colorDifference(linearSrgbToYcxcz(0, 1, 0), linearSrgbToYcxcz(0, 0, 1)), 1.0,
-                1e-5);
+    EXPECT_NEAR(colorDifference(linearSrgbToYcxcz(0, 1, 0), linearSrgbToYcxcz(0, 0, 1)), 1.0, 1e-5);
 }
 
 TEST(FlipCombination, FeatureDifferenceAndFinalError) {

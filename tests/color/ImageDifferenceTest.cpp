@@ -68,7 +68,7 @@ TEST(ImageDifference, MaskedPixelsAreExcluded) {
         b.rgba[4 * i] = 1.0f;  // ...and a large red difference where a mask applies
         b.rgba[4 * i + 1] = 0.0f;
     }
-    a.rgba[4 * 0 + 3] = 0.0f;  // outside a's sphere
+    a.rgba[4 * 0 + 3] = 0.0f;   // outside a's sphere
     b.rgba[4 * 5 + 3] = 0.49f;  // just below the threshold: not covered
     a.rgba[4 * 10 + 3] = 0.3f;
     b.rgba[4 * 15 + 3] = 0.0f;

@@ -22,8 +22,8 @@ namespace {
 TEST(ParallelFor, RunsEveryChunkOnceWhateverTheThreadCount) {
     for (unsigned threads : {0u, 1u, 2u, 3u, 64u}) {
         std::vector<std::atomic<int>> runs(1000);
-        parallelForChunks(int(runs.size()), [&](int chunk) { ++runs[std::size_t(chunk)]; }, {},
-                          threads);
+        parallelForChunks(
+            int(runs.size()), [&](int chunk) { ++runs[std::size_t(chunk)]; }, {}, threads);
         for (std::size_t i = 0; i < runs.size(); ++i) ASSERT_EQ(runs[i], 1) << threads << " " << i;
     }
     parallelForChunks(0, [](int) { FAIL() << "no chunk to run"; });
@@ -44,7 +44,9 @@ TEST(ParallelFor, GivesEachThreadOneScratchObject) {
     for (const auto& scratch : scratches) seen.insert(scratch.second.begin(), scratch.second.end());
     ASSERT_EQ(seen.size(), std::size_t(chunkCount));
     for (int chunk = 0; chunk < chunkCount; ++chunk) EXPECT_EQ(seen.count(chunk), 1u) << chunk;
-    EXPECT_TRUE(parallelForChunksWithScratch(0, [] { return 0; }, [](int&, int) {}).empty());
+    EXPECT_TRUE(parallelForChunksWithScratch(
+                    0, [] { return 0; }, [](int&, int) {})
+                    .empty());
 }
 
 TEST(ParallelFor, RethrowsTheFirstFailureOnTheCallerAfterStartedChunksEnd) {

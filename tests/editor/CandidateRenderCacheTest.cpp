@@ -64,8 +64,7 @@ TEST(CandidateRenderCache, TargetChangeKeepsTexturesAndPipelines) {
     EXPECT_EQ(gpu::ComputeKernel::pipelinesCreated(), pipelines)
         << "a change of the target built pipelines";
 
-    auto fresh =
-        gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(), *textures);
+    auto fresh = gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(), *textures);
     ASSERT_TRUE(fresh.ok()) << fresh.error().message;
     std::vector<MaterialInstance> materials;
     for (const Genome& genome : candidates)

@@ -177,8 +177,8 @@ INSTANTIATE_TEST_SUITE_P(WindowSizes, EditorEndToEnd,
 CommandOutput playSession(const fs::path& dir, const std::string& actions,
                           const std::string& preset = {}) {
     fs::create_directories(dir / "config");
-    std::ofstream(dir / "script.txt")
-        << "wait 2\nresize " << kWidth << " " << kHeight << "\n" << actions << "quit\n";
+    std::ofstream(dir / "script.txt") << "wait 2\nresize " << kWidth << " " << kHeight << "\n"
+                                      << actions << "quit\n";
     return runCommand("XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
                       "/matevo' edit " + (preset.empty() ? "" : "'" + preset + "' ") +
                       "--validate --report-timings --script '" + (dir / "script.txt").string() +
@@ -199,9 +199,13 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
                     "refill-variants\n"
                     "wait-variants\n"
                     "wait 2\n"
-                    "screenshot " + (dir / "variants.png").string() + "\n"
-                    "save-variants " + (dir / "set").string() + "\n"
-                    "wait 2\n",
+                    "screenshot " +
+                        (dir / "variants.png").string() +
+                        "\n"
+                        "save-variants " +
+                        (dir / "set").string() +
+                        "\n"
+                        "wait 2\n",
                     std::string(MATEVO_SOURCE_DIR) + "/presets/validation_metal_depth.json");
     ASSERT_EQ(run.exitCode, 0) << run.err;
 
@@ -232,8 +236,7 @@ TEST(EditorVariants, FindDiscardRefillAndSaveASet) {
     // two rows. They are dark red in the paper scene, so "lit" starts low: above the tiles' dark
     // backdrop, which keeps each sphere apart from the window's lighter background.
     const ui::PanelLayout layout = ui::layoutPanels(ImVec2(float(kWidth), float(kHeight)));
-    const auto tiles =
-        spheres(shot, {45, 230, int(layout.inspect.position.x) - 20, 600}, 3000, 30);
+    const auto tiles = spheres(shot, {45, 230, int(layout.inspect.position.x) - 20, 600}, 3000, 30);
     EXPECT_EQ(tiles.size(), 5u) << "sphere tiles in the Variants window";
     fs::remove_all(dir);
 }
@@ -243,7 +246,8 @@ double meanDifference(const Screenshot& a, const Screenshot& b, const PixelRect&
     double sum = 0.0;
     for (int y = area.y0; y < area.y1; ++y)
         for (int x = area.x0; x < area.x1; ++x)
-            for (int c = 0; c < 3; ++c) sum += std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c]));
+            for (int c = 0; c < 3; ++c)
+                sum += std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c]));
     return sum / (3.0 * double(area.x1 - area.x0) * double(area.y1 - area.y0));
 }
 
@@ -293,9 +297,15 @@ TEST(EditorVariantDocument, FindKeepExportSaveAndReopen) {
                                               "wait-scene\n" +
                                               shot("scene_population") +
                                               "scene-show variants\n"
-                                              "export-set " + (dir / "set.glb").string() + "\n"
-                                              "save-document " + (dir / "doc.json").string() + "\n"
-                                              "open " + (dir / "doc.json").string() + "\n"
+                                              "export-set " +
+                                              (dir / "set.glb").string() +
+                                              "\n"
+                                              "save-document " +
+                                              (dir / "doc.json").string() +
+                                              "\n"
+                                              "open " +
+                                              (dir / "doc.json").string() +
+                                              "\n"
                                               "wait-variants\n",
                                           preset);
     ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -380,9 +390,9 @@ TEST(EditorVariantDocument, FindKeepExportSaveAndReopen) {
 
     // A new session on the saved document shows the same set: saved as a folder, the same
     // four members in order.
-    const CommandOutput reopened = playSession(
-        dir, "wait-variants\nsave-variants " + (dir / "again").string() + "\nwait 2\n",
-        (dir / "doc.json").string());
+    const CommandOutput reopened =
+        playSession(dir, "wait-variants\nsave-variants " + (dir / "again").string() + "\nwait 2\n",
+                    (dir / "doc.json").string());
     ASSERT_EQ(reopened.exitCode, 0) << reopened.err;
     std::ifstream againFile(dir / "again/report.json");
     const auto again = nlohmann::json::parse(againFile);
@@ -451,7 +461,8 @@ TEST(EditorVariants, ASetStartsFromTheKeptBin) {
     const auto json = nlohmann::json::parse(report);
     std::multiset<double> keptEta1;
     for (const auto& variant : json.at("variants"))
-        if (variant.at("kept").get<bool>()) keptEta1.insert(variant.at("genome").at("eta1").get<double>());
+        if (variant.at("kept").get<bool>())
+            keptEta1.insert(variant.at("genome").at("eta1").get<double>());
     EXPECT_EQ(keptEta1, (std::multiset<double>{1.1, 1.35})) << report;
     EXPECT_EQ(json.at("variants").size(), 3u) << report;
     fs::remove_all(dir);
@@ -580,11 +591,11 @@ TEST(EditorSceneWindow, ShowsAMeshFileWithThePopulationThenTheKeptBin) {
                                          "wait-scene\n"
                                          "screenshot "
                                       << (dir / "kept.png").string() << "\nquit\n";
-    const CommandOutput run = runCommand(
-        "XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
-        "/matevo' edit '" + (dir / "preset.json").string() + "' --validate --size " +
-        std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --script '" +
-        (dir / "script.txt").string() + "' --frames 100000");
+    const CommandOutput run =
+        runCommand("XDG_CONFIG_HOME='" + (dir / "config").string() + "' '" + MATEVO_BINARY_DIR +
+                   "/matevo' edit '" + (dir / "preset.json").string() + "' --validate --size " +
+                   std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --script '" +
+                   (dir / "script.txt").string() + "' --frames 100000");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     auto population = readImage(dir / "population.png");
     ASSERT_TRUE(population.ok()) << population.error().message;
@@ -621,20 +632,23 @@ TEST(EditorSceneWindow, ShowsAMeshFileWithThePopulationThenTheKeptBin) {
 // whole redraw of the same state. (The status bar differs: it names the first screenshot.)
 TEST(EditorPartialRedraw, ChangedAreasAddUpToTheWholePicture) {
     const fs::path dir = freshDirectory("partial");
-    const CommandOutput run = playSession(
-        dir, "population 24\n"
-           "wait-evolution\n"
-           "select 1\n"
-           "wait 2\n"
-           "heatmap on\n"
-           "wait 2\n"
-           "select 3\n"
-           "wait 2\n"
-           "heatmap off\n"
-           "wait 4\n"
-           "screenshot " + (dir / "partial.png").string() + "\n"
-           "redraw\n"
-           "screenshot " + (dir / "whole.png").string() + "\n");
+    const CommandOutput run = playSession(dir,
+                                          "population 24\n"
+                                          "wait-evolution\n"
+                                          "select 1\n"
+                                          "wait 2\n"
+                                          "heatmap on\n"
+                                          "wait 2\n"
+                                          "select 3\n"
+                                          "wait 2\n"
+                                          "heatmap off\n"
+                                          "wait 4\n"
+                                          "screenshot " +
+                                              (dir / "partial.png").string() +
+                                              "\n"
+                                              "redraw\n"
+                                              "screenshot " +
+                                              (dir / "whole.png").string() + "\n");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     // Frames that would have drawn the picture on screen again were not drawn.
     EXPECT_EQ(run.out.find("\"frames_unchanged\":0,"), std::string::npos) << run.out;
@@ -650,8 +664,8 @@ TEST(EditorPartialRedraw, ChangedAreasAddUpToTheWholePicture) {
     ASSERT_EQ(partial.height, kHeight);
     ASSERT_EQ(whole.width, kWidth);
     ASSERT_EQ(whole.height, kHeight);
-    const std::size_t aboveStatusBar = std::size_t(
-        ui::layoutPanels(ImVec2(kWidth, kHeight)).statusBar.position.y) * kWidth * 4;
+    const std::size_t aboveStatusBar =
+        std::size_t(ui::layoutPanels(ImVec2(kWidth, kHeight)).statusBar.position.y) * kWidth * 4;
     std::size_t differing = 0;
     for (std::size_t i = 0; i < aboveStatusBar; i += 4)
         differing += !std::equal(&partial.rgba[i], &partial.rgba[i] + 4, &whole.rgba[i]);
@@ -664,18 +678,21 @@ TEST(EditorPartialRedraw, ChangedAreasAddUpToTheWholePicture) {
 // colours to FLIP's. (The worker test checks the maps against the CPU reference.)
 TEST(EditorFlipOverlay, ComputesTheMapsOnTheWindowsDeviceAndRecoloursTheTiles) {
     const fs::path dir = freshDirectory("flip");
-    const CommandOutput run = playSession(
-        dir, "population 12\n"
-           "generations 2\n"
-           "wait-evolution\n"
-           "heatmap de00\n"
-           "wait 4\n"
-           "screenshot " + (dir / "de00.png").string() + "\n"
-           "heatmap flip\n"
-           "wait 2\n"
-           "wait-evolution\n"
-           "wait 4\n"
-           "screenshot " + (dir / "flip.png").string() + "\n");
+    const CommandOutput run = playSession(dir,
+                                          "population 12\n"
+                                          "generations 2\n"
+                                          "wait-evolution\n"
+                                          "heatmap de00\n"
+                                          "wait 4\n"
+                                          "screenshot " +
+                                              (dir / "de00.png").string() +
+                                              "\n"
+                                              "heatmap flip\n"
+                                              "wait 2\n"
+                                              "wait-evolution\n"
+                                              "wait 4\n"
+                                              "screenshot " +
+                                              (dir / "flip.png").string() + "\n");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.out.find("\"vulkan_devices\":1}"), std::string::npos) << run.out;
 
@@ -693,7 +710,8 @@ TEST(EditorFlipOverlay, ComputesTheMapsOnTheWindowsDeviceAndRecoloursTheTiles) {
         for (int x = grid.x0; x < grid.x1; ++x) {
             const std::uint8_t* a = deltaE.pixel(x, y);
             const std::uint8_t* b = flip.pixel(x, y);
-            recoloured += std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 60;
+            recoloured +=
+                std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 60;
         }
     EXPECT_GT(recoloured, 2000) << "the tiles still show the ΔE00 maps";
     EXPECT_GT(flip.saturatedPixels(grid), 2000) << "no heatmap over the tiles";

@@ -12,8 +12,8 @@
 #include <thread>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include "../gpu/GpuTestContext.h"
 #include "../ui/EditorUiFixture.h"
@@ -177,8 +177,9 @@ TEST_F(ExportFromTheKeptBin, ExportsTheKeptMaterialsOfTheFamilyToGltfWithTheirFi
     const ui::ExportOutcome& outcome = *ui.state().exportOutcome;
     EXPECT_EQ(outcome.summary, done.text);
     ASSERT_EQ(outcome.lines.size(), 2u);
-    const std::regex line("rust, rough: fitted ΔE00 ([0-9.]+), (within the goal|past the goal "
-                          "of 2)");
+    const std::regex line(
+        "rust, rough: fitted ΔE00 ([0-9.]+), (within the goal|past the goal "
+        "of 2)");
     ASSERT_TRUE(std::regex_match(outcome.lines[0].text, numbers, line)) << outcome.lines[0].text;
     EXPECT_NE(done.text.find("rust, rough: " + numbers[1].str()), std::string::npos) << done.text;
     EXPECT_EQ(outcome.lines[0].holds, numbers[2] == "within the goal");
@@ -271,7 +272,8 @@ TEST_F(ExportFromTheKeptBin, AVariantSetIsCheckedAsItIsDelivered) {
         withinGoal += entry.at("within_goal").get<bool>() ? 1 : 0;
         EXPECT_EQ(entry.at("within_goal"), delivered.at("within_goal"));
         std::smatch numbers;
-        ASSERT_TRUE(std::regex_match(outcome.lines[i].text, numbers, line)) << outcome.lines[i].text;
+        ASSERT_TRUE(std::regex_match(outcome.lines[i].text, numbers, line))
+            << outcome.lines[i].text;
         EXPECT_EQ(std::stoul(numbers[1]), i);
         EXPECT_NEAR(std::stod(numbers[2]), entry.at("mean_de00").get<double>(), 0.006);
         EXPECT_NEAR(std::stod(numbers[2]), delivered.at("de00_to_matevo").get<double>(), 0.006);
@@ -313,8 +315,9 @@ TEST_F(ExportFromTheKeptBin, AnExportPastTheMemoryLimitIsRefused) {
         checked = true;
         EXPECT_EQ(refused.file, file);
         EXPECT_EQ(settings.reportSize, 64) << "the settings the export would run with";
-        return badInput("Export set of 1 material needs about 99 MiB of memory, more than the "
-                        "limit of 1 MiB");
+        return badInput(
+            "Export set of 1 material needs about 99 MiB of memory, more than the "
+            "limit of 1 MiB");
     };
     EXPECT_FALSE(runExport(
         ui::exportRequest(ui.state(), ui::ExportSource::KeptBin, ExportFormat::Gltf, file),

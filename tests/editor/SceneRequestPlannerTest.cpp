@@ -80,8 +80,7 @@ TEST(SceneTimings, FirstPictureReleaseToRefinedAndOrbitRate) {
     EXPECT_NE(report.find("\"orbit_fps\":10.0,\"orbits\":1"), std::string::npos) << report;
     EXPECT_NE(report.find("\"preview_render_ms\":40.0,\"previews\":6"), std::string::npos)
         << report;
-    EXPECT_NE(report.find("\"whole_render_ms\":700.0,\"wholes\":2"), std::string::npos)
-        << report;
+    EXPECT_NE(report.find("\"whole_render_ms\":700.0,\"wholes\":2"), std::string::npos) << report;
 }
 
 }  // namespace

@@ -8,9 +8,10 @@ namespace matevo::editor {
 namespace {
 
 TEST(SceneScript, ShowAndMeshVerbsAreCheckedWhenTheScriptIsRead) {
-    auto script = parseEditorScript("scene-show kept\nscene-mesh /models/bunny.GLB\n"
-                                    "scene-mesh knot\nwait-scene\n",
-                                    "demo.txt");
+    auto script = parseEditorScript(
+        "scene-show kept\nscene-mesh /models/bunny.GLB\n"
+        "scene-mesh knot\nwait-scene\n",
+        "demo.txt");
     ASSERT_TRUE(script.ok()) << script.error().message;
     ASSERT_EQ(script->size(), 4u);
     EXPECT_EQ((*script)[0].kind, ScriptAction::Kind::SceneShow);

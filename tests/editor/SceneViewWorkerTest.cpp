@@ -120,9 +120,8 @@ TEST(SceneViewWorker, TheWindowSamplesTheRenderersDisplayImageOnItsOwnDevice) {
                     ->setMaterials(std::vector<MaterialInstance>{job.materials[0].material,
                                                                  job.materials[1].material})
                     .ok());
-    auto expected = renderer->render(
-        *runner, {96, 64, result->camera, result->instances}, settings,
-        gpu::SceneDisplay{job.controls.exposure, ToneMap::Aces});
+    auto expected = renderer->render(*runner, {96, 64, result->camera, result->instances}, settings,
+                                     gpu::SceneDisplay{job.controls.exposure, ToneMap::Aces});
     ASSERT_TRUE(expected.ok()) << expected.error().message;
 
     // Reading the tile on the window's device is valid only if it lives there, in the layout
@@ -185,8 +184,8 @@ TEST(SceneViewWorker, AMeshFileIsDrawnAndOneThatFailsIsOneLineAndNoPicture) {
         EXPECT_GT(litValues(context->device, *drawn->tile), 96u * 64u / 4u) << "tetrahedra drawn";
         EXPECT_EQ(drawn->materials.size(), 2u) << "what the instances' indexes name";
 
-        for (const std::string& bad : {(dir / "missing.obj").string(),
-                                      (dir / "broken.obj").string()}) {
+        for (const std::string& bad :
+             {(dir / "missing.obj").string(), (dir / "broken.obj").string()}) {
             worker.request(smallJob(bad, 96, 64));
             auto failed = settle(worker);
             ASSERT_TRUE(failed.has_value());

@@ -21,8 +21,7 @@ bool Screenshot::lit(int x, int y, int threshold) const {
     return std::max({p[0], p[1], p[2]}) > threshold;
 }
 
-std::vector<Blob> Screenshot::litBlobs(const PixelRect& area, int minPixels,
-                                       int threshold) const {
+std::vector<Blob> Screenshot::litBlobs(const PixelRect& area, int minPixels, int threshold) const {
     std::vector<Blob> blobs;
     std::vector<std::uint8_t> seen(std::size_t(width_) * std::size_t(height_), 0);
     std::vector<std::pair<int, int>> stack;

@@ -43,8 +43,7 @@ TEST(VariantsWorker, HoldsTheSetAsDeliveredInGltf) {
     request.minApart = 2.0;
     request.seed = 1;
 
-    auto result =
-        runToTheEnd(worker, {loaded->preset, kPresetFile, request, std::nullopt, true});
+    auto result = runToTheEnd(worker, {loaded->preset, kPresetFile, request, std::nullopt, true});
     ASSERT_TRUE(result.has_value()) << "the search did not end in 600 s";
     ASSERT_TRUE(result->error.empty()) << result->error;
     ASSERT_TRUE(result->delivered.has_value()) << "held as delivered, but no delivered figures";
@@ -66,8 +65,9 @@ TEST(VariantsWorker, HoldsTheSetAsDeliveredInGltf) {
     // The window's line says so.
     const std::string line = deliveredSummary(delivered, request);
     const std::string whole = std::to_string(delivered.variants.size());
-    EXPECT_EQ(line.rfind("as delivered in glTF: " + whole + "/" + whole + " in band 2–5 and ≥ 2 "
-                         "apart",
+    EXPECT_EQ(line.rfind("as delivered in glTF: " + whole + "/" + whole +
+                             " in band 2–5 and ≥ 2 "
+                             "apart",
                          0),
               0u)
         << line;
@@ -89,8 +89,7 @@ TEST(VariantsWorker, ASearchNotHeldAsDeliveredHasNoDeliveredFigures) {
     request.band = {2.0, 5.0};
     // Several lightings: the delivered check is not made (as --deliver refuses --env).
     request.lightings = {"paper", "studio"};
-    auto result =
-        runToTheEnd(worker, {loaded->preset, kPresetFile, request, std::nullopt, true});
+    auto result = runToTheEnd(worker, {loaded->preset, kPresetFile, request, std::nullopt, true});
     ASSERT_TRUE(result.has_value());
     ASSERT_TRUE(result->error.empty()) << result->error;
     EXPECT_FALSE(result->delivered.has_value());

@@ -169,8 +169,8 @@ TEST_F(ExperimentCommand, GpuBackendScoresTheSameRunsAsTheCpuReference) {
 // ambient look, unless --scene says otherwise.
 TEST_F(ExperimentCommand, RunsInThePapersSceneUnlessToldOtherwise) {
     fs::create_directories(out_);
-    std::string ambientPreset = readFile(fs::path(MATEVO_SOURCE_DIR) / "presets" /
-                                         "validation_metal.json");
+    std::string ambientPreset =
+        readFile(fs::path(MATEVO_SOURCE_DIR) / "presets" / "validation_metal.json");
     const std::string paperMode = R"("mode": "paper")";
     ASSERT_NE(ambientPreset.find(paperMode), std::string::npos);
     ambientPreset.replace(ambientPreset.find(paperMode), paperMode.size(), R"("mode": "ambient")");
@@ -180,7 +180,8 @@ TEST_F(ExperimentCommand, RunsInThePapersSceneUnlessToldOtherwise) {
                      const std::string& extra) {
         return runMatevo("experiment --preset " + preset +
                          " --runs 3 --runs-per-seed 2 --population 6 --generations 2 --size 24"
-                         " --backend cpu --out '" + (out_ / folder).string() + "' " + extra);
+                         " --backend cpu --out '" +
+                         (out_ / folder).string() + "' " + extra);
     };
     std::string ambientArgument = "'";
     ambientArgument += ambientFile.string();
@@ -200,9 +201,12 @@ TEST_F(ExperimentCommand, RunsInThePapersSceneUnlessToldOtherwise) {
 
 TEST_F(ExperimentCommand, BadInputExitsWithStatusTwoAndOneLineNamingTheProblem) {
     const std::vector<std::pair<std::string, std::string>> cases = {
-        {"--runs 0", "--runs"}, {"--metric cosine", "--metric"}, {"--backend abacus", "--backend"},
+        {"--runs 0", "--runs"},
+        {"--metric cosine", "--metric"},
+        {"--backend abacus", "--backend"},
         {"--sweep", "--sweep"},  // with --population from runSmall
-        {"--bogus", "--bogus"}, {"--scene studio", "--scene"},
+        {"--bogus", "--bogus"},
+        {"--scene studio", "--scene"},
         {"--fitness-size 16", "--fitness-size"},  // without --metric image
     };
     for (const auto& [arguments, named] : cases) {

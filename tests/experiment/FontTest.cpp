@@ -31,7 +31,9 @@ TEST(Font, DecodesUtf8AndReplacesMalformedBytes) {
     EXPECT_EQ(decodeUtf8("\u0394E00"), (std::vector<char32_t>{0x394, 'E', '0', '0'}));
     EXPECT_EQ(decodeUtf8("\u2013\U0001F600"), (std::vector<char32_t>{0x2013, 0x1F600}));
     EXPECT_EQ(decodeUtf8("a\xCE"), (std::vector<char32_t>{'a', 0xFFFD}));
-    EXPECT_EQ(decodeUtf8("\xCE" "A"), (std::vector<char32_t>{0xFFFD, 'A'}));
+    EXPECT_EQ(decodeUtf8("\xCE"
+                         "A"),
+              (std::vector<char32_t>{0xFFFD, 'A'}));
 }
 
 // The Greek capital delta is the font's own glyph, a triangle (its narrow top rows widen
@@ -63,8 +65,8 @@ TEST(Font, WidthsFollowTheFontsAdvancesAndScaleWithSize) {
 TEST(Font, WithoutTheFontTheMessageSaysWhereItLookedAndWhichPackageHasIt) {
     matevo::testing::ScratchFolder scratch("font");
     testing::ScopedEnvironment dataHome("XDG_DATA_HOME", (scratch / "home").string());
-    testing::ScopedEnvironment dataDirs(
-        "XDG_DATA_DIRS", (scratch / "a").string() + ":" + (scratch / "b").string());
+    testing::ScopedEnvironment dataDirs("XDG_DATA_DIRS",
+                                        (scratch / "a").string() + ":" + (scratch / "b").string());
     auto font = Font::dejaVuSans();
     ASSERT_FALSE(font);
     const std::string& message = font.error().message;

@@ -110,8 +110,8 @@ TEST(HistogramChart, DrawsItsTextWhereTheLabelsAre) {
 
     const ChartPlotArea plot = histogramPlotArea();
     const int centre = (plot.left + plot.right) / 2;
-    const int axisTitle = countDarkPixels(titled, centre - 50, plot.bottom + 26, centre + 50,
-                                          kHistogramChartHeight);
+    const int axisTitle =
+        countDarkPixels(titled, centre - 50, plot.bottom + 26, centre + 50, kHistogramChartHeight);
     EXPECT_GT(axisTitle, 60);  // "mean ΔE00"
     EXPECT_EQ(countDarkPixels(titled, plot.right - 100, plot.bottom + 36, plot.right - 40,
                               kHistogramChartHeight),
@@ -142,8 +142,8 @@ std::string content(xmlNode* node) {
 TEST(HistogramChart, SvgHasOneBarPerNonEmptyBinAndItsLabelsAsText) {
     const std::vector<double> values = {0.6, 1.1, 1.1, 1.1, 5.1, 5.1};
     const DeltaEHistogram histogram = makeHistogram(values, {10, 0.25});
-    const std::string svg = chartSvg(
-        histogramChart(histogram, kBands, 4, {"validation metal", "6 runs"}, chartFont()));
+    const std::string svg =
+        chartSvg(histogramChart(histogram, kBands, 4, {"validation metal", "6 runs"}, chartFont()));
     std::unique_ptr<xmlDoc, XmlDocumentDeleter> document(
         xmlReadMemory(svg.data(), int(svg.size()), "chart.svg", "UTF-8", XML_PARSE_NONET));
     ASSERT_TRUE(document) << svg;
@@ -176,8 +176,8 @@ TEST(HistogramChart, SvgHasOneBarPerNonEmptyBinAndItsLabelsAsText) {
 
 TEST(HistogramChart, SvgEscapesMarkupInItsText) {
     const DeltaEHistogram histogram = makeHistogram(std::vector<double>{}, {10, 0.25});
-    const std::string svg = chartSvg(
-        histogramChart(histogram, kBands, 1, {"a <b> & \"c\"", ""}, chartFont()));
+    const std::string svg =
+        chartSvg(histogramChart(histogram, kBands, 1, {"a <b> & \"c\"", ""}, chartFont()));
     EXPECT_NE(svg.find("a &lt;b&gt; &amp; &quot;c&quot;"), std::string::npos);
     std::unique_ptr<xmlDoc, XmlDocumentDeleter> document(
         xmlReadMemory(svg.data(), int(svg.size()), "chart.svg", "UTF-8", XML_PARSE_NONET));

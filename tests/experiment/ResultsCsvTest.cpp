@@ -45,7 +45,8 @@ TEST(ResultsCsv, HeaderNamesTheRunColumnsThenTheTwelveChromosomes) {
     const std::vector<std::string> leading = {"preset", "metric", "population", "generations",
                                               "seed",   "run",    "fitness",    "mean_de00"};
     for (std::size_t i = 0; i < leading.size(); ++i) EXPECT_EQ(fields[i], leading[i]);
-    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i) EXPECT_EQ(fields[8 + i], chromosomeName(i));
+    for (std::size_t i = 0; i < kPaperChromosomeCount; ++i)
+        EXPECT_EQ(fields[8 + i], chromosomeName(i));
 }
 
 TEST(ResultsCsv, RowHasOneParseableFieldPerColumnAndKeepsEveryBit) {

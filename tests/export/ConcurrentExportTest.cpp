@@ -9,8 +9,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include "support/FileContents.h"
 #include "support/RunCommand.h"
@@ -42,8 +42,7 @@ std::vector<std::string> referencedFiles(const fs::path& mainFile) {
                 if (entry.contains("uri")) names.push_back(entry["uri"]);
     } else {
         const std::regex file("type=\"filename\" value=\"([^\"]+)\"");
-        for (std::sregex_iterator match(text.begin(), text.end(), file), end; match != end;
-             ++match)
+        for (std::sregex_iterator match(text.begin(), text.end(), file), end; match != end; ++match)
             names.push_back((*match)[1]);
     }
     return names;
@@ -61,16 +60,14 @@ void expectWholeExport(const fs::path& mainFile, const std::vector<fs::path>& so
     EXPECT_FALSE(names.empty());
     for (const auto& name : names) {
         ASSERT_TRUE(fs::exists(mainFile.parent_path() / name)) << name << " is missing";
-        EXPECT_EQ(contentsOf(mainFile.parent_path() / name),
-                  contentsOf(solo->parent_path() / name))
+        EXPECT_EQ(contentsOf(mainFile.parent_path() / name), contentsOf(solo->parent_path() / name))
             << name;
     }
     if (mainFile.extension() == ".gltf") {
         tinygltf::TinyGLTF loader;
         tinygltf::Model model;
         std::string error, warning;
-        EXPECT_TRUE(loader.LoadASCIIFromFile(&model, &error, &warning, mainFile.string()))
-            << error;
+        EXPECT_TRUE(loader.LoadASCIIFromFile(&model, &error, &warning, mainFile.string())) << error;
     }
 }
 

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include "documents/MaterialFile.h"
 #include "support/RunCommand.h"
@@ -42,10 +42,11 @@ TEST(ExportCommand, EvolveJsonExportsToGlbWithAReport) {
     std::ofstream(folder / "ev.json") << evolved.out;
 
     const auto out = folder / "best.glb";
-    const auto exported = testing::runMatevo("export --genome " + shellQuoted(folder / "ev.json") +
-                                             " --out " + shellQuoted(out) +
-                                             " --json --fit-size 24 --fit-renders 120 --report-size 32"
-                                             " --images " + shellQuoted(folder / "look"));
+    const auto exported = testing::runMatevo(
+        "export --genome " + shellQuoted(folder / "ev.json") + " --out " + shellQuoted(out) +
+        " --json --fit-size 24 --fit-renders 120 --report-size 32"
+        " --images " +
+        shellQuoted(folder / "look"));
     ASSERT_EQ(exported.exitCode, 0) << exported.err;
     const auto report = nlohmann::json::parse(exported.out);
     EXPECT_EQ(report["format"], "glb");
@@ -120,7 +121,8 @@ TEST(ExportCommand, AVariantsSetExportsToGltfAndMaterialX) {
     const auto made = testing::runMatevo(
         "variants --preset " + shellQuoted(kPaintedMetal) +
         " --count 3 --band 2,10 --min-apart 1 --seed 5 --size 48 --fitness-size 16"
-        " --backend cpu --out " + shellQuoted(set));
+        " --backend cpu --out " +
+        shellQuoted(set));
     ASSERT_EQ(made.exitCode, 0) << made.err;
     std::ifstream reportFile(set / "report.json");
     const auto variantsReport = nlohmann::json::parse(reportFile);
@@ -158,8 +160,7 @@ TEST(ExportCommand, AVariantsSetExportsToGltfAndMaterialX) {
             tinygltf::TinyGLTF loader;
             tinygltf::Model model;
             std::string error, warning;
-            ASSERT_TRUE(loader.LoadASCIIFromFile(&model, &error, &warning, out.string()))
-                << error;
+            ASSERT_TRUE(loader.LoadASCIIFromFile(&model, &error, &warning, out.string())) << error;
             ASSERT_EQ(model.materials.size(), variants.size());
             ASSERT_EQ(model.nodes.size(), variants.size());  // a sphere each, side by side
             EXPECT_NE(model.nodes[0].translation, model.nodes[1].translation);
@@ -194,7 +195,8 @@ TEST(ExportCommand, ASetIsEveryMaterialFileInItsFolder) {
     const auto set = folder / "set";
     const auto made = testing::runMatevo(
         "variants --count 2 --band 2,10 --min-apart 1 --size 16 --fitness-size 8"
-        " --max-evaluations 200 --backend cpu --out " + shellQuoted(set));
+        " --max-evaluations 200 --backend cpu --out " +
+        shellQuoted(set));
     ASSERT_EQ(made.exitCode, 0) << made.err;
     // A material the user put in the set: a copy of the first variant under a name of its own.
     auto added = nlohmann::json::parse(contentsOf(set / "variants" / "variant_000.json"));
@@ -217,8 +219,7 @@ TEST(ExportCommand, ASetIsEveryMaterialFileInItsFolder) {
     const auto broken = testing::runMatevo(exportSet);
     EXPECT_EQ(broken.exitCode, 2) << broken.err;
     EXPECT_EQ(std::count(broken.err.begin(), broken.err.end(), '\n'), 1) << broken.err;
-    EXPECT_NE(broken.err.find((set / "variants" / "variant_001.json").string()),
-              std::string::npos)
+    EXPECT_NE(broken.err.find((set / "variants" / "variant_001.json").string()), std::string::npos)
         << broken.err;
     EXPECT_FALSE(fs::exists(out));
 }
@@ -258,9 +259,9 @@ TEST(ExportCommand, TheUsageLineNamesEveryOption) {
 TEST(ExportCommand, OutCreatesItsFolder) {
     testing::ScratchFolder folder("export_cli");
     const auto out = folder / "new" / "deeper" / "target.glb";
-    const auto exported = testing::runMatevo(
-        "export --out " + shellQuoted(out) +
-        " --backend cpu --fit-size 16 --fit-renders 20 --report-size 16");
+    const auto exported =
+        testing::runMatevo("export --out " + shellQuoted(out) +
+                           " --backend cpu --fit-size 16 --fit-renders 20 --report-size 16");
     ASSERT_EQ(exported.exitCode, 0) << exported.err;
     EXPECT_TRUE(fs::is_regular_file(out));
 }
@@ -272,8 +273,8 @@ TEST(ExportCommand, MistakesExitTwoWithOneLine) {
     const auto out = folder / "x.glb";
     fs::create_directories(folder / "empty");
     for (const std::string& arguments :
-         {"export --genome " + shellQuoted(genome) + " --variants " + shellQuoted(folder.path()) + " --out " +
-              shellQuoted(out),
+         {"export --genome " + shellQuoted(genome) + " --variants " + shellQuoted(folder.path()) +
+              " --out " + shellQuoted(out),
           "export --genome " + shellQuoted(genome) + " --out " + shellQuoted(folder / "x.obj"),
           "export --genome " + shellQuoted(genome) + " --format fbx --out " + shellQuoted(out),
           "export --genome " + shellQuoted(genome) + " --format gltf --out " + shellQuoted(out),

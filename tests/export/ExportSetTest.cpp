@@ -18,8 +18,8 @@
 #include <string>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include "documents/Preset.h"
 #include "documents/PresetTextures.h"
@@ -145,7 +145,8 @@ TEST(ExportSet, GltfFilesReadBackFieldByField) {
             ASSERT_EQ(model.meshes.size(), 1u);
             const auto& primitive = model.meshes[0].primitives[0];
             EXPECT_EQ(primitive.material, 0);
-            const auto& positions = model.accessors[std::size_t(primitive.attributes.at("POSITION"))];
+            const auto& positions =
+                model.accessors[std::size_t(primitive.attributes.at("POSITION"))];
             EXPECT_EQ(model.accessors[std::size_t(primitive.attributes.at("TEXCOORD_0"))].count,
                       positions.count);
             EXPECT_EQ(model.nodes.size(), 1u);
@@ -172,8 +173,8 @@ double recomputedDeltaE(const std::string& name, SceneMode mode, const fs::path&
     EXPECT_TRUE(difference.ok());
     EXPECT_NEAR(difference->stats.mean, report.variants[0].deltaE.stats.mean, 1e-9) << name;
     std::printf("%s (%s scene): mean dE00 %.3f (p95 %.3f) at %d px, %d renders\n", name.c_str(),
-                std::string(toString(mode)).c_str(), difference->stats.mean,
-                difference->stats.p95, size, report.variants[0].fit.evaluations);
+                std::string(toString(mode)).c_str(), difference->stats.mean, difference->stats.p95,
+                size, report.variants[0].fit.evaluations);
     return difference->stats.mean;
 }
 
@@ -207,8 +208,8 @@ TEST(ExportSet, KhronosValidatorFindsNoErrors) {
         }
     }
     const fs::path script = fs::path(MATEVO_SOURCE_DIR) / "tests/export/gltf-validator/validate.js";
-    const auto result = testing::runCommand(std::string(MATEVO_NODE) + " '" + script.string() +
-                                            "'" + files);
+    const auto result =
+        testing::runCommand(std::string(MATEVO_NODE) + " '" + script.string() + "'" + files);
     EXPECT_EQ(result.exitCode, 0) << result.out << result.err;
     std::size_t reports = 0;
     std::istringstream lines(result.out);
@@ -252,9 +253,9 @@ TEST(ExportSet, WritesOnlyExtensionValuesThatAct) {
     bare.metallic = 0.5;
     bare.clearcoat = 0.0;
     const fs::path file = folder / "acting.glb";
-    ASSERT_TRUE(writeGltf({{"metal", metal}, {"paint", paint}, {"bare", bare}}, SceneTextures{},
-                          file)
-                    .ok());
+    ASSERT_TRUE(
+        writeGltf({{"metal", metal}, {"paint", paint}, {"bare", bare}}, SceneTextures{}, file)
+            .ok());
     const tinygltf::Model model = loadGlb(file);
     ASSERT_EQ(model.materials.size(), 3u);
     const auto& metalExtensions = model.materials[0].extensions;
@@ -263,8 +264,7 @@ TEST(ExportSet, WritesOnlyExtensionValuesThatAct) {
     EXPECT_EQ(metalExtensions.count("KHR_materials_specular"), 0u);
     const auto& paintExtensions = model.materials[1].extensions;
     EXPECT_DOUBLE_EQ(numberOf(paintExtensions.at("KHR_materials_ior"), "ior"), 1.7);
-    EXPECT_DOUBLE_EQ(numberOf(paintExtensions.at("KHR_materials_specular"), "specularFactor"),
-                     0.8);
+    EXPECT_DOUBLE_EQ(numberOf(paintExtensions.at("KHR_materials_specular"), "specularFactor"), 0.8);
     EXPECT_TRUE(model.materials[2].extensions.empty());
     for (const char* extension :
          {"KHR_materials_clearcoat", "KHR_materials_ior", "KHR_materials_specular"})
@@ -375,8 +375,8 @@ TEST(ExportSet, TheRoughnessTextureIsTaggedLinear) {
         std::ifstream in(entry.path(), std::ios::binary);
         const std::string bytes{std::istreambuf_iterator<char>(in),
                                 std::istreambuf_iterator<char>()};
-        const PngEncodingChunks chunks = pngEncodingChunks(
-            reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+        const PngEncodingChunks chunks =
+            pngEncodingChunks(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
         EXPECT_FALSE(chunks.srgb) << fileName;
         EXPECT_EQ(chunks.gamma, 100000) << fileName;
     }
@@ -384,9 +384,9 @@ TEST(ExportSet, TheRoughnessTextureIsTaggedLinear) {
 }
 
 // MaterialX 1.39's gltf_pbr inputs and the nodes we use, named as its standard library does.
-const std::set<std::string> kGltfPbrInputs = {"base_color", "metallic", "roughness",
-                                              "specular", "specular_color", "ior",
-                                              "clearcoat", "clearcoat_roughness"};
+const std::set<std::string> kGltfPbrInputs = {"base_color", "metallic",           "roughness",
+                                              "specular",   "specular_color",     "ior",
+                                              "clearcoat",  "clearcoat_roughness"};
 
 // An `image` node's file input names a file beside the document.
 void expectTextureFileExists(xmlNodePtr image, const fs::path& folder) {

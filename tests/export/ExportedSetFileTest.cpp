@@ -10,8 +10,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include "scene/SceneLayout.h"
 #include "support/RunCommand.h"
@@ -36,7 +36,8 @@ void makeSet(const fs::path& preset, int count, const fs::path& dir) {
     const auto made = testing::runMatevo(
         "variants --preset " + shellQuoted(preset) + " --count " + std::to_string(count) +
         " --band 2,10 --min-apart 1 --seed 5 --size 32 --fitness-size 16 --max-evaluations 300"
-        " --backend cpu --out " + shellQuoted(dir));
+        " --backend cpu --out " +
+        shellQuoted(dir));
     ASSERT_EQ(made.exitCode, 0) << made.err;
 }
 
@@ -134,15 +135,15 @@ TEST(ExportedSetFiles, ASetExportsAsSwitchableVariantsAndAsACrowd) {
     makeSet(kPresets / "validation_painted_metal.json", 3, set);
     std::vector<std::string> names;
     for (int i = 0; i < 3; ++i)
-        names.push_back(nlohmann::json::parse(
-            contentsOf(set / ("variants/variant_00" + std::to_string(i) + ".json")))["name"]
+        names.push_back(nlohmann::json::parse(contentsOf(
+            set / ("variants/variant_00" + std::to_string(i) + ".json")))["name"]
                             .get<std::string>());
 
     // One mesh (the shader ball), the target its material, each variant a named variant.
     const fs::path switchable = folder / "switchable.glb";
-    const auto variants = testing::runMatevo(
-        "export --variants " + shellQuoted(set) + " --arrange variants --mesh shaderball --out " +
-        shellQuoted(switchable) + kQuickFit + " --json");
+    const auto variants = testing::runMatevo("export --variants " + shellQuoted(set) +
+                                             " --arrange variants --mesh shaderball --out " +
+                                             shellQuoted(switchable) + kQuickFit + " --json");
     ASSERT_EQ(variants.exitCode, 0) << variants.err;
     EXPECT_EQ(nlohmann::json::parse(variants.out)["arrangement"], "variants");
     const tinygltf::Model model = loadGltf(switchable);

@@ -104,8 +104,8 @@ std::array<double, 3> bruteForceAlbedo(const GltfSurface& surface, double thetaV
         for (int j = 0; j < kPhi; ++j) {
             const double phi = (j + 0.5) * 2 * kPi / kPhi;
             const auto f = evaluate(surface, anglesOf(thetaView, theta, phi));
-            const double weight = std::cos(theta) * std::sin(theta) * (kPi / 2 / kTheta) *
-                                  (2 * kPi / kPhi);
+            const double weight =
+                std::cos(theta) * std::sin(theta) * (kPi / 2 / kTheta) * (2 * kPi / kPhi);
             for (int c = 0; c < 3; ++c) sum[c] += f[c] * weight;
         }
     }

@@ -226,8 +226,8 @@ FileSet filesIn(const fs::path& folder) {
 
 // A temporary file, or the lock of a write the kill interrupted (files/FileLock.h).
 bool isLeftByAKill(const std::string& name) {
-    return name.rfind('.', 0) == 0 && (name.find(".matevo-tmp-") != std::string::npos ||
-                                       name.ends_with(".matevo-lock"));
+    return name.rfind('.', 0) == 0 &&
+           (name.find(".matevo-tmp-") != std::string::npos || name.ends_with(".matevo-lock"));
 }
 
 // True when `files` holds every file of `whole` with the same bytes.
@@ -295,9 +295,9 @@ void killDuringExport(const std::string& extension) {
         killAfter(pid, std::chrono::microseconds(
                            std::int64_t(fraction(random) * double(runTime.count()))));
         const FileSet files = filesIn(out);
-        const int whole = holdsWhole(files, wholeExports[std::size_t(preset)]) ? preset
+        const int whole = holdsWhole(files, wholeExports[std::size_t(preset)])      ? preset
                           : holdsWhole(files, wholeExports[std::size_t(lastWhole)]) ? lastWhole
-                                                                                  : -1;
+                                                                                    : -1;
         ASSERT_NE(whole, -1) << "attempt " << attempt << ": neither export is whole";
         for (const auto& [name, bytes] : files) {
             if (wholeExports[std::size_t(whole)].count(name) || isLeftByAKill(name)) continue;
@@ -316,10 +316,10 @@ void killDuringExport(const std::string& extension) {
     }
     ASSERT_TRUE(reap(spawn(exportCommand(0, file))));
     EXPECT_EQ(filesIn(out), wholeExports[0]);
-    std::printf("kill -9 during export %s: %d tries, %d had finished, %d left the previous "
-                "export, run time %.2f s\n",
-                extension.c_str(), kTries, completed, mainFileUntouched,
-                double(runTime.count()) * 1e-6);
+    std::printf(
+        "kill -9 during export %s: %d tries, %d had finished, %d left the previous "
+        "export, run time %.2f s\n",
+        extension.c_str(), kTries, completed, mainFileUntouched, double(runTime.count()) * 1e-6);
     fs::remove_all(folder);
 }
 

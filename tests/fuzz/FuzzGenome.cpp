@@ -7,7 +7,7 @@
 #include "documents/MaterialFile.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    (void)matevo::parseMaterial(std::string(reinterpret_cast<const char*>(data), size),
-                                "fuzz.json", "/tmp", matevo::MaterialFile{});
+    (void)matevo::parseMaterial(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json",
+                                "/tmp", matevo::MaterialFile{});
     return 0;
 }

@@ -1,6 +1,7 @@
 // libFuzzer target: our image reader (PNG through libpng, OpenEXR and Radiance HDR through
-// OpenImageIO; decoded from memory, with the size and finiteness checks). The first byte chooses the type. A header may claim any
-// size: the memory limit, set low here, is what keeps decoding bounded, as it does for users.
+// OpenImageIO; decoded from memory, with the size and finiteness checks). The first byte chooses
+// the type. A header may claim any size: the memory limit, set low here, is what keeps decoding
+// bounded, as it does for users.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>

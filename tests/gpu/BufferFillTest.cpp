@@ -49,8 +49,8 @@ TEST_F(BufferFill, EitherPathHoldsTheBytesForTheGpu) {
         VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
     for (gpu::FillPath path : {gpu::FillPath::Auto, gpu::FillPath::Staged}) {
         const bool staged = path == gpu::FillPath::Staged || !device.uploadsAreDeviceLocal();
-        auto buffer =
-            gpu::Buffer::createFilled(device, *runner, std::as_bytes(std::span(words)), usage, path);
+        auto buffer = gpu::Buffer::createFilled(device, *runner, std::as_bytes(std::span(words)),
+                                                usage, path);
         ASSERT_TRUE(buffer.ok()) << buffer.error().message;
         EXPECT_EQ(buffer->size(), words.size() * sizeof(uint32_t));
         EXPECT_EQ(buffer->bytes().empty(), staged) << "staged: " << staged;

@@ -32,8 +32,13 @@ TEST(GpuContext, ReadbackBufferIsHostVisible) {
 TEST(GpuContext, MessengerCountsValidationErrors) {
     auto context = gpu::GpuContext::createHeadless({.validation = true, .printMessages = false});
     ASSERT_TRUE(context.ok()) << context.error().message;
-    VkBufferCreateInfo invalid{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO, nullptr, 0, 0,
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_SHARING_MODE_EXCLUSIVE, 0,
+    VkBufferCreateInfo invalid{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
+                               nullptr,
+                               0,
+                               0,
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                               VK_SHARING_MODE_EXCLUSIVE,
+                               0,
                                nullptr};  // size 0 is invalid
     VkBuffer buffer = VK_NULL_HANDLE;
     vkCreateBuffer(context->device.handle(), &invalid, nullptr, &buffer);

@@ -182,9 +182,9 @@ TEST_F(GpuFlip, AComparerKeptAcrossBatchesOfOtherSizesGivesWhatANewOneGives) {
     };
     std::vector<Batch> batches;
     batches.push_back({noiseImage(24, 16, 1, 1.0f), {noiseImage(24, 16, 2, 1.0f)}});
-    batches.push_back({noiseImage(48, 40, 3, 1.0f),
-                       {noiseImage(48, 40, 4, 1.0f), noiseImage(48, 40, 5, 0.5f),
-                        noiseImage(48, 40, 6, 0.1f)}});
+    batches.push_back(
+        {noiseImage(48, 40, 3, 1.0f),
+         {noiseImage(48, 40, 4, 1.0f), noiseImage(48, 40, 5, 0.5f), noiseImage(48, 40, 6, 0.1f)}});
     batches.push_back({noiseImage(24, 16, 7, 1.0f), {}});
     batches.push_back({noiseImage(24, 16, 8, 1.0f), {noiseImage(24, 16, 9, 0.3f)}});
     for (std::size_t b = 0; b < batches.size(); ++b) {

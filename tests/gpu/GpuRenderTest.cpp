@@ -52,14 +52,14 @@ void expectBackEndsAgree(const std::vector<RenderCase>& cases) {
         while (end < cases.size() && cases[end].textures == cases[begin].textures &&
                cases[end].scene == cases[begin].scene)
             materials.push_back(cases[end++].material);
-        auto renderer = gpu::GpuSphereRenderer::create(context->device, *runner,
-                                                       defaultFgdTables(), *cases[begin].textures);
+        auto renderer = gpu::GpuSphereRenderer::create(context->device, *runner, defaultFgdTables(),
+                                                       *cases[begin].textures);
         ASSERT_TRUE(renderer.ok()) << renderer.error().message;
         auto gpuImages = renderer->render(*runner, materials, cases[begin].scene, kImageSize);
         ASSERT_TRUE(gpuImages.ok()) << gpuImages.error().message;
         for (std::size_t i = begin; i < end; ++i) {
-            const Image cpuImage = renderSphereCpu(cases[i].material, *cases[i].textures,
-                                                   cases[i].scene, kImageSize);
+            const Image cpuImage =
+                renderSphereCpu(cases[i].material, *cases[i].textures, cases[i].scene, kImageSize);
             auto difference = compareImages(cpuImage, (*gpuImages)[i - begin]);
             ASSERT_TRUE(difference.ok()) << difference.error().message;
             EXPECT_GT(difference->stats.pixels, std::size_t(kImageSize * kImageSize / 3))

@@ -6,8 +6,8 @@
 #include <span>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "GpuTestContext.h"
 #include "color/ImageDifference.h"
@@ -60,8 +60,10 @@ std::vector<PresetCase> validationPresets() {
         EXPECT_TRUE(textures.ok()) << textures.error().message;
         if (!textures) continue;
         const Preset& preset = loaded->preset;
-        cases.push_back({name, {preset.target, preset.family, preset.baseKappa},
-                         std::move(textures).value(), preset.scene});
+        cases.push_back({name,
+                         {preset.target, preset.family, preset.baseKappa},
+                         std::move(textures).value(),
+                         preset.scene});
     }
     return cases;
 }
@@ -81,9 +83,8 @@ protected:
     std::optional<gpu::GpuSceneRenderer> rendererOf(const Mesh& mesh,
                                                     std::span<const MaterialInstance> materials,
                                                     const SceneTextures& textures = {}) {
-        auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner,
-                                                      defaultFgdTables(), textures, mesh,
-                                                      visibility, meshFill);
+        auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
+                                                      textures, mesh, visibility, meshFill);
         if (!renderer) {
             ADD_FAILURE() << renderer.error().message;
             return std::nullopt;
@@ -98,8 +99,7 @@ protected:
 
     // `mesh` as one instance at the origin wearing the first preset's material under the
     // paper's light, size x size; nullopt (and a failure) if it fails.
-    std::optional<Image> renderOneInstance(const Mesh& mesh, const SceneCamera& camera,
-                                           int size) {
+    std::optional<Image> renderOneInstance(const Mesh& mesh, const SceneCamera& camera, int size) {
         auto raster = rendererOf(mesh, std::span(&presets[0].material, 1));
         if (!raster) return std::nullopt;
         const SceneInstance instance;
@@ -196,10 +196,11 @@ TEST_P(EitherVisibilityPass, SphereMatchesTheComputeSphereRender) {
             }
         ASSERT_GT(interior, std::size_t(kImageSize * kImageSize / 3));
         EXPECT_LE(interiorSum / double(interior), 0.05) << preset.name;
-        std::printf("%s: scene renderer (%s visibility pass) vs compute sphere, mean dE00 "
-                    "%.3f, p95 %.3f; inside the silhouette %.4f\n",
-                    preset.name.c_str(), gpu::describe(visibility), difference->stats.mean,
-                    difference->stats.p95, interiorSum / double(interior));
+        std::printf(
+            "%s: scene renderer (%s visibility pass) vs compute sphere, mean dE00 "
+            "%.3f, p95 %.3f; inside the silhouette %.4f\n",
+            preset.name.c_str(), gpu::describe(visibility), difference->stats.mean,
+            difference->stats.p95, interiorSum / double(interior));
     }
 }
 
@@ -211,8 +212,7 @@ struct RayToSphere {
     glm::dmat4 inverseViewProjection;
 
     RayToSphere(const SceneCamera& camera_, int size_) : camera(camera_), size(size_) {
-        const glm::dmat4 view =
-            glm::lookAt(camera.position, camera.target, glm::dvec3(0, 1, 0));
+        const glm::dmat4 view = glm::lookAt(camera.position, camera.target, glm::dvec3(0, 1, 0));
         glm::dmat4 projection =
             glm::perspectiveRH_ZO(glm::radians(camera.fieldOfViewDegrees), 1.0, 0.05, 1000.0);
         projection[1][1] *= -1.0;
@@ -238,8 +238,8 @@ struct RayToSphere {
 constexpr double kSilhouetteBand = 1e-3;
 
 // The standard 4x multisample positions, from the pixel's top-left corner.
-constexpr glm::dvec2 kSamplePositions[4] = {{0.375, 0.125}, {0.875, 0.375}, {0.125, 0.625},
-                                            {0.625, 0.875}};
+constexpr glm::dvec2 kSamplePositions[4] = {
+    {0.375, 0.125}, {0.875, 0.375}, {0.125, 0.625}, {0.625, 0.875}};
 
 // The visibility pass leaves no crack between triangles and covers exactly the sphere's
 // samples: a pixel's alpha is the fraction of its four samples whose rays meet the unit
@@ -348,8 +348,8 @@ TEST_P(EitherVisibilityPass, AnEdgeOverAnotherInstanceBlendsTheTwoSurfaces) {
             if (!clear) continue;
             const auto blended = twoMaterials->pixel(x, y);
             const auto single = oneMaterial->pixel(x, y);
-            const bool changed = blended[0] != single[0] || blended[1] != single[1] ||
-                                 blended[2] != single[2];
+            const bool changed =
+                blended[0] != single[0] || blended[1] != single[1] || blended[2] != single[2];
             if (nearSamples == 4) {
                 ++nearPixels;
                 ASSERT_FALSE(changed) << "pixel " << x << ", " << y << " sees the near sphere only";
@@ -452,10 +452,11 @@ TEST_F(GpuSceneRendererTest, RasterAndComputeVisibilityGiveTheSamePicture) {
             alphaDifference += std::abs(raster.rgba[4 * p + 3] - compute.rgba[4 * p + 3]);
         }
         const double meanAlphaDifference = alphaDifference / double(covered);
-        std::printf("%s: raster vs compute visibility, %zu covered pixels, %zu differ; mean "
-                    "dE00 %.5f, largest %.3f; mean alpha difference %.6f\n",
-                    sceneCase.what, covered, differing, difference->stats.mean,
-                    difference->stats.max, meanAlphaDifference);
+        std::printf(
+            "%s: raster vs compute visibility, %zu covered pixels, %zu differ; mean "
+            "dE00 %.5f, largest %.3f; mean alpha difference %.6f\n",
+            sceneCase.what, covered, differing, difference->stats.mean, difference->stats.max,
+            meanAlphaDifference);
         EXPECT_GT(covered, std::size_t(3000)) << sceneCase.what;
         EXPECT_LE(difference->stats.mean, 0.02) << sceneCase.what;
         EXPECT_LE(meanAlphaDifference, 0.002) << sceneCase.what;
@@ -519,8 +520,8 @@ TEST_P(EitherVisibilityPass, AFrameWithNothingInViewIsClear) {
 // Unless told otherwise, the renderer runs the compute pass on a CPU device (lavapipe) and the
 // fixed-function one on a GPU.
 TEST_F(GpuSceneRendererTest, AutoPicksTheVisibilityPassByTheDevicesType) {
-    auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(),
-                                                  {}, makeSphereMesh(16, 8));
+    auto renderer = gpu::GpuSceneRenderer::create(context->device, *runner, defaultFgdTables(), {},
+                                                  makeSphereMesh(16, 8));
     ASSERT_TRUE(renderer.ok()) << renderer.error().message;
     EXPECT_EQ(renderer->visibilityPass(), context->device.isCpu()
                                               ? gpu::SceneVisibilityPass::Compute
@@ -574,8 +575,8 @@ TEST_F(GpuSceneRendererTest, StudioLightingMatchesTheCpuReferenceOnTheSphere) {
     for (PresetCase& preset : presets) {
         preset.textures.environment = *environment;
         const SceneSettings scene = paperLight(preset.scene);
-        auto renderer = gpu::GpuSphereRenderer::create(context->device, *runner,
-                                                       defaultFgdTables(), preset.textures);
+        auto renderer = gpu::GpuSphereRenderer::create(context->device, *runner, defaultFgdTables(),
+                                                       preset.textures);
         ASSERT_TRUE(renderer.ok()) << renderer.error().message;
         auto gpuImages = renderer->render(*runner, std::span(&preset.material, 1), scene, 48);
         ASSERT_TRUE(gpuImages.ok()) << gpuImages.error().message;

@@ -170,8 +170,8 @@ TEST(PopulationRenderer, FlipMapsWhenAsked) {
     for (PopulationRenderer* renderer : {gpu.get(), static_cast<PopulationRenderer*>(&cpu)}) {
         // Twice: the second call reuses the GPU's buffers and the kept target render.
         for (int call = 0; call < 2; ++call) {
-            auto evaluation = renderer->evaluate(population.target, population.candidates, {},
-                                                 kSize, withFlip);
+            auto evaluation =
+                renderer->evaluate(population.target, population.candidates, {}, kSize, withFlip);
             ASSERT_TRUE(evaluation.ok()) << renderer->name();
             ASSERT_EQ(evaluation->errors.at(ImageMetric::Flip).size(),
                       population.candidates.size());
@@ -208,16 +208,15 @@ TEST(PopulationRenderer, BothStopWhenCancelled) {
     CpuPopulationRenderer cpu{SceneTextures{}, cancel};
     gpu::GpuContext* context = test::validatedContext();
     ASSERT_NE(context, nullptr);
-    auto gpu = gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(), {},
-                                                  cancel);
+    auto gpu = gpu::GpuPopulationRenderer::create(context->device, defaultFgdTables(), {}, cancel);
     ASSERT_TRUE(gpu.ok()) << gpu.error().message;
-    for (PopulationRenderer* renderer : {static_cast<PopulationRenderer*>(&cpu),
-                                         static_cast<PopulationRenderer*>(gpu->get())}) {
+    for (PopulationRenderer* renderer :
+         {static_cast<PopulationRenderer*>(&cpu), static_cast<PopulationRenderer*>(gpu->get())}) {
         EXPECT_TRUE(renderer->render(population.candidates, {}, kSize).ok()) << renderer->name();
     }
     cancel.cancel();
-    for (PopulationRenderer* renderer : {static_cast<PopulationRenderer*>(&cpu),
-                                         static_cast<PopulationRenderer*>(gpu->get())}) {
+    for (PopulationRenderer* renderer :
+         {static_cast<PopulationRenderer*>(&cpu), static_cast<PopulationRenderer*>(gpu->get())}) {
         auto evaluation = renderer->evaluate(population.target, population.candidates, {}, kSize);
         ASSERT_FALSE(evaluation.ok()) << renderer->name();
         EXPECT_EQ(evaluation.error().kind, ErrorKind::Cancelled) << renderer->name();

@@ -27,9 +27,10 @@ Image readBack(const std::filesystem::path& file) {
 TEST(RenderBackend, FallsBackToCpuWithoutVulkanDevice) {
     const auto fallback = scratchFile("fallback.exr");
     const auto reference = scratchFile("cpu.exr");
-    const auto result = testing::runCommand(
-        "VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR
-        "/matevo' render --size 40 --out '" + fallback.string() + "'");
+    const auto result =
+        testing::runCommand("VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR
+                            "/matevo' render --size 40 --out '" +
+                            fallback.string() + "'");
     ASSERT_EQ(result.exitCode, 0) << result.err;
     EXPECT_NE(result.err.find("no usable Vulkan device"), std::string::npos) << result.err;
     EXPECT_NE(result.err.find("rendering on the CPU"), std::string::npos) << result.err;
@@ -121,8 +122,8 @@ TEST(RenderBackend, GpuIsTheDefaultAndMatchesCpu) {
 // Every rendering command takes --backend: with no Vulkan device, gpu falls back with exactly
 // one notice and cpu never tries the GPU (so it says nothing).
 TEST(RenderBackend, EveryCommandHonoursTheBackendOption) {
-    const auto out = std::filesystem::temp_directory_path() /
-                     ("matevo_backend_" + std::to_string(::getpid()));
+    const auto out =
+        std::filesystem::temp_directory_path() / ("matevo_backend_" + std::to_string(::getpid()));
     std::filesystem::create_directories(out);
     const std::string commands[] = {
         "render --size 24 --out '" + (out / "render.png").string() + "'",
@@ -130,29 +131,30 @@ TEST(RenderBackend, EveryCommandHonoursTheBackendOption) {
         "evolve --population 4 --generations 1 --size 24 --force --out '" +
             (out / "evolve").string() + "'",
         "experiment --runs 1 --population 4 --generations 1 --size 24 --metric chebyshev "
-        "--force --out '" + (out / "experiment").string() + "'",
+        "--force --out '" +
+            (out / "experiment").string() + "'",
     };
     for (const std::string& command : commands) {
         for (const char* backend : {"gpu", "cpu"}) {
             const auto result = testing::runCommand(
-                "VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR
-                "/matevo' " + command + " --backend " + backend);
+                "VK_DRIVER_FILES=/nonexistent/matevo_icd.json '" MATEVO_BINARY_DIR "/matevo' " +
+                command + " --backend " + backend);
             ASSERT_EQ(result.exitCode, 0) << command << "\n" << result.err;
             std::size_t notices = 0;
             for (std::size_t at = result.err.find("no usable Vulkan device");
-                 at != std::string::npos;
-                 at = result.err.find("no usable Vulkan device", at + 1))
+                 at != std::string::npos; at = result.err.find("no usable Vulkan device", at + 1))
                 ++notices;
             EXPECT_EQ(notices, backend == std::string("gpu") ? 1u : 0u)
-                << command << " --backend " << backend << "\n" << result.err;
+                << command << " --backend " << backend << "\n"
+                << result.err;
         }
     }
     std::filesystem::remove_all(out);
 }
 
 TEST(RenderBackend, RejectsUnknownBackend) {
-    for (const char* command : {"render --out x.png", "evolve --out x", "experiment --out x",
-                                "edit"}) {
+    for (const char* command :
+         {"render --out x.png", "evolve --out x", "experiment --out x", "edit"}) {
         const auto result = testing::runMatevo(std::string(command) + " --backend opengl");
         EXPECT_EQ(result.exitCode, 2) << command;
         EXPECT_NE(result.err.find("--backend"), std::string::npos) << command << result.err;

@@ -29,7 +29,8 @@ protected:
     testing::ScratchFolder folder{"scene"};
 
     // A variant set as `matevo variants --out DIR` lays it out.
-    std::filesystem::path writeVariants(const std::string& name, const std::vector<Genome>& genomes) {
+    std::filesystem::path writeVariants(const std::string& name,
+                                        const std::vector<Genome>& genomes) {
         const auto dir = folder / name;
         std::filesystem::create_directories(dir / "variants");
         for (std::size_t i = 0; i < genomes.size(); ++i) {
@@ -136,8 +137,10 @@ TEST_F(SceneCommand, RasterAndComputeVisibilityDrawTheSameCrowd) {
     int index = 0;
     for (const std::string pass : {"raster", "compute"}) {
         const auto file = folder / (pass + ".exr");
-        const auto result = scene("--mesh shaderball --instances 6 --layout crowd --size 192x108 "
-                                  "--env ambient --visibility " + pass + " --out '" + file.string() + "'");
+        const auto result = scene(
+            "--mesh shaderball --instances 6 --layout crowd --size 192x108 "
+            "--env ambient --visibility " +
+            pass + " --out '" + file.string() + "'");
         ASSERT_EQ(result.exitCode, 0) << result.err;
         EXPECT_EQ(result.err, "") << "validation and everything else silent";
         EXPECT_NE(result.out.find(pass + " visibility pass"), std::string::npos) << result.out;

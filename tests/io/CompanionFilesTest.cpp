@@ -28,15 +28,15 @@ TEST(CompanionFiles, TheNameFollowsTheContents) {
     EXPECT_EQ(nameA.substr(nameA.size() - 4), ".bin");
     EXPECT_EQ(nameA, companionFileName("other/set.gltf", a));  // the folder plays no part
     EXPECT_NE(nameA, companionFileName(main, b));
-    EXPECT_EQ(companionFileName(main, CompanionFile{"_roughness", ".png", "x"}).rfind(
-                  "set_roughness.", 0),
+    EXPECT_EQ(companionFileName(main, CompanionFile{"_roughness", ".png", "x"})
+                  .rfind("set_roughness.", 0),
               0u);
 }
 
 TEST(CompanionFiles, ReplacingLeavesOnlyWhatTheNewMainFileNames) {
     testing::ScratchFolder folder("companions");
     const fs::path main = folder / "set.mtlx";
-    std::ofstream(folder / "set.bin") << "a user's file";         // not a companion's name
+    std::ofstream(folder / "set.bin") << "a user's file";          // not a companion's name
     std::ofstream(folder / "set_roughness.png") << "another one";  // neither
     std::ofstream(folder / "other_roughness.0123456789abcdef.png") << "another set's";
 

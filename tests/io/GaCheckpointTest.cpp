@@ -55,15 +55,17 @@ TEST(GaCheckpoint, MismatchesNameWhatDiffers) {
     EXPECT_FALSE(mismatch([](auto&, auto&, auto&, auto&) {}));
     // Extending the run is allowed; going back before the checkpoint is not.
     EXPECT_FALSE(mismatch([](auto&, auto&, auto&, GaSettings& s) { s.generations = 50; }));
-    EXPECT_NE(mismatch([](auto&, auto&, auto&, GaSettings& s) { s.generations = 3; })->find(
-                  "generation:"),
+    EXPECT_NE(mismatch([](auto&, auto&, auto&, GaSettings& s) {
+                  s.generations = 3;
+              })->find("generation:"),
               std::string::npos);
     EXPECT_NE(mismatch([](auto&, auto&, auto&, GaSettings& s) { s.seed = 2; })->find("ga:"),
               std::string::npos);
     EXPECT_NE(mismatch([](auto&, Genome& t, auto&, auto&) { t[kEta1] = 1.4; })->find("target:"),
               std::string::npos);
-    EXPECT_NE(mismatch([](MaterialFamily& f, auto&, auto&, auto&) { f.hasMedium = false; })
-                  ->find("family:"),
+    EXPECT_NE(mismatch([](MaterialFamily& f, auto&, auto&, auto&) {
+                  f.hasMedium = false;
+              })->find("family:"),
               std::string::npos);
 }
 

@@ -191,8 +191,8 @@ TEST_F(ImageFileTest, OpenExrChannelsOfMixedTypesReadExactly) {
     spec.attribute("oiio:UnassociatedAlpha", 1);
     ASSERT_TRUE(output->open(file.string(), spec)) << output->geterror();
     // Values a half holds exactly, and floats it would round (1/3, 0.1).
-    const std::vector<float> written = {0.5f, 1.0f / 3.0f, 1024.0f, 0.25f,
-                                        0.125f, 0.1f, 3.5f, 1.0f};
+    const std::vector<float> written = {0.5f,   1.0f / 3.0f, 1024.0f, 0.25f,
+                                        0.125f, 0.1f,        3.5f,    1.0f};
     ASSERT_TRUE(output->write_image(OIIO::TypeDesc::FLOAT, written.data())) << output->geterror();
     ASSERT_TRUE(output->close());
     {
@@ -215,8 +215,13 @@ TEST_F(ImageFileTest, VolumeImagesAreRefused) {
     const std::uint32_t width = 4, height = 4, depth = 8;
     std::vector<std::uint32_t> header = {
         0x20534444,  // "DDS "
-        124, 0x1 | 0x2 | 0x4 | 0x1000 | 0x800000,  // size; caps, height, width, format, depth
-        height, width, width * 4, depth, 0};
+        124,
+        0x1 | 0x2 | 0x4 | 0x1000 | 0x800000,  // size; caps, height, width, format, depth
+        height,
+        width,
+        width * 4,
+        depth,
+        0};
     header.resize(header.size() + 11, 0);  // reserved
     // Pixel format: 32-bit RGB with alpha, by channel masks.
     for (std::uint32_t word : {32u, 0x41u, 0u, 32u, 0xff0000u, 0xff00u, 0xffu, 0xff000000u})

@@ -82,8 +82,9 @@ TEST(MaterialFile, EveryFieldSurvivesPrintingWithAbsolutePaths) {
 TEST(MaterialFile, RefusesValuesOutsideTable2NamingTheField) {
     const std::string valid = materialToJson(paintedMetal()).dump();
     // A roughcoat over a conductor: eta2 must lie below eta1 and alpha1 within the texel weights.
-    EXPECT_NE(errorOf(replaced(valid, R"("eta2":0.8)", R"("eta2":1.9)")).find("m.json: genome: eta2"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf(replaced(valid, R"("eta2":0.8)", R"("eta2":1.9)")).find("m.json: genome: eta2"),
+        std::string::npos);
     EXPECT_NE(errorOf(replaced(valid, R"("alpha1":2.0)", R"("alpha1":-1.0)")).find("genome.alpha1"),
               std::string::npos);
     EXPECT_NE(errorOf(replaced(valid, R"("base_kappa":[3.1,2.9,2.8])", R"("base_kappa":[0,0,0])"))
@@ -155,8 +156,8 @@ TEST(MaterialFile, ABareGenomeTakesTheContextAndItsFamilyRules) {
 }
 
 TEST(MaterialFile, APresetIsNotTakenForAGenome) {
-    auto read = parseMaterial(R"({"name": "p", "target": {"eta1": 1.2}, "ga": {}})", "p.json", "/tmp",
-                              paintedMetal());
+    auto read = parseMaterial(R"({"name": "p", "target": {"eta1": 1.2}, "ga": {}})", "p.json",
+                              "/tmp", paintedMetal());
     ASSERT_FALSE(read.ok());
     EXPECT_EQ(read.error().message, "p.json: a preset, not a material (give it with --preset)");
 }
@@ -164,8 +165,8 @@ TEST(MaterialFile, APresetIsNotTakenForAGenome) {
 TEST(MaterialFile, MissingTextureFileNamesFileAndField) {
     testing::ScratchFolder folder("material");
     const auto file = folder / "m.json";
-    std::ofstream(file) << replaced(materialToJson(paintedMetal()).dump(),
-                                    "paint_roughness.png", "missing.png");
+    std::ofstream(file) << replaced(materialToJson(paintedMetal()).dump(), "paint_roughness.png",
+                                    "missing.png");
     auto loaded = loadMaterial(file, MaterialFile{});
     ASSERT_FALSE(loaded.ok());
     EXPECT_NE(loaded.error().message.find(file.string() + ": textures.roughness: "),
@@ -180,8 +181,8 @@ TEST(MaterialFile, TexturePathsThatCannotBeLookedAtAreRefusedNotThrown) {
     std::filesystem::create_symlink("loop.png", folder / "loop2.png");
     std::filesystem::create_directory(folder / "folder.png");
     const std::string json = materialToJson(paintedMetal()).dump();
-    for (const std::string& texture : {std::string("loop.png"), std::string("folder.png"),
-                                       std::string(5000, 'x') + ".png"}) {
+    for (const std::string& texture :
+         {std::string("loop.png"), std::string("folder.png"), std::string(5000, 'x') + ".png"}) {
         const auto file = folder / "m.json";
         std::ofstream(file) << replaced(json, "paint_roughness.png", texture);
         auto loaded = loadMaterial(file, MaterialFile{});

@@ -110,8 +110,9 @@ TEST(Preset, TheVariantSetRoundTripsWithTheTargetItWasMadeFor) {
 
 TEST(Preset, EnvironmentModeNamesItsEnvironment) {
     auto parsed = parsePreset(
-        replaced(kValidPreset, R"("base_kappa")",
-                 R"("scene": {"mode": "environment", "environment": "hdr/hall.exr"}, "base_kappa")"),
+        replaced(
+            kValidPreset, R"("base_kappa")",
+            R"("scene": {"mode": "environment", "environment": "hdr/hall.exr"}, "base_kappa")"),
         "p.json");
     ASSERT_TRUE(parsed.ok()) << parsed.error().message;
     EXPECT_EQ(parsed->preset.scene.mode, SceneMode::Environment);
@@ -210,9 +211,8 @@ TEST(Preset, TargetOutsideItsFamilyIsRejected) {
 }
 
 TEST(Preset, UnknownFieldsWarnButLoad) {
-    auto result = parsePreset(replaced(kValidPreset, R"("name": "test",)",
-                                       R"("name": "test", "colour": 3,)"),
-                              "p.json");
+    auto result = parsePreset(
+        replaced(kValidPreset, R"("name": "test",)", R"("name": "test", "colour": 3,)"), "p.json");
     ASSERT_TRUE(result.ok());
     ASSERT_EQ(result->warnings.size(), 1u);
     EXPECT_EQ(result->warnings[0], "p.json: colour: unknown field, ignored");
@@ -235,17 +235,20 @@ TEST(Preset, SceneModeIsReadAndDefaultsToThePapersScene) {
 
     const std::string message =
         errorOf(replaced(withScene, R"("scene": {})", R"("scene": {"mode": "studio"})"));
-    EXPECT_NE(message.find("p.json: scene.mode: unknown value 'studio' (expected paper, ambient or environment)"),
-              std::string::npos)
+    EXPECT_NE(
+        message.find(
+            "p.json: scene.mode: unknown value 'studio' (expected paper, ambient or environment)"),
+        std::string::npos)
         << message;
 }
 
 // A preset saved before the modes existed names an environment but no mode: it loads in the
 // paper's scene and says that its environment is not used.
 TEST(Preset, EnvironmentWithoutAModeWarnsThatThePaperSceneIgnoresIt) {
-    auto old = parsePreset(replaced(kValidPreset, R"("ga")",
-                                    R"("scene": {"environment_radiance": [0.25, 0.25, 0.25]}, "ga")"),
-                           "p.json");
+    auto old =
+        parsePreset(replaced(kValidPreset, R"("ga")",
+                             R"("scene": {"environment_radiance": [0.25, 0.25, 0.25]}, "ga")"),
+                    "p.json");
     ASSERT_TRUE(old.ok()) << old.error().message;
     EXPECT_EQ(old->preset.scene.mode, SceneMode::Paper);
     EXPECT_EQ(ambientRadiance(old->preset.scene), (std::array{0.0, 0.0, 0.0}));

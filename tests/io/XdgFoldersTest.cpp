@@ -50,11 +50,11 @@ TEST(XdgFolders, DataIsLookedUpInTheDataHomeThenInEachAbsoluteDataDir) {
     ScopedEnvironment home("HOME", "/home/someone");
     ScopedEnvironment data("XDG_DATA_HOME", std::nullopt);
     ScopedEnvironment dirs("XDG_DATA_DIRS", "/opt/share::relative:/usr/share");
-    EXPECT_EQ(dataSearchPath(), (std::vector<std::string>{"/home/someone/.local/share",
-                                                           "/opt/share", "/usr/share"}));
+    EXPECT_EQ(dataSearchPath(),
+              (std::vector<std::string>{"/home/someone/.local/share", "/opt/share", "/usr/share"}));
     ScopedEnvironment unset("XDG_DATA_DIRS", std::nullopt);
     EXPECT_EQ(dataSearchPath(), (std::vector<std::string>{"/home/someone/.local/share",
-                                                           "/usr/local/share", "/usr/share"}));
+                                                          "/usr/local/share", "/usr/share"}));
 }
 
 }  // namespace

@@ -51,8 +51,8 @@ TEST(BsdfReference, SmoothStackIsTheExactTwoInterfaceSeries) {
             const double cosInside = std::sqrt(1.0 - (1.0 - mu * mu) / (eta1 * eta1));
             const double below = fresnelFromAmplitudes(cosInside, eta2 / eta1);
             const double base = (1.0 - coat) * (1.0 - coat) * below / (1.0 - coat * below);
-            const std::string where = "eta " + std::to_string(eta1) + "/" +
-                                      std::to_string(eta2) + " mu " + std::to_string(mu);
+            const std::string where = "eta " + std::to_string(eta1) + "/" + std::to_string(eta2) +
+                                      " mu " + std::to_string(mu);
             const LayerStack stack = smoothDielectricStack(eta1, eta2);
             const LobeSet exact = computeLobes(stack, mu, integrated, kNoTir);
             EXPECT_NEAR(exact.coat.energy[0], coat, 2e-3 * coat) << where;
@@ -116,15 +116,14 @@ TEST(BsdfReference, LayeredStacksFollowTheLoopOnDirectlyIntegratedFgd) {
                     largest = std::max(largest, std::abs(table - reference) / reference);
                     EXPECT_NEAR(table, reference, 0.04 * reference) << c.name << " mu " << mu;
                 }
-                const double total = exact.coat.energy[ch] + exact.base.energy[ch] +
-                                     exact.transmittance[ch];
+                const double total =
+                    exact.coat.energy[ch] + exact.base.energy[ch] + exact.transmittance[ch];
                 EXPECT_LE(total, 1.0 + 1e-9) << c.name;
             }
             EXPECT_NEAR(tabulated.coat.alpha, exact.coat.alpha, 2e-3) << c.name;
             EXPECT_NEAR(tabulated.base.alpha, exact.base.alpha, 2e-3) << c.name;
         }
-        std::printf("%s: largest relative lobe-energy error of the tables %.4f\n", c.name,
-                    largest);
+        std::printf("%s: largest relative lobe-energy error of the tables %.4f\n", c.name, largest);
     }
 }
 

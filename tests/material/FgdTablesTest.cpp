@@ -64,8 +64,7 @@ TEST(FgdTables, SmoothRowIsFresnel) {
     EXPECT_NEAR(tables.reflectance(1.0, 0.0, 1.5, 0.0), 0.04, 0.04 * 3e-3);
     EXPECT_NEAR(tables.reflectance(0.5, 0.0, 1.5, 0.0), 0.08919, 0.08919 * 3e-3);
     const double etaNode = tables.grid().eta.nodeValue(30);
-    EXPECT_NEAR(tables.reflectance(0.5, 0.0, etaNode, 0.0), fresnelDielectric(0.5, etaNode),
-                1e-6);
+    EXPECT_NEAR(tables.reflectance(0.5, 0.0, etaNode, 0.0), fresnelDielectric(0.5, etaNode), 1e-6);
     EXPECT_NEAR(tables.reflectance(1.0, 0.0, 1.0, 1.0), 0.2, 1e-4);
     EXPECT_NEAR(tables.reflectance(0.5, 0.5, 1.5, 0.0), 0.04285, 2e-4);
     EXPECT_NEAR(tables.reflectance(1.0, 0.5, 1.0, 1.0), 0.1588, 2e-4);

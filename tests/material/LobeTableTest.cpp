@@ -77,12 +77,12 @@ TEST(LobeTable, ASaturatingTexturedRoughnessHasANodeOnItsKink) {
     for (double texel = knee - 0.03; texel < knee + 0.03; texel += 0.001) {
         SurfaceTexels texels;
         texels.roughness = texel;
-        const LobeSet exact = computeLobes(makeLayerStack(material, texels), 0.7,
-                                           defaultFgdTables());
+        const LobeSet exact =
+            computeLobes(makeLayerStack(material, texels), 0.7, defaultFgdTables());
         const LobeSet interpolated = table.lobesAt(0.7, texels);
-        largestAlphaError = std::max(
-            {largestAlphaError, std::abs(interpolated.base.alpha - exact.base.alpha),
-             std::abs(interpolated.coat.alpha - exact.coat.alpha)});
+        largestAlphaError =
+            std::max({largestAlphaError, std::abs(interpolated.base.alpha - exact.base.alpha),
+                      std::abs(interpolated.coat.alpha - exact.coat.alpha)});
     }
     // Between two even nodes across the kink the base alpha was off by 0.066.
     EXPECT_LT(largestAlphaError, 2e-3);

@@ -57,7 +57,8 @@ TEST(Ggx, SmithMaskingLimits) {
     EXPECT_DOUBLE_EQ(smithMasking(1.0, 0.5), 1.0);
     EXPECT_EQ(smithMasking(0.0, 0.5), 0.0);
     EXPECT_LT(smithMasking(0.3, 0.5), smithMasking(0.3, 0.1));
-    EXPECT_DOUBLE_EQ(smithShadowing(0.4, 0.7, 0.3), smithMasking(0.4, 0.3) * smithMasking(0.7, 0.3));
+    EXPECT_DOUBLE_EQ(smithShadowing(0.4, 0.7, 0.3),
+                     smithMasking(0.4, 0.3) * smithMasking(0.7, 0.3));
 }
 
 TEST(RoughnessMap, ReferenceValuesAndRoundTrip) {

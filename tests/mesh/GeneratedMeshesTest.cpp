@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "mesh/MeshFile.h"
 
@@ -45,17 +45,20 @@ TEST(GeneratedMeshes, SphereIsTheUnitSphereWithTheTestSphereMapping) {
         const glm::vec3 n = vertex.normal;
         // core/scene/SphereMapping.h: u = 0.5 + atan2(x, z) / 2pi, v = acos(y) / pi; the seam
         // column (u = 0 or 1) and the poles (any u) are the only places where u is ambiguous.
-        ASSERT_NEAR(vertex.uv.y, std::acos(std::clamp(n.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>, 1e-4f);
-        const bool ambiguous = std::abs(n.y) > 0.9999f || vertex.uv.x < 1e-6f || vertex.uv.x > 1.0f - 1e-6f;
+        ASSERT_NEAR(vertex.uv.y,
+                    std::acos(std::clamp(n.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>, 1e-4f);
+        const bool ambiguous =
+            std::abs(n.y) > 0.9999f || vertex.uv.x < 1e-6f || vertex.uv.x > 1.0f - 1e-6f;
         if (!ambiguous) {
-            ASSERT_NEAR(vertex.uv.x, 0.5f + std::atan2(n.x, n.z) / (2.0f * std::numbers::pi_v<float>),
-                        1e-4f);
+            ASSERT_NEAR(vertex.uv.x,
+                        0.5f + std::atan2(n.x, n.z) / (2.0f * std::numbers::pi_v<float>), 1e-4f);
         }
     }
 }
 
 TEST(GeneratedMeshes, BenchmarkMeshesHaveAtLeast20kTrianglesAndFaceOutwards) {
-    for (BuiltInMesh kind : {BuiltInMesh::Sphere, BuiltInMesh::ShaderBall, BuiltInMesh::TorusKnot}) {
+    for (BuiltInMesh kind :
+         {BuiltInMesh::Sphere, BuiltInMesh::ShaderBall, BuiltInMesh::TorusKnot}) {
         const Mesh mesh = makeBuiltInMesh(kind);
         const std::string name(toString(kind));
         expectDrawable(mesh, name.c_str());

@@ -66,15 +66,16 @@ TEST(GltfHostileFiles, DeepJsonIsRefusedBeforeAnyParserInEveryReader) {
     const std::string deep = std::string(20000, '[') + std::string(20000, ']');
     const auto nesting = checkJsonNesting(deep, "deep.json");
     ASSERT_FALSE(nesting.ok());
-    EXPECT_EQ(nesting.error().message, "deep.json: JSON nested deeper than 256 levels (at byte 256)");
+    EXPECT_EQ(nesting.error().message,
+              "deep.json: JSON nested deeper than 256 levels (at byte 256)");
     // Brackets inside strings, escaped quotes included, do not count.
     const std::string quoted = "{\"a\": \"\\\"" + std::string(1000, '[') + "\"}";
     EXPECT_TRUE(checkJsonNesting(quoted, "quoted.json").ok());
     const std::string atLimit = std::string(256, '[') + std::string(256, ']');
     EXPECT_TRUE(checkJsonNesting(atLimit, "limit.json").ok());
     std::vector<std::string> warnings;
-    const auto read = readJsonDocument<int>(deep, "deep.json", warnings,
-                                            [](const nlohmann::json&) { return 1; });
+    const auto read =
+        readJsonDocument<int>(deep, "deep.json", warnings, [](const nlohmann::json&) { return 1; });
     ASSERT_FALSE(read.ok());
     EXPECT_NE(read.error().message.find("nested deeper"), std::string::npos);
 }

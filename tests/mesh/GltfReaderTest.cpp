@@ -4,10 +4,10 @@
 #include <fstream>
 #include <vector>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 
 #include "mesh/MeshFile.h"
 #include "support/ScratchFolder.h"
@@ -38,19 +38,26 @@ json triangleGltf() {
         // A parent node that doubles the size and a child that moves the triangle along x.
         {"nodes", json::array({{{"scale", {2.0, 2.0, 2.0}}, {"children", {1}}},
                                {{"translation", {3.0, 0.0, 0.0}}, {"mesh", 0}}})},
-        {"meshes", json::array({{{"primitives", json::array({{{"attributes",
-                                                                {{"POSITION", 0}, {"NORMAL", 1}}},
-                                                               {"indices", 2}}})}}})},
+        {"meshes", json::array({{{"primitives",
+                                  json::array({{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}},
+                                                {"indices", 2}}})}}})},
         {"buffers", json::array({{{"uri", "triangle.bin"}, {"byteLength", 80}}})},
         {"bufferViews", json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 72}},
                                      {{"buffer", 0}, {"byteOffset", 72}, {"byteLength", 6}}})},
         {"accessors",
-         json::array({{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
-                       {"min", {0, 0, 0}}, {"max", {1, 1, 0}}},
-                      {{"bufferView", 0}, {"byteOffset", 36}, {"componentType", 5126},
-                       {"count", 3}, {"type", "VEC3"}},
-                      {{"bufferView", 1}, {"componentType", 5123}, {"count", 3},
-                       {"type", "SCALAR"}}})}};
+         json::array(
+             {{{"bufferView", 0},
+               {"componentType", 5126},
+               {"count", 3},
+               {"type", "VEC3"},
+               {"min", {0, 0, 0}},
+               {"max", {1, 1, 0}}},
+              {{"bufferView", 0},
+               {"byteOffset", 36},
+               {"componentType", 5126},
+               {"count", 3},
+               {"type", "VEC3"}},
+              {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}})}};
 }
 
 class GltfFiles : public ::testing::Test {
@@ -90,7 +97,8 @@ TEST_F(GltfFiles, ReadsTheSameTriangleFromAGlbWrittenByTinygltf) {
     ASSERT_TRUE(fromText.ok() && fromBinary.ok());
     ASSERT_EQ(fromBinary->triangleCount(), 1u);
     // loadMesh fits the mesh into the unit sphere; the triangle keeps its shape.
-    const float side = glm::length(fromBinary->vertices[1].position - fromBinary->vertices[0].position);
+    const float side =
+        glm::length(fromBinary->vertices[1].position - fromBinary->vertices[0].position);
     const float hypotenuse =
         glm::length(fromBinary->vertices[2].position - fromBinary->vertices[1].position);
     EXPECT_NEAR(hypotenuse / side, std::sqrt(2.0f), 1e-5f);
@@ -135,8 +143,7 @@ TEST_F(GltfFiles, BrokenFilesGiveOneLineNamingTheFile) {
         auto mesh = readGltf(write("triangle.gltf", gltf));
         ASSERT_FALSE(mesh.ok()) << expected;
         EXPECT_NE(mesh.error().message.find("triangle.gltf"), std::string::npos);
-        EXPECT_NE(mesh.error().message.find(expected), std::string::npos)
-            << mesh.error().message;
+        EXPECT_NE(mesh.error().message.find(expected), std::string::npos) << mesh.error().message;
         EXPECT_EQ(mesh.error().message.find('\n'), std::string::npos) << mesh.error().message;
     }
 }

@@ -7,8 +7,8 @@
 #include <map>
 #include <utility>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "mesh/GeneratedMeshes.h"
 
@@ -51,16 +51,18 @@ bool closedByPosition(const Mesh& mesh) {
 // file with hard edges has). With n a power of two the faces' edges meet exactly.
 Mesh cube(int n) {
     Mesh mesh;
-    const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const glm::vec3 normals[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                  {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     for (const glm::vec3& normal : normals) {
         const glm::vec3 u = std::abs(normal.y) > 0.5f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
         const glm::vec3 v = glm::cross(normal, u);
         const auto first = std::uint32_t(mesh.vertices.size());
         for (int j = 0; j <= n; ++j)
             for (int i = 0; i <= n; ++i) {
-                const float s = 2.0f * float(i) / float(n) - 1.0f, t = 2.0f * float(j) / float(n) - 1.0f;
-                mesh.vertices.push_back({normal + s * u + t * v, normal,
-                                         {float(i) / float(n), float(j) / float(n)}});
+                const float s = 2.0f * float(i) / float(n) - 1.0f,
+                            t = 2.0f * float(j) / float(n) - 1.0f;
+                mesh.vertices.push_back(
+                    {normal + s * u + t * v, normal, {float(i) / float(n), float(j) / float(n)}});
             }
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {

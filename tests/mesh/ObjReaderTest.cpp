@@ -2,8 +2,8 @@
 
 #include <fstream>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "mesh/MeshFile.h"
 #include "support/ScratchFolder.h"
@@ -72,7 +72,8 @@ TEST(ObjReader, BrokenFilesGiveOneLineNamingFileAndLine) {
         {"v 0 0 zero\n", "tri.obj:1: 'zero' is not a finite number"},
         {"v 0 0\n", "tri.obj:1: 'v' needs 3 numbers"},
         {"v 0 0 0\nv 1 0 0\nf 1 2\n", "tri.obj:3: a face needs at least three corners"},
-        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/1 3/1\n", "tri.obj:4: texture coordinate index 1 out of range"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/1 3/1\n",
+         "tri.obj:4: texture coordinate index 1 out of range"},
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2/3/4 2 3\n", "has too many '/'"},
         {"# only a comment\n", "tri.obj: no faces"},
         {"\x89PNG\r\n\x1a\n\x01\x02", "tri.obj: no faces"},
@@ -80,8 +81,7 @@ TEST(ObjReader, BrokenFilesGiveOneLineNamingFileAndLine) {
     for (const auto& [text, expected] : cases) {
         auto mesh = parseObj(text, "tri.obj");
         ASSERT_FALSE(mesh.ok()) << text;
-        EXPECT_NE(mesh.error().message.find(expected), std::string::npos)
-            << mesh.error().message;
+        EXPECT_NE(mesh.error().message.find(expected), std::string::npos) << mesh.error().message;
         EXPECT_EQ(mesh.error().message.find('\n'), std::string::npos);
     }
 }

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <fstream>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "documents/PresetTextures.h"
 #include "image/ImageFile.h"
@@ -35,7 +35,8 @@ TEST(PrefilteredEnvironment, UniformEnvironmentStaysUniformAtEveryRoughness) {
     const PrefilteredEnvironment environment =
         prefilterEnvironment(uniform, {.width = 32, .levels = 5, .samplesPerTexel = 16});
     for (double alpha : {0.0, 0.1, 0.5, 1.0})
-        for (const glm::dvec3 direction : {glm::dvec3(0, 1, 0), glm::normalize(glm::dvec3(1, -2, 3))})
+        for (const glm::dvec3 direction :
+             {glm::dvec3(0, 1, 0), glm::normalize(glm::dvec3(1, -2, 3))})
             EXPECT_LT(glm::length(environment.radiance(direction, alpha) - glm::dvec3(0.25)), 1e-6);
 }
 

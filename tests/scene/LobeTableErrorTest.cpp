@@ -102,9 +102,10 @@ TEST(LobeTableError, PaintedMetalAtThePresetSizeFollowsTheLoopAcrossTheTexelEdge
     ASSERT_TRUE(difference.ok());
     const auto above = std::count_if(difference->values.begin(), difference->values.end(),
                                      [](float e) { return e > 0.5f; });
-    std::printf("painted metal %d²: lobe table vs loop mean ΔE00 %.4f, max %.3f, %td pixels "
-                "above 0.5\n",
-                size, difference->stats.mean, difference->stats.max, above);
+    std::printf(
+        "painted metal %d²: lobe table vs loop mean ΔE00 %.4f, max %.3f, %td pixels "
+        "above 0.5\n",
+        size, difference->stats.mean, difference->stats.max, above);
     EXPECT_LT(difference->stats.mean, 0.01);
     EXPECT_LT(difference->stats.max, 0.5);
 }

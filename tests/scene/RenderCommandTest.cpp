@@ -25,8 +25,8 @@ protected:
 
 TEST_F(RenderCommandTest, RendersEachValidationPresetToPngAndExr) {
     const std::filesystem::path presets = std::filesystem::path(MATEVO_SOURCE_DIR) / "presets";
-    for (const char* name : {"validation_metal", "validation_painted_metal",
-                             "validation_metal_depth"}) {
+    for (const char* name :
+         {"validation_metal", "validation_painted_metal", "validation_metal_depth"}) {
         // EXR for one preset: both writers, without launching six processes.
         const char* extension = std::string(name) == "validation_metal" ? ".exr" : ".png";
         {
@@ -65,26 +65,26 @@ TEST_F(RenderCommandTest, EvolveJsonReplaysThroughRenderGenome) {
     const auto preset =
         (std::filesystem::path(MATEVO_SOURCE_DIR) / "presets/validation_painted_metal.json")
             .string();
-    const auto evolved = testing::runMatevo("evolve --population 8 --generations 2 --json --preset '" +
-                                            preset + "'");
+    const auto evolved = testing::runMatevo(
+        "evolve --population 8 --generations 2 --json --preset '" + preset + "'");
     ASSERT_EQ(evolved.exitCode, 0) << evolved.err;
     const auto report = directory_ / "ev.json";
     std::ofstream(report) << evolved.out;
     const auto replayed = directory_ / "replayed.exr";
-    const auto fromReport = testing::runMatevo("render --backend cpu --size 24 --genome '" +
-                                               report.string() + "' --out '" +
-                                               replayed.string() + "'");
+    const auto fromReport =
+        testing::runMatevo("render --backend cpu --size 24 --genome '" + report.string() +
+                           "' --out '" + replayed.string() + "'");
     ASSERT_EQ(fromReport.exitCode, 0) << fromReport.err;
     EXPECT_TRUE(fromReport.err.empty()) << fromReport.err;
 
     const auto bestGenome = directory_ / "best.json";
     std::ofstream(bestGenome) << nlohmann::json::parse(evolved.out)["best"].dump();
     const auto withPreset = directory_ / "with_preset.exr";
-    ASSERT_EQ(testing::runMatevo("render --backend cpu --size 24 --preset '" + preset +
-                                 "' --genome '" + bestGenome.string() + "' --out '" +
-                                 withPreset.string() + "'")
-                  .exitCode,
-              0);
+    ASSERT_EQ(
+        testing::runMatevo("render --backend cpu --size 24 --preset '" + preset + "' --genome '" +
+                           bestGenome.string() + "' --out '" + withPreset.string() + "'")
+            .exitCode,
+        0);
     EXPECT_EQ(readImage(replayed)->rgba, readImage(withPreset)->rgba);
 
     // A self-contained file names its own family: a --preset beside it would do nothing.
@@ -102,8 +102,7 @@ TEST_F(RenderCommandTest, GenomeOutsideTable2IsRefusedNamingTheField) {
     const auto result = testing::runMatevo("render --size 24 --genome '" + genome.string() +
                                            "' --out '" + out.string() + "'");
     EXPECT_EQ(result.exitCode, 2);
-    EXPECT_NE(result.err.find(genome.string() + ": alpha1 = 0.5"), std::string::npos)
-        << result.err;
+    EXPECT_NE(result.err.find(genome.string() + ": alpha1 = 0.5"), std::string::npos) << result.err;
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 

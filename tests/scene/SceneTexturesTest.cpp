@@ -27,8 +27,8 @@ TEST(SceneTextures, BilinearSamplingWrapsInUAndClampsInV) {
         for (int x = 0; x < 2; ++x) texture.pixel(x, y)[0] = float(x + 2 * y);
     EXPECT_DOUBLE_EQ(sampleTexture(texture, 0.25, 0.25)[0], 0.0);  // texel centre
     EXPECT_DOUBLE_EQ(sampleTexture(texture, 0.5, 0.25)[0], 0.5);
-    EXPECT_DOUBLE_EQ(sampleTexture(texture, 0.0, 0.25)[0], 0.5);    // wraps across the seam
-    EXPECT_DOUBLE_EQ(sampleTexture(texture, 0.25, 0.0)[0], 0.0);    // clamps at the pole
+    EXPECT_DOUBLE_EQ(sampleTexture(texture, 0.0, 0.25)[0], 0.5);  // wraps across the seam
+    EXPECT_DOUBLE_EQ(sampleTexture(texture, 0.25, 0.0)[0], 0.0);  // clamps at the pole
     EXPECT_DOUBLE_EQ(sampleTexture(texture, 0.25, 1.0)[0], 2.0);
     const SurfaceTexels neutral = texelsAt(SceneTextures{}, 0.3, 0.3);
     EXPECT_EQ(neutral.roughness, 1.0);
@@ -36,8 +36,8 @@ TEST(SceneTextures, BilinearSamplingWrapsInUAndClampsInV) {
 }
 
 TEST(SceneTextures, ShippedPngsAreWhatTheGeneratorMakes) {
-    const std::filesystem::path shipped = std::filesystem::path(MATEVO_SOURCE_DIR) / "presets" /
-                                          "textures";
+    const std::filesystem::path shipped =
+        std::filesystem::path(MATEVO_SOURCE_DIR) / "presets" / "textures";
     const std::filesystem::path scratch =
         std::filesystem::path(MATEVO_BINARY_DIR) / "test_tmp" / "shipped_textures";
     std::filesystem::create_directories(scratch);

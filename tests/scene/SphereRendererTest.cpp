@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <numbers>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "documents/Preset.h"
 #include "genome/FamilyRules.h"
@@ -16,8 +16,8 @@ namespace matevo {
 namespace {
 
 MaterialInstance validationMetal() {
-    auto loaded = loadPreset(std::filesystem::path(MATEVO_SOURCE_DIR) / "presets" /
-                             "validation_metal.json");
+    auto loaded =
+        loadPreset(std::filesystem::path(MATEVO_SOURCE_DIR) / "presets" / "validation_metal.json");
     EXPECT_TRUE(loaded.ok());
     const Preset& preset = loaded->preset;
     return {preset.target, preset.family, preset.baseKappa};
@@ -83,8 +83,8 @@ TEST(SphereRenderer, PaperSceneLeavesPixelsFacingAwayFromTheLightBlack) {
             if (paper.pixel(x, y)[3] < 1.0f) continue;  // interior pixels: shaded at the centre
             const double ndcX = 2.0 * (x + 0.5) / size - 1.0;
             const double ndcY = 1.0 - 2.0 * (y + 0.5) / size;
-            const glm::dvec3 direction = glm::normalize(
-                forward + ndcX * halfHeight * right + ndcY * halfHeight * up);
+            const glm::dvec3 direction =
+                glm::normalize(forward + ndcX * halfHeight * right + ndcY * halfHeight * up);
             const double b = glm::dot(camera, direction);
             const double discriminant = b * b - (glm::dot(camera, camera) - 1.0);
             ASSERT_GE(discriminant, 0.0) << x << "," << y;
@@ -127,7 +127,8 @@ double valueAt(const ChromosomeRange& range, double fraction) {
 Genome interiorGenome(const FamilyRules& rules) {
     Genome genome;
     for (std::size_t i = 0; i < kChromosomeCount; ++i)
-        genome[i] = rules.ranges[i].active ? valueAt(rules.ranges[i], 0.35) : kInactiveChromosomeValue;
+        genome[i] =
+            rules.ranges[i].active ? valueAt(rules.ranges[i], 0.35) : kInactiveChromosomeValue;
     if (rules.ranges[kDepth].active) genome[kDepth] = valueAt(rules.ranges[kDepth], 0.01);
     genome[kEta2] = valueAt(rules.eta2Given(genome[kEta1]), 0.35);
     return genome;

@@ -83,8 +83,7 @@ TEST(StudioEnvironmentCache, OtherSettingsGetTheirOwnFileAndAreNotReadFromAnothe
     EXPECT_NE(studioCacheFile(folder.path(), more), studioCacheFile(folder.path(), kSmall));
     const auto foreign = readStudioEnvironment(studioCacheFile(folder.path(), kSmall), more);
     ASSERT_FALSE(foreign.ok());
-    EXPECT_NE(foreign.error().message.find("header"), std::string::npos)
-        << foreign.error().message;
+    EXPECT_NE(foreign.error().message.find("header"), std::string::npos) << foreign.error().message;
     EXPECT_FALSE(loadOrBuildStudioEnvironment(folder.path(), more).fromCache);
 }
 
@@ -93,8 +92,7 @@ TEST(StudioEnvironmentCache, ATruncatedFileIsRebuiltAndRewritten) {
     const CachedStudio first = loadOrBuildStudioEnvironment(folder.path(), kSmall);
     const std::filesystem::path file = studioCacheFile(folder.path(), kSmall);
     const std::string whole = contentsOf(file);
-    for (std::size_t keep : {std::size_t(0), std::size_t(20), whole.size() / 2,
-                             whole.size() - 1}) {
+    for (std::size_t keep : {std::size_t(0), std::size_t(20), whole.size() / 2, whole.size() - 1}) {
         std::filesystem::resize_file(file, keep);
         const auto read = readStudioEnvironment(file, kSmall);
         ASSERT_FALSE(read.ok()) << keep << " bytes";
@@ -125,8 +123,8 @@ TEST(StudioEnvironmentCache, ATamperedFileIsRebuiltNotTrusted) {
     EXPECT_EQ(contentsOf(file), whole);
 
     // A forged file whose checksum is right but whose values are no radiance.
-    for (float bad : {std::numeric_limits<float>::quiet_NaN(),
-                      std::numeric_limits<float>::infinity(), -1.0f}) {
+    for (float bad :
+         {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(), -1.0f}) {
         PrefilteredEnvironment forged = first.environment;
         forged.levels[2].rgba[17] = bad;
         const std::string bytes = serializeStudioEnvironment(forged, kSmall);

@@ -25,9 +25,9 @@ std::string readAndRemove(const std::filesystem::path& file) {
 
 CommandOutput runCommand(const std::string& commandLine) {
     static int counter = 0;
-    const auto base = std::filesystem::temp_directory_path() /
-                      ("matevo_cmd_" + std::to_string(::getpid()) + "_" +
-                       std::to_string(counter++));
+    const auto base =
+        std::filesystem::temp_directory_path() /
+        ("matevo_cmd_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
     const auto outFile = base.string() + ".out";
     const auto errFile = base.string() + ".err";
     const std::string full = commandLine + " >'" + outFile + "' 2>'" + errFile + "' </dev/null";

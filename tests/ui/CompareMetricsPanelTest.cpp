@@ -20,8 +20,8 @@ namespace {
 using testing::HeadlessImGui;
 
 Preset validationMetal() {
-    auto loaded = loadPreset(std::filesystem::path(MATEVO_SOURCE_DIR) /
-                             "presets/validation_metal.json");
+    auto loaded =
+        loadPreset(std::filesystem::path(MATEVO_SOURCE_DIR) / "presets/validation_metal.json");
     EXPECT_TRUE(loaded.ok());
     return loaded->preset;
 }
@@ -36,12 +36,12 @@ CompareMetricsView smallExperimentView() {
     const RenderGenomes render = [&](std::span<const Genome> genomes) {
         std::vector<Image> images;
         for (const Genome& genome : genomes)
-            images.push_back(renderSphereCpu({genome, preset.family, preset.baseKappa}, {},
-                                             preset.scene, 16));
+            images.push_back(
+                renderSphereCpu({genome, preset.family, preset.baseKappa}, {}, preset.scene, 16));
         return Result<std::vector<Image>>(std::move(images));
     };
-    auto records = runExperiment({preset.name, preset.family, preset.target, preset.ga},
-                                 settings, render);
+    auto records =
+        runExperiment({preset.name, preset.family, preset.target, preset.ga}, settings, render);
     EXPECT_TRUE(records.ok());
     CompareMetricsView view;
     view.open = true;

@@ -250,15 +250,15 @@ TEST(DrawDataSnapshot, NoChangedPixelIsLeftOut) {
             }
         };
     };
-    const Change raised = changeBetween(imgui, overlapping("Second", false),
-                                        overlapping("First", false));
+    const Change raised =
+        changeBetween(imgui, overlapping("Second", false), overlapping("First", false));
     EXPECT_EQ(raised.missed, 0);
     EXPECT_FALSE(raised.changed.empty());
-    const Change opened = changeBetween(imgui, overlapping("First", false),
-                                        overlapping("First", true));
+    const Change opened =
+        changeBetween(imgui, overlapping("First", false), overlapping("First", true));
     EXPECT_EQ(opened.missed, 0);
-    const Change closed = changeBetween(imgui, overlapping("First", true),
-                                        overlapping("First", false));
+    const Change closed =
+        changeBetween(imgui, overlapping("First", true), overlapping("First", false));
     EXPECT_EQ(closed.missed, 0);
 }
 
@@ -332,7 +332,7 @@ TEST(PixelArea, TooManyPiecesMergeWithTheirNearestNeighbours) {
     std::vector<PixelArea> areas;
     std::vector<PixelArea> added;
     for (int i = 0; i < int(ui::kMaxDisjointAreas); ++i) {
-        added.push_back({10 * i, 0, 10 * i + 5, 5});                // top left, a row
+        added.push_back({10 * i, 0, 10 * i + 5, 5});                    // top left, a row
         added.push_back({1000 + 10 * i, 700, 1000 + 10 * i + 5, 705});  // bottom right
     }
     added.push_back({0, 3, 1200, 4});  // a thin line over the top row's gaps
@@ -347,9 +347,11 @@ TEST(PixelArea, TooManyPiecesMergeWithTheirNearestNeighbours) {
     for (const PixelArea& area : added)  // every pixel added is held
         for (int y = area.y0; y < area.y1; ++y)
             for (int x = area.x0; x < area.x1; ++x)
-                EXPECT_TRUE(std::any_of(areas.begin(), areas.end(), [&](const PixelArea& a) {
-                    return x >= a.x0 && x < a.x1 && y >= a.y0 && y < a.y1;
-                })) << x << "," << y;
+                EXPECT_TRUE(std::any_of(areas.begin(), areas.end(),
+                                        [&](const PixelArea& a) {
+                                            return x >= a.x0 && x < a.x1 && y >= a.y0 && y < a.y1;
+                                        }))
+                    << x << "," << y;
     EXPECT_LT(covered, 20000) << "not the rectangle holding both clusters";
 }
 

@@ -134,8 +134,7 @@ TEST_F(EditorUiTest, TheHeatmapShowsDeltaEOrFlipAndTheChoiceIsRemembered) {
     imgui.click(locate("Candidates (best first)", "FLIP"), draw);
     EXPECT_EQ(ui.state().heatmap.metric, ImageMetric::Flip);
     EXPECT_FALSE(ui.state().hasUnsavedChanges());
-    EXPECT_FALSE(rangeShown())
-        << "FLIP's range is fixed";
+    EXPECT_FALSE(rangeShown()) << "FLIP's range is fixed";
     const std::string ini = ImGui::SaveIniSettingsToMemory();
     EXPECT_NE(ini.find("heatmap_metric=flip"), std::string::npos) << ini;
     HeadlessImGui next;
@@ -161,8 +160,7 @@ std::string drawnText(HeadlessImGui& imgui, const std::function<void()>& draw) {
 
 std::size_t occurrences(const std::string& text, const std::string& part) {
     std::size_t count = 0;
-    for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1))
-        ++count;
+    for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
     return count;
 }
 
@@ -180,8 +178,7 @@ TEST_F(EditorUiTest, TheCandidatesWindowSaysOnceThatTheNewMapsAreBeingPrepared) 
     const auto windowText = [&] { return drawnText(imgui, [&] { drawCandidateGrid(state); }); };
     const std::string preparing = windowText();
     EXPECT_EQ(occurrences(preparing, "Preparing"), 1u) << preparing;
-    EXPECT_EQ(occurrences(preparing, "Preparing the FLIP maps… the tiles show ΔE00 until then"),
-              1u)
+    EXPECT_EQ(occurrences(preparing, "Preparing the FLIP maps… the tiles show ΔE00 until then"), 1u)
         << preparing;
     EXPECT_NE(preparing.find("Opacity"), std::string::npos) << "the FLIP controls are shown";
     evolution.heatmapMetric = ImageMetric::Flip;  // the job's first update has come

@@ -55,8 +55,7 @@ TEST_F(EditorUiTest, TheVariantSearchHoldsUnderTheChosenLightingAndTheCheckedOne
     EXPECT_EQ(ui.state().variants.holdAlsoUnder, Names{"studio"});
     // The chosen lighting first (the one the tiles show), the checked ones after it.
     EXPECT_EQ(ui::lightingsToHold("paper", {"studio"}), (Names{"paper", "studio"}));
-    EXPECT_EQ(ui::lightingsToHold("ambient", {"studio", "ambient"}),
-              (Names{"ambient", "studio"}));
+    EXPECT_EQ(ui::lightingsToHold("ambient", {"studio", "ambient"}), (Names{"ambient", "studio"}));
     // The chosen lighting alone is the preset's scene: no list.
     EXPECT_TRUE(ui::lightingsToHold("studio", {"studio"}).empty());
     imgui.click(locate("Variants", "studio"), draw);

@@ -153,8 +153,9 @@ TEST_F(NeverLoseWork, SavedCopyKeepsFindingTheShippedTextures) {
     auto painted = loadPreset(kShippedFolder / "validation_painted_metal.json");
     ASSERT_TRUE(painted.ok());
     ASSERT_FALSE(painted->preset.roughnessTexture.empty());
-    EditorUi paintedUi(painted->preset, kShippedFolder / "validation_painted_metal.json",
-                       PresetFolders{kShippedFolder, userFolder / "presets", userFolder / "exports"});
+    EditorUi paintedUi(
+        painted->preset, kShippedFolder / "validation_painted_metal.json",
+        PresetFolders{kShippedFolder, userFolder / "presets", userFolder / "exports"});
     const fs::path copy = userFolder / "presets" / "painted.json";
     ASSERT_TRUE(paintedUi.savePreset(copy));
     auto reloaded = loadPreset(copy);

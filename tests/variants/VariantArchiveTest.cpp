@@ -30,7 +30,8 @@ void expectSpacing(const VariantArchive& archive) {
         for (std::size_t j = i + 1; j < archive.size(); ++j) {
             EXPECT_GE(archive.distance(i, j), archive.minApart()) << i << ", " << j;
             EXPECT_NEAR(archive.distance(i, j),
-                        meanDeltaE00(archive.members()[i].labs[0], archive.members()[j].labs[0]), 1e-12);
+                        meanDeltaE00(archive.members()[i].labs[0], archive.members()[j].labs[0]),
+                        1e-12);
             EXPECT_FALSE(archive.members()[i].genome == archive.members()[j].genome);
         }
 }

@@ -120,8 +120,8 @@ TEST(VariantSearch, EveryIndividualSatisfiesTable2) {
     // whatever the renders' last digits (it once finished after 96 individuals).
     VariantRequest request = smallRequest();
     request.count = 12;
-    auto search = VariantSearch::start({validationMetalDepth(), kMetalDepth, kPresetKappa},
-                                       request, {}, cpuRenderer(16, kMetalDepth));
+    auto search = VariantSearch::start({validationMetalDepth(), kMetalDepth, kPresetKappa}, request,
+                                       {}, cpuRenderer(16, kMetalDepth));
     ASSERT_TRUE(search.ok());
     int checked = 0;
     do {
@@ -139,8 +139,8 @@ TEST(VariantSearch, HueVarietyKeepsEveryKappaGeneInsideItsBounds) {
     VariantRequest request = smallRequest();
     request.kappaGenes = KappaGenes::On;
     request.count = 40;  // more than the band holds at this spacing: the search runs long
-    auto search = VariantSearch::start({validationMetalDepth(), kMetalDepth, kPresetKappa},
-                                       request, {}, cpuRenderer(16, kMetalDepth));
+    auto search = VariantSearch::start({validationMetalDepth(), kMetalDepth, kPresetKappa}, request,
+                                       {}, cpuRenderer(16, kMetalDepth));
     ASSERT_TRUE(search.ok());
     const FamilyRules hueRules = familyRules(kMetalDepth, KappaGenes::On);
     std::set<std::array<double, 3>> kappas;
@@ -154,8 +154,8 @@ TEST(VariantSearch, HueVarietyKeepsEveryKappaGeneInsideItsBounds) {
                 ASSERT_GE(genome[i], kKappaGeneMin);
                 ASSERT_LE(genome[i], kKappaGeneMax);
             }
-            ASSERT_TRUE(satisfiesTable2(materialOf(genome, kMetalDepth, kPresetKappa).genome,
-                                        kMetalDepth));
+            ASSERT_TRUE(
+                satisfiesTable2(materialOf(genome, kMetalDepth, kPresetKappa).genome, kMetalDepth));
             kappas.insert(genome.kappa());
             ++checked;
         }
@@ -179,8 +179,8 @@ TEST(VariantSearch, KeptVariantsStayAndDiscardedOnesNeverReturn) {
     const VariantRequest first = smallRequest();
     auto search = runSearch(first);
     ASSERT_TRUE(search);
-    auto set = chooseVariantSet(search->archive(), first, validationMetal(),
-                                cpuRenderer(kOutputSize));
+    auto set =
+        chooseVariantSet(search->archive(), first, validationMetal(), cpuRenderer(kOutputSize));
     ASSERT_TRUE(set.ok() && set->variants.size() >= 3);
 
     VariantRequest refill = first;
@@ -214,8 +214,8 @@ TEST(VariantSearch, AnUnreachableBandEndsWithNothingAndSaysHowCloseItGot) {
     EXPECT_GE(search->progress().evaluations, 200u);
     EXPECT_LT(search->progress().closestDeltaE, 60);
     EXPECT_GT(search->progress().closestDeltaE, 5);
-    auto set = chooseVariantSet(search->archive(), request, validationMetal(),
-                                cpuRenderer(kOutputSize));
+    auto set =
+        chooseVariantSet(search->archive(), request, validationMetal(), cpuRenderer(kOutputSize));
     ASSERT_TRUE(set.ok());
     EXPECT_TRUE(set->variants.empty());
     EXPECT_FALSE(fulfils(*set, request));
@@ -246,12 +246,12 @@ TEST(VariantSearch, FindVariantsIsTheSearchThenTheChoiceAndStopsWhenAsked) {
 
     const CancelToken cancel;
     generations = 0;
-    auto stopped = findVariants(kValidationMetal, request, {}, cpuRenderer(kFitnessSize),
-                                cpuRenderer(kOutputSize), cancel,
-                                [&](const VariantSearchProgress& progress) {
-                                    countGenerations(progress);
-                                    cancel.cancel();  // seen before the next generation
-                                });
+    auto stopped =
+        findVariants(kValidationMetal, request, {}, cpuRenderer(kFitnessSize),
+                     cpuRenderer(kOutputSize), cancel, [&](const VariantSearchProgress& progress) {
+                         countGenerations(progress);
+                         cancel.cancel();  // seen before the next generation
+                     });
     ASSERT_TRUE(stopped.ok());
     EXPECT_EQ(stopped->progress.generation, 1);
     EXPECT_LT(stopped->progress.evaluations, found->progress.evaluations);

@@ -58,9 +58,9 @@ inline float colorDifference(const Ycxcz& reference, const Ycxcz& test, float ma
         hyab(huntAdjustedLab(reference), huntAdjustedLab(test)), float(kColorExponent));
     const float cutoff = float(kColorCutoff) * maxDistance;
     const auto target = float(kColorCutoffTarget);
-    const float error = distance < cutoff ? distance * (target / cutoff)
-                                          : target + (distance - cutoff) /
-                                                         (maxDistance - cutoff) * (1.0f - target);
+    const float error =
+        distance < cutoff ? distance * (target / cutoff)
+                          : target + (distance - cutoff) / (maxDistance - cutoff) * (1.0f - target);
     return std::min(error, 1.0f);
 }
 

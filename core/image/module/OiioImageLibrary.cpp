@@ -103,7 +103,7 @@ Result<DecodedImage> decode(std::string_view bytes, const std::filesystem::path&
     OIIO::ImageSpec spec;
     if (!input->open(file.string(), spec, config))
         return badInput("not a readable " + displayFormat(input->format_name()) +
-                     " image: " + oneLine(input->geterror()));
+                        " image: " + oneLine(input->geterror()));
     if (spec.width <= 0 || spec.height <= 0) return badInput("empty image");
     // A volume (a TIFF or DDS with depth) holds several images; we read one.
     if (spec.depth != 1) return badInput("volume images are not supported");
