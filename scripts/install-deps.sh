@@ -15,13 +15,13 @@ packages=(
 # the editor test, screenshots, the Python peers the tests and benchmarks compare with,
 # jsonschema for the presets' schema, clang with its sanitizer runtimes for scripts/fuzz.sh,
 # libxml2 to re-read exported MaterialX, GNU parallel and a single-node Slurm cluster (slurm-wlm,
-# munge) for docs/batch.md's examples, and ccache, which lets the install test's second,
-# out-of-tree build reuse what the suite's build compiled.
+# munge) for docs/batch.md's examples, ccache, which lets the install test's second,
+# out-of-tree build reuse what the suite's build compiled, and clang-format for the layout check.
 test_packages=(
     libgtest-dev vulkan-validationlayers clang libclang-rt-14-dev
     xvfb xauth imagemagick xdotool
     python3-skimage python3-deap python3-numpy python3-jsonschema
-    libxml2-dev parallel slurm-wlm munge ccache
+    libxml2-dev parallel slurm-wlm munge ccache clang-format
 )
 tests=0
 case "${1:-}" in
