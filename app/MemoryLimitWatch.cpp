@@ -46,6 +46,10 @@ void watchMemoryLimit(const std::string& what) {
     watchedWork().emplace(what);
 }
 
+void sampleMemoryNow() {
+    if (auto& work = watchedWork()) (void)work->watch.exceeded();
+}
+
 int runWithinMemoryLimit(int (*command)(CommandLine&), CommandLine& args) {
     int status = 0;
     try {

@@ -15,6 +15,11 @@ class CommandLine;
 // Watches the rest of the command; `what` names the work in the message, as the estimate does.
 void watchMemoryLimit(const std::string& what);
 
+// Samples the resident memory now (between the watch's samples), so that a check before output
+// is written sees a peak reached since the last sample; cancels the stop token when past the
+// limit. Nothing while no work is watched.
+void sampleMemoryNow();
+
 // Runs `command`; when the memory limit was passed while it worked, throws CommandFailure
 // "memory limit 512 MiB exceeded by WHAT (resident 530 MiB)" in place of its outcome.
 int runWithinMemoryLimit(int (*command)(CommandLine&), CommandLine& args);

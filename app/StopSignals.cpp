@@ -6,6 +6,7 @@
 #include <csignal>
 
 #include "CommandLine.h"
+#include "MemoryLimitWatch.h"
 #include "files/TemporaryFiles.h"
 
 namespace matevo::cli {
@@ -61,6 +62,7 @@ void installStopSignalHandlers() {
 void installQuitSignalHandlers() { installHandler(quit); }
 
 void stopIfCancelled() {
+    sampleMemoryNow();  // a peak since the watch's last sample counts before anything is written
     if (stopToken().cancelled()) throw CommandFailure(cancelledError());
 }
 

@@ -82,8 +82,9 @@ UsageError nothingCovered(const Inputs& inputs) {
 template <typename MakeHeatmap>
 void writeHeatmap(const MakeHeatmap& makeHeatmap, const std::optional<std::string>& file) {
     if (!file) return;
-    stopIfCancelled();
-    auto written = writeImage(makeHeatmap(), *file);
+    const Image heatmap = makeHeatmap();
+    stopIfCancelled();  // the heatmap, the largest image, is made: past the limit, write nothing
+    auto written = writeImage(heatmap, *file);
     if (!written) throw CommandFailure(withContext(written.error(), "--heatmap"));
 }
 
