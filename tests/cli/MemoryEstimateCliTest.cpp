@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "support/RunCommand.h"
+#include "support/ScratchFolder.h"
 
 namespace matevo {
 namespace {
@@ -28,16 +29,8 @@ const std::string kMatevo = std::string(MATEVO_BINARY_DIR) + "/matevo";
 
 class MemoryEstimateCli : public ::testing::Test {
 protected:
-    void SetUp() override {
-        folder_ = fs::path(MATEVO_BINARY_DIR) / "test_tmp" /
-                  ("memory_estimate_" +
-                   std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
-    }
-    void TearDown() override { fs::remove_all(folder_); }
-
-    fs::path folder_;
+    testing::ScratchFolder scratch_{"matevo_memory_estimate"};
+    const fs::path folder_ = scratch_.path();
 };
 
 std::string joined(const std::vector<std::string>& arguments) {

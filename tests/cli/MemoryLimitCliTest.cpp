@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "support/RunCommand.h"
+#include "support/ScratchFolder.h"
 
 namespace matevo {
 namespace {
@@ -30,16 +31,10 @@ const std::string kMatevo = std::string(MATEVO_BINARY_DIR) + "/matevo";
 
 class MemoryLimitCli : public ::testing::Test {
 protected:
-    void SetUp() override {
-        folder_ = fs::path(MATEVO_BINARY_DIR) / "test_tmp" /
-                  ("memory_limit_" +
-                   std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(folder_);
-        fs::create_directories(folder_ / "out");
-    }
-    void TearDown() override { fs::remove_all(folder_); }
+    void SetUp() override { fs::create_directories(folder_ / "out"); }
 
-    fs::path folder_;
+    testing::ScratchFolder scratch_{"matevo_memory_limit"};
+    const fs::path folder_ = scratch_.path();
 };
 
 struct LimitedRun {
