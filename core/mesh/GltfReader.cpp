@@ -3,6 +3,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -192,12 +193,15 @@ std::vector<std::uint32_t> triangleCorners(int mode, const std::vector<std::uint
     return corners;
 }
 
-glm::mat4 localTransform(const tinygltf::Node& node) {
+// A node's own transform, or nothing when it has none (most nodes that only group others).
+std::optional<glm::mat4> localTransform(const tinygltf::Node& node) {
     if (node.matrix.size() == 16) {
         glm::dmat4 matrix;
         std::memcpy(glm::value_ptr(matrix), node.matrix.data(), sizeof(double) * 16);
         return glm::mat4(matrix);
     }
+    if (node.translation.size() != 3 && node.rotation.size() != 4 && node.scale.size() != 3)
+        return std::nullopt;
     glm::dmat4 transform(1.0);
     if (node.translation.size() == 3)
         transform = glm::translate(
@@ -208,6 +212,14 @@ glm::mat4 localTransform(const tinygltf::Node& node) {
     if (node.scale.size() == 3)
         transform = glm::scale(transform, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
     return glm::mat4(transform);
+}
+
+// Each node's transform, worked out once however many paths place the node.
+std::vector<std::optional<glm::mat4>> localTransforms(const tinygltf::Model& model) {
+    std::vector<std::optional<glm::mat4>> transforms;
+    transforms.reserve(model.nodes.size());
+    for (const tinygltf::Node& node : model.nodes) transforms.push_back(localTransform(node));
+    return transforms;
 }
 
 // Nodes that share children place those children once per path through the hierarchy: a file of
@@ -259,22 +271,27 @@ struct MeshBuilder {
     bool missingNormals = false;
     std::size_t placements = 0;
     std::vector<bool> onPath = std::vector<bool>(model.nodes.size(), false);
+    const std::vector<std::optional<glm::mat4>> nodeTransforms = localTransforms(model);
     // Each mesh is decoded once, however many nodes place it; its size is bounded by the
     // buffers' sizes.
     std::map<int, std::vector<DecodedPrimitive>> decodedMeshes{};
 
     // Refuses geometry that would take the mesh past the memory limit or 32-bit indices. The
-    // counts are those of decoded arrays, far from overflowing.
+    // counts are those of decoded arrays, far from overflowing. The messages are built only when
+    // refusing: a file may place a mesh up to 100,000 times.
     void reserveFor(std::size_t vertexCount, std::size_t cornerCount, int meshIndex) {
         const std::size_t vertices = mesh.vertices.size() + vertexCount;
         const std::size_t corners = mesh.indices.size() + cornerCount;
-        const std::string what = "mesh " + std::to_string(meshIndex);
         if (vertices > std::numeric_limits<std::uint32_t>::max())
-            throw GltfError{what + ": more than 2^32 vertices placed in all"};
+            throw GltfError{"mesh " + std::to_string(meshIndex) +
+                            ": more than 2^32 vertices placed in all"};
         const std::uint64_t bytes =
             std::uint64_t(vertices) * sizeof(MeshVertex) + std::uint64_t(corners) * 4;
-        if (auto fits = checkMemoryEstimate(bytes, what + ": the placed triangles"); !fits)
-            throw GltfError{fits.error().message};
+        if (bytes <= memoryLimitBytes()) return;
+        throw GltfError{checkMemoryEstimate(
+                            bytes, "mesh " + std::to_string(meshIndex) + ": the placed triangles")
+                            .error()
+                            .message};
     }
 
     void place(const DecodedPrimitive& primitive, const glm::mat4& transform, int meshIndex) {
@@ -286,8 +303,9 @@ struct MeshBuilder {
         const std::vector<float>& uvs = primitive.uvs;
         const glm::mat3 normalTransform = glm::inverseTranspose(glm::mat3(transform));
         const auto first = std::uint32_t(mesh.vertices.size());
+        mesh.vertices.resize(first + vertexCount);
         for (std::size_t v = 0; v < vertexCount; ++v) {
-            MeshVertex vertex;
+            MeshVertex& vertex = mesh.vertices[first + v];
             vertex.position =
                 glm::vec3(transform * glm::vec4(positions[3 * v], positions[3 * v + 1],
                                                 positions[3 * v + 2], 1.0f));
@@ -299,18 +317,17 @@ struct MeshBuilder {
                 vertex.normal = length > 0.0f ? normal / length : glm::vec3(0.0f, 1.0f, 0.0f);
             }
             if (!uvs.empty()) vertex.uv = {uvs[2 * v], uvs[2 * v + 1]};
-            mesh.vertices.push_back(vertex);
         }
         // A mirroring transform turns the winding inside out.
         const bool mirrored = glm::determinant(glm::mat3(transform)) < 0.0f;
         const std::vector<std::uint32_t>& corners = primitive.corners;
-        for (std::size_t i = 0; i + 2 < corners.size(); i += 3) {
-            const std::uint32_t a = first + corners[i], b = first + corners[i + 1],
-                                c = first + corners[i + 2];
-            if (mirrored)
-                mesh.indices.insert(mesh.indices.end(), {a, c, b});
-            else
-                mesh.indices.insert(mesh.indices.end(), {a, b, c});
+        const std::size_t firstCorner = mesh.indices.size();
+        mesh.indices.resize(firstCorner + corners.size() / 3 * 3);
+        std::uint32_t* placed = mesh.indices.data() + firstCorner;
+        for (std::size_t i = 0; i + 2 < corners.size(); i += 3, placed += 3) {
+            placed[0] = first + corners[i];
+            placed[1] = first + corners[mirrored ? i + 2 : i + 1];
+            placed[2] = first + corners[mirrored ? i + 1 : i + 2];
         }
     }
 
@@ -349,7 +366,8 @@ struct MeshBuilder {
             throw GltfError{"the nodes place more than " + std::to_string(kMaxNodePlacements) +
                             " instances (nodes that share children multiply)"};
         const tinygltf::Node& node = model.nodes[index];
-        const glm::mat4 transform = parent * localTransform(node);
+        const std::optional<glm::mat4>& local = nodeTransforms[index];
+        const glm::mat4 transform = local ? parent * *local : parent;
         if (node.mesh >= 0) addMesh(node.mesh, transform);
         onPath[index] = true;
         for (int child : node.children) addNode(child, transform, depth + 1);

@@ -84,6 +84,35 @@ TEST_F(GltfFiles, ReadsATrianglePlacedByItsNodes) {
     EXPECT_EQ(mesh->vertices[0].normal, glm::vec3(0, 0, 1));
 }
 
+// A matrix that mirrors x turns the winding inside out: the reader swaps two corners so that the
+// placed triangle still faces its (mirrored) normal. The same mesh placed a second time, unmoved,
+// follows the first in the arrays with its own indices.
+TEST_F(GltfFiles, AMirroringMatrixKeepsTheTriangleFacingItsNormal) {
+    json gltf = triangleGltf();
+    gltf["scenes"][0]["nodes"] = {0, 2};
+    gltf["nodes"][0] = {{"matrix", {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}},
+                        {"children", {1}}};
+    gltf["nodes"].push_back({{"mesh", 0}});
+    auto mesh = readGltf(write("mirrored.gltf", gltf));
+    ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+    ASSERT_EQ(mesh->triangleCount(), 2u);
+    ASSERT_EQ(mesh->vertices.size(), 6u);
+    // Mirrored: x = -(x + 3).
+    EXPECT_EQ(mesh->vertices[0].position, glm::vec3(-3, 0, 0));
+    EXPECT_EQ(mesh->vertices[1].position, glm::vec3(-4, 0, 0));
+    EXPECT_EQ(mesh->vertices[3].position, glm::vec3(0, 0, 0));
+    for (std::size_t triangle = 0; triangle < 2; ++triangle) {
+        const std::uint32_t* corner = &mesh->indices[3 * triangle];
+        EXPECT_GE(corner[0], 3 * triangle);
+        EXPECT_LT(corner[0], 3 * triangle + 3);
+        const glm::vec3 a = mesh->vertices[corner[0]].position,
+                        b = mesh->vertices[corner[1]].position,
+                        c = mesh->vertices[corner[2]].position;
+        const glm::vec3 facing = glm::cross(b - a, c - a);
+        EXPECT_GT(glm::dot(facing, mesh->vertices[corner[0]].normal), 0.0f) << triangle;
+    }
+}
+
 TEST_F(GltfFiles, ReadsTheSameTriangleFromAGlbWrittenByTinygltf) {
     const auto source = write("triangle.gltf", triangleGltf());
     tinygltf::TinyGLTF gltf;
