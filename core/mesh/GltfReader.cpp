@@ -4,6 +4,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -408,12 +409,19 @@ Result<Mesh> parseGltf(const std::string& bytes, const std::filesystem::path& fi
     tinygltf::Model model;
     std::string errors, warnings;
     const std::string& folder = externalFiles.baseDirectory();
-    const bool loaded =
-        binary ? loader.LoadBinaryFromMemory(&model, &errors, &warnings,
-                                             reinterpret_cast<const unsigned char*>(bytes.data()),
-                                             unsigned(bytes.size()), folder)
-               : loader.LoadASCIIFromString(&model, &errors, &warnings, bytes.data(),
-                                            unsigned(bytes.size()), folder);
+    bool loaded = false;
+    try {
+        loaded = binary ? loader.LoadBinaryFromMemory(
+                              &model, &errors, &warnings,
+                              reinterpret_cast<const unsigned char*>(bytes.data()),
+                              unsigned(bytes.size()), folder)
+                        : loader.LoadASCIIFromString(&model, &errors, &warnings, bytes.data(),
+                                                     unsigned(bytes.size()), folder);
+    } catch (const std::logic_error&) {
+        // tinygltf checks some indices with vector::at, e.g. a GLB buffer of byteLength 0
+        // (the GLB fuzzer found it). Not std::exception: running out of memory is not bad input.
+        return badInput(name + ": not a valid glTF 2.0 file (an index or length out of range)");
+    }
     if (!loaded) {
         // tinygltf's messages span lines; the first says what went wrong. A refused external
         // file says it better, if it is what failed (a refused image is only a warning).

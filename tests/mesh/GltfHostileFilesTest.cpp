@@ -50,6 +50,9 @@ TEST(GltfHostileFiles, CraftedSeedsAreRefusedNamingTheProblem) {
         {"glb/accessor-offset-near-2-64.glb", "NORMAL accessor: byte offsets overflow"},
         {"glb/extras-nested-20000.glb", "JSON nested deeper than 256 levels"},
         {"glb/shared-children-200-levels.glb", "more than 100000 instances"},
+        // Found by fuzz_glb: a buffer of byteLength 0 made tinygltf throw out_of_range.
+        {"glb/regression-buffer-length-0.glb",
+         "not a valid glTF 2.0 file (an index or length out of range)"},
     };
     for (const auto& [name, problem] : expected)
         expectOneLineNaming(loadMesh((kCorpus / name).string()), fs::path(name).filename(),
