@@ -278,21 +278,17 @@ struct MeshBuilder {
     std::map<int, std::vector<DecodedPrimitive>> decodedMeshes{};
 
     // Refuses geometry that would take the mesh past the memory limit or 32-bit indices. The
-    // counts are those of decoded arrays, far from overflowing. The messages are built only when
-    // refusing: a file may place a mesh up to 100,000 times.
+    // counts are those of decoded arrays, far from overflowing.
     void reserveFor(std::size_t vertexCount, std::size_t cornerCount, int meshIndex) {
         const std::size_t vertices = mesh.vertices.size() + vertexCount;
         const std::size_t corners = mesh.indices.size() + cornerCount;
+        const std::string what = "mesh " + std::to_string(meshIndex);
         if (vertices > std::numeric_limits<std::uint32_t>::max())
-            throw GltfError{"mesh " + std::to_string(meshIndex) +
-                            ": more than 2^32 vertices placed in all"};
+            throw GltfError{what + ": more than 2^32 vertices placed in all"};
         const std::uint64_t bytes =
             std::uint64_t(vertices) * sizeof(MeshVertex) + std::uint64_t(corners) * 4;
-        if (bytes <= memoryLimitBytes()) return;
-        throw GltfError{checkMemoryEstimate(
-                            bytes, "mesh " + std::to_string(meshIndex) + ": the placed triangles")
-                            .error()
-                            .message};
+        if (auto fits = checkMemoryEstimate(bytes, what + ": the placed triangles"); !fits)
+            throw GltfError{fits.error().message};
     }
 
     void place(const DecodedPrimitive& primitive, const glm::mat4& transform, int meshIndex) {
